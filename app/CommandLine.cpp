@@ -1,0 +1,61 @@
+#include "CommandLine.h"
+
+#include <QCommandLineParser>
+#include <QDir>
+#include <QFileInfo>
+#include <QRegularExpression>
+
+std::expected<CommandLine, QString> CommandLine::parse(const QStringList &arguments)
+{
+    QCommandLineParser parser;
+    parser.setApplicationDescription(QStringLiteral(
+        "Neptus-Qt: console for missions of teams of unmanned vehicles."));
+    parser.addHelpOption();
+    parser.addVersionOption();
+    const QCommandLineOption console(QStringLiteral("console"),
+        QStringLiteral("Console layout (QML file) to open. Default: %1/Default.qml")
+            .arg(QStringLiteral(NEPTUS_CONSOLES_DIR)),
+        QStringLiteral("file"));
+    const QCommandLineOption screenshot(QStringLiteral("screenshot"),
+        QStringLiteral("Render the console, write it to a PNG file and exit."), QStringLiteral("file"));
+    const QCommandLineOption palette(QStringLiteral("palette"),
+        QStringLiteral("Colour palette: day, dusk or night."), QStringLiteral("name"));
+    const QCommandLineOption size(QStringLiteral("size"),
+        QStringLiteral("Window size, e.g. 1280x800."), QStringLiteral("WxH"));
+    const QCommandLineOption selfTest(QStringLiteral("self-test"),
+        QStringLiteral("Load every QML file of the project and every console; exit 0 only if "
+                       "all load without errors or warnings."));
+    parser.addOptions({console, screenshot, palette, size, selfTest});
+    if (!parser.parse(arguments))
+        return std::unexpected(parser.errorText());
+    if (parser.isSet(QStringLiteral("help")))
+        return std::unexpected(parser.helpText());
+    if (parser.isSet(QStringLiteral("version")))
+        return std::unexpected(QStringLiteral("neptus " NEPTUS_VERSION));
+    if (!parser.positionalArguments().isEmpty())
+        return std::unexpected(QStringLiteral("unexpected argument '%1' (see --help)")
+                                   .arg(parser.positionalArguments().first()));
+
+    CommandLine result;
+    result.consoleFile = parser.isSet(console)
+        ? QFileInfo(parser.value(console)).absoluteFilePath()
+        : QDir(QStringLiteral(NEPTUS_CONSOLES_DIR)).filePath(QStringLiteral("Default.qml"));
+    if (!QFileInfo(result.consoleFile).isFile())
+        return std::unexpected(QStringLiteral("console file '%1' does not exist").arg(result.consoleFile));
+    result.screenshotFile = parser.value(screenshot);
+    result.selfTest = parser.isSet(selfTest);
+    result.palette = parser.value(palette).toLower();
+    if (!result.palette.isEmpty() && result.palette != u"day" && result.palette != u"dusk"
+        && result.palette != u"night")
+        return std::unexpected(QStringLiteral("--palette must be day, dusk or night, not '%1'")
+                                   .arg(parser.value(palette)));
+    if (parser.isSet(size)) {
+        static const QRegularExpression format(QStringLiteral("^(\\d{2,5})x(\\d{2,5})$"));
+        const auto match = format.match(parser.value(size));
+        if (!match.hasMatch())
+            return std::unexpected(QStringLiteral("--size must look like 1280x800, not '%1'")
+                                       .arg(parser.value(size)));
+        result.windowSize = QSize(match.captured(1).toInt(), match.captured(2).toInt());
+    }
+    return result;
+}

@@ -1,0 +1,20 @@
+#pragma once
+
+#include <QString>
+#include <QStringList>
+#include <QSize>
+
+#include <expected>
+
+// What the `neptus` command line asks for, already checked.
+struct CommandLine
+{
+    QString consoleFile;     // layout to open
+    QString screenshotFile;  // render, save a PNG, exit
+    QString palette;         // day, dusk or night; empty = as last time
+    QSize windowSize{1280, 800};
+    bool selfTest = false;
+
+    // Parses arguments (argv[0] included). An error is a message for the user.
+    static std::expected<CommandLine, QString> parse(const QStringList &arguments);
+};

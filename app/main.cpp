@@ -1,0 +1,78 @@
+// neptus: the console. Parses the command line, then shows a console layout,
+// renders it to a PNG (--screenshot) or checks every QML file (--self-test).
+#include "CommandLine.h"
+#include "SelfTest.h"
+
+#include <QGuiApplication>
+#include <QQmlApplicationEngine>
+#include <QQuickStyle>
+#include <QQuickWindow>
+#include <QTimer>
+#include <QUrl>
+#include <QtQml/qqmlextensionplugin.h>
+
+#include <cstdio>
+
+Q_IMPORT_QML_PLUGIN(Neptus_EnginePlugin)
+Q_IMPORT_QML_PLUGIN(Neptus_ComponentsPlugin)
+Q_IMPORT_QML_PLUGIN(Neptus_ShellPlugin)
+
+namespace {
+
+int saveScreenshot(QQuickWindow *window, const QString &file)
+{
+    const QImage image = window->grabWindow();
+    if (image.isNull() || !image.save(file, "PNG")) {
+        std::fprintf(stderr, "neptus: could not write the screenshot to '%s'\n", qPrintable(file));
+        return 1;
+    }
+    std::fprintf(stdout, "neptus: wrote %dx%d screenshot to %s\n", image.width(), image.height(),
+                 qPrintable(file));
+    return 0;
+}
+
+} // namespace
+
+int main(int argc, char *argv[])
+{
+    QGuiApplication app(argc, argv);
+    QCoreApplication::setOrganizationName(QStringLiteral("neptus-qt"));
+    QCoreApplication::setApplicationName(QStringLiteral("neptus"));
+    QCoreApplication::setApplicationVersion(QStringLiteral(NEPTUS_VERSION));
+    QQuickStyle::setStyle(QStringLiteral("Basic"));
+
+    const auto commandLine = CommandLine::parse(QCoreApplication::arguments());
+    if (!commandLine) {
+        const bool isHelp = commandLine.error().startsWith(u"Usage:") || commandLine.error().startsWith(u"neptus ");
+        std::fprintf(isHelp ? stdout : stderr, "%s%s\n", isHelp ? "" : "neptus: ",
+                     qPrintable(commandLine.error()));
+        return isHelp ? 0 : 2;
+    }
+
+    if (commandLine->selfTest)
+        return runSelfTest(*commandLine);
+
+    QQmlApplicationEngine engine;
+    engine.setInitialProperties({
+        {QStringLiteral("consoleUrl"), QUrl::fromLocalFile(commandLine->consoleFile)},
+        {QStringLiteral("initialPalette"), commandLine->palette},
+        {QStringLiteral("width"), commandLine->windowSize.width()},
+        {QStringLiteral("height"), commandLine->windowSize.height()},
+    });
+    QObject::connect(&engine, &QQmlApplicationEngine::objectCreationFailed, &app,
+                     [] { QCoreApplication::exit(1); }, Qt::QueuedConnection);
+    engine.loadFromModule("Neptus.Shell", "Main");
+    if (engine.rootObjects().isEmpty())
+        return 1;
+    auto *window = qobject_cast<QQuickWindow *>(engine.rootObjects().constFirst());
+
+    if (!commandLine->screenshotFile.isEmpty()) {
+        // Grab after the first frame so the window has its final size and content.
+        QObject::connect(window, &QQuickWindow::frameSwapped, &app, [&] {
+            QTimer::singleShot(0, &app, [&] {
+                QCoreApplication::exit(saveScreenshot(window, commandLine->screenshotFile));
+            });
+        }, Qt::SingleShotConnection);
+    }
+    return QCoreApplication::exec();
+}

@@ -1,0 +1,6 @@
+# neptus_set_warnings(TARGET): the project's warning flags for a target's own code.
+function(neptus_set_warnings target)
+  target_compile_options(${target} PRIVATE
+    -Wall -Wextra -Wpedantic -Wnon-virtual-dtor -Woverloaded-virtual -Wimplicit-fallthrough
+    $<$<BOOL:${NEPTUS_WERROR}>:-Werror>)
+endfunction()

@@ -1,0 +1,11 @@
+import QtQuick
+
+// The root of every console layout: what the designer saves and the shell
+// loads. Components are its children, placed by their own geometry.
+Item {
+    // Layout format, so that a newer Neptus-Qt can read older files.
+    property int formatVersion: 1
+    property string title: qsTr("Console")
+    // Names of the systems this console is for; empty means every system.
+    property list<string> systems
+}

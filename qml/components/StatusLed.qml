@@ -1,0 +1,31 @@
+import QtQuick
+
+// A round lamp showing an alarm level (Unknown .. Failure) in the palette's
+// level colours, sized as a touch target so it can be tapped to open details.
+Item {
+    id: led
+
+    property int level: 0
+    property string label: Theme.levelNames[Math.max(0, Math.min(level, Theme.levelNames.length - 1))]
+    signal tapped()
+
+    implicitWidth: Theme.touchTarget
+    implicitHeight: Theme.touchTarget
+
+    Accessible.role: Accessible.Indicator
+    Accessible.name: qsTr("Status: %1").arg(label)
+
+    Rectangle {
+        id: lamp
+        objectName: "lamp"
+        anchors.centerIn: parent
+        width: Math.min(led.width, led.height) * 0.62
+        height: width
+        radius: width / 2
+        color: Theme.levelColor(led.level)
+        border.color: Theme.border
+        border.width: Math.max(1, Theme.mm(0.3))
+    }
+
+    TapHandler { onTapped: led.tapped() }
+}

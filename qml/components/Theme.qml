@@ -1,0 +1,67 @@
+pragma Singleton
+import QtQuick
+
+// Sizes in millimetres of the real screen and the day / dusk / night palettes.
+// Everything on screen takes its sizes and colours from here, so a console is
+// usable with a gloved finger on a 10" tablet and on a 24" desk monitor alike.
+QtObject {
+    id: theme
+
+    enum Palette { Day, Dusk, Night }
+    property int palette: Theme.Day
+    readonly property var paletteNames: ["Day", "Dusk", "Night"]
+
+    // Logical pixels per millimetre of the primary screen. Screens that report
+    // nonsense (no EDID, 0 mm wide) fall back to 96 dpi.
+    readonly property real reportedPixelsPerMm: {
+        const screens = Qt.application.screens
+        if (!screens || screens.length === 0)
+            return 0
+        return screens[0].pixelDensity / Math.max(screens[0].devicePixelRatio, 1)
+    }
+    readonly property real pixelsPerMm: reportedPixelsPerMm >= 2 && reportedPixelsPerMm <= 30
+                                        ? reportedPixelsPerMm : 96 / 25.4
+
+    function mm(millimetres: real): real { return Math.round(millimetres * pixelsPerMm) }
+
+    // A finger in a glove needs 9 mm (ISO 9241-9 and ship bridge guidance).
+    readonly property real touchTarget: Math.ceil(9 * pixelsPerMm)
+    readonly property real spacing: mm(1.5)
+    readonly property real radius: mm(1)
+    readonly property real titleBarHeight: mm(12)
+    readonly property real fontPixelSize: Math.max(12, mm(3.2))
+    readonly property real smallFontPixelSize: Math.max(11, mm(2.6))
+    readonly property real largeFontPixelSize: Math.max(16, mm(4.5))
+    readonly property string monospaceFont: "DejaVu Sans Mono"
+
+    // Day: high contrast for sunlight. Dusk: dim neutral. Night: red on black at
+    // low luminance, as on ship bridges, to keep the operator's night vision.
+    readonly property var palettes: [
+        { background: "#eef0f3", surface: "#ffffff", titleBar: "#dde1e7", text: "#0b0d10",
+          textDim: "#454d5a", accent: "#0050aa", border: "#aab2be",
+          levels: ["#8a929e", "#1e8a2e", "#1f63c6", "#c98a00", "#d01f1f", "#8b008b"] },
+        { background: "#1d2229", surface: "#262c35", titleBar: "#14181d", text: "#e3e7ec",
+          textDim: "#98a2b0", accent: "#5ea8ff", border: "#47515f",
+          levels: ["#6c7480", "#3fae52", "#4f8fe6", "#e0a52a", "#ef4b4b", "#d26ad2"] },
+        { background: "#000000", surface: "#0a0000", titleBar: "#050000", text: "#a30000",
+          textDim: "#6a0000", accent: "#c80000", border: "#360000",
+          levels: ["#2e1010", "#3a4a00", "#4a1a3a", "#8a4a00", "#c00000", "#ff1a1a"] }
+    ]
+    readonly property var colors: palettes[Math.max(0, Math.min(palette, palettes.length - 1))]
+
+    readonly property color background: colors.background
+    readonly property color surface: colors.surface
+    readonly property color titleBar: colors.titleBar
+    readonly property color text: colors.text
+    readonly property color textDim: colors.textDim
+    readonly property color accent: colors.accent
+    readonly property color border: colors.border
+
+    // Alarm levels, lowest first (the alarm graph's order).
+    readonly property var levelNames: ["Unknown", "Normal", "Info", "Warning", "Error", "Failure"]
+    function levelColor(level: int): color {
+        return colors.levels[Math.max(0, Math.min(level, colors.levels.length - 1))]
+    }
+
+    function nextPalette() { palette = (palette + 1) % palettes.length }
+}

@@ -1,0 +1,71 @@
+import QtQuick
+import QtTest
+import Neptus.Components
+
+TestCase {
+    name: "Theme"
+    when: windowShown
+    visible: true
+
+    function cleanup() { Theme.palette = Theme.Day }
+
+    // WCAG relative luminance: linear light, not the sRGB code values.
+    function luminance(c) {
+        const linear = v => v <= 0.04045 ? v / 12.92 : Math.pow((v + 0.055) / 1.055, 2.4)
+        return 0.2126 * linear(c.r) + 0.7152 * linear(c.g) + 0.0722 * linear(c.b)
+    }
+
+    function test_touchTargetIsNineMillimetresOnThisScreen() {
+        // The test's X server runs at 96 dpi: 3.78 px/mm.
+        const pxPerMm = Screen.pixelDensity / Math.max(Screen.devicePixelRatio, 1)
+        verify(pxPerMm > 2, "screen reports its size")
+        compare(Theme.pixelsPerMm, pxPerMm)
+        verify(Theme.touchTarget / pxPerMm >= 8.9, "touch target " + Theme.touchTarget / pxPerMm + " mm")
+        compare(Theme.mm(10), Math.round(10 * pxPerMm))
+    }
+
+    function test_paletteSwitchesEveryColour() {
+        Theme.palette = Theme.Day
+        const day = { bg: String(Theme.background), text: String(Theme.text), normal: String(Theme.levelColor(1)) }
+        Theme.palette = Theme.Night
+        verify(String(Theme.background) !== day.bg)
+        verify(String(Theme.text) !== day.text)
+        verify(String(Theme.levelColor(1)) !== day.normal)
+        compare(Theme.paletteNames[Theme.palette], "Night")
+    }
+
+    function test_dayIsHighContrast() {
+        Theme.palette = Theme.Day
+        // WCAG contrast ratio; 7:1 is the AAA level.
+        const ratio = (luminance(Theme.background) + 0.05) / (luminance(Theme.text) + 0.05)
+        verify(ratio >= 7, "contrast " + ratio)
+    }
+
+    function test_nightIsDarkAndRed() {
+        Theme.palette = Theme.Night
+        verify(luminance(Theme.background) < 0.02, "background luminance")
+        verify(luminance(Theme.text) < 0.1, "text luminance " + luminance(Theme.text))
+        for (const c of [Theme.text, Theme.textDim, Theme.accent]) {
+            verify(c.r > 0 && c.g === 0 && c.b === 0, "red only: " + c)
+        }
+    }
+
+    function test_nextPaletteCycles() {
+        Theme.palette = Theme.Day
+        Theme.nextPalette(); compare(Theme.palette, Theme.Dusk)
+        Theme.nextPalette(); compare(Theme.palette, Theme.Night)
+        Theme.nextPalette(); compare(Theme.palette, Theme.Day)
+    }
+
+    function test_levelColoursAreDistinctAndClamped() {
+        for (let p = 0; p < 3; ++p) {
+            Theme.palette = p
+            const seen = {}
+            for (let level = 0; level < Theme.levelNames.length; ++level)
+                seen[String(Theme.levelColor(level))] = true
+            compare(Object.keys(seen).length, Theme.levelNames.length, Theme.paletteNames[p])
+        }
+        compare(Theme.levelColor(99), Theme.levelColor(5))
+        compare(Theme.levelColor(-1), Theme.levelColor(0))
+    }
+}

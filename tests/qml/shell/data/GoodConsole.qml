@@ -1,0 +1,7 @@
+import QtQuick
+import Neptus.Components
+
+Console {
+    title: "Test console"
+    StatusLed { level: 1 }
+}

@@ -1,0 +1,64 @@
+#include "CommandLine.h"
+
+#include <QTemporaryDir>
+
+#include <gtest/gtest.h>
+
+namespace {
+std::expected<CommandLine, QString> parse(QStringList arguments)
+{
+    arguments.prepend(QStringLiteral("neptus"));
+    return CommandLine::parse(arguments);
+}
+} // namespace
+
+TEST(CommandLine, DefaultsToTheShippedDefaultConsole)
+{
+    const auto line = parse({});
+    ASSERT_TRUE(line) << line.error().toStdString();
+    EXPECT_TRUE(line->consoleFile.endsWith(QStringLiteral("qml/consoles/Default.qml")));
+    EXPECT_EQ(line->windowSize, QSize(1280, 800));
+    EXPECT_FALSE(line->selfTest);
+    EXPECT_TRUE(line->screenshotFile.isEmpty());
+}
+
+TEST(CommandLine, ReadsEveryOption)
+{
+    QTemporaryDir dir;
+    const QString console = dir.filePath(QStringLiteral("Mine.qml"));
+    QFile file(console);
+    ASSERT_TRUE(file.open(QIODevice::WriteOnly));
+    file.close();
+    const auto line = parse({QStringLiteral("--console"), console, QStringLiteral("--screenshot"),
+                             QStringLiteral("out.png"), QStringLiteral("--palette"), QStringLiteral("Night"),
+                             QStringLiteral("--size"), QStringLiteral("1920x1080"), QStringLiteral("--self-test")});
+    ASSERT_TRUE(line) << line.error().toStdString();
+    EXPECT_EQ(line->consoleFile, console);
+    EXPECT_EQ(line->screenshotFile, QStringLiteral("out.png"));
+    EXPECT_EQ(line->palette, QStringLiteral("night"));
+    EXPECT_EQ(line->windowSize, QSize(1920, 1080));
+    EXPECT_TRUE(line->selfTest);
+}
+
+TEST(CommandLine, NamesWhatIsWrong)
+{
+    auto line = parse({QStringLiteral("--console"), QStringLiteral("/nonexistent/Nope.qml")});
+    ASSERT_FALSE(line);
+    EXPECT_TRUE(line.error().contains(QStringLiteral("/nonexistent/Nope.qml"))) << line.error().toStdString();
+
+    line = parse({QStringLiteral("--palette"), QStringLiteral("purple")});
+    ASSERT_FALSE(line);
+    EXPECT_TRUE(line.error().contains(QStringLiteral("purple")));
+
+    line = parse({QStringLiteral("--size"), QStringLiteral("big")});
+    ASSERT_FALSE(line);
+    EXPECT_TRUE(line.error().contains(QStringLiteral("1280x800")));
+
+    line = parse({QStringLiteral("--bogus")});
+    ASSERT_FALSE(line);
+    EXPECT_TRUE(line.error().contains(QStringLiteral("bogus")));
+
+    line = parse({QStringLiteral("stray")});
+    ASSERT_FALSE(line);
+    EXPECT_TRUE(line.error().contains(QStringLiteral("stray")));
+}
