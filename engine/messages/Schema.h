@@ -1,0 +1,169 @@
+#pragma once
+
+#include "XmlDocument.h"
+
+#include <QByteArray>
+#include <QHash>
+#include <QList>
+#include <QSet>
+#include <QString>
+#include <QStringList>
+
+#include <expected>
+#include <memory>
+#include <optional>
+#include <vector>
+
+namespace neptus::msg {
+
+// Wire types of the IMC definition format.
+enum class FieldType : quint8 {
+    Int8, UInt8, Int16, UInt16, Int32, UInt32, Int64, Fp32, Fp64,
+    RawData, PlainText, Message, MessageList,
+};
+
+QString typeName(FieldType type);
+std::optional<FieldType> typeFromName(QStringView name);
+// Bytes on the wire for fixed-size types; 0 for the variable-size ones.
+int wireSize(FieldType type);
+bool isInteger(FieldType type);
+bool isFloat(FieldType type);
+
+// Named values of an integer field: an enumeration (one value) or a bitfield
+// (any combination of bits). Global (`<enumerations>`, `<bitfields>`) or inline.
+struct Enumeration
+{
+    struct Value
+    {
+        qint64 value = 0;
+        QString abbrev;
+        QString name;
+    };
+
+    QString name;
+    QString abbrev; // empty for inline ones
+    QString prefix;
+    bool bitfield = false;
+    std::vector<Value> values;
+
+    const Value *find(qint64 value) const;
+    std::optional<qint64> valueOf(QStringView abbrev) const;
+    // Enumeration: the value's abbrev, else the number. Bitfield: "A|B", with
+    // bits that have no name added as a number ("A|0x40"); 0 with no name is "0".
+    QString format(qint64 value) const;
+    // The inverse of format(); also accepts plain numbers.
+    std::optional<qint64> parse(QStringView text) const;
+};
+
+struct MessageDef;
+
+struct FieldDef
+{
+    QString name;
+    QString abbrev;
+    FieldType type = FieldType::UInt8;
+    QString unit;
+    QString min;   // as written in the definition, empty if none
+    QString max;
+    QString value; // fixed or default value as written
+    const Enumeration *enumeration = nullptr;
+    // For message and message-list fields: the message or group the values
+    // must belong to, as written; empty means any message.
+    QString messageType;
+    // The ids `messageType` allows; empty means any message.
+    QSet<quint16> allowedIds;
+    int line = 0;
+
+    // Where the value lives inside a Message: the slot for scalars, or the
+    // index into its byte strings or message lists.
+    int storage = 0;
+};
+
+struct MessageDef
+{
+    quint16 id = 0;
+    QString name;
+    QString abbrev;
+    QString category;
+    QString file;
+    int line = 0;
+    std::vector<FieldDef> fields;
+    std::vector<std::unique_ptr<Enumeration>> inlineEnumerations;
+
+    int byteStringCount = 0;   // plaintext and rawdata fields
+    int messageListCount = 0;  // message and message-list fields
+    int fixedPayloadSize = 0;  // bytes of the fixed-size fields
+
+    int indexOf(QStringView fieldAbbrev) const;
+    const FieldDef *field(QStringView fieldAbbrev) const;
+};
+
+struct MessageGroup
+{
+    QString name;
+    QString abbrev;
+    QStringList members; // message abbrevs
+};
+
+// Message definitions loaded at run time from one or more files in the IMC
+// XML format (`<messages>` with `<enumerations>`, `<bitfields>`,
+// `<message-groups>`, `<header>`, `<footer>` and `<message>` elements).
+// Immutable once loaded; share it with std::shared_ptr<const Schema>.
+class Schema
+{
+public:
+    static constexpr quint16 noMessage = 0xFFFF;
+
+    // Loads and combines the files in order. Any problem is an error naming
+    // the file and line: unknown types, dangling references, duplicate ids or
+    // names (also across files), unsupported headers.
+    static std::expected<std::shared_ptr<const Schema>, xml::XmlError> load(const QStringList &files);
+    // The same from documents already in memory (name, contents), for tests and fuzzing.
+    static std::expected<std::shared_ptr<const Schema>, xml::XmlError>
+    fromData(const QList<std::pair<QString, QByteArray>> &documents);
+
+    const MessageDef *byId(quint16 id) const
+    {
+        return id < m_byId.size() ? m_byId[id] : nullptr;
+    }
+    const MessageDef *byAbbrev(QStringView abbrev) const;
+    const std::vector<std::unique_ptr<MessageDef>> &messages() const { return m_messages; }
+    const Enumeration *enumeration(QStringView abbrev) const;
+    const Enumeration *bitfield(QStringView abbrev) const;
+    int enumerationCount() const { return static_cast<int>(m_enumerations.size()); }
+    int bitfieldCount() const { return static_cast<int>(m_bitfields.size()); }
+    const std::vector<MessageGroup> &groups() const { return m_groups; }
+    const MessageGroup *group(QStringView abbrev) const;
+    int fieldCount() const;
+
+    // The packet's synchronisation number (0xFE54 for IMC 5).
+    quint16 syncNumber() const { return m_sync; }
+    QString name() const { return m_name; }
+    QString version() const { return m_version; }
+    QStringList files() const { return m_files; }
+
+    // MD5 of a canonical text of everything that affects the wire format
+    // (ids, names, field order, types, enumerations), in hex. Two peers with
+    // the same digest encode and decode alike, whatever their comments or
+    // formatting; different digests mean they may not.
+    QByteArray digest() const { return m_digest; }
+    QByteArray canonicalText() const;
+
+private:
+    class Loader;
+    friend class Loader;
+
+    std::vector<std::unique_ptr<MessageDef>> m_messages; // by id
+    std::vector<const MessageDef *> m_byId;
+    QHash<QString, const MessageDef *> m_byAbbrev;
+    std::vector<std::unique_ptr<Enumeration>> m_enumerations;
+    std::vector<std::unique_ptr<Enumeration>> m_bitfields;
+    std::vector<MessageGroup> m_groups;
+    quint16 m_sync = 0xFE54;
+    QString m_name;
+    QString m_version;
+    QStringList m_files;
+    QByteArray m_digest;
+};
+
+} // namespace neptus::msg
