@@ -12,8 +12,8 @@ namespace neptus::msg {
 // lookups on the hot path.
 struct CodecAccess
 {
-    static std::vector<quint64> &scalars(Message &m) { return m.m_slots; }
-    static const std::vector<quint64> &scalars(const Message &m) { return m.m_slots; }
+    static quint64 *scalars(Message &m) { return m.m_slots.data(); }
+    static const quint64 *scalars(const Message &m) { return m.m_slots.data(); }
     static std::vector<QByteArray> &byteStrings(Message &m) { return m.m_byteStrings; }
     static const std::vector<QByteArray> &byteStrings(const Message &m) { return m.m_byteStrings; }
     static std::vector<std::vector<Message>> &lists(Message &m) { return m.m_lists; }
@@ -118,7 +118,7 @@ public:
     bool fields(Message &message, const Frame *parent, int depth)
     {
         const MessageDef &def = *message.def();
-        auto &scalars = CodecAccess::scalars(message);
+        quint64 *scalars = CodecAccess::scalars(message);
         Frame frame{parent, &def, -1, -1};
         // A message of scalars only is checked for room once, then read unchecked.
         const bool scalarsOnly = def.byteStringCount == 0 && def.messageListCount == 0;
@@ -127,77 +127,94 @@ public:
                         QStringLiteral("%1 needs %2 bytes, %3 are left").arg(def.abbrev).arg(def.fixedPayloadSize)
                             .arg(m_end - m_p));
         }
-        const size_t count = def.fields.size();
+        const size_t count = def.wire.size();
         for (size_t i = 0; i < count; ++i) {
-            const FieldDef &field = def.fields[i];
-            frame.field = static_cast<int>(i);
-            const int bytes = wireSize(field.type);
-            if (!scalarsOnly && bytes > 0 && !need(bytes, &frame, field))
+            const WireField wire = def.wire[i];
+            if (!scalarsOnly && m_end - m_p < wire.size) [[unlikely]] {
+                frame.field = static_cast<int>(i);
+                return need(wire.size, &frame, def.fields[i]);
+            }
+            quint64 value;
+            switch (wire.type) {
+            case FieldType::Int8: value = static_cast<quint64>(static_cast<qint64>(load<qint8>())); break;
+            case FieldType::UInt8: value = load<quint8>(); break;
+            case FieldType::Int16: value = static_cast<quint64>(static_cast<qint64>(load<qint16>())); break;
+            case FieldType::UInt16: value = load<quint16>(); break;
+            case FieldType::Int32: value = static_cast<quint64>(static_cast<qint64>(load<qint32>())); break;
+            case FieldType::UInt32: value = load<quint32>(); break;
+            case FieldType::Int64: value = static_cast<quint64>(load<qint64>()); break;
+            case FieldType::Fp32: value = load<quint32>(); break;
+            case FieldType::Fp64: value = load<quint64>(); break;
+            default:
+                frame.field = static_cast<int>(i);
+                if (!variable(message, def.fields[i], &frame, depth))
+                    return false;
+                continue;
+            }
+            scalars[wire.storage] = value;
+        }
+        return true;
+    }
+
+    // plaintext, rawdata, message and message-list fields.
+    bool variable(Message &message, const FieldDef &field, Frame *frame, int depth)
+    {
+        Frame &f = *frame;
+        switch (field.type) {
+        case FieldType::RawData:
+        case FieldType::PlainText: {
+            if (!need(2, &f, field))
                 return false;
-            quint64 &slot = scalars[static_cast<size_t>(field.storage)];
-            switch (field.type) {
-            case FieldType::Int8: slot = static_cast<quint64>(static_cast<qint64>(load<qint8>())); break;
-            case FieldType::UInt8: slot = load<quint8>(); break;
-            case FieldType::Int16: slot = static_cast<quint64>(static_cast<qint64>(load<qint16>())); break;
-            case FieldType::UInt16: slot = load<quint16>(); break;
-            case FieldType::Int32: slot = static_cast<quint64>(static_cast<qint64>(load<qint32>())); break;
-            case FieldType::UInt32: slot = load<quint32>(); break;
-            case FieldType::Int64: slot = static_cast<quint64>(load<qint64>()); break;
-            case FieldType::Fp32: slot = load<quint32>(); break;
-            case FieldType::Fp64: slot = load<quint64>(); break;
-            case FieldType::RawData:
-            case FieldType::PlainText: {
-                if (!need(2, &frame, field))
-                    return false;
-                const uchar *lengthAt = m_p;
-                const quint16 length = load<quint16>();
-                if (m_end - m_p < length)
-                    return fail(Kind::LengthPastEnd, &frame,
-                                QStringLiteral("length prefix says %1 bytes, %2 are left").arg(length).arg(m_end - m_p),
-                                lengthAt);
-                CodecAccess::byteStrings(message)[static_cast<size_t>(field.storage)] =
-                    QByteArray(reinterpret_cast<const char *>(m_p), length);
-                m_p += length;
+            const uchar *lengthAt = m_p;
+            const quint16 length = load<quint16>();
+            if (m_end - m_p < length)
+                return fail(Kind::LengthPastEnd, &f,
+                            QStringLiteral("length prefix says %1 bytes, %2 are left").arg(length).arg(m_end - m_p),
+                            lengthAt);
+            CodecAccess::byteStrings(message)[static_cast<size_t>(field.storage)] =
+                QByteArray(reinterpret_cast<const char *>(m_p), length);
+            m_p += length;
+            break;
+        }
+        case FieldType::Message: {
+            if (!need(2, &f, field))
+                return false;
+            auto &list = CodecAccess::lists(message)[static_cast<size_t>(field.storage)];
+            list.clear();
+            const uchar *idAt = m_p;
+            const quint16 id = load<quint16>();
+            if (id == Schema::noMessage)
                 break;
-            }
-            case FieldType::Message: {
-                if (!need(2, &frame, field))
-                    return false;
-                auto &list = CodecAccess::lists(message)[static_cast<size_t>(field.storage)];
-                list.clear();
+            if (!nested(list, id, field, &f, -1, depth, idAt))
+                return false;
+            break;
+        }
+        case FieldType::MessageList: {
+            if (!need(2, &f, field))
+                return false;
+            const uchar *countAt = m_p;
+            const quint16 n = load<quint16>();
+            // Every entry takes at least its 2-byte id: refuse counts that
+            // cannot fit before allocating anything for them.
+            if (qsizetype(n) * 2 > m_end - m_p)
+                return fail(Kind::ListTooLong, &f,
+                            QStringLiteral("count %1 cannot fit in the %2 bytes left").arg(n).arg(m_end - m_p),
+                            countAt);
+            auto &list = CodecAccess::lists(message)[static_cast<size_t>(field.storage)];
+            list.clear();
+            list.reserve(n);
+            for (int k = 0; k < n; ++k) {
                 const uchar *idAt = m_p;
+                if (m_end - m_p < 2)
+                    return fail(Kind::Truncated, &f, QStringLiteral("entry %1 of %2 is missing").arg(k).arg(n));
                 const quint16 id = load<quint16>();
-                if (id == Schema::noMessage)
-                    break;
-                if (!nested(list, id, field, &frame, -1, depth, idAt))
+                if (!nested(list, id, field, &f, k, depth, idAt))
                     return false;
-                break;
             }
-            case FieldType::MessageList: {
-                if (!need(2, &frame, field))
-                    return false;
-                const uchar *countAt = m_p;
-                const quint16 n = load<quint16>();
-                // Every entry takes at least its 2-byte id: refuse counts that
-                // cannot fit before allocating anything for them.
-                if (qsizetype(n) * 2 > m_end - m_p)
-                    return fail(Kind::ListTooLong, &frame,
-                                QStringLiteral("count %1 cannot fit in the %2 bytes left").arg(n).arg(m_end - m_p),
-                                countAt);
-                auto &list = CodecAccess::lists(message)[static_cast<size_t>(field.storage)];
-                list.clear();
-                list.reserve(n);
-                for (int k = 0; k < n; ++k) {
-                    const uchar *idAt = m_p;
-                    if (m_end - m_p < 2)
-                        return fail(Kind::Truncated, &frame, QStringLiteral("entry %1 of %2 is missing").arg(k).arg(n));
-                    const quint16 id = load<quint16>();
-                    if (!nested(list, id, field, &frame, k, depth, idAt))
-                        return false;
-                }
-                break;
-            }
-            }
+            break;
+        }
+        default:
+            break;
         }
         return true;
     }
@@ -350,94 +367,83 @@ public:
     CodecError m_error{Kind::TooLarge, -1, {}, {}};
 };
 
-template<bool Swap>
-class Encoder
+// Writers keep the output position in a local variable: stores through a
+// byte pointer may alias anything, so a position kept in an object's member
+// would be reloaded after every field.
+template<bool Swap, typename T>
+inline uchar *put(uchar *p, T value)
 {
-public:
-    explicit Encoder(uchar *out)
-        : m_p(out)
-    {
-    }
+    if constexpr (Swap)
+        value = qbswap(value);
+    std::memcpy(p, &value, sizeof(T));
+    return p + sizeof(T);
+}
 
-    template<typename T>
-    void store(T value)
-    {
-        if constexpr (Swap)
-            value = qbswap(value);
-        std::memcpy(m_p, &value, sizeof(T));
-        m_p += sizeof(T);
+template<bool Swap>
+uchar *putFields(uchar *p, const Message &message)
+{
+    if (message.isOpaque()) {
+        const QByteArray &payload = message.opaquePayload();
+        std::memcpy(p, payload.constData(), static_cast<size_t>(payload.size()));
+        return p + payload.size();
     }
-
-    void fields(const Message &message)
-    {
-        if (message.isOpaque()) {
-            const QByteArray &payload = message.opaquePayload();
-            std::memcpy(m_p, payload.constData(), static_cast<size_t>(payload.size()));
-            m_p += payload.size();
-            return;
+    const MessageDef &def = *message.def();
+    const quint64 *scalars = CodecAccess::scalars(message);
+    const size_t count = def.wire.size();
+    for (size_t i = 0; i < count; ++i) {
+        const WireField wire = def.wire[i];
+        switch (wire.type) {
+        case FieldType::Int8:
+        case FieldType::UInt8: p = put<Swap>(p, static_cast<quint8>(scalars[wire.storage])); break;
+        case FieldType::Int16:
+        case FieldType::UInt16: p = put<Swap>(p, static_cast<quint16>(scalars[wire.storage])); break;
+        case FieldType::Int32:
+        case FieldType::UInt32:
+        case FieldType::Fp32: p = put<Swap>(p, static_cast<quint32>(scalars[wire.storage])); break;
+        case FieldType::Int64:
+        case FieldType::Fp64: p = put<Swap>(p, scalars[wire.storage]); break;
+        case FieldType::RawData:
+        case FieldType::PlainText: {
+            const QByteArray &bytes = CodecAccess::byteStrings(message)[wire.storage];
+            p = put<Swap>(p, static_cast<quint16>(bytes.size()));
+            std::memcpy(p, bytes.constData(), static_cast<size_t>(bytes.size()));
+            p += bytes.size();
+            break;
         }
-        const MessageDef &def = *message.def();
-        const auto &scalars = CodecAccess::scalars(message);
-        for (const FieldDef &field : def.fields) {
-            const quint64 slot = field.storage < static_cast<int>(scalars.size()) ? scalars[static_cast<size_t>(field.storage)] : 0;
-            switch (field.type) {
-            case FieldType::Int8:
-            case FieldType::UInt8: store(static_cast<quint8>(slot)); break;
-            case FieldType::Int16:
-            case FieldType::UInt16: store(static_cast<quint16>(slot)); break;
-            case FieldType::Int32:
-            case FieldType::UInt32:
-            case FieldType::Fp32: store(static_cast<quint32>(slot)); break;
-            case FieldType::Int64:
-            case FieldType::Fp64: store(slot); break;
-            case FieldType::RawData:
-            case FieldType::PlainText: {
-                const QByteArray &bytes = CodecAccess::byteStrings(message)[static_cast<size_t>(field.storage)];
-                store(static_cast<quint16>(bytes.size()));
-                std::memcpy(m_p, bytes.constData(), static_cast<size_t>(bytes.size()));
-                m_p += bytes.size();
-                break;
-            }
-            case FieldType::Message: {
-                const auto &list = CodecAccess::lists(message)[static_cast<size_t>(field.storage)];
-                if (list.empty()) {
-                    store(Schema::noMessage);
-                } else {
-                    store(list.front().id());
-                    fields(list.front());
-                }
-                break;
-            }
-            case FieldType::MessageList: {
-                const auto &list = CodecAccess::lists(message)[static_cast<size_t>(field.storage)];
-                store(static_cast<quint16>(list.size()));
-                for (const Message &entry : list) {
-                    store(entry.id());
-                    fields(entry);
-                }
-                break;
-            }
-            }
+        case FieldType::Message: {
+            const auto &list = CodecAccess::lists(message)[wire.storage];
+            if (list.empty())
+                p = put<Swap>(p, Schema::noMessage);
+            else
+                p = putFields<Swap>(put<Swap>(p, list.front().id()), list.front());
+            break;
+        }
+        case FieldType::MessageList: {
+            const auto &list = CodecAccess::lists(message)[wire.storage];
+            p = put<Swap>(p, static_cast<quint16>(list.size()));
+            for (const Message &entry : list)
+                p = putFields<Swap>(put<Swap>(p, entry.id()), entry);
+            break;
+        }
         }
     }
-
-    uchar *m_p;
-};
+    return p;
+}
 
 template<bool Swap>
 void encodePacket(const Schema &schema, const Message &message, qsizetype payloadSize, uchar *out)
 {
-    Encoder<Swap> encoder(out);
-    encoder.store(schema.syncNumber());
-    encoder.store(message.id());
-    encoder.store(static_cast<quint16>(payloadSize));
-    encoder.store(message.header.timestamp);
-    encoder.store(message.header.src);
-    encoder.store(message.header.srcEnt);
-    encoder.store(message.header.dst);
-    encoder.store(message.header.dstEnt);
-    encoder.fields(message);
-    encoder.store(crc16(QByteArrayView(out, Codec::headerSize + payloadSize)));
+    uchar *p = out;
+    p = put<Swap>(p, schema.syncNumber());
+    p = put<Swap>(p, message.id());
+    p = put<Swap>(p, static_cast<quint16>(payloadSize));
+    p = put<Swap>(p, message.header.timestamp);
+    p = put<Swap>(p, message.header.src);
+    p = put<Swap>(p, message.header.srcEnt);
+    p = put<Swap>(p, message.header.dst);
+    p = put<Swap>(p, message.header.dstEnt);
+    p = putFields<Swap>(p, message);
+    put<Swap>(p, crc16(QByteArrayView(out, Codec::headerSize + payloadSize)));
 }
 
 } // namespace

@@ -31,7 +31,8 @@ Message::Message(const MessageDef *def)
 {
     if (!def)
         return;
-    m_slots.assign(def->fields.size() - static_cast<size_t>(def->byteStringCount + def->messageListCount), 0);
+    m_slots.resize(static_cast<qsizetype>(def->fields.size()) - def->byteStringCount - def->messageListCount);
+    std::fill(m_slots.begin(), m_slots.end(), 0);
     m_byteStrings.resize(static_cast<size_t>(def->byteStringCount));
     m_lists.resize(static_cast<size_t>(def->messageListCount));
 }

@@ -3,6 +3,7 @@
 #include "Schema.h"
 
 #include <QByteArray>
+#include <QVarLengthArray>
 #include <QVariant>
 
 #include <optional>
@@ -80,8 +81,8 @@ public:
 
     // Raw storage, for the codec: the slot holds the value's bits (integers
     // sign- or zero-extended, fp32 and fp64 as their IEEE bit patterns).
-    quint64 rawSlot(int index) const { return m_slots[static_cast<size_t>(field(index).storage)]; }
-    void setRawSlot(int index, quint64 bits) { m_slots[static_cast<size_t>(field(index).storage)] = bits; }
+    quint64 rawSlot(int index) const { return m_slots[field(index).storage]; }
+    void setRawSlot(int index, quint64 bits) { m_slots[field(index).storage] = bits; }
     QByteArray &byteString(int index) { return m_byteStrings[static_cast<size_t>(field(index).storage)]; }
     std::vector<Message> &messageList(int index) { return m_lists[static_cast<size_t>(field(index).storage)]; }
 
@@ -91,7 +92,9 @@ private:
     friend struct CodecAccess;
     const MessageDef *m_def = nullptr;
     quint16 m_opaqueId = 0;
-    std::vector<quint64> m_slots;
+    // Inline room for the scalars of most messages: decoding EstimatedState
+    // (20 scalars) allocates nothing.
+    QVarLengthArray<quint64, 24> m_slots;
     std::vector<QByteArray> m_byteStrings;
     std::vector<std::vector<Message>> m_lists;
     QByteArray m_opaque;

@@ -551,6 +551,8 @@ std::expected<void, XmlError> Schema::Loader::finish()
                 message->fixedPayloadSize += wireSize(field.type);
                 break;
             }
+            message->wire.push_back({field.type, static_cast<quint8>(wireSize(field.type)),
+                                     static_cast<quint16>(field.storage)});
         }
     }
     m_schema.m_digest = QCryptographicHash::hash(m_schema.canonicalText(), QCryptographicHash::Md5).toHex();

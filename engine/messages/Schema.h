@@ -79,6 +79,15 @@ struct FieldDef
     int storage = 0;
 };
 
+// What the codec needs of a field, packed in 4 bytes so that a message's
+// fields sit in one or two cache lines while decoding.
+struct WireField
+{
+    FieldType type;
+    quint8 size;     // bytes on the wire for fixed-size types, else 0
+    quint16 storage; // FieldDef::storage
+};
+
 struct MessageDef
 {
     quint16 id = 0;
@@ -90,6 +99,7 @@ struct MessageDef
     std::vector<FieldDef> fields;
     std::vector<std::unique_ptr<Enumeration>> inlineEnumerations;
 
+    std::vector<WireField> wire; // one per field, in order
     int byteStringCount = 0;   // plaintext and rawdata fields
     int messageListCount = 0;  // message and message-list fields
     int fixedPayloadSize = 0;  // bytes of the fixed-size fields
