@@ -470,10 +470,14 @@ std::expected<Message, CodecError> Codec::decode(QByteArrayView packet) const
         return decodePacket<Q_BYTE_ORDER == Q_BIG_ENDIAN>(*m_schema, m_maxDepth, bytes, size);
     if (sync == qbswap(expected))
         return decodePacket<Q_BYTE_ORDER == Q_LITTLE_ENDIAN>(*m_schema, m_maxDepth, bytes, size);
+    const auto byteText = [](quint8 first, quint8 second) {
+        return QStringLiteral("%1 %2").arg(first, 2, 16, QLatin1Char('0')).arg(second, 2, 16, QLatin1Char('0'));
+    };
     return std::unexpected(CodecError{Kind::BadSync, 0, {},
-                                      QStringLiteral("the packet starts with %1; an IMC packet starts with %2 "
+                                      QStringLiteral("the packet starts with bytes %1; an IMC packet starts with %2 "
                                                      "(little-endian sender) or %3 (big-endian)")
-                                          .arg(hex16(sync), hex16(expected), hex16(qbswap(expected)))});
+                                          .arg(byteText(bytes[0], bytes[1]), byteText(expected & 0xFF, expected >> 8),
+                                               byteText(expected >> 8, expected & 0xFF))});
 }
 
 std::expected<void, CodecError> Codec::encode(const Message &message, QByteArray &out, ByteOrder order) const

@@ -213,7 +213,8 @@ TEST(Codec, EveryKindOfBadInputHasItsOwnError)
     e = decodeError(codec, bad);
     EXPECT_EQ(e.kind, Kind::BadSync);
     EXPECT_EQ(e.offset, 0);
-    EXPECT_TRUE(e.toString().contains(QStringLiteral("0xfe54"))) << e.toString().toStdString();
+    EXPECT_TRUE(e.toString().contains(QStringLiteral("starts with bytes 12 fe; an IMC packet starts with 54 fe")))
+        << e.toString().toStdString();
 
     // Wrong CRC, with where it is.
     bad = entityState;
