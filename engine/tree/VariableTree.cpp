@@ -1,0 +1,667 @@
+#include "VariableTree.h"
+
+#include <QMutexLocker>
+
+#include <algorithm>
+
+namespace neptus::tree {
+
+using msg::FieldDef;
+using msg::FieldType;
+using msg::Message;
+using msg::MessageDef;
+
+struct VariableTree::Node
+{
+    QString name;
+    NodeId parent = noNode;
+    Kind kind = Kind::Root;
+    int row = 0;
+    std::vector<NodeId> children;
+    int binding = -1;          // the message binding this node reads from
+    // For nodes inside a message: the field (or list item) this node is, in
+    // the message of its parent node. `ownerDef` is that message's definition
+    // when the node was made; if a nested message later has another type the
+    // field is found by name instead.
+    int field = -1;
+    int item = -1;
+    const MessageDef *ownerDef = nullptr;
+};
+
+struct VariableTree::Binding
+{
+    quint16 system = 0xFFFF;
+    quint8 entity = 0xFF;
+    const MessageDef *def = nullptr;
+    quint16 opaqueId = 0;
+    NodeId branch = noNode;
+    Message latest;
+    bool present = false;
+    qint64 receivedMs = 0;
+    std::vector<NodeId> nodes; // the branch and everything under it
+    quint32 dirty = 0;         // one bit per consumer that has not seen the last change
+};
+
+struct VariableTree::SystemInfo
+{
+    quint16 id = 0xFFFF;
+    NodeId node = noNode;
+    NodeId out = noNode;
+    bool named = false;
+    qint64 lastReceivedMs = 0;
+    QHash<quint8, QString> entityLabels;
+    QHash<quint8, std::vector<int>> entityBindings;
+};
+
+namespace {
+
+QString defaultSystemName(quint16 id)
+{
+    return QStringLiteral("0x%1").arg(id, 4, 16, QLatin1Char('0'));
+}
+
+quint64 bindingKey(quint16 system, quint8 entity, quint16 id, bool perEntity)
+{
+    return (quint64(system) << 32) | (quint64(entity) << 24) | (quint64(id) << 8) | (perEntity ? 1 : 0);
+}
+
+bool displaysUnit(const FieldDef &field)
+{
+    return !field.unit.isEmpty() && field.unit != u"Enumerated" && field.unit != u"Bitfield" && field.unit != u"List"
+           && field.unit != u"TupleList";
+}
+
+} // namespace
+
+VariableTree::VariableTree(const Clock *clock)
+    : m_clock(clock)
+{
+    Node root;
+    root.kind = Kind::Root;
+    m_nodes.push_back(root);
+}
+
+VariableTree::~VariableTree() = default;
+
+// --- Structure ---------------------------------------------------------------------
+
+NodeId VariableTree::addNode(NodeId parent, const QString &name, Kind kind, int binding, std::vector<int> path)
+{
+    Node node;
+    node.name = name;
+    node.parent = parent;
+    node.kind = kind;
+    node.binding = binding;
+    if (!path.empty()) {
+        node.field = path[0];
+        node.item = path.size() > 1 ? path[1] : -1;
+    }
+    const auto id = static_cast<NodeId>(m_nodes.size());
+    node.row = static_cast<int>(m_nodes[static_cast<size_t>(parent)].children.size());
+    m_nodes.push_back(std::move(node));
+    m_nodes[static_cast<size_t>(parent)].children.push_back(id);
+    if (binding >= 0)
+        m_bindings[static_cast<size_t>(binding)]->nodes.push_back(id);
+    for (Consumer &consumer : m_consumers)
+        consumer.structure.newNodes.push_back(id);
+    return id;
+}
+
+NodeId VariableTree::childNamed(NodeId parent, QStringView name) const
+{
+    for (NodeId child : m_nodes[static_cast<size_t>(parent)].children) {
+        if (m_nodes[static_cast<size_t>(child)].name == name)
+            return child;
+    }
+    return noNode;
+}
+
+void VariableTree::renameLocked(NodeId node, const QString &name)
+{
+    Node &n = m_nodes[static_cast<size_t>(node)];
+    if (n.name == name)
+        return;
+    n.name = name;
+    for (Consumer &consumer : m_consumers)
+        consumer.structure.renamedNodes.push_back(node);
+}
+
+VariableTree::SystemInfo &VariableTree::systemLocked(quint16 id)
+{
+    const auto it = m_systemIndex.constFind(id);
+    if (it != m_systemIndex.cend())
+        return *m_systems[static_cast<size_t>(*it)];
+    auto info = std::make_unique<SystemInfo>();
+    info->id = id;
+    const QString configured = m_configuredNames.value(id);
+    info->named = !configured.isEmpty();
+    info->node = addNode(root(), info->named ? configured : defaultSystemName(id), Kind::System, -1, {});
+    m_systemIndex.insert(id, static_cast<int>(m_systems.size()));
+    m_systems.push_back(std::move(info));
+    return *m_systems.back();
+}
+
+QString VariableTree::entityName(const SystemInfo &system, quint8 entity) const
+{
+    const QString label = system.entityLabels.value(entity);
+    return label.isEmpty() ? QString::number(entity) : label;
+}
+
+VariableTree::Binding &VariableTree::bindingLocked(quint16 system, quint8 entity, const MessageDef *def, bool perEntity)
+{
+    const quint16 id = def ? def->id : 0;
+    const quint64 key = bindingKey(system, entity, id, perEntity);
+    const auto it = m_bindingIndex.constFind(key);
+    if (it != m_bindingIndex.cend())
+        return *m_bindings[static_cast<size_t>(*it)];
+
+    SystemInfo &info = systemLocked(system);
+    const int index = static_cast<int>(m_bindings.size());
+    auto binding = std::make_unique<Binding>();
+    binding->system = system;
+    binding->entity = entity;
+    binding->def = def;
+    m_bindings.push_back(std::move(binding));
+    m_bindingIndex.insert(key, index);
+    Binding &b = *m_bindings.back();
+
+    const QString abbrev = def ? def->abbrev : QStringLiteral("Unknown");
+    const QString name = perEntity ? abbrev + u'@' + entityName(info, entity) : abbrev;
+    b.branch = addNode(info.node, name, Kind::Message, index, {});
+    m_nodes[static_cast<size_t>(b.branch)].ownerDef = def;
+    if (perEntity)
+        info.entityBindings[entity].push_back(index);
+    if (def) {
+        for (size_t f = 0; f < def->fields.size(); ++f) {
+            const FieldDef &field = def->fields[f];
+            const Kind kind = field.type == FieldType::Message       ? Kind::Inline
+                              : field.type == FieldType::MessageList ? Kind::List
+                                                                     : Kind::Field;
+            const NodeId node = addNode(b.branch, field.abbrev, kind, index, {static_cast<int>(f)});
+            m_nodes[static_cast<size_t>(node)].ownerDef = def;
+        }
+    }
+    return b;
+}
+
+// Makes the nodes of nested messages and list items present in `message`.
+void VariableTree::ensureStructureLocked(NodeId branch, const Message &message)
+{
+    if (!message.def())
+        return;
+    const int bindingIndex = m_nodes[static_cast<size_t>(branch)].binding;
+    for (int f = 0; f < message.fieldCount(); ++f) {
+        const FieldDef &field = message.field(f);
+        if (field.type != FieldType::Message && field.type != FieldType::MessageList)
+            continue;
+        NodeId container = childNamed(branch, field.abbrev);
+        if (container == noNode) {
+            container = addNode(branch, field.abbrev, field.type == FieldType::Message ? Kind::Inline : Kind::List,
+                                bindingIndex, {f});
+            m_nodes[static_cast<size_t>(container)].ownerDef = message.def();
+        }
+        const auto entries = message.messages(f);
+        for (size_t k = 0; k < entries.size(); ++k) {
+            const Message &entry = entries[k];
+            NodeId holder = container;
+            if (field.type == FieldType::MessageList) {
+                const QString itemName = QString::number(k);
+                holder = childNamed(container, itemName);
+                if (holder == noNode) {
+                    holder = addNode(container, itemName, Kind::ListItem, bindingIndex, {f, static_cast<int>(k)});
+                    m_nodes[static_cast<size_t>(holder)].ownerDef = message.def();
+                }
+            }
+            if (!entry.def())
+                continue;
+            for (int g = 0; g < entry.fieldCount(); ++g) {
+                const FieldDef &inner = entry.field(g);
+                if (childNamed(holder, inner.abbrev) != noNode)
+                    continue;
+                const Kind kind = inner.type == FieldType::Message       ? Kind::Inline
+                                  : inner.type == FieldType::MessageList ? Kind::List
+                                                                         : Kind::Field;
+                const NodeId node = addNode(holder, inner.abbrev, kind, bindingIndex, {g});
+                m_nodes[static_cast<size_t>(node)].ownerDef = entry.def();
+            }
+            if (entry.def()->messageListCount > 0)
+                ensureStructureLocked(holder, entry);
+        }
+    }
+}
+
+void VariableTree::markChangedLocked(int index)
+{
+    Binding &b = *m_bindings[static_cast<size_t>(index)];
+    for (size_t c = 0; c < m_consumers.size(); ++c) {
+        const quint32 bit = 1u << c;
+        if (!(b.dirty & bit)) {
+            b.dirty |= bit;
+            m_consumers[c].changedBindings.push_back(index);
+        }
+    }
+}
+
+// --- Input -------------------------------------------------------------------------
+
+void VariableTree::setSystemName(quint16 id, const QString &name)
+{
+    QMutexLocker lock(&m_mutex);
+    m_configuredNames.insert(id, name);
+    const auto it = m_systemIndex.constFind(id);
+    if (it != m_systemIndex.cend()) {
+        SystemInfo &info = *m_systems[static_cast<size_t>(*it)];
+        info.named = true;
+        renameLocked(info.node, name);
+    }
+}
+
+void VariableTree::learnNamesLocked(const Message &message, SystemInfo &system)
+{
+    // Only EntityInfo (3), EntityList (5) and Announce (151) carry names.
+    const MessageDef *def = message.def();
+    if (!def || (def->id != 3 && def->id != 5 && def->id != 151))
+        return;
+    const QString &abbrev = def->abbrev;
+    if (abbrev == u"Announce") {
+        const QString name = message.text(u"sys_name");
+        if (!name.isEmpty() && !m_configuredNames.contains(system.id)) {
+            system.named = true;
+            renameLocked(system.node, name);
+        }
+        return;
+    }
+    bool learned = false;
+    if (abbrev == u"EntityList") {
+        // list: "Label=id;Label=id;..."
+        for (const QString &pair : message.text(u"list").split(u';', Qt::SkipEmptyParts)) {
+            const qsizetype equals = pair.lastIndexOf(u'=');
+            bool ok = false;
+            const int id = pair.mid(equals + 1).toInt(&ok);
+            if (equals > 0 && ok && id >= 0 && id < 256) {
+                system.entityLabels.insert(static_cast<quint8>(id), pair.left(equals));
+                learned = true;
+            }
+        }
+    } else if (abbrev == u"EntityInfo") {
+        const qint64 id = message.integer(u"id");
+        const QString label = message.text(u"label");
+        if (id >= 0 && id < 256 && !label.isEmpty()) {
+            system.entityLabels.insert(static_cast<quint8>(id), label);
+            learned = true;
+        }
+    }
+    if (!learned)
+        return;
+    for (auto it = system.entityBindings.cbegin(); it != system.entityBindings.cend(); ++it) {
+        for (int index : it.value()) {
+            const Binding &b = *m_bindings[static_cast<size_t>(index)];
+            const QString abbrevOf = b.def ? b.def->abbrev : QStringLiteral("Unknown");
+            renameLocked(b.branch, abbrevOf + u'@' + entityName(system, it.key()));
+        }
+    }
+}
+
+void VariableTree::ingest(const Message &message)
+{
+    const qint64 now = m_clock->now().toMSecsSinceEpoch();
+    const quint16 source = message.header.src;
+    const quint8 entity = message.header.srcEnt;
+    QMutexLocker lock(&m_mutex);
+    SystemInfo &system = systemLocked(source);
+    system.lastReceivedMs = now;
+    learnNamesLocked(message, system);
+
+    const MessageDef *def = message.def();
+    const auto commit = [&](int index) {
+        Binding &b = *m_bindings[static_cast<size_t>(index)];
+        b.latest = message;
+        b.present = true;
+        b.receivedMs = now;
+        if (def && def->messageListCount > 0)
+            ensureStructureLocked(b.branch, b.latest);
+        markChangedLocked(index);
+    };
+    const quint16 id = def ? def->id : message.id();
+    auto indexOf = [&](quint8 ent, bool perEntity) {
+        const quint64 key = bindingKey(source, ent, id, perEntity);
+        auto it = m_bindingIndex.constFind(key);
+        if (it == m_bindingIndex.cend()) {
+            bindingLocked(source, ent, def, perEntity);
+            it = m_bindingIndex.constFind(key);
+        }
+        return *it;
+    };
+    commit(indexOf(0xFF, false));
+    if (entity != 0 && entity != 0xFF)
+        commit(indexOf(entity, true));
+}
+
+// --- Output ------------------------------------------------------------------------
+
+void VariableTree::setOutputSink(OutputSink *sink)
+{
+    QMutexLocker lock(&m_mutex);
+    m_sink = sink;
+}
+
+bool VariableTree::write(const QString &system, Message message)
+{
+    QMutexLocker lock(&m_mutex);
+    if (!m_sink || !message.def())
+        return false;
+    quint16 id = 0xFFFF;
+    for (const auto &info : m_systems) {
+        if (m_nodes[static_cast<size_t>(info->node)].name == system)
+            id = info->id;
+    }
+    if (id == 0xFFFF) {
+        for (auto it = m_configuredNames.cbegin(); it != m_configuredNames.cend(); ++it) {
+            if (it.value() == system)
+                id = it.key();
+        }
+    }
+    if (id == 0xFFFF)
+        return false;
+    message.header.dst = id;
+    OutputSink *sink = m_sink;
+    SystemInfo &info = systemLocked(id);
+    if (info.out == noNode)
+        info.out = addNode(info.node, QStringLiteral("out"), Kind::Inline, -1, {});
+    // Record what was commanded under system/out/Message.
+    const quint64 key = bindingKey(id, 0xFE, message.id(), false);
+    auto it = m_bindingIndex.constFind(key);
+    int index;
+    if (it == m_bindingIndex.cend()) {
+        index = static_cast<int>(m_bindings.size());
+        auto binding = std::make_unique<Binding>();
+        binding->system = id;
+        binding->entity = 0xFE;
+        binding->def = message.def();
+        m_bindings.push_back(std::move(binding));
+        m_bindingIndex.insert(key, index);
+        Binding &b = *m_bindings.back();
+        b.branch = addNode(info.out, message.abbrev(), Kind::Message, index, {});
+        m_nodes[static_cast<size_t>(b.branch)].ownerDef = message.def();
+        for (size_t f = 0; f < message.def()->fields.size(); ++f) {
+            const FieldDef &field = message.def()->fields[f];
+            const Kind kind = field.type == FieldType::Message       ? Kind::Inline
+                              : field.type == FieldType::MessageList ? Kind::List
+                                                                     : Kind::Field;
+            const NodeId node = addNode(b.branch, field.abbrev, kind, index, {static_cast<int>(f)});
+            m_nodes[static_cast<size_t>(node)].ownerDef = message.def();
+        }
+    } else {
+        index = *it;
+    }
+    Binding &b = *m_bindings[static_cast<size_t>(index)];
+    b.latest = message;
+    b.present = true;
+    b.receivedMs = m_clock->now().toMSecsSinceEpoch();
+    markChangedLocked(index);
+    lock.unlock();
+    sink->publish(id, message);
+    return true;
+}
+
+// --- Reading -----------------------------------------------------------------------
+
+NodeId VariableTree::find(QStringView path) const
+{
+    QMutexLocker lock(&m_mutex);
+    NodeId node = root();
+    for (QStringView part : path.split(u'/', Qt::SkipEmptyParts)) {
+        node = childNamed(node, part);
+        if (node == noNode)
+            return noNode;
+    }
+    return node;
+}
+
+QString VariableTree::path(NodeId node) const
+{
+    QMutexLocker lock(&m_mutex);
+    QStringList parts;
+    for (; node > 0; node = m_nodes[static_cast<size_t>(node)].parent)
+        parts.prepend(m_nodes[static_cast<size_t>(node)].name);
+    return parts.join(u'/');
+}
+
+QString VariableTree::name(NodeId node) const
+{
+    QMutexLocker lock(&m_mutex);
+    return m_nodes[static_cast<size_t>(node)].name;
+}
+
+VariableTree::Kind VariableTree::kind(NodeId node) const
+{
+    QMutexLocker lock(&m_mutex);
+    return m_nodes[static_cast<size_t>(node)].kind;
+}
+
+NodeId VariableTree::parent(NodeId node) const
+{
+    QMutexLocker lock(&m_mutex);
+    return m_nodes[static_cast<size_t>(node)].parent;
+}
+
+int VariableTree::childCount(NodeId node) const
+{
+    QMutexLocker lock(&m_mutex);
+    return static_cast<int>(m_nodes[static_cast<size_t>(node)].children.size());
+}
+
+NodeId VariableTree::child(NodeId node, int row) const
+{
+    QMutexLocker lock(&m_mutex);
+    const auto &children = m_nodes[static_cast<size_t>(node)].children;
+    return row >= 0 && row < static_cast<int>(children.size()) ? children[static_cast<size_t>(row)] : noNode;
+}
+
+int VariableTree::row(NodeId node) const
+{
+    QMutexLocker lock(&m_mutex);
+    return m_nodes[static_cast<size_t>(node)].row;
+}
+
+QStringList VariableTree::childNames(QStringView path) const
+{
+    const NodeId node = find(path);
+    QMutexLocker lock(&m_mutex);
+    QStringList names;
+    if (node == noNode)
+        return names;
+    for (NodeId child : m_nodes[static_cast<size_t>(node)].children)
+        names.append(m_nodes[static_cast<size_t>(child)].name);
+    return names;
+}
+
+int VariableTree::nodeCount() const
+{
+    QMutexLocker lock(&m_mutex);
+    return static_cast<int>(m_nodes.size());
+}
+
+quint16 VariableTree::systemOf(NodeId node) const
+{
+    QMutexLocker lock(&m_mutex);
+    while (node > 0 && m_nodes[static_cast<size_t>(node)].kind != Kind::System)
+        node = m_nodes[static_cast<size_t>(node)].parent;
+    if (node <= 0)
+        return 0xFFFF;
+    for (const auto &info : m_systems) {
+        if (info->node == node)
+            return info->id;
+    }
+    return 0xFFFF;
+}
+
+qint64 VariableTree::lastReceivedMs(quint16 system) const
+{
+    QMutexLocker lock(&m_mutex);
+    const auto it = m_systemIndex.constFind(system);
+    return it == m_systemIndex.cend() ? 0 : m_systems[static_cast<size_t>(*it)]->lastReceivedMs;
+}
+
+// The message that holds `node`'s value and the field index in it (-1 when
+// the node is a message itself), or null when absent.
+const Message *VariableTree::resolveLocked(const Node &node, const Message *&owner, int &field) const
+{
+    owner = nullptr;
+    field = -1;
+    if (node.binding < 0)
+        return nullptr;
+    const Binding &b = *m_bindings[static_cast<size_t>(node.binding)];
+    if (!b.present)
+        return nullptr;
+    // The chain of nodes from the binding's branch down to `node`.
+    std::vector<const Node *> chain;
+    for (const Node *n = &node; n->kind != Kind::Message; n = &m_nodes[static_cast<size_t>(n->parent)])
+        chain.push_back(n);
+    const Message *current = &b.latest;
+    for (auto it = chain.rbegin(); it != chain.rend(); ++it) {
+        const Node &step = **it;
+        if (!current->def())
+            return nullptr;
+        int index = step.field;
+        if (step.kind == Kind::ListItem) {
+            // The list item's field is the list's, already resolved by the parent step.
+            const Node &list = m_nodes[static_cast<size_t>(step.parent)];
+            Q_UNUSED(list);
+            continue;
+        }
+        if (step.ownerDef != current->def() || index < 0 || index >= current->fieldCount()
+            || current->field(index).abbrev != step.name)
+            index = current->def()->indexOf(step.name);
+        if (index < 0)
+            return nullptr;
+        const bool last = it + 1 == chain.rend();
+        const FieldType type = current->field(index).type;
+        if (last) {
+            owner = current;
+            field = index;
+            return current;
+        }
+        if (type == FieldType::Message) {
+            current = current->inlineMessage(index);
+        } else if (type == FieldType::MessageList) {
+            const Node &item = **(it + 1);
+            const auto entries = current->messages(index);
+            if (item.item < 0 || item.item >= static_cast<int>(entries.size()))
+                return nullptr;
+            if (it + 2 == chain.rend()) { // the node is the list item itself
+                owner = &entries[static_cast<size_t>(item.item)];
+                field = -1;
+                return owner;
+            }
+            current = &entries[static_cast<size_t>(item.item)];
+        } else {
+            return nullptr;
+        }
+        if (!current)
+            return nullptr;
+    }
+    owner = current;
+    field = -1;
+    return current;
+}
+
+VariableTree::Snapshot VariableTree::snapshot(NodeId id) const
+{
+    QMutexLocker lock(&m_mutex);
+    Snapshot s;
+    const Node &node = m_nodes[static_cast<size_t>(id)];
+    if (node.kind == Kind::Root)
+        return s;
+    if (node.kind == Kind::System) {
+        for (const auto &info : m_systems) {
+            if (info->node == id) {
+                s.value = info->id;
+                s.text = defaultSystemName(info->id);
+                s.receivedMs = info->lastReceivedMs;
+                s.source = info->id;
+                s.present = info->lastReceivedMs > 0;
+            }
+        }
+        return s;
+    }
+    if (node.binding < 0)
+        return s;
+    const Binding &b = *m_bindings[static_cast<size_t>(node.binding)];
+    s.timestamp = b.latest.header.timestamp;
+    s.receivedMs = b.receivedMs;
+    s.source = b.latest.header.src;
+    s.sourceEntity = b.latest.header.srcEnt;
+    const Message *owner = nullptr;
+    int field = -1;
+    const Message *message = resolveLocked(node, owner, field);
+    if (!message)
+        return s;
+    s.present = true;
+    if (field < 0) {
+        s.value = message->abbrev();
+        s.text = message->abbrev();
+        return s;
+    }
+    const FieldDef &def = message->field(field);
+    switch (def.type) {
+    case FieldType::Message: {
+        const Message *inner = message->inlineMessage(field);
+        s.value = inner ? inner->abbrev() : QString();
+        s.text = inner ? inner->abbrev() : QStringLiteral("none");
+        break;
+    }
+    case FieldType::MessageList:
+        s.value = static_cast<int>(message->messages(field).size());
+        s.text = QStringLiteral("%1 messages").arg(message->messages(field).size());
+        break;
+    case FieldType::RawData:
+        s.value = message->bytes(field);
+        s.text = QStringLiteral("%1 bytes").arg(message->bytes(field).size());
+        break;
+    case FieldType::PlainText:
+        s.value = message->text(field);
+        s.text = s.value.toString();
+        break;
+    case FieldType::Fp32:
+    case FieldType::Fp64:
+        s.value = message->number(field);
+        s.text = QString::number(message->number(field), 'g', 8);
+        break;
+    default:
+        s.value = message->value(field);
+        s.text = message->enumText(field);
+        break;
+    }
+    if (displaysUnit(def))
+        s.unit = def.unit;
+    return s;
+}
+
+// --- Changes -----------------------------------------------------------------------
+
+int VariableTree::addConsumer()
+{
+    QMutexLocker lock(&m_mutex);
+    Q_ASSERT(m_consumers.size() < 32);
+    m_consumers.emplace_back();
+    return static_cast<int>(m_consumers.size()) - 1;
+}
+
+VariableTree::Changes VariableTree::takeChanges(int consumer)
+{
+    QMutexLocker lock(&m_mutex);
+    Consumer &c = m_consumers[static_cast<size_t>(consumer)];
+    Changes changes = std::move(c.structure);
+    c.structure = {};
+    const quint32 bit = 1u << consumer;
+    for (int index : c.changedBindings) {
+        Binding &b = *m_bindings[static_cast<size_t>(index)];
+        b.dirty &= ~bit;
+        changes.changedNodes.insert(changes.changedNodes.end(), b.nodes.begin(), b.nodes.end());
+    }
+    c.changedBindings.clear();
+    return changes;
+}
+
+} // namespace neptus::tree

@@ -1,0 +1,147 @@
+#pragma once
+
+#include "Clock.h"
+#include "Message.h"
+
+#include <QHash>
+#include <QMutex>
+#include <QString>
+#include <QStringList>
+#include <QVariant>
+
+#include <functional>
+#include <memory>
+#include <vector>
+
+namespace neptus::tree {
+
+using NodeId = qint32;
+constexpr NodeId noNode = -1;
+
+// Every message a console receives, per system, as a tree of variables:
+//   system / Message / field             the latest message of that type, from any entity
+//   system / Message@Entity / field      the latest from that entity (not for entity 0 or 255)
+//   system / Message / inline / field    an inline message is a branch
+//   system / Message / list / 3 / field  a message-list has indexed children
+// System names come from Announce (sys_name) or a configured id map, else
+// "0x001f"; entity labels from EntityList/EntityInfo, else the number. Nodes
+// are renamed in place when a name becomes known; nodes are never removed (a
+// list that shrinks leaves its extra children absent).
+//
+// The hot path stores each decoded message once, in a binding resolved once
+// per (system, entity, message type); leaves read their value from it by
+// field index, so ingest costs one hash lookup and one copy per message, not
+// a string lookup per field. Thread-safe: ingest may run on any thread; each
+// consumer (the QML model, the script host) takes the changes since its last
+// look, coalesced: N updates of a message between two looks are one change.
+class VariableTree
+{
+public:
+    enum class Kind : quint8 { Root, System, Message, Field, Inline, List, ListItem };
+
+    // What a node shows.
+    struct Snapshot
+    {
+        QVariant value;      // numbers, strings, bytes; a branch of a nested message shows its type
+        QString text;        // for display: enumeration names, formatted numbers
+        QString unit;
+        double timestamp = 0;      // of the message, seconds since 1970
+        qint64 receivedMs = 0;     // when this console received it (the tree's clock)
+        quint16 source = 0xFFFF;   // IMC id of the sending system
+        quint8 sourceEntity = 0xFF;
+        bool present = false;      // false before any value, or for a list item past the end
+    };
+
+    struct Changes
+    {
+        std::vector<NodeId> newNodes;     // in creation order: parents before children
+        std::vector<NodeId> renamedNodes;
+        std::vector<NodeId> changedNodes; // nodes whose values changed (leaves and their branches)
+        bool isEmpty() const { return newNodes.empty() && renamedNodes.empty() && changedNodes.empty(); }
+    };
+
+    // Writes of the output branch go here (a transport, or a test double).
+    class OutputSink
+    {
+    public:
+        virtual ~OutputSink() = default;
+        virtual void publish(quint16 system, const msg::Message &message) = 0;
+    };
+
+    explicit VariableTree(const Clock *clock = &Clock::system());
+    ~VariableTree();
+    VariableTree(const VariableTree &) = delete;
+    VariableTree &operator=(const VariableTree &) = delete;
+
+    // --- Input -----------------------------------------------------------------
+    // A decoded message from the network (any thread).
+    void ingest(const msg::Message &message);
+    // Known names for system ids, before (or instead of) their Announce.
+    void setSystemName(quint16 id, const QString &name);
+
+    // --- Output ----------------------------------------------------------------
+    void setOutputSink(OutputSink *sink);
+    // Sends `message` to `system` through the sink and records it under
+    // "system/out/Message/..." so consoles show what was commanded. Returns
+    // false (and records nothing) without a sink.
+    bool write(const QString &system, msg::Message message);
+
+    // --- Structure (any thread) --------------------------------------------------
+    NodeId root() const { return 0; }
+    NodeId find(QStringView path) const;  // "lauv/EstimatedState/depth"; noNode if absent
+    QString path(NodeId node) const;
+    QString name(NodeId node) const;
+    Kind kind(NodeId node) const;
+    NodeId parent(NodeId node) const;
+    int childCount(NodeId node) const;
+    NodeId child(NodeId node, int row) const;
+    int row(NodeId node) const;           // index among its parent's children
+    QStringList childNames(QStringView path) const; // for path completion
+    int nodeCount() const;
+    Snapshot snapshot(NodeId node) const;
+    // System id of the system branch above `node`, or 0xFFFF.
+    quint16 systemOf(NodeId node) const;
+    qint64 lastReceivedMs(quint16 system) const;
+    const Clock &clock() const { return *m_clock; }
+
+    // --- Changes ---------------------------------------------------------------
+    // Each consumer registers once and then takes its changes when it wants
+    // (the QML model once per frame, the script host when it runs).
+    int addConsumer();
+    Changes takeChanges(int consumer);
+
+private:
+    struct Node;
+    struct Binding;
+    struct SystemInfo;
+
+    NodeId addNode(NodeId parent, const QString &name, Kind kind, int binding, std::vector<int> path);
+    NodeId childNamed(NodeId parent, QStringView name) const;
+    SystemInfo &systemLocked(quint16 id);
+    Binding &bindingLocked(quint16 system, quint8 entity, const msg::MessageDef *def, bool perEntity);
+    void ensureStructureLocked(NodeId branch, const msg::Message &message);
+    void markChangedLocked(int binding);
+    void renameLocked(NodeId node, const QString &name);
+    void learnNamesLocked(const msg::Message &message, SystemInfo &system);
+    QString entityName(const SystemInfo &system, quint8 entity) const;
+    const msg::Message *resolveLocked(const Node &node, const msg::Message *&owner, int &field) const;
+
+    mutable QMutex m_mutex;
+    const Clock *m_clock;
+    OutputSink *m_sink = nullptr;
+    std::vector<Node> m_nodes;
+    std::vector<std::unique_ptr<Binding>> m_bindings;
+    QHash<quint64, int> m_bindingIndex;     // (system, entity, id, perEntity) → binding
+    QHash<quint16, int> m_systemIndex;      // system id → m_systems
+    std::vector<std::unique_ptr<SystemInfo>> m_systems;
+    QHash<quint16, QString> m_configuredNames;
+
+    struct Consumer
+    {
+        std::vector<int> changedBindings;
+        Changes structure;
+    };
+    std::vector<Consumer> m_consumers;
+};
+
+} // namespace neptus::tree

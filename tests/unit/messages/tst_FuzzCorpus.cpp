@@ -1,0 +1,113 @@
+// The fuzzers' seed corpora and every input a fuzzer ever crashed on
+// (tests/fuzz/regressions/) run here on every build, with the same checks the
+// fuzz targets make, so a fixed crash can never come back unnoticed.
+#include "Codec.h"
+#include "Fixtures.h"
+#include "MessageJson.h"
+
+#include <QDir>
+#include <QDirIterator>
+
+#include <gtest/gtest.h>
+
+using namespace neptus::msg;
+
+namespace {
+
+const QString fuzzDir = QStringLiteral(NEPTUS_SOURCE_DIR "/tests/fuzz");
+
+QStringList inputs(const char *target)
+{
+    QStringList files;
+    for (const char *kind : {"corpus", "regressions"}) {
+        QDirIterator it(fuzzDir + u'/' + QLatin1StringView(kind) + u'/' + QLatin1StringView(target), QDir::Files);
+        while (it.hasNext()) {
+            const QString file = it.next();
+            if (!file.endsWith(QStringLiteral(".keep")))
+                files.append(file);
+        }
+    }
+    files.sort();
+    return files;
+}
+
+QByteArray read(const QString &path)
+{
+    QFile file(path);
+    return file.open(QIODevice::ReadOnly) ? file.readAll() : QByteArray();
+}
+
+std::shared_ptr<const Schema> shipped()
+{
+    QStringList files;
+    const QDir dir(QStringLiteral(NEPTUS_MSGDEFS_DIR));
+    for (const QString &name : dir.entryList({QStringLiteral("*.xml")}, QDir::Files, QDir::Name))
+        files.append(dir.filePath(name));
+    auto schema = Schema::load(files);
+    return schema ? *schema : nullptr;
+}
+
+// What fuzz_decode checks, for one schema.
+void checkDecode(const Codec &codec, const QString &file, const QByteArray &packet)
+{
+    auto message = codec.decode(packet);
+    if (!message)
+        return;
+    const bool bigEndian = packet.size() >= 2 && static_cast<quint8>(packet[0]) == 0xFE;
+    auto again = codec.encode(*message, bigEndian ? Codec::ByteOrder::BigEndian : Codec::ByteOrder::LittleEndian);
+    ASSERT_TRUE(again) << file.toStdString();
+    EXPECT_EQ(again->toHex().toStdString(), packet.toHex().toStdString()) << file.toStdString();
+    auto fromText = fromJson(codec.schema(), toJson(*message));
+    EXPECT_TRUE(fromText) << file.toStdString() << ": " << (fromText ? "" : fromText.error().toStdString());
+}
+
+} // namespace
+
+TEST(FuzzCorpus, DecodeInputs)
+{
+    const auto files = inputs("decode");
+    ASSERT_GE(files.size(), 10);
+    const Codec ours(shipped());
+    int decoded = 0;
+    for (const QString &file : files) {
+        const QByteArray packet = read(file);
+        checkDecode(ours, file, packet);
+        decoded += ours.decode(packet).has_value();
+    }
+    // The seeds made from the shipped definitions decode; the broken ones do not.
+    EXPECT_EQ(decoded, files.size() - 1 - static_cast<int>(inputs("decode").filter(QStringLiteral("regressions")).size()))
+        << "all seeds but 11-truncated.bin decode";
+
+    const QString imc = neptus::test::fixturePath("imc/IMC.xml");
+    if (!QFileInfo::exists(imc))
+        GTEST_SKIP() << "IMC.xml absent: checked with the shipped definitions only";
+    auto full = Schema::load({imc});
+    ASSERT_TRUE(full);
+    const Codec codec(*full);
+    for (const QString &file : files)
+        checkDecode(codec, file, read(file));
+}
+
+TEST(FuzzCorpus, SchemaInputs)
+{
+    const auto files = inputs("schema");
+    ASSERT_GE(files.size(), 4);
+    for (const QString &file : files) {
+        auto schema = Schema::fromData({{QFileInfo(file).fileName(), read(file)}});
+        if (!schema) {
+            EXPECT_FALSE(schema.error().toString().isEmpty()) << file.toStdString();
+            continue;
+        }
+        const Codec codec(*schema);
+        for (const auto &def : (*schema)->messages()) {
+            const Message empty(def.get());
+            auto packet = codec.encode(empty);
+            ASSERT_TRUE(packet) << file.toStdString() << " " << def->abbrev.toStdString();
+            auto back = codec.decode(*packet);
+            ASSERT_TRUE(back) << file.toStdString() << " " << def->abbrev.toStdString();
+            EXPECT_TRUE(*back == empty) << file.toStdString() << " " << def->abbrev.toStdString();
+        }
+    }
+    EXPECT_FALSE(Schema::fromData({{QStringLiteral("03-doctype.xml"), read(fuzzDir + QStringLiteral("/corpus/schema/03-doctype.xml"))}}));
+    EXPECT_TRUE(Schema::fromData({{QStringLiteral("02-small-imc.xml"), read(fuzzDir + QStringLiteral("/corpus/schema/02-small-imc.xml"))}}));
+}

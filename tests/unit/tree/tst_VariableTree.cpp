@@ -1,0 +1,225 @@
+#include "VariableTree.h"
+
+#include "Schema.h"
+
+#include <QDir>
+
+#include <thread>
+
+#include <gtest/gtest.h>
+
+using namespace neptus;
+using namespace neptus::tree;
+using msg::Message;
+
+namespace {
+
+std::shared_ptr<const msg::Schema> shipped()
+{
+    static std::shared_ptr<const msg::Schema> schema = [] {
+        QStringList files;
+        const QDir dir(QStringLiteral(NEPTUS_MSGDEFS_DIR));
+        for (const QString &name : dir.entryList({QStringLiteral("*.xml")}, QDir::Files, QDir::Name))
+            files.append(dir.filePath(name));
+        auto loaded = msg::Schema::load(files);
+        return loaded ? *loaded : nullptr;
+    }();
+    return schema;
+}
+
+Message make(const char *abbrev, quint16 src, quint8 ent = 0xFF)
+{
+    Message m(shipped()->byAbbrev(QString::fromLatin1(abbrev)));
+    m.header.src = src;
+    m.header.srcEnt = ent;
+    m.header.timestamp = 1700000000.0;
+    return m;
+}
+
+Message state(quint16 src, double depth, quint8 ent = 0xFF)
+{
+    Message m = make("EstimatedState", src, ent);
+    m.setNumber(m.def()->indexOf(u"depth"), depth);
+    return m;
+}
+
+class RecordingSink : public VariableTree::OutputSink
+{
+public:
+    void publish(quint16 system, const Message &message) override { sent.push_back({system, message}); }
+    std::vector<std::pair<quint16, Message>> sent;
+};
+
+} // namespace
+
+TEST(VariableTree, MessagesBecomeSystemMessageFieldPaths)
+{
+    ASSERT_TRUE(shipped());
+    ManualClock clock(QDateTime::fromMSecsSinceEpoch(5000, QTimeZone::UTC));
+    VariableTree tree(&clock);
+    tree.ingest(state(0x1f, 12.5));
+    const NodeId depth = tree.find(u"0x001f/EstimatedState/depth");
+    ASSERT_NE(depth, noNode);
+    EXPECT_EQ(tree.path(depth), QStringLiteral("0x001f/EstimatedState/depth"));
+    const auto s = tree.snapshot(depth);
+    EXPECT_TRUE(s.present);
+    EXPECT_DOUBLE_EQ(s.value.toDouble(), 12.5);
+    EXPECT_EQ(s.unit, QStringLiteral("m"));
+    EXPECT_EQ(s.receivedMs, 5000);
+    EXPECT_EQ(s.timestamp, 1700000000.0);
+    EXPECT_EQ(s.source, 0x1f);
+    EXPECT_EQ(tree.kind(depth), VariableTree::Kind::Field);
+    EXPECT_EQ(tree.childNames(u"0x001f/EstimatedState").size(), 20);
+    EXPECT_EQ(tree.childNames(u"").value(0), QStringLiteral("0x001f"));
+
+    // A new value replaces the old one at the same node.
+    tree.ingest(state(0x1f, 30));
+    EXPECT_EQ(tree.find(u"0x001f/EstimatedState/depth"), depth);
+    EXPECT_DOUBLE_EQ(tree.snapshot(depth).value.toDouble(), 30);
+}
+
+TEST(VariableTree, SystemsAreNamedByAnnounceOrConfiguration)
+{
+    VariableTree tree;
+    tree.setSystemName(0x20, QStringLiteral("caravela"));
+    tree.ingest(state(0x1f, 1));
+    tree.ingest(state(0x20, 2));
+    EXPECT_NE(tree.find(u"caravela/EstimatedState/depth"), noNode);
+    const NodeId before = tree.find(u"0x001f/EstimatedState/depth");
+    Message announce = make("Announce", 0x1f);
+    announce.setBytes(announce.def()->indexOf(u"sys_name"), "lauv-xplore-1");
+    tree.ingest(announce);
+    EXPECT_EQ(tree.find(u"0x001f/EstimatedState/depth"), noNode);
+    EXPECT_EQ(tree.find(u"lauv-xplore-1/EstimatedState/depth"), before) << "renamed in place";
+    EXPECT_EQ(tree.systemOf(before), 0x1f);
+}
+
+TEST(VariableTree, EntitiesGetTheirOwnBranchNamedByLabel)
+{
+    VariableTree tree;
+    tree.setSystemName(0x1f, QStringLiteral("lauv"));
+    tree.ingest(state(0x1f, 5, 44));
+    tree.ingest(state(0x1f, 7, 45));
+    EXPECT_DOUBLE_EQ(tree.snapshot(tree.find(u"lauv/EstimatedState/depth")).value.toDouble(), 7) << "latest of any entity";
+    EXPECT_DOUBLE_EQ(tree.snapshot(tree.find(u"lauv/EstimatedState@44/depth")).value.toDouble(), 5);
+    EXPECT_DOUBLE_EQ(tree.snapshot(tree.find(u"lauv/EstimatedState@45/depth")).value.toDouble(), 7);
+
+    Message list = make("EntityList", 0x1f);
+    list.setBytes(list.def()->indexOf(u"list"), "Daemon=0;Navigation=44;Simulator=45");
+    tree.ingest(list);
+    EXPECT_NE(tree.find(u"lauv/EstimatedState@Navigation/depth"), noNode);
+    EXPECT_NE(tree.find(u"lauv/EstimatedState@Simulator/depth"), noNode);
+    EXPECT_EQ(tree.find(u"lauv/EstimatedState@44"), noNode);
+
+    tree.ingest(state(0x1f, 9, 0)); // entity 0: the plain path only
+    EXPECT_EQ(tree.find(u"lauv/EstimatedState@Daemon"), noNode);
+    EXPECT_DOUBLE_EQ(tree.snapshot(tree.find(u"lauv/EstimatedState/depth")).value.toDouble(), 9);
+}
+
+TEST(VariableTree, InlineMessagesAndListsAreBranches)
+{
+    VariableTree tree;
+    tree.setSystemName(0x1f, QStringLiteral("lauv"));
+    Message plan = make("PlanSpecification", 0x1f);
+    std::vector<Message> maneuvers;
+    for (int i = 0; i < 3; ++i) {
+        Message go(shipped()->byAbbrev(u"Goto"));
+        go.setNumber(go.def()->indexOf(u"z"), 2.0 + i);
+        Message pm(shipped()->byAbbrev(u"PlanManeuver"));
+        pm.setBytes(pm.def()->indexOf(u"maneuver_id"), "m" + QByteArray::number(i));
+        pm.setInlineMessage(pm.def()->indexOf(u"data"), go);
+        maneuvers.push_back(pm);
+    }
+    plan.setMessages(plan.def()->indexOf(u"maneuvers"), maneuvers);
+    tree.ingest(plan);
+    EXPECT_EQ(tree.snapshot(tree.find(u"lauv/PlanSpecification/maneuvers")).value.toInt(), 3);
+    EXPECT_EQ(tree.snapshot(tree.find(u"lauv/PlanSpecification/maneuvers/1")).value.toString(), QStringLiteral("PlanManeuver"));
+    EXPECT_EQ(tree.snapshot(tree.find(u"lauv/PlanSpecification/maneuvers/1/maneuver_id")).value.toString(), QStringLiteral("m1"));
+    EXPECT_EQ(tree.snapshot(tree.find(u"lauv/PlanSpecification/maneuvers/2/data")).value.toString(), QStringLiteral("Goto"));
+    EXPECT_DOUBLE_EQ(tree.snapshot(tree.find(u"lauv/PlanSpecification/maneuvers/2/data/z")).value.toDouble(), 4.0);
+
+    // A shorter list leaves the extra items absent, not wrong.
+    maneuvers.resize(1);
+    plan.setMessages(plan.def()->indexOf(u"maneuvers"), maneuvers);
+    tree.ingest(plan);
+    EXPECT_TRUE(tree.snapshot(tree.find(u"lauv/PlanSpecification/maneuvers/0/data/z")).present);
+    EXPECT_FALSE(tree.snapshot(tree.find(u"lauv/PlanSpecification/maneuvers/2/data/z")).present);
+}
+
+TEST(VariableTree, EnumerationsShowTheirNames)
+{
+    VariableTree tree;
+    Message entity = make("EntityState", 0x1f, 12);
+    entity.setInteger(entity.def()->indexOf(u"state"), 3);
+    entity.setBytes(entity.def()->indexOf(u"description"), "battery low");
+    tree.ingest(entity);
+    const auto s = tree.snapshot(tree.find(u"0x001f/EntityState@12/state"));
+    EXPECT_EQ(s.value.toInt(), 3);
+    EXPECT_EQ(s.text, QStringLiteral("ERROR"));
+    EXPECT_EQ(tree.snapshot(tree.find(u"0x001f/EntityState/description")).text, QStringLiteral("battery low"));
+}
+
+TEST(VariableTree, ConsumersGetCoalescedChanges)
+{
+    VariableTree tree;
+    const int model = tree.addConsumer();
+    const int scripts = tree.addConsumer();
+    tree.ingest(state(0x1f, 1));
+    auto first = tree.takeChanges(model);
+    EXPECT_GT(first.newNodes.size(), 20u);
+    const NodeId depth = tree.find(u"0x001f/EstimatedState/depth");
+    EXPECT_EQ(std::count(first.changedNodes.begin(), first.changedNodes.end(), depth), 1);
+
+    // 100 updates between two looks: one change per node.
+    for (int i = 0; i < 100; ++i)
+        tree.ingest(state(0x1f, i));
+    auto second = tree.takeChanges(model);
+    EXPECT_TRUE(second.newNodes.empty());
+    EXPECT_EQ(std::count(second.changedNodes.begin(), second.changedNodes.end(), depth), 1);
+    EXPECT_TRUE(tree.takeChanges(model).isEmpty());
+
+    // The other consumer still sees everything since its own last look.
+    auto other = tree.takeChanges(scripts);
+    EXPECT_EQ(std::count(other.changedNodes.begin(), other.changedNodes.end(), depth), 1);
+    EXPECT_FALSE(other.newNodes.empty());
+}
+
+TEST(VariableTree, WritingTheOutputBranchPublishes)
+{
+    VariableTree tree;
+    tree.setSystemName(0x1f, QStringLiteral("lauv"));
+    Message abort(shipped()->byAbbrev(u"Abort"));
+    EXPECT_FALSE(tree.write(QStringLiteral("lauv"), abort)) << "no sink, nothing sent";
+    RecordingSink sink;
+    tree.setOutputSink(&sink);
+    EXPECT_FALSE(tree.write(QStringLiteral("nobody"), abort));
+    EXPECT_TRUE(tree.write(QStringLiteral("lauv"), abort));
+    ASSERT_EQ(sink.sent.size(), 1u);
+    EXPECT_EQ(sink.sent[0].first, 0x1f);
+    EXPECT_EQ(sink.sent[0].second.header.dst, 0x1f);
+    EXPECT_TRUE(tree.snapshot(tree.find(u"lauv/out/Abort")).present);
+}
+
+TEST(VariableTree, IngestFromManyThreads)
+{
+    VariableTree tree;
+    const int consumer = tree.addConsumer();
+    std::vector<std::thread> threads;
+    for (int t = 0; t < 4; ++t) {
+        threads.emplace_back([&tree, t] {
+            for (int i = 0; i < 2000; ++i)
+                tree.ingest(state(static_cast<quint16>(0x10 + t), i));
+        });
+    }
+    int looks = 0;
+    while (looks < 50) {
+        tree.takeChanges(consumer);
+        ++looks;
+    }
+    for (auto &thread : threads)
+        thread.join();
+    for (int t = 0; t < 4; ++t) {
+        const QString path = QStringLiteral("0x%1/EstimatedState/depth").arg(0x10 + t, 4, 16, QLatin1Char('0'));
+        EXPECT_DOUBLE_EQ(tree.snapshot(tree.find(path)).value.toDouble(), 1999);
+    }
+}
