@@ -1,0 +1,273 @@
+#include "VariableTreeModel.h"
+
+#include "Variable.h"
+
+#include <QSet>
+
+#include <algorithm>
+
+namespace neptus::tree {
+
+VariableTreeModel::VariableTreeModel(VariableTree *tree, QObject *parent)
+    : QAbstractItemModel(parent)
+    , m_tree(tree)
+    , m_consumer(tree->addConsumer())
+{
+    m_knownChildren.assign(1, 0);
+    m_frame.setInterval(16);
+    connect(&m_frame, &QTimer::timeout, this, &VariableTreeModel::sync);
+    m_frame.start();
+    m_ageTimer.setInterval(1000);
+    connect(&m_ageTimer, &QTimer::timeout, this, &VariableTreeModel::refreshAges);
+    m_ageTimer.start();
+}
+
+void VariableTreeModel::setStaleAfter(double seconds)
+{
+    if (qFuzzyCompare(seconds, m_staleAfter))
+        return;
+    m_staleAfter = seconds;
+    emit staleAfterChanged();
+    refreshAges();
+}
+
+QStringList VariableTreeModel::children(const QString &path) const
+{
+    return m_tree->childNames(path);
+}
+
+QModelIndex VariableTreeModel::indexOfPath(const QString &path) const
+{
+    const NodeId node = m_tree->find(path);
+    if (node == noNode || node == m_tree->root())
+        return {};
+    const NodeId parent = m_tree->parent(node);
+    if (static_cast<size_t>(parent) >= m_knownChildren.size() || m_tree->row(node) >= m_knownChildren[static_cast<size_t>(parent)])
+        return {}; // not shown yet: the next frame will
+    return indexOfNode(node);
+}
+
+int VariableTreeModel::listen(const QString &path, std::function<void()> callback)
+{
+    const int id = m_nextListener++;
+    m_listeners.push_back({id, path, m_tree->find(path), std::move(callback)});
+    return id;
+}
+
+void VariableTreeModel::unlisten(int id)
+{
+    std::erase_if(m_listeners, [id](const Listener &l) { return l.id == id; });
+}
+
+void VariableTreeModel::attach(Variable *variable)
+{
+    m_variables.push_back(variable);
+}
+
+void VariableTreeModel::detach(Variable *variable)
+{
+    std::erase_if(m_variables, [variable](const QPointer<Variable> &v) { return v.isNull() || v == variable; });
+}
+
+void VariableTreeModel::resolvePending()
+{
+    for (Listener &listener : m_listeners) {
+        if (listener.node == noNode)
+            listener.node = m_tree->find(listener.path);
+    }
+    for (const QPointer<Variable> &variable : m_variables) {
+        if (variable && variable->node() == noNode)
+            variable->resolve();
+    }
+}
+
+void VariableTreeModel::sync()
+{
+    VariableTree::Changes changes = m_tree->takeChanges(m_consumer);
+    if (changes.isEmpty())
+        return;
+
+    // New rows, in runs of siblings: one insertion per run.
+    if (m_knownChildren.size() < static_cast<size_t>(m_tree->nodeCount()))
+        m_knownChildren.resize(static_cast<size_t>(m_tree->nodeCount()), 0);
+    for (size_t i = 0; i < changes.newNodes.size();) {
+        const NodeId parent = m_tree->parent(changes.newNodes[i]);
+        const int first = m_tree->row(changes.newNodes[i]);
+        size_t j = i + 1;
+        while (j < changes.newNodes.size() && m_tree->parent(changes.newNodes[j]) == parent
+               && m_tree->row(changes.newNodes[j]) == first + static_cast<int>(j - i))
+            ++j;
+        const int last = first + static_cast<int>(j - i) - 1;
+        beginInsertRows(indexOfNode(parent), first, last);
+        m_knownChildren[static_cast<size_t>(parent)] = last + 1;
+        endInsertRows();
+        i = j;
+    }
+    for (NodeId node : changes.renamedNodes)
+        emit dataChanged(indexOfNode(node, NameColumn), indexOfNode(node, NameColumn), {Qt::DisplayRole, NameRole, PathRole});
+
+    // Changed values: one dataChanged per run of sibling rows.
+    std::vector<std::pair<NodeId, int>> rows; // (parent, row)
+    rows.reserve(changes.changedNodes.size());
+    for (NodeId node : changes.changedNodes)
+        rows.emplace_back(m_tree->parent(node), m_tree->row(node));
+    std::sort(rows.begin(), rows.end());
+    rows.erase(std::unique(rows.begin(), rows.end()), rows.end());
+    for (size_t i = 0; i < rows.size();) {
+        size_t j = i + 1;
+        while (j < rows.size() && rows[j].first == rows[i].first && rows[j].second == rows[j - 1].second + 1)
+            ++j;
+        const QModelIndex parent = indexOfNode(rows[i].first);
+        emit dataChanged(index(rows[i].second, 0, parent), index(rows[j - 1].second, ColumnCount - 1, parent));
+        i = j;
+    }
+
+    if (!changes.newNodes.empty() || !changes.renamedNodes.empty())
+        resolvePending();
+
+    // Listeners of a node or of any branch above a changed node.
+    if (!m_listeners.empty() || !m_variables.empty()) {
+        QSet<NodeId> touched;
+        for (NodeId node : changes.changedNodes) {
+            for (NodeId n = node; n != noNode && !touched.contains(n); n = m_tree->parent(n))
+                touched.insert(n);
+        }
+        for (const QPointer<Variable> &variable : m_variables) {
+            if (variable && variable->node() != noNode && touched.contains(variable->node()))
+                variable->refresh();
+        }
+        for (size_t i = 0; i < m_listeners.size(); ++i) {
+            // A callback may add or remove listeners: index, and copy the callback.
+            if (m_listeners[i].node != noNode && touched.contains(m_listeners[i].node)) {
+                auto callback = m_listeners[i].callback;
+                callback();
+            }
+        }
+    }
+    emit synced();
+}
+
+void VariableTreeModel::refreshAges()
+{
+    for (size_t parent = 0; parent < m_knownChildren.size(); ++parent) {
+        const int count = m_knownChildren[parent];
+        if (count == 0)
+            continue;
+        const QModelIndex p = indexOfNode(static_cast<NodeId>(parent));
+        emit dataChanged(index(0, AgeColumn, p), index(count - 1, AgeColumn, p), {Qt::DisplayRole, AgeRole, StaleRole});
+    }
+    for (const QPointer<Variable> &variable : m_variables) {
+        if (variable)
+            variable->refreshAge();
+    }
+}
+
+bool VariableTreeModel::isStale(const VariableTree::Snapshot &snapshot) const
+{
+    if (!snapshot.present)
+        return true;
+    const qint64 now = m_tree->clock().now().toMSecsSinceEpoch();
+    return static_cast<double>(now - snapshot.receivedMs) > m_staleAfter * 1000.0;
+}
+
+NodeId VariableTreeModel::nodeOf(const QModelIndex &index) const
+{
+    return index.isValid() ? static_cast<NodeId>(index.internalId()) : m_tree->root();
+}
+
+QModelIndex VariableTreeModel::indexOfNode(NodeId node, int column) const
+{
+    if (node == m_tree->root() || node == noNode)
+        return {};
+    return createIndex(m_tree->row(node), column, static_cast<quintptr>(node));
+}
+
+QModelIndex VariableTreeModel::index(int row, int column, const QModelIndex &parent) const
+{
+    const NodeId p = nodeOf(parent);
+    if (column < 0 || column >= ColumnCount || row < 0 || static_cast<size_t>(p) >= m_knownChildren.size()
+        || row >= m_knownChildren[static_cast<size_t>(p)] || (parent.isValid() && parent.column() != 0))
+        return {};
+    return createIndex(row, column, static_cast<quintptr>(m_tree->child(p, row)));
+}
+
+QModelIndex VariableTreeModel::parent(const QModelIndex &child) const
+{
+    if (!child.isValid())
+        return {};
+    return indexOfNode(m_tree->parent(nodeOf(child)));
+}
+
+int VariableTreeModel::rowCount(const QModelIndex &parent) const
+{
+    if (parent.isValid() && parent.column() != 0)
+        return 0;
+    const NodeId p = nodeOf(parent);
+    return static_cast<size_t>(p) < m_knownChildren.size() ? m_knownChildren[static_cast<size_t>(p)] : 0;
+}
+
+int VariableTreeModel::columnCount(const QModelIndex &) const
+{
+    return ColumnCount;
+}
+
+QVariant VariableTreeModel::data(const QModelIndex &index, int role) const
+{
+    if (!checkIndex(index, CheckIndexOption::IndexIsValid))
+        return {};
+    const NodeId node = nodeOf(index);
+    if (role == NameRole || (role == Qt::DisplayRole && index.column() == NameColumn))
+        return m_tree->name(node);
+    if (role == PathRole)
+        return m_tree->path(node);
+    if (role == KindRole)
+        return static_cast<int>(m_tree->kind(node));
+    const VariableTree::Snapshot s = m_tree->snapshot(node);
+    const double age = s.present ? (m_tree->clock().now().toMSecsSinceEpoch() - s.receivedMs) / 1000.0 : -1;
+    switch (role) {
+    case Qt::DisplayRole:
+        switch (index.column()) {
+        case ValueColumn: return s.text;
+        case UnitColumn: return s.unit;
+        case AgeColumn: return s.present ? QString::number(age, 'f', 1) + QStringLiteral(" s") : QString();
+        default: return {};
+        }
+    case ValueRole: return s.value;
+    case TextRole: return s.text;
+    case UnitRole: return s.unit;
+    case AgeRole: return age;
+    case StaleRole: return isStale(s);
+    case PresentRole: return s.present;
+    default: return {};
+    }
+}
+
+QVariant VariableTreeModel::headerData(int section, Qt::Orientation orientation, int role) const
+{
+    if (orientation != Qt::Horizontal || role != Qt::DisplayRole)
+        return {};
+    switch (section) {
+    case NameColumn: return tr("Name");
+    case ValueColumn: return tr("Value");
+    case UnitColumn: return tr("Unit");
+    case AgeColumn: return tr("Age");
+    default: return {};
+    }
+}
+
+QHash<int, QByteArray> VariableTreeModel::roleNames() const
+{
+    QHash<int, QByteArray> roles = QAbstractItemModel::roleNames();
+    roles.insert(NameRole, "name");
+    roles.insert(ValueRole, "value");
+    roles.insert(TextRole, "text");
+    roles.insert(UnitRole, "unit");
+    roles.insert(AgeRole, "age");
+    roles.insert(StaleRole, "stale");
+    roles.insert(PathRole, "path");
+    roles.insert(KindRole, "kind");
+    roles.insert(PresentRole, "present");
+    return roles;
+}
+
+} // namespace neptus::tree

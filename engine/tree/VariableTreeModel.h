@@ -1,0 +1,114 @@
+#pragma once
+
+#include "VariableTree.h"
+
+#include <QAbstractItemModel>
+#include <QElapsedTimer>
+#include <QPointer>
+#include <QTimer>
+#include <QtQml/qqmlregistration.h>
+
+#include <functional>
+
+namespace neptus::tree {
+
+class Variable;
+
+// The variable tree as a Qt item model for TreeView (columns: name, value,
+// unit, age), and the hub that feeds `Variable` objects and C++ listeners.
+// It lives on the GUI thread and looks at the tree once per frame (sync()),
+// so any number of updates of a variable between two frames make one
+// notification: one dataChanged per changed range of siblings, never a storm.
+// Rows only ever get added (the tree never removes nodes).
+class VariableTreeModel : public QAbstractItemModel
+{
+    Q_OBJECT
+    QML_ELEMENT
+    QML_UNCREATABLE("made by the console, which owns the tree")
+    Q_PROPERTY(double staleAfter READ staleAfter WRITE setStaleAfter NOTIFY staleAfterChanged)
+    Q_PROPERTY(int nodeCount READ nodeCount NOTIFY synced)
+
+public:
+    enum Column { NameColumn, ValueColumn, UnitColumn, AgeColumn, ColumnCount };
+    enum Role {
+        NameRole = Qt::UserRole + 1,
+        ValueRole,      // the raw value (number, string)
+        TextRole,       // the value for display, with enumeration names
+        UnitRole,
+        AgeRole,        // seconds since it was received
+        StaleRole,      // no update within staleAfter seconds
+        PathRole,
+        KindRole,
+        PresentRole,
+    };
+    Q_ENUM(Role)
+
+    explicit VariableTreeModel(VariableTree *tree, QObject *parent = nullptr);
+
+    VariableTree *tree() const { return m_tree; }
+
+    // Seconds without an update after which a value is stale (default 5).
+    double staleAfter() const { return m_staleAfter; }
+    void setStaleAfter(double seconds);
+
+    int nodeCount() const { return m_tree->nodeCount(); }
+
+    // Children of a path, for the designer's path pickers ("" lists systems).
+    Q_INVOKABLE QStringList children(const QString &path) const;
+    Q_INVOKABLE QModelIndex indexOfPath(const QString &path) const;
+
+    // Calls `callback` on the GUI thread, once per frame at most, when the
+    // node at `path` or anything under it changed. Works for paths that do
+    // not exist yet. Returns an id for unlisten().
+    int listen(const QString &path, std::function<void()> callback);
+    void unlisten(int id);
+
+    // Takes the tree's changes and notifies views, Variables and listeners.
+    // Runs by itself every frame (16 ms); tests call it directly.
+    Q_INVOKABLE void sync();
+
+    // Used by Variable.
+    void attach(Variable *variable);
+    void detach(Variable *variable);
+
+    // QAbstractItemModel
+    QModelIndex index(int row, int column, const QModelIndex &parent = {}) const override;
+    QModelIndex parent(const QModelIndex &child) const override;
+    int rowCount(const QModelIndex &parent = {}) const override;
+    int columnCount(const QModelIndex &parent = {}) const override;
+    QVariant data(const QModelIndex &index, int role = Qt::DisplayRole) const override;
+    QVariant headerData(int section, Qt::Orientation orientation, int role = Qt::DisplayRole) const override;
+    QHash<int, QByteArray> roleNames() const override;
+
+signals:
+    void staleAfterChanged();
+    void synced();
+
+private:
+    NodeId nodeOf(const QModelIndex &index) const;
+    QModelIndex indexOfNode(NodeId node, int column = 0) const;
+    bool isStale(const VariableTree::Snapshot &snapshot) const;
+    void refreshAges();
+    void resolvePending();
+
+    VariableTree *m_tree;
+    int m_consumer;
+    double m_staleAfter = 5.0;
+    // What views know: the number of children of each node they were told of.
+    std::vector<int> m_knownChildren;
+    QTimer m_frame;
+    QTimer m_ageTimer;
+
+    struct Listener
+    {
+        int id;
+        QString path;
+        NodeId node;
+        std::function<void()> callback;
+    };
+    std::vector<Listener> m_listeners;
+    int m_nextListener = 1;
+    std::vector<QPointer<Variable>> m_variables;
+};
+
+} // namespace neptus::tree

@@ -1,0 +1,187 @@
+#include "Variable.h"
+#include "VariableTreeModel.h"
+
+#include "Schema.h"
+
+#include <QAbstractItemModelTester>
+#include <QDir>
+#include <QSignalSpy>
+
+#include <gtest/gtest.h>
+
+using namespace neptus;
+using namespace neptus::tree;
+using msg::Message;
+
+namespace {
+
+std::shared_ptr<const msg::Schema> shipped()
+{
+    static std::shared_ptr<const msg::Schema> schema = [] {
+        QStringList files;
+        const QDir dir(QStringLiteral(NEPTUS_MSGDEFS_DIR));
+        for (const QString &name : dir.entryList({QStringLiteral("*.xml")}, QDir::Files, QDir::Name))
+            files.append(dir.filePath(name));
+        auto loaded = msg::Schema::load(files);
+        return loaded ? *loaded : nullptr;
+    }();
+    return schema;
+}
+
+Message state(quint16 src, double depth)
+{
+    Message m(shipped()->byAbbrev(u"EstimatedState"));
+    m.header.src = src;
+    m.setNumber(m.def()->indexOf(u"depth"), depth);
+    return m;
+}
+
+Message heartbeat(quint16 src)
+{
+    Message m(shipped()->byAbbrev(u"Heartbeat"));
+    m.header.src = src;
+    return m;
+}
+
+struct Fixture : ::testing::Test
+{
+    ManualClock clock{QDateTime::fromMSecsSinceEpoch(1'000'000, QTimeZone::UTC)};
+    VariableTree tree{&clock};
+    VariableTreeModel model{&tree};
+    QAbstractItemModelTester tester{&model, QAbstractItemModelTester::FailureReportingMode::Fatal};
+};
+
+} // namespace
+
+TEST_F(Fixture, RowsAppearAtTheNextFrame)
+{
+    tree.setSystemName(0x1f, QStringLiteral("lauv"));
+    tree.ingest(state(0x1f, 3));
+    EXPECT_EQ(model.rowCount(), 0) << "views learn of new rows at the frame, not before";
+    QSignalSpy inserted(&model, &QAbstractItemModel::rowsInserted);
+    model.sync();
+    EXPECT_EQ(model.rowCount(), 1);
+    EXPECT_EQ(inserted.count(), 3) << "system, message, and the 20 fields as one run";
+    const QModelIndex system = model.index(0, 0);
+    EXPECT_EQ(model.data(system).toString(), QStringLiteral("lauv"));
+    const QModelIndex message = model.index(0, 0, system);
+    EXPECT_EQ(model.data(message, VariableTreeModel::NameRole).toString(), QStringLiteral("EstimatedState"));
+    EXPECT_EQ(model.rowCount(message), 20);
+    const QModelIndex depth = model.indexOfPath(QStringLiteral("lauv/EstimatedState/depth"));
+    ASSERT_TRUE(depth.isValid());
+    EXPECT_EQ(model.data(depth, VariableTreeModel::ValueRole).toDouble(), 3.0);
+    EXPECT_EQ(model.data(depth.siblingAtColumn(VariableTreeModel::ValueColumn)).toString(), QStringLiteral("3"));
+    EXPECT_EQ(model.data(depth.siblingAtColumn(VariableTreeModel::UnitColumn)).toString(), QStringLiteral("m"));
+    EXPECT_EQ(model.parent(depth), message);
+    EXPECT_EQ(model.children(QStringLiteral("lauv")), QStringList{QStringLiteral("EstimatedState")});
+}
+
+TEST_F(Fixture, ManyUpdatesInOneFrameAreOneNotification)
+{
+    tree.ingest(state(0x1f, 0));
+    model.sync();
+    const QModelIndex depth = model.indexOfPath(QStringLiteral("0x001f/EstimatedState/depth"));
+    QSignalSpy changed(&model, &QAbstractItemModel::dataChanged);
+    for (int i = 1; i <= 1000; ++i)
+        tree.ingest(state(0x1f, i));
+    model.sync();
+    int covering = 0;
+    for (const auto &signal : changed) {
+        const auto topLeft = signal[0].value<QModelIndex>();
+        const auto bottomRight = signal[1].value<QModelIndex>();
+        if (topLeft.parent() == depth.parent() && topLeft.row() <= depth.row() && bottomRight.row() >= depth.row())
+            ++covering;
+    }
+    EXPECT_EQ(covering, 1);
+    EXPECT_LE(changed.count(), 3) << "the 20 fields are one range, plus the message branch row";
+    EXPECT_EQ(model.data(depth, VariableTreeModel::ValueRole).toDouble(), 1000.0);
+    changed.clear();
+    model.sync();
+    EXPECT_EQ(changed.count(), 0) << "nothing new, nothing said";
+}
+
+TEST_F(Fixture, ValuesGoStaleWithoutUpdates)
+{
+    model.setStaleAfter(2.0);
+    tree.ingest(state(0x1f, 1));
+    model.sync();
+    const QModelIndex depth = model.indexOfPath(QStringLiteral("0x001f/EstimatedState/depth"));
+    EXPECT_FALSE(model.data(depth, VariableTreeModel::StaleRole).toBool());
+    clock.advance(1500);
+    EXPECT_FALSE(model.data(depth, VariableTreeModel::StaleRole).toBool());
+    EXPECT_DOUBLE_EQ(model.data(depth, VariableTreeModel::AgeRole).toDouble(), 1.5);
+    clock.advance(1000);
+    EXPECT_TRUE(model.data(depth, VariableTreeModel::StaleRole).toBool());
+    tree.ingest(state(0x1f, 2));
+    model.sync();
+    EXPECT_FALSE(model.data(depth, VariableTreeModel::StaleRole).toBool());
+}
+
+TEST_F(Fixture, VariablesFollowPathsBeforeTheyExistAndAcrossRenames)
+{
+    Variable depth;
+    depth.setTree(&model);
+    depth.setPath(QStringLiteral("lauv/EstimatedState/depth"));
+    EXPECT_FALSE(depth.present());
+    EXPECT_TRUE(depth.stale());
+    QSignalSpy changed(&depth, &Variable::changed);
+
+    tree.ingest(state(0x1f, 4)); // not yet named: "0x001f/..."
+    model.sync();
+    EXPECT_FALSE(depth.present());
+
+    Message announce(shipped()->byAbbrev(u"Announce"));
+    announce.header.src = 0x1f;
+    announce.setBytes(announce.def()->indexOf(u"sys_name"), "lauv");
+    tree.ingest(announce);
+    model.sync();
+    EXPECT_TRUE(depth.present());
+    EXPECT_DOUBLE_EQ(depth.value().toDouble(), 4);
+    EXPECT_EQ(depth.unit(), QStringLiteral("m"));
+    EXPECT_FALSE(depth.stale());
+
+    changed.clear();
+    for (int i = 0; i < 50; ++i)
+        tree.ingest(state(0x1f, 10 + i));
+    model.sync();
+    EXPECT_EQ(changed.count(), 1);
+    EXPECT_DOUBLE_EQ(depth.value().toDouble(), 59);
+
+    changed.clear();
+    tree.ingest(heartbeat(0x1f)); // another message of the same system
+    model.sync();
+    EXPECT_EQ(changed.count(), 0);
+
+    model.setStaleAfter(1);
+    clock.advance(1500);
+    depth.refreshAge();
+    EXPECT_TRUE(depth.stale());
+    EXPECT_DOUBLE_EQ(depth.age(), 1.5);
+}
+
+TEST_F(Fixture, BranchListenersHearChangesBeneath)
+{
+    tree.setSystemName(0x1f, QStringLiteral("lauv"));
+    tree.setSystemName(0x20, QStringLiteral("caravela"));
+    int lauvCalls = 0, depthCalls = 0, caravelaCalls = 0;
+    model.listen(QStringLiteral("lauv"), [&] { ++lauvCalls; });
+    model.listen(QStringLiteral("lauv/EstimatedState/depth"), [&] { ++depthCalls; });
+    const int id = model.listen(QStringLiteral("caravela"), [&] { ++caravelaCalls; });
+    for (int i = 0; i < 10; ++i)
+        tree.ingest(state(0x1f, i));
+    model.sync();
+    EXPECT_EQ(lauvCalls, 1);
+    EXPECT_EQ(depthCalls, 1);
+    EXPECT_EQ(caravelaCalls, 0);
+    tree.ingest(heartbeat(0x1f));
+    model.sync();
+    EXPECT_EQ(lauvCalls, 2);
+    EXPECT_EQ(depthCalls, 1) << "a heartbeat is not a depth";
+    tree.ingest(state(0x20, 1));
+    model.sync();
+    EXPECT_EQ(caravelaCalls, 1);
+    model.unlisten(id);
+    tree.ingest(state(0x20, 2));
+    model.sync();
+    EXPECT_EQ(caravelaCalls, 1);
+}
