@@ -482,6 +482,25 @@ int VariableTree::nodeCount() const
     return static_cast<int>(m_nodes.size());
 }
 
+QString VariableTree::systemName(quint16 id) const
+{
+    QMutexLocker lock(&m_mutex);
+    const auto it = m_systemIndex.constFind(id);
+    if (it != m_systemIndex.cend())
+        return m_nodes[static_cast<size_t>(m_systems[static_cast<size_t>(*it)]->node)].name;
+    const QString configured = m_configuredNames.value(id);
+    return configured.isEmpty() ? defaultSystemName(id) : configured;
+}
+
+QString VariableTree::entityLabel(quint16 system, quint8 entity) const
+{
+    QMutexLocker lock(&m_mutex);
+    const auto it = m_systemIndex.constFind(system);
+    if (it == m_systemIndex.cend())
+        return QString::number(entity);
+    return entityName(*m_systems[static_cast<size_t>(*it)], entity);
+}
+
 quint16 VariableTree::systemOf(NodeId node) const
 {
     QMutexLocker lock(&m_mutex);

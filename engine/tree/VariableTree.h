@@ -99,6 +99,10 @@ public:
     QStringList childNames(QStringView path) const; // for path completion
     int nodeCount() const;
     Snapshot snapshot(NodeId node) const;
+    // The name a system is shown by ("lauv-xplore-1", or "0x001f" until known).
+    QString systemName(quint16 id) const;
+    // An entity's label ("Navigation"), or its number until known.
+    QString entityLabel(quint16 system, quint8 entity) const;
     // System id of the system branch above `node`, or 0xFFFF.
     quint16 systemOf(NodeId node) const;
     qint64 lastReceivedMs(quint16 system) const;

@@ -1,0 +1,118 @@
+#include "AlarmListModel.h"
+
+#include <QDateTime>
+#include <QPointer>
+
+namespace neptus::alarms {
+
+AlarmListModel::AlarmListModel(AlarmGraph *graph, QObject *parent)
+    : QAbstractListModel(parent)
+    , m_graph(graph)
+{
+    QPointer<AlarmListModel> self(this);
+    m_graph->setAnnouncer([self](const AlarmGraph::Alarm &alarm) {
+        // May come from a script's or the network's thread.
+        QMetaObject::invokeMethod(self, [self, alarm] {
+            if (self)
+                emit self->announced(alarm.origin, alarm.level, alarm.message);
+        }, Qt::QueuedConnection);
+    });
+    m_timer.setInterval(100);
+    connect(&m_timer, &QTimer::timeout, this, &AlarmListModel::refresh);
+    m_timer.start();
+    refresh();
+}
+
+int AlarmListModel::unacknowledged() const
+{
+    return static_cast<int>(std::count_if(m_rows.begin(), m_rows.end(), [](const auto &a) { return !a.acknowledged; }));
+}
+
+void AlarmListModel::refresh()
+{
+    const quint64 version = m_graph->version();
+    if (version == m_seenVersion)
+        return;
+    m_seenVersion = version;
+    const std::vector<AlarmGraph::Alarm> now = m_graph->activeAlarms();
+    const int before = count();
+    const int unackedBefore = unacknowledged();
+
+    // Rows whose alarm is gone, from the bottom up.
+    for (int row = count() - 1; row >= 0; --row) {
+        const auto node = m_rows[static_cast<size_t>(row)].node;
+        if (std::none_of(now.begin(), now.end(), [node](const auto &a) { return a.node == node; })) {
+            beginRemoveRows({}, row, row);
+            m_rows.erase(m_rows.begin() + row);
+            endRemoveRows();
+        }
+    }
+    // Changed rows in place, new ones at the end (alarms keep the order they were raised in).
+    for (const AlarmGraph::Alarm &alarm : now) {
+        auto it = std::find_if(m_rows.begin(), m_rows.end(), [&](const auto &a) { return a.node == alarm.node; });
+        if (it != m_rows.end()) {
+            if (it->level != alarm.level || it->message != alarm.message || it->acknowledged != alarm.acknowledged
+                || it->origin != alarm.origin || it->sinceMs != alarm.sinceMs) {
+                *it = alarm;
+                const QModelIndex changed = index(static_cast<int>(it - m_rows.begin()));
+                emit dataChanged(changed, changed);
+            }
+        } else {
+            beginInsertRows({}, count(), count());
+            m_rows.push_back(alarm);
+            endInsertRows();
+        }
+    }
+    if (count() != before || unacknowledged() != unackedBefore)
+        emit countChanged();
+    const int root = m_graph->rootLevel();
+    if (root != m_rootLevel) {
+        m_rootLevel = root;
+        emit rootLevelChanged();
+    }
+}
+
+void AlarmListModel::acknowledge(int row)
+{
+    if (row < 0 || row >= count())
+        return;
+    m_graph->acknowledge(m_rows[static_cast<size_t>(row)].node);
+    refresh();
+}
+
+void AlarmListModel::acknowledgeAll()
+{
+    m_graph->acknowledgeAll();
+    refresh();
+}
+
+int AlarmListModel::rowCount(const QModelIndex &parent) const
+{
+    return parent.isValid() ? 0 : count();
+}
+
+QVariant AlarmListModel::data(const QModelIndex &index, int role) const
+{
+    if (!checkIndex(index, CheckIndexOption::IndexIsValid | CheckIndexOption::ParentIsInvalid))
+        return {};
+    const AlarmGraph::Alarm &alarm = m_rows[static_cast<size_t>(index.row())];
+    switch (role) {
+    case Qt::DisplayRole:
+    case MessageRole: return alarm.message;
+    case OriginRole: return alarm.origin;
+    case LevelRole: return static_cast<int>(alarm.level);
+    case LevelNameRole: return levelName(alarm.level);
+    case SinceRole: return QDateTime::fromMSecsSinceEpoch(alarm.sinceMs, QTimeZone::UTC);
+    case AcknowledgedRole: return alarm.acknowledged;
+    default: return {};
+    }
+}
+
+QHash<int, QByteArray> AlarmListModel::roleNames() const
+{
+    return {{OriginRole, "origin"},     {LevelRole, "level"}, {LevelNameRole, "levelName"},
+            {MessageRole, "message"},   {SinceRole, "since"}, {AcknowledgedRole, "acknowledged"},
+            {Qt::DisplayRole, "display"}};
+}
+
+} // namespace neptus::alarms

@@ -1,0 +1,58 @@
+#pragma once
+
+#include "AlarmGraph.h"
+
+#include <QAbstractListModel>
+#include <QTimer>
+#include <QtQml/qqmlregistration.h>
+
+namespace neptus::alarms {
+
+// The active alarms for an alarm window (origin, level, message, since,
+// acknowledged) and the console's overall level for the status LED. Looks at
+// the graph a few times a second and updates rows in place, so a view keeps
+// its scroll position and selection.
+class AlarmListModel : public QAbstractListModel
+{
+    Q_OBJECT
+    QML_ELEMENT
+    QML_UNCREATABLE("made by the console, which owns the alarm graph")
+    Q_PROPERTY(int rootLevel READ rootLevel NOTIFY rootLevelChanged)
+    Q_PROPERTY(QString rootLevelName READ rootLevelName NOTIFY rootLevelChanged)
+    Q_PROPERTY(int count READ count NOTIFY countChanged)
+    Q_PROPERTY(int unacknowledged READ unacknowledged NOTIFY countChanged)
+
+public:
+    enum Role { OriginRole = Qt::UserRole + 1, LevelRole, LevelNameRole, MessageRole, SinceRole, AcknowledgedRole };
+
+    explicit AlarmListModel(AlarmGraph *graph, QObject *parent = nullptr);
+
+    int rootLevel() const { return m_rootLevel; }
+    QString rootLevelName() const { return levelName(static_cast<Level>(m_rootLevel)); }
+    int count() const { return static_cast<int>(m_rows.size()); }
+    int unacknowledged() const;
+
+    Q_INVOKABLE void acknowledge(int row);
+    Q_INVOKABLE void acknowledgeAll();
+    // Looks at the graph now (it does so by itself every 100 ms).
+    Q_INVOKABLE void refresh();
+
+    int rowCount(const QModelIndex &parent = {}) const override;
+    QVariant data(const QModelIndex &index, int role = Qt::DisplayRole) const override;
+    QHash<int, QByteArray> roleNames() const override;
+
+signals:
+    void rootLevelChanged();
+    void countChanged();
+    // An alarm rose to Error or Failure: flash, play a sound. Once per rise.
+    void announced(const QString &origin, int level, const QString &message);
+
+private:
+    AlarmGraph *m_graph;
+    std::vector<AlarmGraph::Alarm> m_rows;
+    quint64 m_seenVersion = ~quint64(0);
+    int m_rootLevel = Unknown;
+    QTimer m_timer;
+};
+
+} // namespace neptus::alarms

@@ -1,0 +1,53 @@
+#pragma once
+
+#include "AlarmGraph.h"
+#include "Message.h"
+#include "VariableTree.h"
+
+#include <QHash>
+#include <QMutex>
+
+namespace neptus::alarms {
+
+// Turns what systems say and fail to say into alarms:
+//  - each EntityState sets the level of node "systems/<system>/<entity>"
+//    (BOOT → Info, NORMAL → Normal, FAULT → Warning, ERROR → Error,
+//    FAILURE → Failure) with the entity's description as the message;
+//  - a system silent for longer than its usual interval plus the comms
+//    timeout (default 2 s) gets Warning "communications lost" on its node,
+//    Error after three times that; both clear when traffic returns.
+// Names come from the variable tree (Announce, EntityList, configuration).
+class HealthMonitor
+{
+public:
+    HealthMonitor(AlarmGraph &graph, const tree::VariableTree &tree, const Clock *clock = &Clock::system());
+
+    // Every received message (any thread).
+    void observe(const msg::Message &message);
+    // Checks for silence; call a few times a second (the console does).
+    void check();
+    void setCommsTimeout(double seconds);
+
+    static Level levelOfEntityState(qint64 state);
+
+private:
+    struct System
+    {
+        AlarmGraph::NodeId node = AlarmGraph::noNode;
+        QString name;
+        qint64 lastMs = 0;
+        double intervalMs = 1000; // running average between messages
+        Level lost = Normal;
+    };
+
+    System &systemLocked(quint16 id);
+
+    AlarmGraph &m_graph;
+    const tree::VariableTree &m_tree;
+    const Clock *m_clock;
+    QMutex m_mutex;
+    double m_timeoutMs = 2000;
+    QHash<quint16, System> m_systems;
+};
+
+} // namespace neptus::alarms

@@ -1,0 +1,200 @@
+#include "AlarmGraph.h"
+#include "AlarmListModel.h"
+#include "HealthMonitor.h"
+
+#include "Schema.h"
+
+#include <QAbstractItemModelTester>
+#include <QDir>
+#include <QSignalSpy>
+
+#include <gtest/gtest.h>
+
+using namespace neptus;
+using namespace neptus::alarms;
+
+namespace {
+
+std::shared_ptr<const msg::Schema> shipped()
+{
+    static std::shared_ptr<const msg::Schema> schema = [] {
+        QStringList files;
+        const QDir dir(QStringLiteral(NEPTUS_MSGDEFS_DIR));
+        for (const QString &name : dir.entryList({QStringLiteral("*.xml")}, QDir::Files, QDir::Name))
+            files.append(dir.filePath(name));
+        auto loaded = msg::Schema::load(files);
+        return loaded ? *loaded : nullptr;
+    }();
+    return schema;
+}
+
+msg::Message entityState(quint16 src, quint8 ent, int state, const char *description)
+{
+    msg::Message m(shipped()->byAbbrev(u"EntityState"));
+    m.header.src = src;
+    m.header.srcEnt = ent;
+    m.setInteger(m.def()->indexOf(u"state"), state);
+    m.setBytes(m.def()->indexOf(u"description"), description);
+    return m;
+}
+
+} // namespace
+
+TEST(AlarmGraph, NodesShowTheHighestLevelBeneathThem)
+{
+    AlarmGraph graph;
+    const auto battery = graph.ensure(QStringLiteral("systems/lauv/Batteries"));
+    const auto navigation = graph.ensure(QStringLiteral("systems/lauv/Navigation"));
+    const auto lauv = graph.find(QStringLiteral("systems/lauv"));
+    const auto systems = graph.find(QStringLiteral("systems"));
+    ASSERT_NE(lauv, AlarmGraph::noNode);
+    EXPECT_EQ(graph.path(battery), QStringLiteral("systems/lauv/Batteries"));
+
+    graph.raise(battery, Normal);
+    graph.raise(navigation, Normal);
+    EXPECT_EQ(graph.rootLevel(), Normal);
+    graph.raise(battery, Warning, QStringLiteral("battery at 20 %"));
+    EXPECT_EQ(graph.level(lauv), Warning);
+    EXPECT_EQ(graph.level(systems), Warning);
+    EXPECT_EQ(graph.rootLevel(), Warning);
+    EXPECT_EQ(graph.ownLevel(lauv), Unknown);
+    graph.raise(navigation, Failure, QStringLiteral("no fix"));
+    EXPECT_EQ(graph.rootLevel(), Failure);
+    graph.raise(navigation, Normal);
+    EXPECT_EQ(graph.rootLevel(), Warning) << "back to the highest remaining";
+    graph.raise(lauv, Error, QStringLiteral("communications lost"));
+    EXPECT_EQ(graph.rootLevel(), Error);
+    graph.clear(lauv);
+    graph.clear(battery);
+    EXPECT_EQ(graph.rootLevel(), Normal);
+}
+
+TEST(AlarmGraph, AcknowledgeAndAnnounceOnce)
+{
+    ManualClock clock(QDateTime::fromMSecsSinceEpoch(1000, QTimeZone::UTC));
+    AlarmGraph graph(&clock);
+    std::vector<AlarmGraph::Alarm> announced;
+    graph.setAnnouncer([&](const AlarmGraph::Alarm &a) { announced.push_back(a); });
+    const auto depth = graph.ensure(QStringLiteral("scripts/depth"));
+    const auto power = graph.ensure(QStringLiteral("systems/lauv/Power"));
+
+    graph.raise(depth, Warning, QStringLiteral("deep"));
+    EXPECT_TRUE(announced.empty()) << "warnings are listed, not announced";
+    clock.advance(500);
+    graph.raise(depth, Error, QStringLiteral("too deep"));
+    ASSERT_EQ(announced.size(), 1u);
+    EXPECT_EQ(announced[0].origin, QStringLiteral("scripts/depth"));
+    EXPECT_EQ(announced[0].level, Error);
+    for (int i = 0; i < 10; ++i)
+        graph.raise(depth, Error, QStringLiteral("too deep: %1 m").arg(20 + i));
+    graph.raise(depth, Failure, QStringLiteral("way too deep"));
+    EXPECT_EQ(announced.size(), 1u) << "staying at Error or worse is not announced again";
+
+    graph.raise(power, Warning, QStringLiteral("low"));
+    auto alarms = graph.activeAlarms();
+    ASSERT_EQ(alarms.size(), 2u);
+    EXPECT_EQ(alarms[0].node, depth) << "in the order raised";
+    EXPECT_EQ(alarms[0].sinceMs, 1500);
+    graph.acknowledge(depth);
+    EXPECT_TRUE(graph.activeAlarms()[0].acknowledged);
+    graph.raise(power, Error, QStringLiteral("critical"));
+    EXPECT_EQ(announced.size(), 2u);
+    graph.acknowledgeAll();
+    for (const auto &a : graph.activeAlarms())
+        EXPECT_TRUE(a.acknowledged);
+    graph.raise(power, Failure, QStringLiteral("dead"));
+    EXPECT_FALSE(graph.activeAlarms()[1].acknowledged) << "worse news needs a new acknowledgement";
+    graph.clear(depth);
+    graph.raise(depth, Error, QStringLiteral("again"));
+    EXPECT_EQ(announced.size(), 3u) << "a new rise is announced";
+}
+
+TEST(HealthMonitor, EntityStatesBecomeEntityAlarms)
+{
+    tree::VariableTree tree;
+    tree.setSystemName(0x1f, QStringLiteral("lauv"));
+    AlarmGraph graph;
+    HealthMonitor health(graph, tree);
+    msg::Message list(shipped()->byAbbrev(u"EntityList"));
+    list.header.src = 0x1f;
+    list.setBytes(list.def()->indexOf(u"list"), "Batteries=12;Navigation=44");
+    tree.ingest(list);
+
+    auto feed = [&](const msg::Message &m) {
+        tree.ingest(m);
+        health.observe(m);
+    };
+    feed(entityState(0x1f, 12, 2, "battery low"));
+    const auto node = graph.find(QStringLiteral("systems/lauv/Batteries"));
+    ASSERT_NE(node, AlarmGraph::noNode);
+    EXPECT_EQ(graph.ownLevel(node), Warning);
+    EXPECT_EQ(graph.message(node), QStringLiteral("battery low"));
+    feed(entityState(0x1f, 44, 4, "no fix"));
+    EXPECT_EQ(graph.level(graph.find(QStringLiteral("systems/lauv"))), Failure);
+    feed(entityState(0x1f, 44, 1, "active"));
+    feed(entityState(0x1f, 12, 0, "booting"));
+    EXPECT_EQ(graph.ownLevel(node), Info);
+    EXPECT_EQ(graph.rootLevel(), Info);
+    EXPECT_EQ(HealthMonitor::levelOfEntityState(3), Error);
+}
+
+TEST(HealthMonitor, CommunicationsLossIsRaisedAndCleared)
+{
+    ManualClock clock(QDateTime::fromMSecsSinceEpoch(0, QTimeZone::UTC));
+    tree::VariableTree tree(&clock);
+    tree.setSystemName(0x1f, QStringLiteral("lauv"));
+    AlarmGraph graph(&clock);
+    HealthMonitor health(graph, tree, &clock);
+    msg::Message beat(shipped()->byAbbrev(u"Heartbeat"));
+    beat.header.src = 0x1f;
+    for (int i = 0; i < 20; ++i) { // a steady 1 Hz heartbeat
+        health.observe(beat);
+        clock.advance(1000);
+        health.check();
+    }
+    const auto lauv = graph.find(QStringLiteral("systems/lauv"));
+    EXPECT_EQ(graph.ownLevel(lauv), Unknown) << "no alarm while it talks";
+    clock.advance(1500); // 2.5 s of silence: within cadence + 2 s
+    health.check();
+    EXPECT_LT(graph.ownLevel(lauv), Warning);
+    clock.advance(1000); // 3.5 s
+    health.check();
+    EXPECT_EQ(graph.ownLevel(lauv), Warning);
+    EXPECT_TRUE(graph.message(lauv).startsWith(QStringLiteral("communications lost"))) << graph.message(lauv).toStdString();
+    clock.advance(7000); // 10.5 s: more than three times the limit
+    health.check();
+    EXPECT_EQ(graph.ownLevel(lauv), Error);
+    health.observe(beat);
+    EXPECT_EQ(graph.ownLevel(lauv), Normal) << "cleared when traffic returns";
+    EXPECT_LT(graph.rootLevel(), Warning);
+}
+
+TEST(AlarmListModel, ListsAlarmsAndTheRootLevel)
+{
+    AlarmGraph graph;
+    AlarmListModel model(&graph);
+    QAbstractItemModelTester tester(&model, QAbstractItemModelTester::FailureReportingMode::Fatal);
+    QSignalSpy announced(&model, &AlarmListModel::announced);
+    const auto a = graph.ensure(QStringLiteral("scripts/a"));
+    const auto b = graph.ensure(QStringLiteral("systems/x/y"));
+    graph.raise(a, Warning, QStringLiteral("first"));
+    graph.raise(b, Error, QStringLiteral("second"));
+    model.refresh();
+    ASSERT_EQ(model.rowCount(), 2);
+    EXPECT_EQ(model.rootLevel(), Error);
+    EXPECT_EQ(model.rootLevelName(), QStringLiteral("Error"));
+    EXPECT_EQ(model.data(model.index(0), AlarmListModel::OriginRole).toString(), QStringLiteral("scripts/a"));
+    EXPECT_EQ(model.data(model.index(1), AlarmListModel::LevelNameRole).toString(), QStringLiteral("Error"));
+    EXPECT_EQ(model.unacknowledged(), 2);
+    model.acknowledge(1);
+    EXPECT_TRUE(model.data(model.index(1), AlarmListModel::AcknowledgedRole).toBool());
+    EXPECT_EQ(model.unacknowledged(), 1);
+    graph.clear(a);
+    model.refresh();
+    ASSERT_EQ(model.rowCount(), 1);
+    EXPECT_EQ(model.data(model.index(0), AlarmListModel::MessageRole).toString(), QStringLiteral("second"));
+    QCoreApplication::processEvents();
+    EXPECT_EQ(announced.count(), 1);
+    model.acknowledgeAll();
+    EXPECT_EQ(model.unacknowledged(), 0);
+}
