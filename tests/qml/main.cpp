@@ -1,5 +1,14 @@
 // Qt Quick Test runner for the project's tst_*.qml files, with the project's
-// QML modules (Neptus.Engine, Neptus.Components, Neptus.Shell) built in.
+// QML modules (Neptus.Engine, Neptus.Components, Neptus.Shell) built in, and
+// a `Fixtures` singleton (module Neptus.Testing) that feeds a real variable
+// tree and alarm graph, so tests drive the real models.
+#include "AlarmGraph.h"
+#include "AlarmListModel.h"
+#include "Schema.h"
+#include "VariableTreeModel.h"
+
+#include <QDir>
+#include <QQmlEngine>
 #include <QQuickStyle>
 #include <QtQml/qqmlextensionplugin.h>
 #include <QtQuickTest>
@@ -7,6 +16,56 @@
 Q_IMPORT_QML_PLUGIN(Neptus_EnginePlugin)
 Q_IMPORT_QML_PLUGIN(Neptus_ComponentsPlugin)
 Q_IMPORT_QML_PLUGIN(Neptus_ShellPlugin)
+
+using namespace neptus;
+
+class Fixtures : public QObject
+{
+    Q_OBJECT
+    Q_PROPERTY(neptus::tree::VariableTreeModel *treeModel READ treeModel CONSTANT)
+    Q_PROPERTY(neptus::alarms::AlarmListModel *alarmModel READ alarmModel CONSTANT)
+
+public:
+    Fixtures()
+    {
+        QStringList files;
+        const QDir dir(QStringLiteral(NEPTUS_MSGDEFS_DIR));
+        for (const QString &name : dir.entryList({QStringLiteral("*.xml")}, QDir::Files, QDir::Name))
+            files.append(dir.filePath(name));
+        m_schema = *msg::Schema::load(files);
+    }
+
+    tree::VariableTreeModel *treeModel() { return &m_treeModel; }
+    alarms::AlarmListModel *alarmModel() { return &m_alarmModel; }
+
+    Q_INVOKABLE void nameSystem(int id, const QString &name) { m_tree.setSystemName(static_cast<quint16>(id), name); }
+    Q_INVOKABLE void ingest(const QString &abbrev, int src, const QVariantMap &fields)
+    {
+        msg::Message m(m_schema->byAbbrev(abbrev));
+        m.header.src = static_cast<quint16>(src);
+        for (auto it = fields.cbegin(); it != fields.cend(); ++it) {
+            const int index = m.def()->indexOf(it.key());
+            if (it.value().typeId() == QMetaType::QString)
+                m.setBytes(index, it.value().toString().toUtf8());
+            else
+                m.setNumber(index, it.value().toDouble());
+        }
+        m_tree.ingest(m);
+    }
+    Q_INVOKABLE void raise(const QString &path, int level, const QString &message)
+    {
+        m_graph.raise(m_graph.ensure(path), static_cast<alarms::Level>(level), message);
+    }
+    Q_INVOKABLE void advanceClock(int milliseconds) { m_clock.advance(milliseconds); }
+
+private:
+    std::shared_ptr<const msg::Schema> m_schema;
+    ManualClock m_clock{QDateTime::fromMSecsSinceEpoch(1'700'000'000'000, QTimeZone::UTC)};
+    tree::VariableTree m_tree{&m_clock};
+    tree::VariableTreeModel m_treeModel{&m_tree};
+    alarms::AlarmGraph m_graph{&m_clock};
+    alarms::AlarmListModel m_alarmModel{&m_graph};
+};
 
 class Setup : public QObject
 {
@@ -16,6 +75,12 @@ public slots:
     {
         QCoreApplication::setOrganizationName(QStringLiteral("neptus-qt-tests"));
         QQuickStyle::setStyle(QStringLiteral("Basic"));
+    }
+    void qmlEngineAvailable(QQmlEngine *)
+    {
+        // Test-only: the runner's own fixture, not part of any product module.
+        static Fixtures fixtures;
+        qmlRegisterSingletonInstance("Neptus.Testing", 1, 0, "Fixtures", &fixtures);
     }
 };
 
