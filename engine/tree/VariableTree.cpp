@@ -100,6 +100,7 @@ NodeId VariableTree::addNode(NodeId parent, const QString &name, Kind kind, int 
     node.row = static_cast<int>(m_nodes[static_cast<size_t>(parent)].children.size());
     m_nodes.push_back(std::move(node));
     m_nodes[static_cast<size_t>(parent)].children.push_back(id);
+    ++m_structureVersion;
     if (binding >= 0)
         m_bindings[static_cast<size_t>(binding)]->nodes.push_back(id);
     for (Consumer &consumer : m_consumers)
@@ -122,6 +123,7 @@ void VariableTree::renameLocked(NodeId node, const QString &name)
     if (n.name == name)
         return;
     n.name = name;
+    ++m_structureVersion;
     for (Consumer &consumer : m_consumers)
         consumer.structure.renamedNodes.push_back(node);
 }
@@ -458,6 +460,14 @@ NodeId VariableTree::child(NodeId node, int row) const
     return row >= 0 && row < static_cast<int>(children.size()) ? children[static_cast<size_t>(row)] : noNode;
 }
 
+NodeId VariableTree::childByName(NodeId node, QStringView name) const
+{
+    QMutexLocker lock(&m_mutex);
+    if (node < 0 || node >= static_cast<NodeId>(m_nodes.size()))
+        return noNode;
+    return childNamed(node, name);
+}
+
 int VariableTree::row(NodeId node) const
 {
     QMutexLocker lock(&m_mutex);
@@ -474,6 +484,12 @@ QStringList VariableTree::childNames(QStringView path) const
     for (NodeId child : m_nodes[static_cast<size_t>(node)].children)
         names.append(m_nodes[static_cast<size_t>(child)].name);
     return names;
+}
+
+quint64 VariableTree::structureVersion() const
+{
+    QMutexLocker lock(&m_mutex);
+    return m_structureVersion;
 }
 
 int VariableTree::nodeCount() const

@@ -95,9 +95,12 @@ public:
     NodeId parent(NodeId node) const;
     int childCount(NodeId node) const;
     NodeId child(NodeId node, int row) const;
+    NodeId childByName(NodeId node, QStringView name) const; // noNode if absent
     int row(NodeId node) const;           // index among its parent's children
     QStringList childNames(QStringView path) const; // for path completion
     int nodeCount() const;
+    // Grows whenever a node is added or renamed: caches of names check it.
+    quint64 structureVersion() const;
     Snapshot snapshot(NodeId node) const;
     // The name a system is shown by ("lauv-xplore-1", or "0x001f" until known).
     QString systemName(quint16 id) const;
@@ -146,6 +149,7 @@ private:
         Changes structure;
     };
     std::vector<Consumer> m_consumers;
+    quint64 m_structureVersion = 0;
 };
 
 } // namespace neptus::tree

@@ -1,0 +1,78 @@
+#pragma once
+
+#include "AlarmLevel.h"
+#include "VariableTree.h"
+
+#include <QJSEngine>
+#include <QJSValue>
+#include <QObject>
+#include <QSet>
+
+#include <memory>
+#include <optional>
+
+namespace neptus::scripting {
+
+// Where a script does not compile.
+struct CompileError
+{
+    int line = 0;   // 1-based, in the script's own text
+    int column = 0; // 1-based; 0 when unknown
+    QString message;
+    QString toString() const;
+};
+
+// What one run of a script gave.
+struct RunResult
+{
+    alarms::Level level = alarms::Unknown;
+    QString message;
+    QSet<tree::NodeId> reads; // what it read: it runs again when one of these changes
+    bool failed = false;      // threw, timed out, or returned something that is not a level
+};
+
+// One sandboxed JavaScript engine that runs alarm scripts against the
+// variable tree. A script is the body of a function:
+//
+//   if (lauv.EstimatedState.depth > 20)
+//       return Error("too deep: " + lauv.EstimatedState.depth);
+//   return Normal;
+//
+// Systems are reached by name (`lauv`, or `sys["lauv-xplore-1"]` for names
+// that are not identifiers), then message, field, as in the tree. The levels
+// are Normal, Info, Warning, Error and Failure, each usable as a value or
+// called with a message; a script that throws is at Error with the message.
+// Every value read is recorded, through a Proxy over the tree, so the host
+// knows what the script depends on without parsing it.
+// The sandbox has no Qt object, no console, no files, no network, no module
+// import; scripts that mention `import` are refused.
+// Not thread-safe: one runner belongs to one thread.
+class ScriptRunner
+{
+public:
+    explicit ScriptRunner(tree::VariableTree &tree);
+    ~ScriptRunner();
+
+    // Syntax and sandbox check, with the line and column of the first problem.
+    static std::optional<CompileError> check(const QString &source);
+
+    // Compiles `source`; the id is for run(). Errors as check() gives them.
+    std::expected<int, CompileError> compile(const QString &source);
+    void remove(int script);
+    RunResult run(int script);
+
+    // For a watchdog on another thread: stops the running script.
+    QJSEngine &engine() { return m_engine; }
+
+private:
+    class Bridge;
+    tree::VariableTree &m_tree;
+    QJSEngine m_engine;
+    std::unique_ptr<Bridge> m_bridge;
+    QJSValue m_call;   // prelude's runner: (compiledFunction) → {level, message}
+    QJSValue m_compile;
+    QHash<int, QJSValue> m_scripts;
+    int m_nextId = 1;
+};
+
+} // namespace neptus::scripting

@@ -1,0 +1,75 @@
+// Alarm script evaluations per second: the depth script of the docs, run
+// against a tree with a live EstimatedState, with read tracking, on one core.
+// Run: tools/bench scripts
+#include "ScriptRunner.h"
+
+#include "Schema.h"
+
+#include <QCoreApplication>
+#include <QDir>
+
+#include <benchmark/benchmark.h>
+
+using namespace neptus;
+
+namespace {
+
+std::shared_ptr<const msg::Schema> shipped()
+{
+    QStringList files;
+    const QDir dir(QStringLiteral(NEPTUS_MSGDEFS_DIR));
+    for (const QString &name : dir.entryList({QStringLiteral("*.xml")}, QDir::Files, QDir::Name))
+        files.append(dir.filePath(name));
+    auto loaded = msg::Schema::load(files);
+    return loaded ? *loaded : nullptr;
+}
+
+void runScript(benchmark::State &state, const QString &source)
+{
+    const auto schema = shipped();
+    tree::VariableTree tree;
+    tree.setSystemName(0x1f, QStringLiteral("lauv"));
+    msg::Message m(schema->byAbbrev(u"EstimatedState"));
+    m.header.src = 0x1f;
+    m.setNumber(m.def()->indexOf(u"depth"), 25);
+    tree.ingest(m);
+    scripting::ScriptRunner runner(tree);
+    const auto id = runner.compile(source);
+    if (!id) {
+        state.SkipWithError(id.error().toString().toStdString());
+        return;
+    }
+    for (auto _ : state) {
+        auto result = runner.run(*id);
+        benchmark::DoNotOptimize(result);
+    }
+    state.SetItemsProcessed(state.iterations());
+}
+
+void BM_DepthScript(benchmark::State &state)
+{
+    runScript(state, QStringLiteral("if (lauv.EstimatedState.depth > 20)\n"
+                                    "    return Error(\"too deep: \" + lauv.EstimatedState.depth);\n"
+                                    "return Normal;"));
+}
+
+void BM_TrivialScript(benchmark::State &state)
+{
+    runScript(state, QStringLiteral("return Normal;"));
+}
+
+BENCHMARK(BM_DepthScript);
+BENCHMARK(BM_TrivialScript);
+
+} // namespace
+
+int main(int argc, char **argv)
+{
+    QCoreApplication app(argc, argv);
+    benchmark::Initialize(&argc, argv);
+    if (benchmark::ReportUnrecognizedArguments(argc, argv))
+        return 1;
+    benchmark::RunSpecifiedBenchmarks();
+    benchmark::Shutdown();
+    return 0;
+}
