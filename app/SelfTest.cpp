@@ -1,6 +1,7 @@
 #include "SelfTest.h"
 
 #include "CommandLine.h"
+#include "ConsoleSession.h"
 
 #include <QDir>
 #include <QFile>
@@ -99,9 +100,16 @@ int checkConsoles(const CommandLine &commandLine)
     // `--self-test --console FILE` checks the user's own layout too.
     if (!consoles.contains(commandLine.consoleFile))
         consoles.append(commandLine.consoleFile);
+    auto schema = neptus::msg::Schema::load(neptus::msg::Schema::filesIn(QStringLiteral(NEPTUS_MSGDEFS_DIR)));
+    if (!schema) {
+        g_problems.append(schema.error().toString());
+        return 0;
+    }
     for (const QString &file : std::as_const(consoles)) {
+        ConsoleSession session(*schema);
         QQmlApplicationEngine engine;
-        engine.setInitialProperties({{QStringLiteral("consoleUrl"), QUrl::fromLocalFile(file)},
+        engine.setInitialProperties({{QStringLiteral("session"), QVariant::fromValue(&session)},
+                                     {QStringLiteral("consoleUrl"), QUrl::fromLocalFile(file)},
                                      {QStringLiteral("visible"), false},
                                      {QStringLiteral("width"), commandLine.windowSize.width()},
                                      {QStringLiteral("height"), commandLine.windowSize.height()}});

@@ -1,6 +1,7 @@
 // neptus: the console. Parses the command line, then shows a console layout,
 // renders it to a PNG (--screenshot) or checks every QML file (--self-test).
 #include "CommandLine.h"
+#include "ConsoleSession.h"
 #include "SelfTest.h"
 
 #include <QGuiApplication>
@@ -52,8 +53,16 @@ int main(int argc, char *argv[])
     if (commandLine->selfTest)
         return runSelfTest(*commandLine);
 
+    auto schema = neptus::msg::Schema::load(neptus::msg::Schema::filesIn(QStringLiteral(NEPTUS_MSGDEFS_DIR)));
+    if (!schema) {
+        std::fprintf(stderr, "neptus: %s\n", qPrintable(schema.error().toString()));
+        return 1;
+    }
+    ConsoleSession session(*schema);
+
     QQmlApplicationEngine engine;
     engine.setInitialProperties({
+        {QStringLiteral("session"), QVariant::fromValue(&session)},
         {QStringLiteral("consoleUrl"), QUrl::fromLocalFile(commandLine->consoleFile)},
         {QStringLiteral("initialPalette"), commandLine->palette},
         {QStringLiteral("width"), commandLine->windowSize.width()},

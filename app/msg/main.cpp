@@ -26,15 +26,6 @@ int fail(const QString &message)
     return 1;
 }
 
-QStringList defaultDefinitions()
-{
-    const QDir dir(QStringLiteral(NEPTUS_MSGDEFS_DIR));
-    QStringList files;
-    for (const QString &name : dir.entryList({QStringLiteral("*.xml")}, QDir::Files, QDir::Name))
-        files.append(dir.filePath(name));
-    return files;
-}
-
 QByteArray readStandardInput()
 {
     QFile in;
@@ -199,7 +190,7 @@ int main(int argc, char *argv[])
 
     QStringList files = parser.values(defs);
     if (files.isEmpty())
-        files = defaultDefinitions();
+        files = Schema::filesIn(QStringLiteral(NEPTUS_MSGDEFS_DIR));
     auto schema = Schema::load(files);
     if (!schema)
         return fail(schema.error().toString());

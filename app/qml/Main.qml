@@ -8,6 +8,8 @@ ApplicationWindow {
     id: window
 
     required property url consoleUrl
+    // The console's tree, alarms and scripts; null in previews and tests of the shell alone.
+    property ConsoleSession session: null
     // "day", "dusk" or "night" from the command line; empty = as the user left it.
     property string initialPalette: ""
     readonly property alias consoleLoader: consoleLoader
@@ -42,6 +44,7 @@ ApplicationWindow {
 
     header: TitleBar {
         consoleTitle: consoleLoader.title
+        alarms: window.session ? window.session.alarms : null
         onPaletteToggleRequested: window.togglePalette()
     }
 

@@ -8,9 +8,16 @@ Rectangle {
     id: bar
 
     property string consoleTitle
-    // Root level of the alarm graph; the alarm engine feeds it (issue: alarms).
-    property int level: 0
+    // The console's alarms: the LED shows their overall level and flashes
+    // when one rises to Error or worse.
+    property AlarmListModel alarms: null
+    readonly property int level: alarms ? alarms.rootLevel : AlarmLevel.Unknown
     signal paletteToggleRequested()
+
+    Connections {
+        target: bar.alarms
+        function onAnnounced() { flash.restart() }
+    }
 
     implicitHeight: Theme.titleBarHeight
     color: Theme.titleBar
@@ -30,8 +37,16 @@ Rectangle {
         spacing: Theme.spacing * 2
 
         StatusLed {
+            id: led
             objectName: "statusLed"
             level: bar.level
+            SequentialAnimation {
+                id: flash
+                objectName: "flash"
+                loops: 6
+                NumberAnimation { target: led; property: "opacity"; to: 0.2; duration: 250 }
+                NumberAnimation { target: led; property: "opacity"; to: 1.0; duration: 250 }
+            }
         }
         Text {
             objectName: "consoleTitle"

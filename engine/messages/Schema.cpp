@@ -1,6 +1,7 @@
 #include "Schema.h"
 
 #include <QCryptographicHash>
+#include <QDir>
 #include <QRegularExpression>
 
 #include <algorithm>
@@ -577,6 +578,15 @@ std::expected<std::shared_ptr<const Schema>, XmlError> Schema::load(const QStrin
     if (auto ok = loader.finish(); !ok)
         return std::unexpected(ok.error());
     return schema;
+}
+
+QStringList Schema::filesIn(const QString &directory)
+{
+    const QDir dir(directory);
+    QStringList files;
+    for (const QString &name : dir.entryList({QStringLiteral("*.xml")}, QDir::Files, QDir::Name))
+        files.append(dir.filePath(name));
+    return files;
 }
 
 std::expected<std::shared_ptr<const Schema>, XmlError>

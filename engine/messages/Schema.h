@@ -128,6 +128,8 @@ public:
     // the file and line: unknown types, dangling references, duplicate ids or
     // names (also across files), unsupported headers.
     static std::expected<std::shared_ptr<const Schema>, xml::XmlError> load(const QStringList &files);
+    // The definition files of a folder (*.xml, by name): how msgdefs/ is loaded.
+    static QStringList filesIn(const QString &directory);
     // The same from documents already in memory (name, contents), for tests and fuzzing.
     static std::expected<std::shared_ptr<const Schema>, xml::XmlError>
     fromData(const QList<std::pair<QString, QByteArray>> &documents);

@@ -27,11 +27,7 @@ namespace {
 std::shared_ptr<const msg::Schema> shipped()
 {
     static std::shared_ptr<const msg::Schema> schema = [] {
-        QStringList files;
-        const QDir dir(QStringLiteral(NEPTUS_MSGDEFS_DIR));
-        for (const QString &name : dir.entryList({QStringLiteral("*.xml")}, QDir::Files, QDir::Name))
-            files.append(dir.filePath(name));
-        auto loaded = msg::Schema::load(files);
+        auto loaded = msg::Schema::load(msg::Schema::filesIn(QStringLiteral(NEPTUS_MSGDEFS_DIR)));
         return loaded ? *loaded : nullptr;
     }();
     return schema;

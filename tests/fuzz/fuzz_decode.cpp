@@ -25,9 +25,7 @@ std::shared_ptr<const Schema> loadSchema()
     if (QFileInfo::exists(imc)) {
         files.append(imc);
     } else {
-        const QDir dir(QStringLiteral(NEPTUS_MSGDEFS_DIR));
-        for (const QString &name : dir.entryList({QStringLiteral("*.xml")}, QDir::Files, QDir::Name))
-            files.append(dir.filePath(name));
+        files = Schema::filesIn(QStringLiteral(NEPTUS_MSGDEFS_DIR));
     }
     auto schema = Schema::load(files);
     if (!schema) {

@@ -28,11 +28,7 @@ class Fixtures : public QObject
 public:
     Fixtures()
     {
-        QStringList files;
-        const QDir dir(QStringLiteral(NEPTUS_MSGDEFS_DIR));
-        for (const QString &name : dir.entryList({QStringLiteral("*.xml")}, QDir::Files, QDir::Name))
-            files.append(dir.filePath(name));
-        m_schema = *msg::Schema::load(files);
+        m_schema = *msg::Schema::load(msg::Schema::filesIn(QStringLiteral(NEPTUS_MSGDEFS_DIR)));
     }
 
     tree::VariableTreeModel *treeModel() { return &m_treeModel; }

@@ -2,6 +2,8 @@ import QtQuick
 import QtTest
 import Neptus.Components
 import Neptus.Shell
+import Neptus.Engine
+import Neptus.Testing
 
 TestCase {
     id: test
@@ -29,6 +31,21 @@ TestCase {
         Theme.palette = Theme.Night
         compare(button.text, "Night")
         compare(bar.color, Theme.titleBar)
+    }
+
+    function test_statusLedShowsTheAlarmsAndFlashesOnErrors() {
+        const bar = createTemporaryObject(titleBarComponent, this, { alarms: Fixtures.alarmModel })
+        const led = findChild(bar, "statusLed")
+        Fixtures.raise("scripts/shell-test", AlarmLevel.Warning, "look")
+        Fixtures.alarmModel.refresh()
+        tryCompare(led, "level", AlarmLevel.Warning)
+        verify(!findChild(bar, "flash").running, "warnings do not flash")
+        Fixtures.raise("scripts/shell-test", AlarmLevel.Error, "act")
+        Fixtures.alarmModel.refresh()
+        tryCompare(led, "level", AlarmLevel.Error)
+        tryCompare(findChild(bar, "flash"), "running", true)
+        Fixtures.raise("scripts/shell-test", AlarmLevel.Normal, "")
+        Fixtures.alarmModel.refresh()
     }
 
     function test_loadsAConsoleFile() {

@@ -39,11 +39,7 @@ QByteArray read(const QString &path)
 
 std::shared_ptr<const Schema> shipped()
 {
-    QStringList files;
-    const QDir dir(QStringLiteral(NEPTUS_MSGDEFS_DIR));
-    for (const QString &name : dir.entryList({QStringLiteral("*.xml")}, QDir::Files, QDir::Name))
-        files.append(dir.filePath(name));
-    auto schema = Schema::load(files);
+    auto schema = Schema::load(Schema::filesIn(QStringLiteral(NEPTUS_MSGDEFS_DIR)));
     return schema ? *schema : nullptr;
 }
 

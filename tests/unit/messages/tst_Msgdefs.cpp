@@ -14,11 +14,7 @@ namespace {
 
 QStringList shippedFiles()
 {
-    const QDir dir(QStringLiteral(NEPTUS_MSGDEFS_DIR));
-    QStringList files;
-    for (const QString &name : dir.entryList({QStringLiteral("*.xml")}, QDir::Files, QDir::Name))
-        files.append(dir.filePath(name));
-    return files;
+    return Schema::filesIn(QStringLiteral(NEPTUS_MSGDEFS_DIR));
 }
 
 } // namespace

@@ -1,0 +1,52 @@
+#pragma once
+
+#include "AlarmGraph.h"
+#include "AlarmListModel.h"
+#include "HealthMonitor.h"
+#include "ScriptHost.h"
+#include "VariableTree.h"
+#include "VariableTreeModel.h"
+
+#include <QObject>
+#include <QTimer>
+#include <QtQml/qqmlregistration.h>
+
+#include <memory>
+
+// Everything one running console is made of, in one place: the message
+// definitions, the variable tree and its QML model, the alarm graph and its
+// list model, the health monitor and the alarm scripts. The shell hands it to
+// QML as a property; transports (a later issue) feed ingest().
+class ConsoleSession : public QObject
+{
+    Q_OBJECT
+    QML_ELEMENT
+    QML_UNCREATABLE("made by the program")
+    Q_PROPERTY(neptus::tree::VariableTreeModel *tree READ treeModel CONSTANT)
+    Q_PROPERTY(neptus::alarms::AlarmListModel *alarms READ alarmModel CONSTANT)
+    Q_PROPERTY(neptus::scripting::ScriptHost *scripts READ scripts CONSTANT)
+
+public:
+    explicit ConsoleSession(std::shared_ptr<const neptus::msg::Schema> schema, QObject *parent = nullptr);
+    ~ConsoleSession() override;
+
+    const neptus::msg::Schema &schema() const { return *m_schema; }
+    neptus::tree::VariableTree &variableTree() { return m_tree; }
+    neptus::alarms::AlarmGraph &alarmGraph() { return m_graph; }
+    neptus::tree::VariableTreeModel *treeModel() { return &m_treeModel; }
+    neptus::alarms::AlarmListModel *alarmModel() { return &m_alarmModel; }
+    neptus::scripting::ScriptHost *scripts() { return m_scripts.get(); }
+
+    // A decoded message from any transport (any thread).
+    void ingest(const neptus::msg::Message &message);
+
+private:
+    std::shared_ptr<const neptus::msg::Schema> m_schema;
+    neptus::tree::VariableTree m_tree;
+    neptus::tree::VariableTreeModel m_treeModel{&m_tree};
+    neptus::alarms::AlarmGraph m_graph;
+    neptus::alarms::AlarmListModel m_alarmModel{&m_graph};
+    neptus::alarms::HealthMonitor m_health{m_graph, m_tree};
+    std::unique_ptr<neptus::scripting::ScriptHost> m_scripts;
+    QTimer m_healthCheck;
+};
