@@ -562,14 +562,13 @@ std::expected<void, XmlError> Schema::Loader::finish()
 
 // --- Schema --------------------------------------------------------------------
 
-std::expected<std::shared_ptr<const Schema>, XmlError> Schema::load(const QStringList &files)
+template<typename ReadDocument>
+std::expected<std::shared_ptr<const Schema>, XmlError> Schema::build(qsizetype count, ReadDocument read)
 {
     auto schema = std::shared_ptr<Schema>(new Schema);
     Loader loader(*schema);
-    if (files.isEmpty())
-        return std::unexpected(XmlError{{}, 0, 0, QStringLiteral("no message definition files given")});
-    for (const QString &file : files) {
-        auto doc = XmlDocument::load(file);
+    for (qsizetype i = 0; i < count; ++i) {
+        auto doc = read(i);
         if (!doc)
             return std::unexpected(doc.error());
         if (auto ok = loader.add(*doc); !ok)
@@ -578,6 +577,13 @@ std::expected<std::shared_ptr<const Schema>, XmlError> Schema::load(const QStrin
     if (auto ok = loader.finish(); !ok)
         return std::unexpected(ok.error());
     return schema;
+}
+
+std::expected<std::shared_ptr<const Schema>, XmlError> Schema::load(const QStringList &files)
+{
+    if (files.isEmpty())
+        return std::unexpected(XmlError{{}, 0, 0, QStringLiteral("no message definition files given")});
+    return build(files.size(), [&](qsizetype i) { return XmlDocument::load(files[i]); });
 }
 
 QStringList Schema::filesIn(const QString &directory)
@@ -592,18 +598,8 @@ QStringList Schema::filesIn(const QString &directory)
 std::expected<std::shared_ptr<const Schema>, XmlError>
 Schema::fromData(const QList<std::pair<QString, QByteArray>> &documents)
 {
-    auto schema = std::shared_ptr<Schema>(new Schema);
-    Loader loader(*schema);
-    for (const auto &[name, data] : documents) {
-        auto doc = XmlDocument::parse(data, name);
-        if (!doc)
-            return std::unexpected(doc.error());
-        if (auto ok = loader.add(*doc); !ok)
-            return std::unexpected(ok.error());
-    }
-    if (auto ok = loader.finish(); !ok)
-        return std::unexpected(ok.error());
-    return schema;
+    return build(documents.size(),
+                 [&](qsizetype i) { return XmlDocument::parse(documents[i].second, documents[i].first); });
 }
 
 const MessageDef *Schema::byAbbrev(QStringView abbrev) const

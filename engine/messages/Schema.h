@@ -164,6 +164,8 @@ public:
 private:
     class Loader;
     friend class Loader;
+    template<typename ReadDocument>
+    static std::expected<std::shared_ptr<const Schema>, xml::XmlError> build(qsizetype count, ReadDocument read);
 
     std::vector<std::unique_ptr<MessageDef>> m_messages; // by id
     std::vector<const MessageDef *> m_byId;

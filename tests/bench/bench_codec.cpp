@@ -3,6 +3,8 @@
 // and of a PlanSpecification carrying 100 Goto maneuvers.
 // Run: tools/bench codec   (figures and reference rates in BENCHMARKS.md)
 #include "Codec.h"
+#include "BenchMain.h"
+#include "Schemas.h"
 #include "Crc16.h"
 
 #include <QCoreApplication>
@@ -20,8 +22,7 @@ const QString fixtures = QStringLiteral(NEPTUS_SHARED_DIR "/fixtures/imc/");
 
 std::shared_ptr<const Schema> schema()
 {
-    static auto loaded = Schema::load({fixtures + QStringLiteral("IMC.xml")});
-    return loaded ? *loaded : nullptr;
+    return neptus::test::imcSchema();
 }
 
 QByteArray vector(const char *name)
@@ -162,16 +163,10 @@ BENCHMARK(BM_EncodePlanSpecification100Gotos);
 
 int main(int argc, char **argv)
 {
-    QCoreApplication app(argc, argv);
     if (!schema() || vector("EstimatedState").isEmpty()) {
         std::fprintf(stderr, "bench_codec: SKIPPED: needs %s (IMC.xml and vectors.txt; ../shared beside the checkout)\n",
                      qPrintable(fixtures));
         return 77;
     }
-    benchmark::Initialize(&argc, argv);
-    if (benchmark::ReportUnrecognizedArguments(argc, argv))
-        return 1;
-    benchmark::RunSpecifiedBenchmarks();
-    benchmark::Shutdown();
-    return 0;
+    return neptus::test::runBenchmarks(argc, argv);
 }

@@ -1,6 +1,8 @@
 // Alarm script evaluations per second: the depth script of the docs, run
 // against a tree with a live EstimatedState, with read tracking, on one core.
 // Run: tools/bench scripts
+#include "BenchMain.h"
+#include "Schemas.h"
 #include "ScriptRunner.h"
 
 #include "Schema.h"
@@ -14,15 +16,9 @@ using namespace neptus;
 
 namespace {
 
-std::shared_ptr<const msg::Schema> shipped()
-{
-    auto loaded = msg::Schema::load(msg::Schema::filesIn(QStringLiteral(NEPTUS_MSGDEFS_DIR)));
-    return loaded ? *loaded : nullptr;
-}
-
 void runScript(benchmark::State &state, const QString &source)
 {
-    const auto schema = shipped();
+    const auto schema = neptus::test::shippedSchema();
     tree::VariableTree tree;
     tree.setSystemName(0x1f, QStringLiteral("lauv"));
     msg::Message m(schema->byAbbrev(u"EstimatedState"));
@@ -61,11 +57,5 @@ BENCHMARK(BM_TrivialScript);
 
 int main(int argc, char **argv)
 {
-    QCoreApplication app(argc, argv);
-    benchmark::Initialize(&argc, argv);
-    if (benchmark::ReportUnrecognizedArguments(argc, argv))
-        return 1;
-    benchmark::RunSpecifiedBenchmarks();
-    benchmark::Shutdown();
-    return 0;
+    return neptus::test::runBenchmarks(argc, argv);
 }

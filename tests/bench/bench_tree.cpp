@@ -6,6 +6,8 @@
 //    EstimatedState (83 messages per 16.7 ms frame), with the model, 100 bound
 //    Variables and a view reading the rows it is told changed.
 // Run: tools/bench tree
+#include "BenchMain.h"
+#include "Schemas.h"
 #include "Variable.h"
 #include "VariableTreeModel.h"
 
@@ -24,19 +26,10 @@ using namespace neptus::tree;
 
 namespace {
 
-std::shared_ptr<const msg::Schema> shipped()
-{
-    static std::shared_ptr<const msg::Schema> schema = [] {
-        auto loaded = msg::Schema::load(msg::Schema::filesIn(QStringLiteral(NEPTUS_MSGDEFS_DIR)));
-        return loaded ? *loaded : nullptr;
-    }();
-    return schema;
-}
-
 std::vector<msg::Message> estimatedStates(int systems)
 {
     std::vector<msg::Message> messages;
-    const msg::MessageDef *def = shipped()->byAbbrev(u"EstimatedState");
+    const msg::MessageDef *def = neptus::test::shippedSchema()->byAbbrev(u"EstimatedState");
     for (int s = 0; s < systems; ++s) {
         msg::Message m(def);
         m.header.src = static_cast<quint16>(0x100 + s);
@@ -126,15 +119,9 @@ BENCHMARK(BM_FrameAt100SystemsX50Hz);
 
 int main(int argc, char **argv)
 {
-    QCoreApplication app(argc, argv);
-    if (!shipped()) {
+    if (!neptus::test::shippedSchema()) {
         std::fprintf(stderr, "bench_tree: cannot load msgdefs/\n");
         return 1;
     }
-    benchmark::Initialize(&argc, argv);
-    if (benchmark::ReportUnrecognizedArguments(argc, argv))
-        return 1;
-    benchmark::RunSpecifiedBenchmarks();
-    benchmark::Shutdown();
-    return 0;
+    return neptus::test::runBenchmarks(argc, argv);
 }

@@ -1,3 +1,4 @@
+#include "Schemas.h"
 #include "AlarmGraph.h"
 #include "AlarmListModel.h"
 #include "HealthMonitor.h"
@@ -15,18 +16,9 @@ using namespace neptus::alarms;
 
 namespace {
 
-std::shared_ptr<const msg::Schema> shipped()
-{
-    static std::shared_ptr<const msg::Schema> schema = [] {
-        auto loaded = msg::Schema::load(msg::Schema::filesIn(QStringLiteral(NEPTUS_MSGDEFS_DIR)));
-        return loaded ? *loaded : nullptr;
-    }();
-    return schema;
-}
-
 msg::Message entityState(quint16 src, quint8 ent, int state, const char *description)
 {
-    msg::Message m(shipped()->byAbbrev(u"EntityState"));
+    msg::Message m(neptus::test::shippedSchema()->byAbbrev(u"EntityState"));
     m.header.src = src;
     m.header.srcEnt = ent;
     m.setInteger(m.def()->indexOf(u"state"), state);
@@ -111,7 +103,7 @@ TEST(HealthMonitor, EntityStatesBecomeEntityAlarms)
     tree.setSystemName(0x1f, QStringLiteral("lauv"));
     AlarmGraph graph;
     HealthMonitor health(graph, tree);
-    msg::Message list(shipped()->byAbbrev(u"EntityList"));
+    msg::Message list(neptus::test::shippedSchema()->byAbbrev(u"EntityList"));
     list.header.src = 0x1f;
     list.setBytes(list.def()->indexOf(u"list"), "Batteries=12;Navigation=44");
     tree.ingest(list);
@@ -141,7 +133,7 @@ TEST(HealthMonitor, CommunicationsLossIsRaisedAndCleared)
     tree.setSystemName(0x1f, QStringLiteral("lauv"));
     AlarmGraph graph(&clock);
     HealthMonitor health(graph, tree, &clock);
-    msg::Message beat(shipped()->byAbbrev(u"Heartbeat"));
+    msg::Message beat(neptus::test::shippedSchema()->byAbbrev(u"Heartbeat"));
     beat.header.src = 0x1f;
     for (int i = 0; i < 20; ++i) { // a steady 1 Hz heartbeat
         health.observe(beat);

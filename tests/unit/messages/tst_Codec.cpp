@@ -1,3 +1,4 @@
+#include "Schemas.h"
 #include "Codec.h"
 #include "Crc16.h"
 #include "Fixtures.h"
@@ -11,15 +12,6 @@ using namespace neptus::msg;
 using neptus::test::readVectors;
 
 namespace {
-
-std::shared_ptr<const Schema> imc()
-{
-    static std::shared_ptr<const Schema> schema = [] {
-        auto loaded = Schema::load({neptus::test::fixturePath("imc/IMC.xml")});
-        return loaded ? *loaded : nullptr;
-    }();
-    return schema;
-}
 
 QByteArray vector(const char *name)
 {
@@ -97,8 +89,8 @@ TEST(Crc16, FastPathAgreesWithTheTablesOnEveryLength)
 TEST(Codec, EveryVectorRoundTripsByteExact)
 {
     NEPTUS_REQUIRE_FIXTURE(path, "imc/vectors.txt");
-    ASSERT_TRUE(imc());
-    const Codec codec(imc());
+    ASSERT_TRUE(neptus::test::imcSchema());
+    const Codec codec(neptus::test::imcSchema());
     const auto vectors = readVectors(path);
     ASSERT_GE(vectors.size(), 20u);
     for (const auto &v : vectors) {
@@ -111,7 +103,7 @@ TEST(Codec, EveryVectorRoundTripsByteExact)
 
         // Through JSON and back gives the same bytes too.
         const QByteArray json = QJsonDocument(toJson(*decoded)).toJson(QJsonDocument::Compact);
-        auto fromText = fromJson(*imc(), QJsonDocument::fromJson(json).object());
+        auto fromText = fromJson(*neptus::test::imcSchema(), QJsonDocument::fromJson(json).object());
         ASSERT_TRUE(fromText) << v.name.toStdString() << ": " << fromText.error().toStdString();
         auto reencoded = codec.encode(*fromText);
         ASSERT_TRUE(reencoded);
@@ -122,8 +114,8 @@ TEST(Codec, EveryVectorRoundTripsByteExact)
 TEST(Codec, BigEndianSendersDecodeToTheSameValues)
 {
     NEPTUS_REQUIRE_FIXTURE(path, "imc/vectors-bigendian.txt");
-    ASSERT_TRUE(imc());
-    const Codec codec(imc());
+    ASSERT_TRUE(neptus::test::imcSchema());
+    const Codec codec(neptus::test::imcSchema());
     const auto little = readVectors(neptus::test::fixturePath("imc/vectors.txt"));
     const auto big = readVectors(path);
     ASSERT_FALSE(big.empty());
@@ -148,7 +140,7 @@ TEST(Codec, BigEndianSendersDecodeToTheSameValues)
 TEST(Codec, DecodedValuesReadByIndexAndName)
 {
     NEPTUS_REQUIRE_FIXTURE(path, "imc/vectors.txt");
-    const Codec codec(imc());
+    const Codec codec(neptus::test::imcSchema());
     auto state = codec.decode(vector("EstimatedState"));
     ASSERT_TRUE(state);
     EXPECT_EQ(state->abbrev(), QStringLiteral("EstimatedState"));
@@ -174,7 +166,7 @@ TEST(Codec, DecodedValuesReadByIndexAndName)
 TEST(Codec, UnknownMessagesAreKeptWhole)
 {
     NEPTUS_REQUIRE_FIXTURE(path, "imc/vectors.txt");
-    const Codec codec(imc());
+    const Codec codec(neptus::test::imcSchema());
     QByteArray packet = vector("Heartbeat");
     packet.insert(20, QByteArray("\x01\x02\x03", 3));
     setU16(packet, 2, 999);  // an id IMC does not define
@@ -193,7 +185,7 @@ TEST(Codec, UnknownMessagesAreKeptWhole)
 TEST(Codec, EveryKindOfBadInputHasItsOwnError)
 {
     NEPTUS_REQUIRE_FIXTURE(path, "imc/vectors.txt");
-    const Codec codec(imc());
+    const Codec codec(neptus::test::imcSchema());
     using Kind = CodecError::Kind;
     const QByteArray heartbeat = vector("Heartbeat");
     const QByteArray entityState = vector("EntityState");  // has a plaintext
@@ -248,9 +240,9 @@ TEST(Codec, EveryKindOfBadInputHasItsOwnError)
 TEST(Codec, NestedMessagesAreChecked)
 {
     NEPTUS_REQUIRE_FIXTURE(path, "imc/vectors.txt");
-    const Codec codec(imc());
+    const Codec codec(neptus::test::imcSchema());
     using Kind = CodecError::Kind;
-    const Schema &schema = *imc();
+    const Schema &schema = *neptus::test::imcSchema();
 
     // PlanControl.arg carrying a Goto is the vector "PlanControl+Goto".
     QByteArray plan = vector("PlanControl+Goto");
@@ -279,7 +271,7 @@ TEST(Codec, NestedMessagesAreChecked)
     EXPECT_EQ(e.field, QStringLiteral("PlanControl.arg"));
 
     // A too-deep nesting limit turns the same packet into an error.
-    const Codec shallow(imc(), 0);
+    const Codec shallow(neptus::test::imcSchema(), 0);
     e = decodeError(shallow, plan);
     EXPECT_EQ(e.kind, Kind::TooDeep);
 
@@ -311,10 +303,10 @@ TEST(Codec, NestedMessagesAreChecked)
 
 TEST(Codec, EncodingRefusesWhatCannotBeSent)
 {
-    ASSERT_TRUE(imc() || true);
+    ASSERT_TRUE(neptus::test::imcSchema() || true);
     NEPTUS_REQUIRE_FIXTURE(path, "imc/IMC.xml");
-    const Codec codec(imc());
-    Message entity(imc()->byAbbrev(u"EntityState"));
+    const Codec codec(neptus::test::imcSchema());
+    Message entity(neptus::test::imcSchema()->byAbbrev(u"EntityState"));
     entity.setBytes(entity.def()->indexOf(u"description"), QByteArray(70000, 'x'));
     auto encoded = codec.encode(entity);
     ASSERT_FALSE(encoded);
@@ -325,7 +317,7 @@ TEST(Codec, EncodingRefusesWhatCannotBeSent)
 TEST(MessageJson, NamesTheBadKey)
 {
     NEPTUS_REQUIRE_FIXTURE(path, "imc/IMC.xml");
-    const Schema &schema = *imc();
+    const Schema &schema = *neptus::test::imcSchema();
     auto parse = [&](const char *json) { return fromJson(schema, QJsonDocument::fromJson(json).object()); };
     EXPECT_TRUE(parse(R"({"abbrev":"EstimatedState","fields":{"lat":0.5}})"));
     auto e = parse(R"({"abbrev":"Nope"})");

@@ -1,6 +1,7 @@
 // The fuzzers' seed corpora and every input a fuzzer ever crashed on
 // (tests/fuzz/regressions/) run here on every build, with the same checks the
 // fuzz targets make, so a fixed crash can never come back unnoticed.
+#include "Schemas.h"
 #include "Codec.h"
 #include "Fixtures.h"
 #include "MessageJson.h"
@@ -37,12 +38,6 @@ QByteArray read(const QString &path)
     return file.open(QIODevice::ReadOnly) ? file.readAll() : QByteArray();
 }
 
-std::shared_ptr<const Schema> shipped()
-{
-    auto schema = Schema::load(Schema::filesIn(QStringLiteral(NEPTUS_MSGDEFS_DIR)));
-    return schema ? *schema : nullptr;
-}
-
 // What fuzz_decode checks, for one schema.
 void checkDecode(const Codec &codec, const QString &file, const QByteArray &packet)
 {
@@ -63,7 +58,7 @@ TEST(FuzzCorpus, DecodeInputs)
 {
     const auto files = inputs("decode");
     ASSERT_GE(files.size(), 10);
-    const Codec ours(shipped());
+    const Codec ours(neptus::test::shippedSchema());
     int decoded = 0;
     for (const QString &file : files) {
         const QByteArray packet = read(file);

@@ -1,3 +1,4 @@
+#include "Schemas.h"
 #include "Fixtures.h"
 #include "Schema.h"
 
@@ -6,15 +7,6 @@
 using namespace neptus::msg;
 
 namespace {
-
-std::shared_ptr<const Schema> imc()
-{
-    static std::shared_ptr<const Schema> schema = [] {
-        auto loaded = Schema::load({neptus::test::fixturePath("imc/IMC.xml")});
-        return loaded ? *loaded : nullptr;
-    }();
-    return schema;
-}
 
 // A small definition document around the given message elements.
 QByteArray defs(const char *body, const char *extra = "")
@@ -50,7 +42,7 @@ TEST(Schema, LoadsTheWholeImcDefinition)
 TEST(Schema, ImcMessagesHaveTheirFieldsInOrder)
 {
     NEPTUS_REQUIRE_FIXTURE(path, "imc/IMC.xml");
-    const auto schema = imc();
+    const auto schema = neptus::test::imcSchema();
     ASSERT_TRUE(schema);
     const MessageDef *state = schema->byId(350);
     ASSERT_TRUE(state);
@@ -114,7 +106,7 @@ TEST(Schema, CombinesFilesWithUserMessages)
     EXPECT_EQ(schema.byId(1001)->field(u"mode")->enumeration, schema.enumeration(u"Boolean"));
     // The user's maneuver joined the standard group, so plans may carry it.
     EXPECT_TRUE(schema.byAbbrev(u"PlanManeuver")->field(u"data")->allowedIds.contains(1001));
-    EXPECT_NE(schema.digest(), imc()->digest());
+    EXPECT_NE(schema.digest(), neptus::test::imcSchema()->digest());
 }
 
 TEST(Schema, DuplicateIdsAndNamesAcrossFilesAreErrors)

@@ -1,3 +1,4 @@
+#include "Schemas.h"
 #include "ScriptHost.h"
 
 #include "Schema.h"
@@ -13,18 +14,9 @@ using alarms::AlarmGraph;
 
 namespace {
 
-std::shared_ptr<const msg::Schema> shipped()
-{
-    static std::shared_ptr<const msg::Schema> schema = [] {
-        auto loaded = msg::Schema::load(msg::Schema::filesIn(QStringLiteral(NEPTUS_MSGDEFS_DIR)));
-        return loaded ? *loaded : nullptr;
-    }();
-    return schema;
-}
-
 msg::Message message(const char *abbrev, quint16 src, const char *field = nullptr, double value = 0)
 {
-    msg::Message m(shipped()->byAbbrev(QString::fromLatin1(abbrev)));
+    msg::Message m(neptus::test::shippedSchema()->byAbbrev(QString::fromLatin1(abbrev)));
     m.header.src = src;
     if (field)
         m.setNumber(m.def()->indexOf(QString::fromLatin1(field)), value);

@@ -1,3 +1,4 @@
+#include "Schemas.h"
 #include "VariableTree.h"
 
 #include "Schema.h"
@@ -14,18 +15,9 @@ using msg::Message;
 
 namespace {
 
-std::shared_ptr<const msg::Schema> shipped()
-{
-    static std::shared_ptr<const msg::Schema> schema = [] {
-        auto loaded = msg::Schema::load(msg::Schema::filesIn(QStringLiteral(NEPTUS_MSGDEFS_DIR)));
-        return loaded ? *loaded : nullptr;
-    }();
-    return schema;
-}
-
 Message make(const char *abbrev, quint16 src, quint8 ent = 0xFF)
 {
-    Message m(shipped()->byAbbrev(QString::fromLatin1(abbrev)));
+    Message m(neptus::test::shippedSchema()->byAbbrev(QString::fromLatin1(abbrev)));
     m.header.src = src;
     m.header.srcEnt = ent;
     m.header.timestamp = 1700000000.0;
@@ -50,7 +42,7 @@ public:
 
 TEST(VariableTree, MessagesBecomeSystemMessageFieldPaths)
 {
-    ASSERT_TRUE(shipped());
+    ASSERT_TRUE(neptus::test::shippedSchema());
     ManualClock clock(QDateTime::fromMSecsSinceEpoch(5000, QTimeZone::UTC));
     VariableTree tree(&clock);
     tree.ingest(state(0x1f, 12.5));
@@ -119,9 +111,9 @@ TEST(VariableTree, InlineMessagesAndListsAreBranches)
     Message plan = make("PlanSpecification", 0x1f);
     std::vector<Message> maneuvers;
     for (int i = 0; i < 3; ++i) {
-        Message go(shipped()->byAbbrev(u"Goto"));
+        Message go(neptus::test::shippedSchema()->byAbbrev(u"Goto"));
         go.setNumber(go.def()->indexOf(u"z"), 2.0 + i);
-        Message pm(shipped()->byAbbrev(u"PlanManeuver"));
+        Message pm(neptus::test::shippedSchema()->byAbbrev(u"PlanManeuver"));
         pm.setBytes(pm.def()->indexOf(u"maneuver_id"), "m" + QByteArray::number(i));
         pm.setInlineMessage(pm.def()->indexOf(u"data"), go);
         maneuvers.push_back(pm);
@@ -184,7 +176,7 @@ TEST(VariableTree, WritingTheOutputBranchPublishes)
 {
     VariableTree tree;
     tree.setSystemName(0x1f, QStringLiteral("lauv"));
-    Message abort(shipped()->byAbbrev(u"Abort"));
+    Message abort(neptus::test::shippedSchema()->byAbbrev(u"Abort"));
     EXPECT_FALSE(tree.write(QStringLiteral("lauv"), abort)) << "no sink, nothing sent";
     RecordingSink sink;
     tree.setOutputSink(&sink);

@@ -1,3 +1,4 @@
+#include "Schemas.h"
 #include "Variable.h"
 #include "VariableTreeModel.h"
 
@@ -15,18 +16,9 @@ using msg::Message;
 
 namespace {
 
-std::shared_ptr<const msg::Schema> shipped()
-{
-    static std::shared_ptr<const msg::Schema> schema = [] {
-        auto loaded = msg::Schema::load(msg::Schema::filesIn(QStringLiteral(NEPTUS_MSGDEFS_DIR)));
-        return loaded ? *loaded : nullptr;
-    }();
-    return schema;
-}
-
 Message state(quint16 src, double depth)
 {
-    Message m(shipped()->byAbbrev(u"EstimatedState"));
+    Message m(neptus::test::shippedSchema()->byAbbrev(u"EstimatedState"));
     m.header.src = src;
     m.setNumber(m.def()->indexOf(u"depth"), depth);
     return m;
@@ -34,7 +26,7 @@ Message state(quint16 src, double depth)
 
 Message heartbeat(quint16 src)
 {
-    Message m(shipped()->byAbbrev(u"Heartbeat"));
+    Message m(neptus::test::shippedSchema()->byAbbrev(u"Heartbeat"));
     m.header.src = src;
     return m;
 }
@@ -126,7 +118,7 @@ TEST_F(Fixture, VariablesFollowPathsBeforeTheyExistAndAcrossRenames)
     model.sync();
     EXPECT_FALSE(depth.present());
 
-    Message announce(shipped()->byAbbrev(u"Announce"));
+    Message announce(neptus::test::shippedSchema()->byAbbrev(u"Announce"));
     announce.header.src = 0x1f;
     announce.setBytes(announce.def()->indexOf(u"sys_name"), "lauv");
     tree.ingest(announce);

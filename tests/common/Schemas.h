@@ -1,0 +1,29 @@
+#pragma once
+
+// The message definitions tests and benchmarks use, loaded once per process.
+
+#include "Schema.h"
+
+namespace neptus::test {
+
+// The project's own msgdefs/ folder.
+inline std::shared_ptr<const msg::Schema> shippedSchema()
+{
+    static const std::shared_ptr<const msg::Schema> schema = [] {
+        auto loaded = msg::Schema::load(msg::Schema::filesIn(QStringLiteral(NEPTUS_MSGDEFS_DIR)));
+        return loaded ? *loaded : nullptr;
+    }();
+    return schema;
+}
+
+// The full IMC.xml of ../shared/fixtures, or null when it is absent.
+inline std::shared_ptr<const msg::Schema> imcSchema()
+{
+    static const std::shared_ptr<const msg::Schema> schema = [] {
+        auto loaded = msg::Schema::load({QStringLiteral(NEPTUS_SHARED_DIR "/fixtures/imc/IMC.xml")});
+        return loaded ? *loaded : nullptr;
+    }();
+    return schema;
+}
+
+} // namespace neptus::test
