@@ -1,5 +1,9 @@
 #include "ConsoleSession.h"
 
+#include "MessageJson.h"
+
+#include <QJsonObject>
+
 ConsoleSession::ConsoleSession(std::shared_ptr<const neptus::msg::Schema> schema, QObject *parent)
     : QObject(parent)
     , m_schema(std::move(schema))
@@ -11,6 +15,16 @@ ConsoleSession::ConsoleSession(std::shared_ptr<const neptus::msg::Schema> schema
 }
 
 ConsoleSession::~ConsoleSession() = default;
+
+QString ConsoleSession::send(const QString &system, const QVariantMap &json)
+{
+    auto message = neptus::msg::fromJson(*m_schema, QJsonObject::fromVariantMap(json));
+    if (!message)
+        return message.error();
+    if (!m_tree.write(system, std::move(*message)))
+        return tr("not sent: no link to '%1'").arg(system);
+    return {};
+}
 
 void ConsoleSession::ingest(const neptus::msg::Message &message)
 {

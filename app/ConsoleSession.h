@@ -40,6 +40,11 @@ public:
     // A decoded message from any transport (any thread).
     void ingest(const neptus::msg::Message &message);
 
+    // For components (a joystick, a command button): sends a message, given
+    // as JSON ({"abbrev": "Abort", "fields": {...}}), to a system through the
+    // tree's output branch. Returns "" when sent, else why not.
+    Q_INVOKABLE QString send(const QString &system, const QVariantMap &message);
+
 private:
     std::shared_ptr<const neptus::msg::Schema> m_schema;
     neptus::tree::VariableTree m_tree;

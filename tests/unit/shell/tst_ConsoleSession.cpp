@@ -1,0 +1,47 @@
+#include "ConsoleSession.h"
+
+#include "Schemas.h"
+
+#include <gtest/gtest.h>
+
+using namespace neptus;
+
+namespace {
+class RecordingSink : public tree::VariableTree::OutputSink
+{
+public:
+    void publish(quint16 system, const msg::Message &message) override { sent.push_back({system, message}); }
+    std::vector<std::pair<quint16, msg::Message>> sent;
+};
+} // namespace
+
+TEST(ConsoleSession, ComponentsSendThroughTheOutputBranch)
+{
+    ConsoleSession session(test::shippedSchema());
+    session.variableTree().setSystemName(0x1f, QStringLiteral("lauv"));
+    const QVariantMap abort{{QStringLiteral("abbrev"), QStringLiteral("Abort")}};
+    EXPECT_TRUE(session.send(QStringLiteral("lauv"), abort).contains(QStringLiteral("no link"))) << "no transport yet";
+
+    RecordingSink sink;
+    session.variableTree().setOutputSink(&sink);
+    EXPECT_EQ(session.send(QStringLiteral("lauv"), abort), QString());
+    ASSERT_EQ(sink.sent.size(), 1u);
+    EXPECT_EQ(sink.sent[0].first, 0x1f);
+    EXPECT_EQ(sink.sent[0].second.abbrev(), QStringLiteral("Abort"));
+
+    const QString bad = session.send(QStringLiteral("lauv"), {{QStringLiteral("abbrev"), QStringLiteral("Nope")}});
+    EXPECT_TRUE(bad.contains(QStringLiteral("Nope"))) << bad.toStdString();
+    EXPECT_EQ(sink.sent.size(), 1u);
+}
+
+TEST(ConsoleSession, IngestFeedsTreeAndHealth)
+{
+    ConsoleSession session(test::shippedSchema());
+    msg::Message state(test::shippedSchema()->byAbbrev(u"EntityState"));
+    state.header.src = 0x1f;
+    state.header.srcEnt = 7;
+    state.setInteger(state.def()->indexOf(u"state"), 3);
+    session.ingest(state);
+    EXPECT_NE(session.variableTree().find(u"0x001f/EntityState@7/state"), tree::noNode);
+    EXPECT_EQ(session.alarmGraph().rootLevel(), alarms::Error);
+}
