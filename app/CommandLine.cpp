@@ -25,7 +25,11 @@ std::expected<CommandLine, QString> CommandLine::parse(const QStringList &argume
     const QCommandLineOption selfTest(QStringLiteral("self-test"),
         QStringLiteral("Load every QML file of the project and every console; exit 0 only if "
                        "all load without errors or warnings."));
-    parser.addOptions({console, screenshot, palette, size, selfTest});
+    const QCommandLineOption imcPort(QStringLiteral("imc-port"),
+        QStringLiteral("Local UDP port for IMC, on 127.0.0.1 (default 6001; 0 turns IMC off)."), QStringLiteral("port"));
+    const QCommandLineOption imcPeer(QStringLiteral("imc-peer"),
+        QStringLiteral("An IMC vehicle to talk to, as host:port (repeat for several)."), QStringLiteral("host:port"));
+    parser.addOptions({console, screenshot, palette, size, selfTest, imcPort, imcPeer});
     if (!parser.parse(arguments))
         return std::unexpected(parser.errorText());
     if (parser.isSet(QStringLiteral("help")))
@@ -56,6 +60,20 @@ std::expected<CommandLine, QString> CommandLine::parse(const QStringList &argume
             return std::unexpected(QStringLiteral("--size must look like 1280x800, not '%1'")
                                        .arg(parser.value(size)));
         result.windowSize = QSize(match.captured(1).toInt(), match.captured(2).toInt());
+    }
+    if (parser.isSet(imcPort)) {
+        bool ok = false;
+        const uint port = parser.value(imcPort).toUInt(&ok);
+        if (!ok || port > 65535)
+            return std::unexpected(QStringLiteral("--imc-port must be a port number, not '%1'").arg(parser.value(imcPort)));
+        result.imcPort = static_cast<quint16>(port);
+    }
+    static const QRegularExpression peer(QStringLiteral("^[^:\\s]+:(\\d{1,5})$"));
+    for (const QString &value : parser.values(imcPeer)) {
+        const auto match = peer.match(value);
+        if (!match.hasMatch() || match.captured(1).toUInt() > 65535)
+            return std::unexpected(QStringLiteral("--imc-peer must look like 127.0.0.1:6002, not '%1'").arg(value));
+        result.imcPeers.append(value);
     }
     return result;
 }

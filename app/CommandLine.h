@@ -13,6 +13,8 @@ struct CommandLine
     QString screenshotFile;  // render, save a PNG, exit
     QString palette;         // day, dusk or night; empty = as last time
     QSize windowSize{1280, 800};
+    quint16 imcPort = 6001;             // IMC over UDP, on 127.0.0.1
+    QStringList imcPeers;               // static IMC destinations, "host:port"
     bool selfTest = false;
 
     // Parses arguments (argv[0] included). An error is a message for the user.

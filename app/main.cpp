@@ -2,6 +2,7 @@
 // renders it to a PNG (--screenshot) or checks every QML file (--self-test).
 #include "CommandLine.h"
 #include "ConsoleSession.h"
+#include "ImcUdpTransport.h"
 #include "SelfTest.h"
 
 #include <QGuiApplication>
@@ -59,6 +60,26 @@ int main(int argc, char *argv[])
         return 1;
     }
     ConsoleSession session(*schema);
+
+    // IMC over UDP, on loopback unless a vehicle elsewhere is named.
+    std::unique_ptr<neptus::transport::ImcUdpTransport> imc;
+    if (commandLine->imcPort != 0 && commandLine->screenshotFile.isEmpty()) {
+        neptus::transport::ImcUdpConfig config;
+        config.port = commandLine->imcPort;
+        for (const QString &peer : commandLine->imcPeers) {
+            const qsizetype colon = peer.lastIndexOf(u':');
+            config.destinations.append({QHostAddress(peer.left(colon)), static_cast<quint16>(peer.mid(colon + 1).toUInt())});
+        }
+        imc = std::make_unique<neptus::transport::ImcUdpTransport>(*schema, config);
+        if (auto started = imc->start(); !started) {
+            std::fprintf(stderr, "neptus: %s; carrying on without IMC\n", qPrintable(started.error()));
+            imc.reset();
+        } else {
+            QObject::connect(imc.get(), &neptus::transport::ImcUdpTransport::received, &session,
+                             [&session](const neptus::msg::Message &m) { session.ingest(m); });
+            session.variableTree().setOutputSink(imc.get());
+        }
+    }
 
     QQmlApplicationEngine engine;
     engine.setInitialProperties({

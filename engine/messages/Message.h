@@ -101,3 +101,5 @@ private:
 };
 
 } // namespace neptus::msg
+
+Q_DECLARE_METATYPE(neptus::msg::Message)

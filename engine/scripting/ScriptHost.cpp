@@ -73,6 +73,14 @@ public:
         m_scripts.erase(it);
     }
 
+    void setFrameInterval(int milliseconds)
+    {
+        if (milliseconds > 0)
+            m_frame->start(milliseconds);
+        else
+            m_frame->stop();
+    }
+
     int runs(const QString &name) const
     {
         const auto it = m_scripts.find(name);
@@ -196,6 +204,11 @@ std::expected<void, CompileError> ScriptHost::setScript(const QString &name, con
 void ScriptHost::removeScript(const QString &name)
 {
     QMetaObject::invokeMethod(m_worker, [&] { m_worker->remove(name); }, Qt::BlockingQueuedConnection);
+}
+
+void ScriptHost::setFrameInterval(int milliseconds)
+{
+    QMetaObject::invokeMethod(m_worker, [&] { m_worker->setFrameInterval(milliseconds); }, Qt::BlockingQueuedConnection);
 }
 
 void ScriptHost::setTimeLimit(int milliseconds)

@@ -41,6 +41,10 @@ public:
     void setTimeLimit(int milliseconds);
     int timeLimit() const { return m_limitMs.load(); }
 
+    // How often due scripts run by themselves (default 16 ms, one frame);
+    // 0 stops that, and only runPending() runs them (tests).
+    void setFrameInterval(int milliseconds);
+
     // How many times a script has run (for tests and diagnostics).
     int runs(const QString &name) const;
     // Runs what is due now and returns when done (tests; the host also does this every frame).

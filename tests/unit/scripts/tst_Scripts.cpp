@@ -27,6 +27,7 @@ struct Scripts : ::testing::Test
 {
     Scripts()
     {
+        host.setFrameInterval(0); // frames come from runPending(), so counts are exact
         tree.setSystemName(0x1f, QStringLiteral("lauv"));
         tree.setSystemName(0x20, QStringLiteral("lauv-xplore-2"));
     }

@@ -31,13 +31,17 @@ TEST(CommandLine, ReadsEveryOption)
     file.close();
     const auto line = parse({QStringLiteral("--console"), console, QStringLiteral("--screenshot"),
                              QStringLiteral("out.png"), QStringLiteral("--palette"), QStringLiteral("Night"),
-                             QStringLiteral("--size"), QStringLiteral("1920x1080"), QStringLiteral("--self-test")});
+                             QStringLiteral("--size"), QStringLiteral("1920x1080"), QStringLiteral("--self-test"),
+                             QStringLiteral("--imc-port"), QStringLiteral("6010"), QStringLiteral("--imc-peer"),
+                             QStringLiteral("127.0.0.1:6002")});
     ASSERT_TRUE(line) << line.error().toStdString();
     EXPECT_EQ(line->consoleFile, console);
     EXPECT_EQ(line->screenshotFile, QStringLiteral("out.png"));
     EXPECT_EQ(line->palette, QStringLiteral("night"));
     EXPECT_EQ(line->windowSize, QSize(1920, 1080));
     EXPECT_TRUE(line->selfTest);
+    EXPECT_EQ(line->imcPort, 6010);
+    EXPECT_EQ(line->imcPeers, QStringList{QStringLiteral("127.0.0.1:6002")});
 }
 
 TEST(CommandLine, NamesWhatIsWrong)
@@ -57,6 +61,14 @@ TEST(CommandLine, NamesWhatIsWrong)
     line = parse({QStringLiteral("--bogus")});
     ASSERT_FALSE(line);
     EXPECT_TRUE(line.error().contains(QStringLiteral("bogus")));
+
+    line = parse({QStringLiteral("--imc-port"), QStringLiteral("70000")});
+    ASSERT_FALSE(line);
+    EXPECT_TRUE(line.error().contains(QStringLiteral("70000")));
+
+    line = parse({QStringLiteral("--imc-peer"), QStringLiteral("nohostport")});
+    ASSERT_FALSE(line);
+    EXPECT_TRUE(line.error().contains(QStringLiteral("127.0.0.1:6002")));
 
     line = parse({QStringLiteral("stray")});
     ASSERT_FALSE(line);
