@@ -1,0 +1,167 @@
+// neptus-sim: one simulated vehicle speaking IMC over UDP on loopback, as a
+// DUNE vehicle does: it streams to the consoles it hears a Heartbeat from,
+// announces itself, and prints every command addressed to it. Faults and a
+// communications drop can be switched on from the command line.
+#include "Codec.h"
+#include "SimulatedVehicle.h"
+
+#include <QCommandLineParser>
+#include <QCoreApplication>
+#include <QDateTime>
+#include <QElapsedTimer>
+#include <QHash>
+#include <QNetworkDatagram>
+#include <QTimer>
+#include <QUdpSocket>
+
+#include <cstdio>
+
+using namespace neptus;
+
+namespace {
+
+int usage(const QString &why)
+{
+    std::fprintf(stderr, "neptus-sim: %s (see --help)\n", qPrintable(why));
+    return 2;
+}
+
+} // namespace
+
+int main(int argc, char *argv[])
+{
+    QCoreApplication app(argc, argv);
+    QCoreApplication::setApplicationName(QStringLiteral("neptus-sim"));
+    QCoreApplication::setApplicationVersion(QStringLiteral(NEPTUS_VERSION));
+    QCommandLineParser parser;
+    parser.setApplicationDescription(QStringLiteral("A simulated vehicle speaking IMC over UDP on 127.0.0.1."));
+    parser.addHelpOption();
+    parser.addVersionOption();
+    const QCommandLineOption id(QStringLiteral("id"), QStringLiteral("IMC system id (default 0x1f)."), QStringLiteral("id"), QStringLiteral("0x1f"));
+    const QCommandLineOption name(QStringLiteral("name"), QStringLiteral("System name (default lauv-sim-1)."), QStringLiteral("name"), QStringLiteral("lauv-sim-1"));
+    const QCommandLineOption kind(QStringLiteral("kind"), QStringLiteral("auv, asv or uav (default auv)."), QStringLiteral("kind"), QStringLiteral("auv"));
+    const QCommandLineOption port(QStringLiteral("port"), QStringLiteral("UDP port on 127.0.0.1 (default 6002)."), QStringLiteral("port"), QStringLiteral("6002"));
+    const QCommandLineOption console(QStringLiteral("console"), QStringLiteral("A console to announce to, host:port (repeatable)."), QStringLiteral("host:port"));
+    const QCommandLineOption announcePort(QStringLiteral("announce-port"), QStringLiteral("Also announce to this port on 127.0.0.1 (IMC discovery uses 30100)."), QStringLiteral("port"));
+    const QCommandLineOption phase(QStringLiteral("phase"), QStringLiteral("Start angle on the track, degrees."), QStringLiteral("degrees"), QStringLiteral("0"));
+    const QCommandLineOption fault(QStringLiteral("fault"), QStringLiteral("battery-low or motor-jammed (repeatable)."), QStringLiteral("fault"));
+    const QCommandLineOption drop(QStringLiteral("comms-drop"), QStringLiteral("Say nothing from second START for DURATION seconds."), QStringLiteral("START:DURATION"));
+    const QCommandLineOption defs(QStringLiteral("defs"), QStringLiteral("Message definition file (repeatable; default msgdefs/)."), QStringLiteral("file"));
+    parser.addOptions({id, name, kind, port, console, announcePort, phase, fault, drop, defs});
+    if (!parser.parse(QCoreApplication::arguments()))
+        return usage(parser.errorText());
+    if (parser.isSet(QStringLiteral("help")))
+        parser.showHelp(0);
+    if (parser.isSet(QStringLiteral("version")))
+        parser.showVersion();
+
+    auto schema = msg::Schema::load(parser.isSet(defs) ? parser.values(defs)
+                                                       : msg::Schema::filesIn(QStringLiteral(NEPTUS_MSGDEFS_DIR)));
+    if (!schema) {
+        std::fprintf(stderr, "neptus-sim: %s\n", qPrintable(schema.error().toString()));
+        return 1;
+    }
+    sim::SimulatedVehicle::Config config;
+    bool ok = false;
+    const uint idValue = parser.value(id).toUInt(&ok, 0);
+    if (!ok || idValue == 0 || idValue >= 0xFFFF)
+        return usage(QStringLiteral("--id must be a number from 1 to 65534, not '%1'").arg(parser.value(id)));
+    config.id = static_cast<quint16>(idValue);
+    config.name = parser.value(name);
+    const QString kindName = parser.value(kind).toLower();
+    if (kindName == u"auv") config.kind = sim::SimulatedVehicle::Kind::Auv;
+    else if (kindName == u"asv") config.kind = sim::SimulatedVehicle::Kind::Asv;
+    else if (kindName == u"uav") config.kind = sim::SimulatedVehicle::Kind::Uav;
+    else return usage(QStringLiteral("--kind must be auv, asv or uav, not '%1'").arg(parser.value(kind)));
+    const uint portValue = parser.value(port).toUInt(&ok);
+    if (!ok || portValue == 0 || portValue > 65535)
+        return usage(QStringLiteral("--port must be a port number, not '%1'").arg(parser.value(port)));
+    config.phase = parser.value(phase).toDouble() * 3.14159265358979 / 180;
+    config.services = QStringLiteral("imc+udp://127.0.0.1:%1/").arg(portValue);
+    int faults = 0;
+    for (const QString &f : parser.values(fault)) {
+        if (f == u"battery-low") faults |= sim::SimulatedVehicle::BatteryLow;
+        else if (f == u"motor-jammed") faults |= sim::SimulatedVehicle::MotorJammed;
+        else return usage(QStringLiteral("--fault must be battery-low or motor-jammed, not '%1'").arg(f));
+    }
+    double dropStart = -1, dropLength = 0;
+    if (parser.isSet(drop)) {
+        const QStringList parts = parser.value(drop).split(u':');
+        if (parts.size() != 2)
+            return usage(QStringLiteral("--comms-drop must look like 30:10"));
+        dropStart = parts[0].toDouble();
+        dropLength = parts[1].toDouble();
+    }
+    QList<std::pair<QHostAddress, quint16>> announceTo;
+    for (const QString &c : parser.values(console)) {
+        const qsizetype colon = c.lastIndexOf(u':');
+        if (colon <= 0)
+            return usage(QStringLiteral("--console must look like 127.0.0.1:6001, not '%1'").arg(c));
+        announceTo.append({QHostAddress(c.left(colon)), static_cast<quint16>(c.mid(colon + 1).toUInt())});
+    }
+    if (parser.isSet(announcePort))
+        announceTo.append({QHostAddress::LocalHost, static_cast<quint16>(parser.value(announcePort).toUInt())});
+
+    sim::SimulatedVehicle vehicle(*schema, config);
+    vehicle.setFaults(faults);
+    const msg::Codec codec(*schema);
+    QUdpSocket socket;
+    if (!socket.bind(QHostAddress::LocalHost, static_cast<quint16>(portValue))) {
+        std::fprintf(stderr, "neptus-sim: cannot listen on 127.0.0.1:%u: %s\n", portValue, qPrintable(socket.errorString()));
+        return 1;
+    }
+    std::printf("neptus-sim: %s (id 0x%04x) on 127.0.0.1:%u\n", qPrintable(config.name), config.id, portValue);
+    std::fflush(stdout);
+
+    // Consoles heard from, and when: a vehicle streams to them for 5 s after each Heartbeat.
+    QHash<QPair<QString, quint16>, qint64> consoles;
+    QElapsedTimer clock;
+    clock.start();
+    QObject::connect(&socket, &QUdpSocket::readyRead, [&] {
+        while (socket.hasPendingDatagrams()) {
+            const QNetworkDatagram datagram = socket.receiveDatagram();
+            auto message = codec.decode(datagram.data());
+            if (!message)
+                continue;
+            if (message->abbrev() == u"Heartbeat") {
+                const QPair<QString, quint16> from{datagram.senderAddress().toString(), static_cast<quint16>(datagram.senderPort())};
+                if (!consoles.contains(from)) { // a new console: say who we are at once
+                    QByteArray packet;
+                    for (const msg::Message &m : vehicle.introduction(QDateTime::currentMSecsSinceEpoch() / 1000.0)) {
+                        if (codec.encode(m, packet))
+                            socket.writeDatagram(packet, datagram.senderAddress(), datagram.senderPort());
+                    }
+                }
+                consoles[from] = clock.elapsed();
+            } else if (message->header.dst == config.id && message->abbrev() != u"Announce") {
+                std::printf("neptus-sim: received %s from 0x%04x\n", qPrintable(message->abbrev()), message->header.src);
+                std::fflush(stdout);
+            }
+        }
+    });
+    double previous = -1;
+    QByteArray buffer;
+    QTimer timer;
+    QObject::connect(&timer, &QTimer::timeout, [&] {
+        const double t = clock.elapsed() / 1000.0;
+        const bool silent = dropStart >= 0 && t >= dropStart && t < dropStart + dropLength;
+        const auto messages = vehicle.step(previous, t, QDateTime::currentMSecsSinceEpoch() / 1000.0);
+        previous = t;
+        if (silent)
+            return;
+        for (const msg::Message &m : messages) {
+            if (!codec.encode(m, buffer))
+                continue;
+            for (auto it = consoles.cbegin(); it != consoles.cend(); ++it) {
+                if (clock.elapsed() - it.value() < 5000)
+                    socket.writeDatagram(buffer, QHostAddress(it.key().first), it.key().second);
+            }
+            if (m.abbrev() == u"Announce") {
+                for (const auto &[address, to] : announceTo)
+                    socket.writeDatagram(buffer, address, to);
+            }
+        }
+    });
+    timer.start(20);
+    return QCoreApplication::exec();
+}

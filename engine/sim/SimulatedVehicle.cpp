@@ -1,0 +1,131 @@
+#include "SimulatedVehicle.h"
+
+#include <cmath>
+#include <numbers>
+
+namespace neptus::sim {
+
+namespace {
+constexpr quint8 navigationEntity = 1;
+constexpr quint8 motorEntity = 2;
+constexpr quint8 batteryEntity = 3;
+
+// Did a period boundary fall in (previous, t]?
+bool due(double previous, double t, double period)
+{
+    return previous < 0 || std::floor(t / period) > std::floor(previous / period);
+}
+} // namespace
+
+SimulatedVehicle::SimulatedVehicle(std::shared_ptr<const msg::Schema> schema, Config config)
+    : m_schema(std::move(schema))
+    , m_config(std::move(config))
+{
+}
+
+SimulatedVehicle::Pose SimulatedVehicle::pose(double t) const
+{
+    const double omega = m_config.speedMps / m_config.radiusM;
+    const double angle = m_config.phase + omega * t;
+    const double depth = m_config.kind == Kind::Auv ? 2.0 + 1.5 * std::sin(t / 20.0)
+                         : m_config.kind == Kind::Uav ? -100.0
+                                                      : 0.0;
+    return {m_config.radiusM * std::cos(angle), m_config.radiusM * std::sin(angle), depth,
+            std::remainder(angle + std::numbers::pi / 2, 2 * std::numbers::pi)};
+}
+
+msg::Message SimulatedVehicle::make(const char *abbrev, double wallTime, quint8 entity) const
+{
+    msg::Message m(m_schema->byAbbrev(QString::fromLatin1(abbrev)));
+    m.header.timestamp = wallTime;
+    m.header.src = m_config.id;
+    m.header.srcEnt = entity;
+    return m;
+}
+
+std::vector<msg::Message> SimulatedVehicle::step(double previous, double t, double wallTime) const
+{
+    std::vector<msg::Message> out;
+    if (due(previous, t, 0.1)) {
+        const Pose p = pose(t);
+        msg::Message s = make("EstimatedState", wallTime, navigationEntity);
+        const auto set = [&](const char16_t *field, double value) { s.setNumber(s.def()->indexOf(field), value); };
+        set(u"lat", m_config.latDeg * std::numbers::pi / 180);
+        set(u"lon", m_config.lonDeg * std::numbers::pi / 180);
+        set(u"x", p.x);
+        set(u"y", p.y);
+        set(u"z", p.z);
+        set(u"depth", m_config.kind == Kind::Auv ? p.z : 0);
+        set(u"alt", m_config.kind == Kind::Uav ? -p.z : 20 - p.z);
+        set(u"psi", p.psi);
+        set(u"phi", 0.05 * std::sin(t));
+        set(u"theta", 0.03 * std::cos(t / 3));
+        set(u"u", m_faults & MotorJammed ? 0 : m_config.speedMps);
+        set(u"vx", (m_faults & MotorJammed ? 0 : m_config.speedMps) * std::cos(p.psi));
+        set(u"vy", (m_faults & MotorJammed ? 0 : m_config.speedMps) * std::sin(p.psi));
+        out.push_back(std::move(s));
+    }
+    if (due(previous, t, 1.0)) {
+        out.push_back(make("Heartbeat", wallTime));
+        const bool batteryLow = m_faults & BatteryLow;
+        const bool jammed = m_faults & MotorJammed;
+        struct Entity { quint8 id; int state; const char *description; };
+        const Entity entities[] = {
+            {navigationEntity, 1, "active"},
+            {motorEntity, jammed ? 3 : 1, jammed ? "motor jammed" : "active"},
+            {batteryEntity, batteryLow ? 2 : 1, batteryLow ? "battery low" : "active"},
+        };
+        for (const Entity &e : entities) {
+            msg::Message state = make("EntityState", wallTime, e.id);
+            state.setInteger(state.def()->indexOf(u"state"), e.state);
+            state.setBytes(state.def()->indexOf(u"description"), e.description);
+            out.push_back(std::move(state));
+        }
+        msg::Message voltage = make("Voltage", wallTime, batteryEntity);
+        voltage.setNumber(voltage.def()->indexOf(u"value"), batteryLow ? 21.2 : 24.6 - 0.001 * t);
+        out.push_back(std::move(voltage));
+        const double rpm = jammed ? 0 : 1000 + 50 * std::sin(t / 5);
+        msg::Message rpmMessage = make("Rpm", wallTime, motorEntity);
+        rpmMessage.setInteger(rpmMessage.def()->indexOf(u"value"), static_cast<qint64>(rpm));
+        out.push_back(std::move(rpmMessage));
+        if (const msg::MessageDef *motorDef = m_schema->byAbbrev(u"Motor")) {
+            msg::Message motor(motorDef);
+            motor.header = out.back().header;
+            motor.setNumber(motorDef->indexOf(u"speed"), rpm);
+            motor.setNumber(motorDef->indexOf(u"voltage"), batteryLow ? 21.2 : 24.5);
+            motor.setNumber(motorDef->indexOf(u"current"), jammed ? 9.5 : 2.1);
+            motor.setNumber(motorDef->indexOf(u"temperature"), jammed ? 78 : 35);
+            motor.setInteger(motorDef->indexOf(u"state"), jammed ? 3 : 1);
+            out.push_back(std::move(motor));
+        }
+    }
+    if (due(previous, t, 10.0)) {
+        for (msg::Message &m : introduction(wallTime))
+            out.push_back(std::move(m));
+    }
+    return out;
+}
+
+std::vector<msg::Message> SimulatedVehicle::introduction(double wallTime) const
+{
+    std::vector<msg::Message> out;
+    {
+        msg::Message announce = make("Announce", wallTime);
+        announce.setBytes(announce.def()->indexOf(u"sys_name"), m_config.name.toUtf8());
+        announce.setInteger(announce.def()->indexOf(u"sys_type"), m_config.kind == Kind::Auv   ? 2
+                                                                  : m_config.kind == Kind::Asv ? 3
+                                                                                               : 4);
+        announce.setInteger(announce.def()->indexOf(u"owner"), 0xFFFF);
+        announce.setNumber(announce.def()->indexOf(u"lat"), m_config.latDeg * std::numbers::pi / 180);
+        announce.setNumber(announce.def()->indexOf(u"lon"), m_config.lonDeg * std::numbers::pi / 180);
+        announce.setBytes(announce.def()->indexOf(u"services"), m_config.services.toUtf8());
+        out.push_back(std::move(announce));
+        msg::Message list = make("EntityList", wallTime);
+        list.setInteger(list.def()->indexOf(u"op"), 0); // REPORT
+        list.setBytes(list.def()->indexOf(u"list"), "Navigation=1;Motor=2;Batteries=3");
+        out.push_back(std::move(list));
+    }
+    return out;
+}
+
+} // namespace neptus::sim

@@ -1,0 +1,64 @@
+#pragma once
+
+#include "Message.h"
+
+#include <QString>
+
+#include <memory>
+#include <vector>
+
+namespace neptus::sim {
+
+// A vehicle that is a faithful live data source: it follows a circular track
+// around a reference point (by default in the Douro river by Porto) and says
+// what a DUNE vehicle says — Announce, Heartbeat, EntityList, EntityState for
+// its navigation, motor and batteries, EstimatedState (IMC's lat/lon
+// reference plus x/y/z offsets, attitude and speeds), Voltage, Rpm and the
+// paper's Motor message. Faults can be switched on to make alarms happen.
+// Plan execution comes with the missions work.
+class SimulatedVehicle
+{
+public:
+    enum class Kind { Auv, Asv, Uav };
+    struct Config
+    {
+        quint16 id = 0x1f;
+        QString name = QStringLiteral("lauv-sim-1");
+        Kind kind = Kind::Auv;
+        double latDeg = 41.1405;  // the Douro by Porto
+        double lonDeg = -8.6110;
+        double radiusM = 150;
+        double speedMps = 1.5;
+        double phase = 0;         // where on the circle it starts, radians
+        QString services;         // e.g. "imc+udp://127.0.0.1:6002/"
+    };
+    enum Fault { None = 0, BatteryLow = 1, MotorJammed = 2 };
+
+    SimulatedVehicle(std::shared_ptr<const msg::Schema> schema, Config config);
+
+    const Config &config() const { return m_config; }
+    void setFaults(int faults) { m_faults = faults; }
+    int faults() const { return m_faults; }
+
+    // Messages due at simulation time `t` seconds since start, given that
+    // the last call was at `previous` (10 Hz state, 1 Hz the rest, 0.1 Hz
+    // Announce and EntityList). `wallTime` is the header timestamp.
+    std::vector<msg::Message> step(double previous, double t, double wallTime) const;
+
+    // Announce and EntityList: who it is, sent every 10 s by step() and at
+    // once to a console that appears.
+    std::vector<msg::Message> introduction(double wallTime) const;
+
+    // Position on the track at time t: north and east offsets (m) and heading (rad).
+    struct Pose { double x, y, z, psi; };
+    Pose pose(double t) const;
+
+private:
+    msg::Message make(const char *abbrev, double wallTime, quint8 entity = 0) const;
+
+    std::shared_ptr<const msg::Schema> m_schema;
+    Config m_config;
+    int m_faults = None;
+};
+
+} // namespace neptus::sim

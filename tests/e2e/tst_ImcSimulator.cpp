@@ -1,0 +1,135 @@
+// The console side (IMC/UDP transport, variable tree, health monitor) against
+// real neptus-sim processes on loopback, inside the test sandbox's private
+// network namespace.
+#include "HealthMonitor.h"
+#include "ImcUdpTransport.h"
+#include "VariableTree.h"
+
+#include "Schemas.h"
+
+#include <QElapsedTimer>
+#include <QProcess>
+#include <QTest>
+
+#include <gtest/gtest.h>
+
+#include <memory>
+
+using namespace neptus;
+
+namespace {
+
+struct Vehicle
+{
+    std::unique_ptr<QProcess> process = std::make_unique<QProcess>();
+    QByteArray output;
+
+    void start(const QStringList &arguments)
+    {
+        process->setProcessChannelMode(QProcess::MergedChannels);
+        QObject::connect(process.get(), &QProcess::readyRead, [this] { output += process->readAll(); });
+        process->start(QStringLiteral(NEPTUS_SIM_PATH), arguments);
+        ASSERT_TRUE(process->waitForStarted(5000));
+        ASSERT_TRUE(QTest::qWaitFor([this] { return output.contains("on 127.0.0.1"); }, 5000)) << output.constData();
+    }
+    ~Vehicle()
+    {
+        if (process->state() != QProcess::NotRunning) {
+            process->kill();
+            process->waitForFinished(5000);
+        }
+    }
+};
+
+struct Console
+{
+    explicit Console(transport::ImcUdpConfig config)
+        : imc(test::shippedSchema(), config)
+    {
+        QObject::connect(&imc, &transport::ImcUdpTransport::received, [this](const msg::Message &m) {
+            tree.ingest(m);
+            health.observe(m);
+        });
+        tree.setOutputSink(&imc);
+    }
+    tree::VariableTree tree;
+    alarms::AlarmGraph graph;
+    alarms::HealthMonitor health{graph, tree};
+    transport::ImcUdpTransport imc;
+};
+
+transport::ImcUdpConfig consoleConfig()
+{
+    transport::ImcUdpConfig config;
+    config.port = 0;
+    config.discoveryPort = 0;
+    config.heartbeatMs = 200;
+    return config;
+}
+
+bool hasDepth(const tree::VariableTree &tree, const char *system)
+{
+    const tree::NodeId node = tree.find(QString::fromLatin1(system) + QStringLiteral("/EstimatedState/depth"));
+    return node != tree::noNode && tree.snapshot(node).present;
+}
+
+} // namespace
+
+TEST(ImcSimulator, StaticDestinationStreamsAndCommandsReachOnlyTheirTarget)
+{
+    Vehicle a, b;
+    a.start({QStringLiteral("--id"), QStringLiteral("0x1f"), QStringLiteral("--name"), QStringLiteral("lauv-a"),
+             QStringLiteral("--port"), QStringLiteral("16002")});
+    b.start({QStringLiteral("--id"), QStringLiteral("0x20"), QStringLiteral("--name"), QStringLiteral("lauv-b"),
+             QStringLiteral("--port"), QStringLiteral("16003"), QStringLiteral("--kind"), QStringLiteral("asv")});
+    transport::ImcUdpConfig config = consoleConfig();
+    config.destinations = {{QHostAddress::LocalHost, 16002}, {QHostAddress::LocalHost, 16003}};
+    Console console(config);
+    ASSERT_TRUE(console.imc.start());
+    // Streams start after the console's heartbeat; names come with the vehicles' Announce (every 10 s, first at once).
+    ASSERT_TRUE(QTest::qWaitFor([&] { return hasDepth(console.tree, "lauv-a") && hasDepth(console.tree, "lauv-b"); }, 15000))
+        << "systems: " << console.tree.childNames(u"").join(u',').toStdString();
+    // Entities by their labels, and the paper's Motor message, within a second or two.
+    EXPECT_TRUE(QTest::qWaitFor([&] {
+        return console.tree.find(u"lauv-a/EntityState@Batteries/state") != tree::noNode
+               && console.tree.find(u"lauv-a/Motor/speed") != tree::noNode;
+    }, 5000));
+
+    msg::Message abort(test::shippedSchema()->byAbbrev(u"Abort"));
+    ASSERT_TRUE(console.tree.write(QStringLiteral("lauv-a"), abort));
+    ASSERT_TRUE(QTest::qWaitFor([&] { return a.output.contains("received Abort"); }, 5000)) << a.output.constData();
+    QTest::qWait(300);
+    EXPECT_FALSE(b.output.contains("received Abort")) << "only its target gets a command";
+}
+
+TEST(ImcSimulator, DiscoveredThroughAnnounceAndCommsLossIsRaisedAndCleared)
+{
+    transport::ImcUdpConfig config = consoleConfig();
+    config.discovery = true;
+    Console console(config);
+    ASSERT_TRUE(console.imc.start());
+    const QStringList arguments{QStringLiteral("--id"), QStringLiteral("0x21"), QStringLiteral("--name"),
+                                QStringLiteral("lauv-c"), QStringLiteral("--port"), QStringLiteral("16004"),
+                                QStringLiteral("--announce-port"), QString::number(console.imc.discoveryPort())};
+    auto vehicle = std::make_unique<Vehicle>();
+    vehicle->start(arguments);
+    ASSERT_TRUE(QTest::qWaitFor([&] { return hasDepth(console.tree, "lauv-c"); }, 15000));
+
+    // Killed: "communications lost" within 2 s plus its message interval.
+    const auto node = [&] { return console.graph.find(QStringLiteral("systems/lauv-c")); };
+    vehicle.reset();
+    QElapsedTimer silence;
+    silence.start();
+    ASSERT_TRUE(QTest::qWaitFor([&] {
+        console.health.check();
+        return node() != alarms::AlarmGraph::noNode && console.graph.ownLevel(node()) == alarms::Warning;
+    }, 10000));
+    std::printf("communications lost raised %lld ms after the vehicle was killed\n", static_cast<long long>(silence.elapsed()));
+    EXPECT_LT(silence.elapsed(), 3500) << "2 s + the heartbeat period, with margin for this check's own polling";
+    EXPECT_TRUE(console.graph.message(node()).startsWith(QStringLiteral("communications lost")));
+
+    // Restarted: cleared as soon as it is heard again.
+    vehicle = std::make_unique<Vehicle>();
+    vehicle->start(arguments);
+    ASSERT_TRUE(QTest::qWaitFor([&] { return console.graph.ownLevel(node()) == alarms::Normal; }, 15000));
+}
