@@ -18,6 +18,8 @@ std::expected<CommandLine, QString> CommandLine::parse(const QStringList &argume
         QStringLiteral("file"));
     const QCommandLineOption screenshot(QStringLiteral("screenshot"),
         QStringLiteral("Render the console, write it to a PNG file and exit."), QStringLiteral("file"));
+    const QCommandLineOption screenshotDelay(QStringLiteral("screenshot-delay"),
+        QStringLiteral("With --screenshot: wait this many milliseconds first (let data arrive)."), QStringLiteral("ms"));
     const QCommandLineOption palette(QStringLiteral("palette"),
         QStringLiteral("Colour palette: day, dusk or night."), QStringLiteral("name"));
     const QCommandLineOption size(QStringLiteral("size"),
@@ -29,7 +31,7 @@ std::expected<CommandLine, QString> CommandLine::parse(const QStringList &argume
         QStringLiteral("Local UDP port for IMC, on 127.0.0.1 (default 6001; 0 turns IMC off)."), QStringLiteral("port"));
     const QCommandLineOption imcPeer(QStringLiteral("imc-peer"),
         QStringLiteral("An IMC vehicle to talk to, as host:port (repeat for several)."), QStringLiteral("host:port"));
-    parser.addOptions({console, screenshot, palette, size, selfTest, imcPort, imcPeer});
+    parser.addOptions({console, screenshot, screenshotDelay, palette, size, selfTest, imcPort, imcPeer});
     if (!parser.parse(arguments))
         return std::unexpected(parser.errorText());
     if (parser.isSet(QStringLiteral("help")))
@@ -47,6 +49,13 @@ std::expected<CommandLine, QString> CommandLine::parse(const QStringList &argume
     if (!QFileInfo(result.consoleFile).isFile())
         return std::unexpected(QStringLiteral("console file '%1' does not exist").arg(result.consoleFile));
     result.screenshotFile = parser.value(screenshot);
+    if (parser.isSet(screenshotDelay)) {
+        bool ok = false;
+        result.screenshotDelayMs = parser.value(screenshotDelay).toInt(&ok);
+        if (!ok || result.screenshotDelayMs < 0 || result.screenshotDelayMs > 600000)
+            return std::unexpected(QStringLiteral("--screenshot-delay must be milliseconds (0 to 600000), not '%1'")
+                                       .arg(parser.value(screenshotDelay)));
+    }
     result.selfTest = parser.isSet(selfTest);
     result.palette = parser.value(palette).toLower();
     if (!result.palette.isEmpty() && result.palette != u"day" && result.palette != u"dusk"

@@ -11,6 +11,7 @@ struct CommandLine
 {
     QString consoleFile;     // layout to open
     QString screenshotFile;  // render, save a PNG, exit
+    int screenshotDelayMs = 0; // wait this long after the first frame
     QString palette;         // day, dusk or night; empty = as last time
     QSize windowSize{1280, 800};
     quint16 imcPort = 6001;             // IMC over UDP, on 127.0.0.1

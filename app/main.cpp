@@ -63,7 +63,7 @@ int main(int argc, char *argv[])
 
     // IMC over UDP, on loopback unless a vehicle elsewhere is named.
     std::unique_ptr<neptus::transport::ImcUdpTransport> imc;
-    if (commandLine->imcPort != 0 && commandLine->screenshotFile.isEmpty()) {
+    if (commandLine->imcPort != 0) {
         neptus::transport::ImcUdpConfig config;
         config.port = commandLine->imcPort;
         for (const QString &peer : commandLine->imcPeers) {
@@ -97,9 +97,10 @@ int main(int argc, char *argv[])
     auto *window = qobject_cast<QQuickWindow *>(engine.rootObjects().constFirst());
 
     if (!commandLine->screenshotFile.isEmpty()) {
-        // Grab after the first frame so the window has its final size and content.
+        // Grab after the first frame (and the delay asked for, to let data
+        // arrive) so the window has its final size and content.
         QObject::connect(window, &QQuickWindow::frameSwapped, &app, [&] {
-            QTimer::singleShot(0, &app, [&] {
+            QTimer::singleShot(commandLine->screenshotDelayMs, &app, [&] {
                 QCoreApplication::exit(saveScreenshot(window, commandLine->screenshotFile));
             });
         }, Qt::SingleShotConnection);

@@ -7,6 +7,7 @@ Item {
     id: loader
 
     property url source
+    property QtObject session: null
     property Console item: null
     property string errorString: ""
     readonly property string title: item ? item.title : ""
@@ -27,7 +28,8 @@ Item {
             fail(component.errorString())
             return
         }
-        const object = component.createObject(loader, { width: loader.width, height: loader.height })
+        const object = component.createObject(loader, { width: loader.width, height: loader.height,
+                                                         session: loader.session })
         if (!object) {
             fail(component.errorString() || qsTr("the layout could not be created"))
         } else if (!(object instanceof Console)) {

@@ -51,6 +51,7 @@ ApplicationWindow {
     ConsoleLoader {
         id: consoleLoader
         anchors.fill: parent
+        session: window.session
         source: window.consoleUrl
     }
 }

@@ -8,4 +8,7 @@ Item {
     property string title: qsTr("Console")
     // Names of the systems this console is for; empty means every system.
     property list<string> systems
+    // The running console's tree, alarms and scripts (session.tree,
+    // session.alarms, session.scripts); null when a layout is only previewed.
+    property QtObject session: null
 }
