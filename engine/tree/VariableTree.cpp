@@ -559,12 +559,8 @@ const Message *VariableTree::resolveLocked(const Node &node, const Message *&own
         if (!current->def())
             return nullptr;
         int index = step.field;
-        if (step.kind == Kind::ListItem) {
-            // The list item's field is the list's, already resolved by the parent step.
-            const Node &list = m_nodes[static_cast<size_t>(step.parent)];
-            Q_UNUSED(list);
-            continue;
-        }
+        if (step.kind == Kind::ListItem)
+            continue; // resolved with its list, the step before
         if (step.ownerDef != current->def() || index < 0 || index >= current->fieldCount()
             || current->field(index).abbrev != step.name)
             index = current->def()->indexOf(step.name);
