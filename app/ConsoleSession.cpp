@@ -9,6 +9,7 @@ ConsoleSession::ConsoleSession(std::shared_ptr<const neptus::msg::Schema> schema
     , m_schema(std::move(schema))
     , m_scripts(std::make_unique<neptus::scripting::ScriptHost>(m_tree, m_graph))
 {
+    m_tree.setOutputSink(&m_router);
     m_healthCheck.setInterval(250);
     connect(&m_healthCheck, &QTimer::timeout, this, [this] { m_health.check(); });
     m_healthCheck.start();
@@ -26,8 +27,17 @@ QString ConsoleSession::send(const QString &system, const QVariantMap &json)
     return {};
 }
 
-void ConsoleSession::ingest(const neptus::msg::Message &message)
+void ConsoleSession::addLink(const QString &name, neptus::tree::VariableTree::OutputSink *sink)
 {
+    m_router.addLink(name, sink);
+}
+
+void ConsoleSession::ingest(const neptus::msg::Message &message, const QString &link)
+{
+    if (!link.isEmpty() && m_router.linkOf(message.header.src) != link) {
+        m_router.heard(message.header.src, link);
+        m_tree.setSystemLink(message.header.src, link);
+    }
     m_tree.ingest(message);
     m_health.observe(message);
 }

@@ -3,6 +3,7 @@
 #include "AlarmGraph.h"
 #include "AlarmListModel.h"
 #include "HealthMonitor.h"
+#include "LinkRouter.h"
 #include "ScriptHost.h"
 #include "VariableTree.h"
 #include "VariableTreeModel.h"
@@ -37,8 +38,11 @@ public:
     neptus::alarms::AlarmListModel *alarmModel() { return &m_alarmModel; }
     neptus::scripting::ScriptHost *scripts() { return m_scripts.get(); }
 
-    // A decoded message from any transport (any thread).
-    void ingest(const neptus::msg::Message &message);
+    // A transport, by name ("IMC/UDP", "DDS"): commands to a system go over
+    // the link it was last heard on.
+    void addLink(const QString &name, neptus::tree::VariableTree::OutputSink *sink);
+    // A decoded message from any transport (any thread), and the link it came on.
+    void ingest(const neptus::msg::Message &message, const QString &link = {});
 
     // For components (a joystick, a command button): sends a message, given
     // as JSON ({"abbrev": "Abort", "fields": {...}}), to a system through the
@@ -52,6 +56,7 @@ private:
     neptus::alarms::AlarmGraph m_graph;
     neptus::alarms::AlarmListModel m_alarmModel{&m_graph};
     neptus::alarms::HealthMonitor m_health{m_graph, m_tree};
+    neptus::transport::LinkRouter m_router;
     std::unique_ptr<neptus::scripting::ScriptHost> m_scripts;
     QTimer m_healthCheck;
 };

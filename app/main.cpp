@@ -76,8 +76,8 @@ int main(int argc, char *argv[])
             imc.reset();
         } else {
             QObject::connect(imc.get(), &neptus::transport::ImcUdpTransport::received, &session,
-                             [&session](const neptus::msg::Message &m) { session.ingest(m); });
-            session.variableTree().setOutputSink(imc.get());
+                             [&session](const neptus::msg::Message &m) { session.ingest(m, QStringLiteral("IMC/UDP")); });
+            session.addLink(QStringLiteral("IMC/UDP"), imc.get());
         }
     }
 

@@ -45,6 +45,7 @@ struct VariableTree::Binding
 struct VariableTree::SystemInfo
 {
     quint16 id = 0xFFFF;
+    QString link;
     NodeId node = noNode;
     NodeId out = noNode;
     bool named = false;
@@ -258,6 +259,17 @@ void VariableTree::setSystemName(quint16 id, const QString &name)
     }
 }
 
+void VariableTree::setSystemLink(quint16 id, const QString &link)
+{
+    QMutexLocker lock(&m_mutex);
+    SystemInfo &info = systemLocked(id);
+    if (info.link == link)
+        return;
+    info.link = link;
+    for (Consumer &consumer : m_consumers)
+        consumer.structure.renamedNodes.push_back(info.node); // its shown text changed
+}
+
 void VariableTree::learnNamesLocked(const Message &message, SystemInfo &system)
 {
     // Only EntityInfo (3), EntityList (5) and Announce (151) carry names.
@@ -402,8 +414,7 @@ bool VariableTree::write(const QString &system, Message message)
     b.receivedMs = m_clock->now().toMSecsSinceEpoch();
     markChangedLocked(index);
     lock.unlock();
-    sink->publish(id, message);
-    return true;
+    return sink->publish(id, message);
 }
 
 // --- Reading -----------------------------------------------------------------------
@@ -608,7 +619,8 @@ VariableTree::Snapshot VariableTree::snapshot(NodeId id) const
         for (const auto &info : m_systems) {
             if (info->node == id) {
                 s.value = info->id;
-                s.text = defaultSystemName(info->id);
+                s.text = info->link.isEmpty() ? defaultSystemName(info->id)
+                                              : defaultSystemName(info->id) + QStringLiteral(" via ") + info->link;
                 s.receivedMs = info->lastReceivedMs;
                 s.source = info->id;
                 s.present = info->lastReceivedMs > 0;

@@ -65,7 +65,8 @@ public:
     {
     public:
         virtual ~OutputSink() = default;
-        virtual void publish(quint16 system, const msg::Message &message) = 0;
+        // False when `system` cannot be reached this way.
+        virtual bool publish(quint16 system, const msg::Message &message) = 0;
     };
 
     explicit VariableTree(const Clock *clock = &Clock::system());
@@ -78,12 +79,15 @@ public:
     void ingest(const msg::Message &message);
     // Known names for system ids, before (or instead of) their Announce.
     void setSystemName(quint16 id, const QString &name);
+    // The link a system was last heard on ("IMC/UDP", "DDS"), shown beside its id.
+    void setSystemLink(quint16 id, const QString &link);
 
     // --- Output ----------------------------------------------------------------
     void setOutputSink(OutputSink *sink);
     // Sends `message` to `system` through the sink and records it under
     // "system/out/Message/..." so consoles show what was commanded. Returns
-    // false (and records nothing) without a sink.
+    // false without a sink, for an unknown system, or when the sink cannot
+    // reach it.
     bool write(const QString &system, msg::Message message);
 
     // --- Structure (any thread) --------------------------------------------------

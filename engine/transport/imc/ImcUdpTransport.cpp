@@ -130,17 +130,18 @@ void ImcUdpTransport::heartbeat()
     }
 }
 
-void ImcUdpTransport::publish(quint16 system, const msg::Message &message)
+bool ImcUdpTransport::publish(quint16 system, const msg::Message &message)
 {
     const auto it = m_endpoints.constFind(system);
     if (it == m_endpoints.cend())
-        return;
+        return false;
     msg::Message addressed = message;
     addressed.header.src = m_config.systemId;
     addressed.header.srcEnt = 0xFF;
     addressed.header.dst = system;
     addressed.header.timestamp = QDateTime::currentMSecsSinceEpoch() / 1000.0;
     send(addressed, *it);
+    return true;
 }
 
 } // namespace neptus::transport

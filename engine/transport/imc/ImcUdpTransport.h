@@ -53,7 +53,7 @@ public:
     int decodeErrors() const { return m_decodeErrors; }
 
     // OutputSink: sends `message` to `system`, addressed to it.
-    void publish(quint16 system, const msg::Message &message) override;
+    bool publish(quint16 system, const msg::Message &message) override;
 
     // Sends a Heartbeat (and every fifth time an Announce) to every vehicle now.
     void heartbeat();

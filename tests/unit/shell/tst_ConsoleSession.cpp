@@ -10,7 +10,11 @@ namespace {
 class RecordingSink : public tree::VariableTree::OutputSink
 {
 public:
-    void publish(quint16 system, const msg::Message &message) override { sent.push_back({system, message}); }
+    bool publish(quint16 system, const msg::Message &message) override
+    {
+        sent.push_back({system, message});
+        return true;
+    }
     std::vector<std::pair<quint16, msg::Message>> sent;
 };
 } // namespace
@@ -22,9 +26,17 @@ TEST(ConsoleSession, ComponentsSendThroughTheOutputBranch)
     const QVariantMap abort{{QStringLiteral("abbrev"), QStringLiteral("Abort")}};
     EXPECT_TRUE(session.send(QStringLiteral("lauv"), abort).contains(QStringLiteral("no link"))) << "no transport yet";
 
-    RecordingSink sink;
-    session.variableTree().setOutputSink(&sink);
+    RecordingSink sink, other;
+    session.addLink(QStringLiteral("IMC/UDP"), &sink);
+    session.addLink(QStringLiteral("DDS"), &other);
+    EXPECT_FALSE(session.send(QStringLiteral("lauv"), abort).isEmpty()) << "not heard yet: no link to answer on";
+    msg::Message beat(test::shippedSchema()->byAbbrev(u"Heartbeat"));
+    beat.header.src = 0x1f;
+    session.ingest(beat, QStringLiteral("IMC/UDP"));
     EXPECT_EQ(session.send(QStringLiteral("lauv"), abort), QString());
+    EXPECT_TRUE(other.sent.empty()) << "over the link the system was heard on";
+    const auto system = session.variableTree().snapshot(session.variableTree().find(u"lauv"));
+    EXPECT_EQ(system.text, QStringLiteral("0x001f via IMC/UDP"));
     ASSERT_EQ(sink.sent.size(), 1u);
     EXPECT_EQ(sink.sent[0].first, 0x1f);
     EXPECT_EQ(sink.sent[0].second.abbrev(), QStringLiteral("Abort"));

@@ -34,7 +34,11 @@ Message state(quint16 src, double depth, quint8 ent = 0xFF)
 class RecordingSink : public VariableTree::OutputSink
 {
 public:
-    void publish(quint16 system, const Message &message) override { sent.push_back({system, message}); }
+    bool publish(quint16 system, const Message &message) override
+    {
+        sent.push_back({system, message});
+        return true;
+    }
     std::vector<std::pair<quint16, Message>> sent;
 };
 
