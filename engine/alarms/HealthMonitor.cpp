@@ -50,7 +50,7 @@ void HealthMonitor::observe(const msg::Message &message)
     System &system = systemLocked(message.header.src);
     if (system.lastMs > 0) {
         const double gap = static_cast<double>(now - system.lastMs);
-        system.intervalMs = 0.9 * system.intervalMs + 0.1 * gap;
+        system.intervalMs = system.intervalMs < 0 ? gap : 0.9 * system.intervalMs + 0.1 * gap;
     }
     system.lastMs = now;
     if (system.lost != Normal) {
@@ -72,7 +72,8 @@ void HealthMonitor::check()
         if (system.lastMs == 0)
             continue;
         const double silent = static_cast<double>(now - system.lastMs);
-        const double limit = system.intervalMs + m_timeoutMs;
+        // A system heard once has no interval yet: assume IMC's 1 s heartbeat.
+        const double limit = (system.intervalMs < 0 ? 1000.0 : system.intervalMs) + m_timeoutMs;
         const Level level = silent > 3 * limit ? Error : silent > limit ? Warning : Normal;
         if (level == system.lost)
             continue;

@@ -36,7 +36,7 @@ private:
         AlarmGraph::NodeId node = AlarmGraph::noNode;
         QString name;
         qint64 lastMs = 0;
-        double intervalMs = 1000; // running average between messages
+        double intervalMs = -1;   // running average between messages; -1 until two were heard
         Level lost = Normal;
     };
 
