@@ -3,6 +3,7 @@
 // announces itself, and prints every command addressed to it. Faults and a
 // communications drop can be switched on from the command line.
 #include "Codec.h"
+#include "DdsTransport.h"
 #include "SimulatedVehicle.h"
 
 #include <QCommandLineParser>
@@ -47,7 +48,9 @@ int main(int argc, char *argv[])
     const QCommandLineOption fault(QStringLiteral("fault"), QStringLiteral("battery-low or motor-jammed (repeatable)."), QStringLiteral("fault"));
     const QCommandLineOption drop(QStringLiteral("comms-drop"), QStringLiteral("Say nothing from second START for DURATION seconds."), QStringLiteral("START:DURATION"));
     const QCommandLineOption defs(QStringLiteral("defs"), QStringLiteral("Message definition file (repeatable; default msgdefs/)."), QStringLiteral("file"));
-    parser.addOptions({id, name, kind, port, console, announcePort, phase, fault, drop, defs});
+    const QCommandLineOption dds(QStringLiteral("dds"), QStringLiteral("Also publish over Cyclone DDS (loopback configuration)."));
+    const QCommandLineOption domain(QStringLiteral("dds-domain"), QStringLiteral("DDS domain id (default 0)."), QStringLiteral("id"), QStringLiteral("0"));
+    parser.addOptions({id, name, kind, port, console, announcePort, phase, fault, drop, defs, dds, domain});
     if (!parser.parse(QCoreApplication::arguments()))
         return usage(parser.errorText());
     if (parser.isSet(QStringLiteral("help")))
@@ -139,6 +142,22 @@ int main(int argc, char *argv[])
             }
         }
     });
+    // Over DDS there is no heartbeat handshake: publish to whoever subscribes.
+    std::unique_ptr<transport::DdsTransport> ddsLink;
+    if (parser.isSet(dds)) {
+        ddsLink = std::make_unique<transport::DdsTransport>(
+            *schema, transport::DdsConfig{static_cast<dds_domainid_t>(parser.value(domain).toUInt()), {}, config.id});
+        if (auto started = ddsLink->start(); !started) {
+            std::fprintf(stderr, "neptus-sim: %s\n", qPrintable(started.error()));
+            return 1;
+        }
+        QObject::connect(ddsLink.get(), &transport::DdsTransport::received, [&](const msg::Message &m) {
+            if (m.header.dst == config.id) {
+                std::printf("neptus-sim: received %s from 0x%04x over DDS\n", qPrintable(m.abbrev()), m.header.src);
+                std::fflush(stdout);
+            }
+        });
+    }
     double previous = -1;
     QByteArray buffer;
     QTimer timer;
@@ -150,6 +169,8 @@ int main(int argc, char *argv[])
         if (silent)
             return;
         for (const msg::Message &m : messages) {
+            if (ddsLink)
+                ddsLink->broadcast(m);
             if (!codec.encode(m, buffer))
                 continue;
             for (auto it = consoles.cbegin(); it != consoles.cend(); ++it) {

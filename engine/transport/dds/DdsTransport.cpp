@@ -1,0 +1,156 @@
+#include "DdsTransport.h"
+
+#include "Envelope.h"
+
+#include <QDateTime>
+#include <QFile>
+#include <QMetaObject>
+#include <QMutexLocker>
+
+namespace neptus::transport {
+
+DdsTransport::DdsTransport(std::shared_ptr<const msg::Schema> schema, DdsConfig config, QObject *parent)
+    : QObject(parent)
+    , m_codec(std::move(schema))
+    , m_config(std::move(config))
+{
+}
+
+DdsTransport::~DdsTransport()
+{
+    if (m_participant > 0)
+        dds_delete(m_participant); // also deletes its readers, writers and topics, and waits for listeners
+}
+
+std::expected<void, QString> DdsTransport::start()
+{
+    QString file = m_config.configFile.isEmpty() ? QStringLiteral(NEPTUS_DDS_CONFIG) : m_config.configFile;
+    QFile xml(file);
+    if (!xml.open(QIODevice::ReadOnly))
+        return std::unexpected(QStringLiteral("DDS: cannot read the configuration %1: %2").arg(file, xml.errorString()));
+    const QByteArray config = xml.readAll();
+    const dds_entity_t domain = dds_create_domain(m_config.domain, config.constData());
+    // A second transport in the same process shares the domain already made.
+    if (domain < 0 && domain != DDS_RETCODE_PRECONDITION_NOT_MET)
+        return std::unexpected(QStringLiteral("DDS: cannot create domain %1 from %2: %3")
+                                   .arg(m_config.domain).arg(file, QString::fromUtf8(dds_strretcode(domain))));
+    m_participant = dds_create_participant(m_config.domain, nullptr, nullptr);
+    if (m_participant < 0)
+        return std::unexpected(QStringLiteral("DDS: cannot join domain %1: %2")
+                                   .arg(m_config.domain).arg(QString::fromUtf8(dds_strretcode(m_participant))));
+    dds_qos_t *qos = dds_create_qos();
+    dds_qset_reliability(qos, DDS_RELIABILITY_RELIABLE, DDS_MSECS(100));
+    dds_qset_history(qos, DDS_HISTORY_KEEP_LAST, 16);
+    dds_listener_t *listener = dds_create_listener(this);
+    dds_lset_data_available(listener, &DdsTransport::onData);
+    for (const auto &def : m_codec.schema().messages()) {
+        const dds_entity_t topic = topicFor(def->abbrev);
+        if (topic < 0)
+            continue;
+        const dds_entity_t reader = dds_create_reader(m_participant, topic, qos, listener);
+        if (reader < 0) {
+            dds_delete_listener(listener);
+            dds_delete_qos(qos);
+            return std::unexpected(QStringLiteral("DDS: cannot read topic neptus_%1: %2")
+                                       .arg(def->abbrev, QString::fromUtf8(dds_strretcode(reader))));
+        }
+    }
+    dds_delete_listener(listener);
+    dds_delete_qos(qos);
+    return {};
+}
+
+dds_entity_t DdsTransport::topicFor(const QString &abbrev)
+{
+    QMutexLocker lock(&m_mutex);
+    const auto it = m_topics.constFind(abbrev);
+    if (it != m_topics.cend())
+        return *it;
+    const QByteArray name = "neptus_" + abbrev.toUtf8();
+    const dds_entity_t topic = dds_create_topic(m_participant, &neptus_Envelope_desc, name.constData(), nullptr, nullptr);
+    m_topics.insert(abbrev, topic);
+    return topic;
+}
+
+void DdsTransport::onData(dds_entity_t reader, void *self)
+{
+    auto *transport = static_cast<DdsTransport *>(self);
+    void *samples[16] = {};
+    dds_sample_info_t infos[16];
+    for (;;) {
+        const dds_return_t n = dds_take(reader, samples, infos, 16, 16);
+        if (n <= 0)
+            break;
+        for (int i = 0; i < n; ++i) {
+            if (!infos[i].valid_data)
+                continue;
+            const auto *envelope = static_cast<const neptus_Envelope *>(samples[i]);
+            if (envelope->src == transport->m_config.systemId)
+                continue; // our own
+            auto message = transport->m_codec.decode(
+                QByteArrayView(envelope->packet._buffer, static_cast<qsizetype>(envelope->packet._length)));
+            if (!message)
+                continue;
+            QMetaObject::invokeMethod(transport, [transport, m = std::move(*message)] { emit transport->received(m); },
+                                      Qt::QueuedConnection);
+        }
+        dds_return_loan(reader, samples, n);
+    }
+}
+
+bool DdsTransport::write(const msg::Message &message)
+{
+    if (m_participant <= 0 || !message.def())
+        return false;
+    QByteArray packet;
+    if (!m_codec.encode(message, packet))
+        return false;
+    dds_entity_t writer;
+    {
+        const dds_entity_t topic = topicFor(message.abbrev());
+        QMutexLocker lock(&m_mutex);
+        writer = m_writers.value(message.abbrev(), 0);
+        if (writer == 0) {
+            dds_qos_t *qos = dds_create_qos();
+            dds_qset_reliability(qos, DDS_RELIABILITY_RELIABLE, DDS_MSECS(100));
+            dds_qset_history(qos, DDS_HISTORY_KEEP_LAST, 16);
+            writer = dds_create_writer(m_participant, topic, qos, nullptr);
+            dds_delete_qos(qos);
+            if (writer < 0)
+                return false;
+            m_writers.insert(message.abbrev(), writer);
+        }
+    }
+    neptus_Envelope envelope{};
+    envelope.src = message.header.src;
+    envelope.src_ent = message.header.srcEnt;
+    envelope.dst = message.header.dst;
+    envelope.dst_ent = message.header.dstEnt;
+    envelope.timestamp = message.header.timestamp;
+    envelope.mgid = message.id();
+    envelope.packet._buffer = reinterpret_cast<uint8_t *>(packet.data());
+    envelope.packet._length = static_cast<uint32_t>(packet.size());
+    envelope.packet._maximum = static_cast<uint32_t>(packet.size());
+    envelope.packet._release = false;
+    return dds_write(writer, &envelope) == DDS_RETCODE_OK;
+}
+
+bool DdsTransport::broadcast(const msg::Message &message)
+{
+    msg::Message own = message;
+    own.header.src = m_config.systemId;
+    if (own.header.timestamp == 0)
+        own.header.timestamp = QDateTime::currentMSecsSinceEpoch() / 1000.0;
+    return write(own);
+}
+
+bool DdsTransport::publish(quint16 system, const msg::Message &message)
+{
+    msg::Message addressed = message;
+    addressed.header.src = m_config.systemId;
+    addressed.header.dst = system;
+    addressed.header.timestamp = QDateTime::currentMSecsSinceEpoch() / 1000.0;
+    return write(addressed);
+}
+
+} // namespace neptus::transport

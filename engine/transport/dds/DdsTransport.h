@@ -1,0 +1,60 @@
+#pragma once
+
+#include "Codec.h"
+#include "VariableTree.h"
+
+#include <QHash>
+#include <QMutex>
+#include <QObject>
+
+#include <dds/dds.h>
+
+#include <expected>
+#include <memory>
+
+namespace neptus::transport {
+
+struct DdsConfig
+{
+    dds_domainid_t domain = 0;
+    QString configFile;           // Cyclone XML; the project's dds/loopback.xml by default
+    quint16 systemId = 0x4001;
+};
+
+// Cyclone DDS between consoles and vehicles: every message of the schema on
+// its own topic ("neptus_<abbrev>"), carried as an IMC packet in a fixed
+// envelope (Envelope.idl), reliable, keyed by the sender. Samples arrive on
+// Cyclone's threads and are handed to this object's thread as `received`.
+class DdsTransport : public QObject, public tree::VariableTree::OutputSink
+{
+    Q_OBJECT
+
+public:
+    DdsTransport(std::shared_ptr<const msg::Schema> schema, DdsConfig config, QObject *parent = nullptr);
+    ~DdsTransport() override;
+
+    std::expected<void, QString> start();
+
+    // Sends a message of this node to everyone (vehicles, simulators).
+    bool broadcast(const msg::Message &message);
+    // OutputSink: to one system.
+    bool publish(quint16 system, const msg::Message &message) override;
+
+signals:
+    void received(const neptus::msg::Message &message);
+
+private:
+    static void onData(dds_entity_t reader, void *self);
+    dds_entity_t topicFor(const QString &abbrev);
+    bool write(const msg::Message &message);
+
+    msg::Codec m_codec;
+    DdsConfig m_config;
+    dds_entity_t m_participant = 0;
+    QMutex m_mutex;
+    QHash<QString, dds_entity_t> m_topics;
+    QHash<QString, dds_entity_t> m_writers;
+    QByteArray m_buffer;
+};
+
+} // namespace neptus::transport

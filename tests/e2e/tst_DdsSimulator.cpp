@@ -1,0 +1,93 @@
+// Simulated vehicles as separate processes over Cyclone DDS on loopback
+// (inside the test sandbox's private network namespace), seen by a console.
+#include "AlarmGraph.h"
+#include "DdsTransport.h"
+#include "HealthMonitor.h"
+#include "VariableTree.h"
+
+#include "Schemas.h"
+
+#include <QElapsedTimer>
+#include <QProcess>
+#include <QTest>
+
+#include <gtest/gtest.h>
+
+using namespace neptus;
+
+namespace {
+
+struct Vehicle
+{
+    std::unique_ptr<QProcess> process = std::make_unique<QProcess>();
+    QByteArray output;
+    void start(const QStringList &arguments)
+    {
+        process->setProcessChannelMode(QProcess::MergedChannels);
+        QObject::connect(process.get(), &QProcess::readyRead, [this] { output += process->readAll(); });
+        process->start(QStringLiteral(NEPTUS_SIM_PATH), arguments);
+        ASSERT_TRUE(process->waitForStarted(5000));
+    }
+    ~Vehicle()
+    {
+        if (process->state() != QProcess::NotRunning) {
+            process->kill();
+            process->waitForFinished(5000);
+        }
+    }
+};
+
+bool hasDepth(const tree::VariableTree &tree, const char *system)
+{
+    const tree::NodeId node = tree.find(QString::fromLatin1(system) + QStringLiteral("/EstimatedState/depth"));
+    return node != tree::noNode && tree.snapshot(node).present;
+}
+
+} // namespace
+
+TEST(DdsSimulator, VehiclesAreSeenCommandedAndMissed)
+{
+    tree::VariableTree tree;
+    alarms::AlarmGraph graph;
+    alarms::HealthMonitor health(graph, tree);
+    transport::DdsTransport console(test::shippedSchema(), transport::DdsConfig{7, {}, 0x4001});
+    ASSERT_TRUE(console.start());
+    QObject::connect(&console, &transport::DdsTransport::received, [&](const msg::Message &m) {
+        tree.ingest(m);
+        health.observe(m);
+    });
+    tree.setOutputSink(&console);
+
+    auto a = std::make_unique<Vehicle>();
+    Vehicle b;
+    const QStringList aArguments{QStringLiteral("--dds"), QStringLiteral("--dds-domain"), QStringLiteral("7"),
+                                 QStringLiteral("--id"), QStringLiteral("0x31"), QStringLiteral("--name"),
+                                 QStringLiteral("dds-a"), QStringLiteral("--port"), QStringLiteral("16102")};
+    a->start(aArguments);
+    // Started after the console: discovered all the same.
+    b.start({QStringLiteral("--dds"), QStringLiteral("--dds-domain"), QStringLiteral("7"), QStringLiteral("--id"),
+             QStringLiteral("0x32"), QStringLiteral("--name"), QStringLiteral("dds-b"), QStringLiteral("--port"),
+             QStringLiteral("16103"), QStringLiteral("--kind"), QStringLiteral("asv")});
+    // Names arrive with the Announce every 10 s; ids at once.
+    ASSERT_TRUE(QTest::qWaitFor([&] { return hasDepth(tree, "0x0031") || hasDepth(tree, "dds-a"); }, 20000))
+        << "systems: " << tree.childNames(u"").join(u',').toStdString();
+    ASSERT_TRUE(QTest::qWaitFor([&] { return hasDepth(tree, "0x0032") || hasDepth(tree, "dds-b"); }, 20000));
+
+    ASSERT_TRUE(console.publish(0x31, msg::Message(test::shippedSchema()->byAbbrev(u"Abort"))));
+    ASSERT_TRUE(QTest::qWaitFor([&] { return a->output.contains("received Abort"); }, 5000)) << a->output.constData();
+    QTest::qWait(300);
+    EXPECT_FALSE(b.output.contains("received Abort")) << "only its target acts on a command";
+
+    a.reset(); // killed
+    QElapsedTimer silence;
+    silence.start();
+    const auto node = [&] { return graph.find(QStringLiteral("systems/") + tree.systemName(0x31)); };
+    ASSERT_TRUE(QTest::qWaitFor([&] {
+        health.check();
+        return node() != alarms::AlarmGraph::noNode && graph.ownLevel(node()) == alarms::Warning;
+    }, 10000));
+    std::printf("DDS: communications lost raised %lld ms after the vehicle was killed\n",
+                static_cast<long long>(silence.elapsed()));
+    EXPECT_LT(silence.elapsed(), 3000);
+    EXPECT_LT(graph.ownLevel(graph.find(QStringLiteral("systems/") + tree.systemName(0x32))), alarms::Warning);
+}
