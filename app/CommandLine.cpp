@@ -31,7 +31,11 @@ std::expected<CommandLine, QString> CommandLine::parse(const QStringList &argume
         QStringLiteral("Local UDP port for IMC, on 127.0.0.1 (default 6001; 0 turns IMC off)."), QStringLiteral("port"));
     const QCommandLineOption imcPeer(QStringLiteral("imc-peer"),
         QStringLiteral("An IMC vehicle to talk to, as host:port (repeat for several)."), QStringLiteral("host:port"));
-    parser.addOptions({console, screenshot, screenshotDelay, palette, size, selfTest, imcPort, imcPeer});
+    const QCommandLineOption ddsDomain(QStringLiteral("dds-domain"),
+        QStringLiteral("Cyclone DDS domain id (default 0; -1 turns DDS off)."), QStringLiteral("id"));
+    const QCommandLineOption ddsConfig(QStringLiteral("dds-config"),
+        QStringLiteral("Cyclone DDS XML configuration (default: dds/loopback.xml, loopback only)."), QStringLiteral("file"));
+    parser.addOptions({console, screenshot, screenshotDelay, palette, size, selfTest, imcPort, imcPeer, ddsDomain, ddsConfig});
     if (!parser.parse(arguments))
         return std::unexpected(parser.errorText());
     if (parser.isSet(QStringLiteral("help")))
@@ -76,6 +80,18 @@ std::expected<CommandLine, QString> CommandLine::parse(const QStringList &argume
         if (!ok || port > 65535)
             return std::unexpected(QStringLiteral("--imc-port must be a port number, not '%1'").arg(parser.value(imcPort)));
         result.imcPort = static_cast<quint16>(port);
+    }
+    if (parser.isSet(ddsDomain)) {
+        bool ok = false;
+        result.ddsDomain = parser.value(ddsDomain).toInt(&ok);
+        if (!ok || result.ddsDomain < -1 || result.ddsDomain > 232)
+            return std::unexpected(QStringLiteral("--dds-domain must be a domain id from 0 to 232, or -1, not '%1'")
+                                       .arg(parser.value(ddsDomain)));
+    }
+    if (parser.isSet(ddsConfig)) {
+        result.ddsConfig = QFileInfo(parser.value(ddsConfig)).absoluteFilePath();
+        if (!QFileInfo(result.ddsConfig).isFile())
+            return std::unexpected(QStringLiteral("DDS configuration '%1' does not exist").arg(result.ddsConfig));
     }
     static const QRegularExpression peer(QStringLiteral("^[^:\\s]+:(\\d{1,5})$"));
     for (const QString &value : parser.values(imcPeer)) {

@@ -16,6 +16,8 @@ struct CommandLine
     QSize windowSize{1280, 800};
     quint16 imcPort = 6001;             // IMC over UDP, on 127.0.0.1
     QStringList imcPeers;               // static IMC destinations, "host:port"
+    int ddsDomain = 0;                  // -1: no DDS
+    QString ddsConfig;                  // Cyclone XML; empty: dds/loopback.xml
     bool selfTest = false;
 
     // Parses arguments (argv[0] included). An error is a message for the user.

@@ -2,6 +2,7 @@
 // renders it to a PNG (--screenshot) or checks every QML file (--self-test).
 #include "CommandLine.h"
 #include "ConsoleSession.h"
+#include "DdsTransport.h"
 #include "ImcUdpTransport.h"
 #include "SelfTest.h"
 
@@ -78,6 +79,21 @@ int main(int argc, char *argv[])
             QObject::connect(imc.get(), &neptus::transport::ImcUdpTransport::received, &session,
                              [&session](const neptus::msg::Message &m) { session.ingest(m, QStringLiteral("IMC/UDP")); });
             session.addLink(QStringLiteral("IMC/UDP"), imc.get());
+        }
+    }
+
+    // Cyclone DDS on the loopback configuration unless told otherwise.
+    std::unique_ptr<neptus::transport::DdsTransport> dds;
+    if (commandLine->ddsDomain >= 0) {
+        dds = std::make_unique<neptus::transport::DdsTransport>(
+            *schema, neptus::transport::DdsConfig{static_cast<dds_domainid_t>(commandLine->ddsDomain), commandLine->ddsConfig});
+        if (auto started = dds->start(); !started) {
+            std::fprintf(stderr, "neptus: %s; carrying on without DDS\n", qPrintable(started.error()));
+            dds.reset();
+        } else {
+            QObject::connect(dds.get(), &neptus::transport::DdsTransport::received, &session,
+                             [&session](const neptus::msg::Message &m) { session.ingest(m, QStringLiteral("DDS")); });
+            session.addLink(QStringLiteral("DDS"), dds.get());
         }
     }
 

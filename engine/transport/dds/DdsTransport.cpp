@@ -38,26 +38,40 @@ std::expected<void, QString> DdsTransport::start()
     if (m_participant < 0)
         return std::unexpected(QStringLiteral("DDS: cannot join domain %1: %2")
                                    .arg(m_config.domain).arg(QString::fromUtf8(dds_strretcode(m_participant))));
-    dds_qos_t *qos = dds_create_qos();
-    dds_qset_reliability(qos, DDS_RELIABILITY_RELIABLE, DDS_MSECS(100));
-    dds_qset_history(qos, DDS_HISTORY_KEEP_LAST, 16);
     dds_listener_t *listener = dds_create_listener(this);
     dds_lset_data_available(listener, &DdsTransport::onData);
     for (const auto &def : m_codec.schema().messages()) {
         const dds_entity_t topic = topicFor(def->abbrev);
         if (topic < 0)
             continue;
+        dds_qos_t *qos = qosFor(def->abbrev);
         const dds_entity_t reader = dds_create_reader(m_participant, topic, qos, listener);
+        dds_delete_qos(qos);
         if (reader < 0) {
             dds_delete_listener(listener);
-            dds_delete_qos(qos);
             return std::unexpected(QStringLiteral("DDS: cannot read topic neptus_%1: %2")
                                        .arg(def->abbrev, QString::fromUtf8(dds_strretcode(reader))));
         }
     }
     dds_delete_listener(listener);
-    dds_delete_qos(qos);
     return {};
+}
+
+dds_qos_t *DdsTransport::qosFor(const QString &abbrev) const
+{
+    dds_qos_t *qos = dds_create_qos();
+    if (m_config.lasting.contains(abbrev)) {
+        dds_qset_reliability(qos, DDS_RELIABILITY_RELIABLE, DDS_MSECS(100));
+        dds_qset_durability(qos, DDS_DURABILITY_TRANSIENT_LOCAL);
+        dds_qset_history(qos, DDS_HISTORY_KEEP_LAST, 1);
+    } else if (m_config.reliable.contains(abbrev)) {
+        dds_qset_reliability(qos, DDS_RELIABILITY_RELIABLE, DDS_MSECS(100));
+        dds_qset_history(qos, DDS_HISTORY_KEEP_LAST, 32);
+    } else {
+        dds_qset_reliability(qos, DDS_RELIABILITY_BEST_EFFORT, 0);
+        dds_qset_history(qos, DDS_HISTORY_KEEP_LAST, 1);
+    }
+    return qos;
 }
 
 dds_entity_t DdsTransport::topicFor(const QString &abbrev)
@@ -111,9 +125,7 @@ bool DdsTransport::write(const msg::Message &message)
         QMutexLocker lock(&m_mutex);
         writer = m_writers.value(message.abbrev(), 0);
         if (writer == 0) {
-            dds_qos_t *qos = dds_create_qos();
-            dds_qset_reliability(qos, DDS_RELIABILITY_RELIABLE, DDS_MSECS(100));
-            dds_qset_history(qos, DDS_HISTORY_KEEP_LAST, 16);
+            dds_qos_t *qos = qosFor(message.abbrev());
             writer = dds_create_writer(m_participant, topic, qos, nullptr);
             dds_delete_qos(qos);
             if (writer < 0)

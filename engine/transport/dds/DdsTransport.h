@@ -19,6 +19,14 @@ struct DdsConfig
     dds_domainid_t domain = 0;
     QString configFile;           // Cyclone XML; the project's dds/loopback.xml by default
     quint16 systemId = 0x4001;
+    // Commands and plans: reliable, with a history deep enough for a burst.
+    // Every other message is telemetry: best-effort, the latest per sender.
+    QStringList reliable{QStringLiteral("Abort"), QStringLiteral("PlanControl"), QStringLiteral("PlanDB"),
+                         QStringLiteral("PlanSpecification"), QStringLiteral("SetEntityParameters"),
+                         QStringLiteral("LogBookEntry")};
+    // Who a participant is: kept for late joiners (transient-local, the
+    // latest per sender), so a console started later still learns names.
+    QStringList lasting{QStringLiteral("Announce"), QStringLiteral("EntityList"), QStringLiteral("EntityInfo")};
 };
 
 // Cyclone DDS between consoles and vehicles: every message of the schema on
@@ -46,6 +54,8 @@ signals:
 private:
     static void onData(dds_entity_t reader, void *self);
     dds_entity_t topicFor(const QString &abbrev);
+    // The QoS of a message's topic, the same for its readers and writers so they always match.
+    dds_qos_t *qosFor(const QString &abbrev) const;
     bool write(const msg::Message &message);
 
     msg::Codec m_codec;
