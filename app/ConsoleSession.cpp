@@ -32,6 +32,14 @@ void ConsoleSession::addLink(const QString &name, neptus::tree::VariableTree::Ou
     m_router.addLink(name, sink);
 }
 
+void ConsoleSession::definitionsDiffer(quint16 system, const QString &theirDigest, const QString &ourDigest)
+{
+    const auto node = m_graph.ensure(QStringLiteral("systems/%1/definitions").arg(m_tree.systemName(system)));
+    m_graph.raise(node, neptus::alarms::Warning,
+                  tr("speaks other message definitions (digest %1, ours %2): its values may be misread")
+                      .arg(theirDigest.left(8), ourDigest.left(8)));
+}
+
 void ConsoleSession::ingest(const neptus::msg::Message &message, const QString &link)
 {
     if (!link.isEmpty() && m_router.linkOf(message.header.src) != link) {

@@ -41,6 +41,10 @@ public:
     // A transport, by name ("IMC/UDP", "DDS"): commands to a system go over
     // the link it was last heard on.
     void addLink(const QString &name, neptus::tree::VariableTree::OutputSink *sink);
+    // A peer speaks other message definitions: a Warning on
+    // "systems/<system>/definitions" says so, so values are not silently misread.
+    void definitionsDiffer(quint16 system, const QString &theirDigest, const QString &ourDigest);
+
     // A decoded message from any transport (any thread), and the link it came on.
     void ingest(const neptus::msg::Message &message, const QString &link = {});
 

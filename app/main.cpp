@@ -94,6 +94,10 @@ int main(int argc, char *argv[])
             QObject::connect(dds.get(), &neptus::transport::DdsTransport::received, &session,
                              [&session](const neptus::msg::Message &m) { session.ingest(m, QStringLiteral("DDS")); });
             session.addLink(QStringLiteral("DDS"), dds.get());
+            QObject::connect(dds.get(), &neptus::transport::DdsTransport::definitionsDiffer, &session,
+                             [&session](quint16 system, const QString &, const QString &theirs, const QString &ours) {
+                                 session.definitionsDiffer(system, theirs, ours);
+                             });
         }
     }
 

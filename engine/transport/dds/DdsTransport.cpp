@@ -54,7 +54,59 @@ std::expected<void, QString> DdsTransport::start()
         }
     }
     dds_delete_listener(listener);
+
+    // Say who we are, for as long as we live, and listen to who the others are.
+    dds_qos_t *lasting = dds_create_qos();
+    dds_qset_reliability(lasting, DDS_RELIABILITY_RELIABLE, DDS_MSECS(100));
+    dds_qset_durability(lasting, DDS_DURABILITY_TRANSIENT_LOCAL);
+    dds_qset_history(lasting, DDS_HISTORY_KEEP_LAST, 1);
+    const dds_entity_t topic = dds_create_topic(m_participant, &neptus_Participant_desc, "neptus_participant", nullptr, nullptr);
+    dds_listener_t *peers = dds_create_listener(this);
+    dds_lset_data_available(peers, &DdsTransport::onParticipant);
+    const dds_entity_t peerReader = dds_create_reader(m_participant, topic, lasting, peers);
+    dds_delete_listener(peers);
+    m_participantWriter = dds_create_writer(m_participant, topic, lasting, nullptr);
+    dds_delete_qos(lasting);
+    if (topic < 0 || peerReader < 0 || m_participantWriter < 0)
+        return std::unexpected(QStringLiteral("DDS: cannot set up the participant topic"));
+    QByteArray name = m_config.systemName.toUtf8(), type = m_config.systemType.toUtf8();
+    QByteArray digest = m_codec.schema().digest();
+    neptus_Participant self{};
+    self.system = m_config.systemId;
+    self.name = name.data();
+    self.type = type.data();
+    self.digest = digest.data();
+    dds_write(m_participantWriter, &self);
     return {};
+}
+
+void DdsTransport::onParticipant(dds_entity_t reader, void *self)
+{
+    auto *transport = static_cast<DdsTransport *>(self);
+    void *samples[8] = {};
+    dds_sample_info_t infos[8];
+    for (;;) {
+        const dds_return_t n = dds_take(reader, samples, infos, 8, 8);
+        if (n <= 0)
+            break;
+        for (int i = 0; i < n; ++i) {
+            const auto *peer = static_cast<const neptus_Participant *>(samples[i]);
+            if (!infos[i].valid_data || peer->system == transport->m_config.systemId)
+                continue;
+            const QString theirs = QString::fromUtf8(peer->digest);
+            const QString ours = QString::fromLatin1(transport->m_codec.schema().digest());
+            QMutexLocker lock(&transport->m_mutex);
+            if (theirs == ours || transport->m_peerDigests.value(peer->system) == theirs)
+                continue;
+            transport->m_peerDigests.insert(peer->system, theirs);
+            const quint16 system = peer->system;
+            const QString name = QString::fromUtf8(peer->name);
+            QMetaObject::invokeMethod(transport, [transport, system, name, theirs, ours] {
+                emit transport->definitionsDiffer(system, name, theirs, ours);
+            }, Qt::QueuedConnection);
+        }
+        dds_return_loan(reader, samples, n);
+    }
 }
 
 dds_qos_t *DdsTransport::qosFor(const QString &abbrev) const

@@ -19,6 +19,8 @@ struct DdsConfig
     dds_domainid_t domain = 0;
     QString configFile;           // Cyclone XML; the project's dds/loopback.xml by default
     quint16 systemId = 0x4001;
+    QString systemName = QStringLiteral("neptus-qt");
+    QString systemType = QStringLiteral("CCU");
     // Commands and plans: reliable, with a history deep enough for a burst.
     // Every other message is telemetry: best-effort, the latest per sender.
     QStringList reliable{QStringLiteral("Abort"), QStringLiteral("PlanControl"), QStringLiteral("PlanDB"),
@@ -50,9 +52,13 @@ public:
 
 signals:
     void received(const neptus::msg::Message &message);
+    // A peer speaks other message definitions than ours: values it sends may
+    // be decoded wrongly. Said once per peer and digest.
+    void definitionsDiffer(quint16 system, const QString &name, const QString &theirDigest, const QString &ourDigest);
 
 private:
     static void onData(dds_entity_t reader, void *self);
+    static void onParticipant(dds_entity_t reader, void *self);
     dds_entity_t topicFor(const QString &abbrev);
     // The QoS of a message's topic, the same for its readers and writers so they always match.
     dds_qos_t *qosFor(const QString &abbrev) const;
@@ -64,6 +70,8 @@ private:
     QMutex m_mutex;
     QHash<QString, dds_entity_t> m_topics;
     QHash<QString, dds_entity_t> m_writers;
+    dds_entity_t m_participantWriter = 0;
+    QHash<quint16, QString> m_peerDigests;
     QByteArray m_buffer;
 };
 

@@ -46,6 +46,17 @@ TEST(ConsoleSession, ComponentsSendThroughTheOutputBranch)
     EXPECT_EQ(sink.sent.size(), 1u);
 }
 
+TEST(ConsoleSession, OtherDefinitionsAreAVisibleWarning)
+{
+    ConsoleSession session(test::shippedSchema());
+    session.variableTree().setSystemName(0x1f, QStringLiteral("lauv"));
+    session.definitionsDiffer(0x1f, QStringLiteral("0123456789abcdef"), QStringLiteral("fedcba9876543210"));
+    const auto node = session.alarmGraph().find(QStringLiteral("systems/lauv/definitions"));
+    ASSERT_NE(node, alarms::AlarmGraph::noNode);
+    EXPECT_EQ(session.alarmGraph().ownLevel(node), alarms::Warning);
+    EXPECT_TRUE(session.alarmGraph().message(node).contains(QStringLiteral("01234567")));
+}
+
 TEST(ConsoleSession, IngestFeedsTreeAndHealth)
 {
     ConsoleSession session(test::shippedSchema());

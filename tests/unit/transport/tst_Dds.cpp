@@ -4,6 +4,7 @@
 
 #include "Schemas.h"
 
+#include <QFile>
 #include <QSignalSpy>
 #include <QTest>
 
@@ -48,4 +49,35 @@ TEST(DdsTransport, AMissingConfigurationIsAClearError)
     const auto started = transport.start();
     ASSERT_FALSE(started);
     EXPECT_TRUE(started.error().contains(QStringLiteral("/nonexistent/dds.xml"))) << started.error().toStdString();
+}
+
+TEST(DdsTransport, PeersWithOtherDefinitionsAreReported)
+{
+    // The same standard messages plus one of a team's own: another digest.
+    const QByteArray extra = "<messages><message id=\"1500\" name=\"Extra\" abbrev=\"Extra\">"
+                             "<field abbrev=\"x\" type=\"uint8_t\"/></message></messages>";
+    QList<std::pair<QString, QByteArray>> documents;
+    for (const QString &file : msg::Schema::filesIn(QStringLiteral(NEPTUS_MSGDEFS_DIR))) {
+        QFile f(file);
+        ASSERT_TRUE(f.open(QIODevice::ReadOnly));
+        documents.append({file, f.readAll()});
+    }
+    documents.append({QStringLiteral("extra.xml"), extra});
+    auto other = msg::Schema::fromData(documents);
+    ASSERT_TRUE(other) << other.error().toString().toStdString();
+    ASSERT_NE((*other)->digest(), test::shippedSchema()->digest());
+
+    DdsTransport console(test::shippedSchema(), DdsConfig{4, {}, 0x4001, QStringLiteral("console")});
+    QSignalSpy differ(&console, &DdsTransport::definitionsDiffer);
+    ASSERT_TRUE(console.start());
+    DdsTransport same(test::shippedSchema(), DdsConfig{4, {}, 0x4002, QStringLiteral("same")});
+    ASSERT_TRUE(same.start());
+    DdsTransport drifted(*other, DdsConfig{4, {}, 0x1f, QStringLiteral("drifted-auv"), QStringLiteral("UUV")});
+    ASSERT_TRUE(drifted.start());
+    ASSERT_TRUE(QTest::qWaitFor([&] { return differ.count() > 0; }, 10000));
+    QTest::qWait(300);
+    ASSERT_EQ(differ.count(), 1) << "only the peer with other definitions, once";
+    EXPECT_EQ(differ.first().at(0).toUInt(), 0x1fu);
+    EXPECT_EQ(differ.first().at(1).toString(), QStringLiteral("drifted-auv"));
+    EXPECT_EQ(differ.first().at(2).toString(), QString::fromLatin1((*other)->digest()));
 }
