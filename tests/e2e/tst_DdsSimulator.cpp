@@ -43,20 +43,61 @@ bool hasDepth(const tree::VariableTree &tree, const char *system)
     return node != tree::noNode && tree.snapshot(node).present;
 }
 
+// A console's receiving side: its own DDS participant, tree and alarms.
+struct ConsoleSide
+{
+    explicit ConsoleSide(quint16 id)
+        : dds(test::shippedSchema(), transport::DdsConfig{7, {}, id})
+    {
+        QObject::connect(&dds, &transport::DdsTransport::received, [this](const msg::Message &m) {
+            tree.ingest(m);
+            health.observe(m);
+        });
+        tree.setOutputSink(&dds);
+    }
+    tree::VariableTree tree;
+    alarms::AlarmGraph graph;
+    alarms::HealthMonitor health{graph, tree};
+    transport::DdsTransport dds;
+};
+
 } // namespace
+
+TEST(DdsSimulator, TwoConsolesAndTwoVehiclesManyToMany)
+{
+    ConsoleSide first(0x4001), second(0x4002);
+    ASSERT_TRUE(first.dds.start());
+    ASSERT_TRUE(second.dds.start());
+    Vehicle a, b;
+    a.start({QStringLiteral("--dds"), QStringLiteral("--dds-domain"), QStringLiteral("7"), QStringLiteral("--id"),
+             QStringLiteral("0x41"), QStringLiteral("--name"), QStringLiteral("dds-x"), QStringLiteral("--port"),
+             QStringLiteral("16112")});
+    b.start({QStringLiteral("--dds"), QStringLiteral("--dds-domain"), QStringLiteral("7"), QStringLiteral("--id"),
+             QStringLiteral("0x42"), QStringLiteral("--name"), QStringLiteral("dds-y"), QStringLiteral("--port"),
+             QStringLiteral("16113"), QStringLiteral("--kind"), QStringLiteral("uav")});
+    for (ConsoleSide *console : {&first, &second}) {
+        ASSERT_TRUE(QTest::qWaitFor([&] { return hasDepth(console->tree, "dds-x") && hasDepth(console->tree, "dds-y"); }, 20000))
+            << "systems: " << console->tree.childNames(u"").join(u',').toStdString();
+    }
+    // Each console's commands reach only their target, whichever console sent them.
+    ASSERT_TRUE(first.tree.write(QStringLiteral("dds-x"), msg::Message(test::shippedSchema()->byAbbrev(u"Abort"))));
+    ASSERT_TRUE(second.tree.write(QStringLiteral("dds-y"), msg::Message(test::shippedSchema()->byAbbrev(u"PlanControl"))));
+    ASSERT_TRUE(QTest::qWaitFor([&] {
+        return a.output.contains("received Abort from 0x4001") && b.output.contains("received PlanControl from 0x4002");
+    }, 5000)) << a.output.constData() << b.output.constData();
+    QTest::qWait(300);
+    EXPECT_FALSE(a.output.contains("PlanControl"));
+    EXPECT_FALSE(b.output.contains("Abort"));
+}
 
 TEST(DdsSimulator, VehiclesAreSeenCommandedAndMissed)
 {
-    tree::VariableTree tree;
-    alarms::AlarmGraph graph;
-    alarms::HealthMonitor health(graph, tree);
-    transport::DdsTransport console(test::shippedSchema(), transport::DdsConfig{7, {}, 0x4001});
-    ASSERT_TRUE(console.start());
-    QObject::connect(&console, &transport::DdsTransport::received, [&](const msg::Message &m) {
-        tree.ingest(m);
-        health.observe(m);
-    });
-    tree.setOutputSink(&console);
+    ConsoleSide side(0x4001);
+    ASSERT_TRUE(side.dds.start());
+    tree::VariableTree &tree = side.tree;
+    alarms::AlarmGraph &graph = side.graph;
+    alarms::HealthMonitor &health = side.health;
+    transport::DdsTransport &console = side.dds;
 
     auto a = std::make_unique<Vehicle>();
     Vehicle b;
