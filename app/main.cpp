@@ -87,12 +87,12 @@ int main(int argc, char *argv[])
     if (commandLine->ddsDomain >= 0) {
         dds = std::make_unique<neptus::transport::DdsTransport>(
             *schema, neptus::transport::DdsConfig{static_cast<dds_domainid_t>(commandLine->ddsDomain), commandLine->ddsConfig});
+        // Straight into the session from Cyclone's threads: the tree and alarms are thread-safe.
+        dds->setDirectReceiver([&session](const neptus::msg::Message &m) { session.ingest(m, QStringLiteral("DDS")); });
         if (auto started = dds->start(); !started) {
             std::fprintf(stderr, "neptus: %s; carrying on without DDS\n", qPrintable(started.error()));
             dds.reset();
         } else {
-            QObject::connect(dds.get(), &neptus::transport::DdsTransport::received, &session,
-                             [&session](const neptus::msg::Message &m) { session.ingest(m, QStringLiteral("DDS")); });
             session.addLink(QStringLiteral("DDS"), dds.get());
             QObject::connect(dds.get(), &neptus::transport::DdsTransport::definitionsDiffer, &session,
                              [&session](quint16 system, const QString &, const QString &theirs, const QString &ours) {

@@ -157,6 +157,10 @@ void DdsTransport::onData(dds_entity_t reader, void *self)
                 QByteArrayView(envelope->packet._buffer, static_cast<qsizetype>(envelope->packet._length)));
             if (!message)
                 continue;
+            if (transport->m_direct) {
+                transport->m_direct(*message);
+                continue;
+            }
             QMetaObject::invokeMethod(transport, [transport, m = std::move(*message)] { emit transport->received(m); },
                                       Qt::QueuedConnection);
         }

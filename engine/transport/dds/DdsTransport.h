@@ -10,6 +10,7 @@
 #include <dds/dds.h>
 
 #include <expected>
+#include <functional>
 #include <memory>
 
 namespace neptus::transport {
@@ -45,6 +46,12 @@ public:
 
     std::expected<void, QString> start();
 
+    // Hands received messages straight to `receiver` on Cyclone's own
+    // threads instead of `received` on this object's thread: for thread-safe
+    // consumers (the variable tree, the console session), it saves the hop
+    // through the event loop. Set before start().
+    void setDirectReceiver(std::function<void(const msg::Message &)> receiver) { m_direct = std::move(receiver); }
+
     // Sends a message of this node to everyone (vehicles, simulators).
     bool broadcast(const msg::Message &message);
     // OutputSink: to one system.
@@ -73,6 +80,7 @@ private:
     dds_entity_t m_participantWriter = 0;
     QHash<quint16, QString> m_peerDigests;
     QByteArray m_buffer;
+    std::function<void(const msg::Message &)> m_direct;
 };
 
 } // namespace neptus::transport
