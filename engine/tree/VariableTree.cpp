@@ -66,6 +66,13 @@ quint64 bindingKey(quint16 system, quint8 entity, quint16 id, bool perEntity)
     return (quint64(system) << 32) | (quint64(entity) << 24) | (quint64(id) << 8) | (perEntity ? 1 : 0);
 }
 
+VariableTree::Kind kindOf(FieldType type)
+{
+    return type == FieldType::Message       ? VariableTree::Kind::Inline
+           : type == FieldType::MessageList ? VariableTree::Kind::List
+                                            : VariableTree::Kind::Field;
+}
+
 bool displaysUnit(const FieldDef &field)
 {
     return !field.unit.isEmpty() && field.unit != u"Enumerated" && field.unit != u"Bitfield" && field.unit != u"List"
@@ -107,6 +114,16 @@ NodeId VariableTree::addNode(NodeId parent, const QString &name, Kind kind, int 
     for (Consumer &consumer : m_consumers)
         consumer.structure.newNodes.push_back(id);
     return id;
+}
+
+// One node per field of `def` under `branch`, reading from binding `binding`.
+void VariableTree::addFieldNodesLocked(NodeId branch, const MessageDef &def, int binding)
+{
+    for (size_t f = 0; f < def.fields.size(); ++f) {
+        const FieldDef &field = def.fields[f];
+        const NodeId node = addNode(branch, field.abbrev, kindOf(field.type), binding, {static_cast<int>(f)});
+        m_nodes[static_cast<size_t>(node)].ownerDef = &def;
+    }
 }
 
 NodeId VariableTree::childNamed(NodeId parent, QStringView name) const
@@ -175,14 +192,7 @@ VariableTree::Binding &VariableTree::bindingLocked(quint16 system, quint8 entity
     if (perEntity)
         info.entityBindings[entity].push_back(index);
     if (def) {
-        for (size_t f = 0; f < def->fields.size(); ++f) {
-            const FieldDef &field = def->fields[f];
-            const Kind kind = field.type == FieldType::Message       ? Kind::Inline
-                              : field.type == FieldType::MessageList ? Kind::List
-                                                                     : Kind::Field;
-            const NodeId node = addNode(b.branch, field.abbrev, kind, index, {static_cast<int>(f)});
-            m_nodes[static_cast<size_t>(node)].ownerDef = def;
-        }
+        addFieldNodesLocked(b.branch, *def, index);
     }
     return b;
 }
@@ -199,8 +209,7 @@ void VariableTree::ensureStructureLocked(NodeId branch, const Message &message)
             continue;
         NodeId container = childNamed(branch, field.abbrev);
         if (container == noNode) {
-            container = addNode(branch, field.abbrev, field.type == FieldType::Message ? Kind::Inline : Kind::List,
-                                bindingIndex, {f});
+            container = addNode(branch, field.abbrev, kindOf(field.type), bindingIndex, {f});
             m_nodes[static_cast<size_t>(container)].ownerDef = message.def();
         }
         const auto entries = message.messages(f);
@@ -221,10 +230,7 @@ void VariableTree::ensureStructureLocked(NodeId branch, const Message &message)
                 const FieldDef &inner = entry.field(g);
                 if (childNamed(holder, inner.abbrev) != noNode)
                     continue;
-                const Kind kind = inner.type == FieldType::Message       ? Kind::Inline
-                                  : inner.type == FieldType::MessageList ? Kind::List
-                                                                         : Kind::Field;
-                const NodeId node = addNode(holder, inner.abbrev, kind, bindingIndex, {g});
+                const NodeId node = addNode(holder, inner.abbrev, kindOf(inner.type), bindingIndex, {g});
                 m_nodes[static_cast<size_t>(node)].ownerDef = entry.def();
             }
             if (entry.def()->messageListCount > 0)
@@ -397,14 +403,7 @@ bool VariableTree::write(const QString &system, Message message)
         Binding &b = *m_bindings.back();
         b.branch = addNode(info.out, message.abbrev(), Kind::Message, index, {});
         m_nodes[static_cast<size_t>(b.branch)].ownerDef = message.def();
-        for (size_t f = 0; f < message.def()->fields.size(); ++f) {
-            const FieldDef &field = message.def()->fields[f];
-            const Kind kind = field.type == FieldType::Message       ? Kind::Inline
-                              : field.type == FieldType::MessageList ? Kind::List
-                                                                     : Kind::Field;
-            const NodeId node = addNode(b.branch, field.abbrev, kind, index, {static_cast<int>(f)});
-            m_nodes[static_cast<size_t>(node)].ownerDef = message.def();
-        }
+        addFieldNodesLocked(b.branch, *message.def(), index);
     } else {
         index = *it;
     }

@@ -127,6 +127,7 @@ private:
     struct SystemInfo;
 
     NodeId addNode(NodeId parent, const QString &name, Kind kind, int binding, std::vector<int> path);
+    void addFieldNodesLocked(NodeId branch, const msg::MessageDef &def, int binding);
     NodeId childNamed(NodeId parent, QStringView name) const;
     SystemInfo &systemLocked(quint16 id);
     Binding &bindingLocked(quint16 system, quint8 entity, const msg::MessageDef *def, bool perEntity);

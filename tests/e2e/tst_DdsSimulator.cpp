@@ -6,6 +6,7 @@
 #include "VariableTree.h"
 
 #include "Schemas.h"
+#include "SimProcess.h"
 
 #include <QElapsedTimer>
 #include <QProcess>
@@ -17,25 +18,7 @@ using namespace neptus;
 
 namespace {
 
-struct Vehicle
-{
-    std::unique_ptr<QProcess> process = std::make_unique<QProcess>();
-    QByteArray output;
-    void start(const QStringList &arguments)
-    {
-        process->setProcessChannelMode(QProcess::MergedChannels);
-        QObject::connect(process.get(), &QProcess::readyRead, [this] { output += process->readAll(); });
-        process->start(QStringLiteral(NEPTUS_SIM_PATH), arguments);
-        ASSERT_TRUE(process->waitForStarted(5000));
-    }
-    ~Vehicle()
-    {
-        if (process->state() != QProcess::NotRunning) {
-            process->kill();
-            process->waitForFinished(5000);
-        }
-    }
-};
+using Vehicle = test::SimProcess;
 
 bool hasDepth(const tree::VariableTree &tree, const char *system)
 {

@@ -6,6 +6,7 @@
 #include "VariableTree.h"
 
 #include "Schemas.h"
+#include "SimProcess.h"
 
 #include <QElapsedTimer>
 #include <QProcess>
@@ -19,27 +20,7 @@ using namespace neptus;
 
 namespace {
 
-struct Vehicle
-{
-    std::unique_ptr<QProcess> process = std::make_unique<QProcess>();
-    QByteArray output;
-
-    void start(const QStringList &arguments)
-    {
-        process->setProcessChannelMode(QProcess::MergedChannels);
-        QObject::connect(process.get(), &QProcess::readyRead, [this] { output += process->readAll(); });
-        process->start(QStringLiteral(NEPTUS_SIM_PATH), arguments);
-        ASSERT_TRUE(process->waitForStarted(5000));
-        ASSERT_TRUE(QTest::qWaitFor([this] { return output.contains("on 127.0.0.1"); }, 5000)) << output.constData();
-    }
-    ~Vehicle()
-    {
-        if (process->state() != QProcess::NotRunning) {
-            process->kill();
-            process->waitForFinished(5000);
-        }
-    }
-};
+using Vehicle = test::SimProcess;
 
 struct Console
 {
