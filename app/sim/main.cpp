@@ -168,9 +168,9 @@ int main(int argc, char *argv[])
         previous = t;
         if (silent)
             return;
+        if (ddsLink)
+            ddsLink->broadcast(messages);
         for (const msg::Message &m : messages) {
-            if (ddsLink)
-                ddsLink->broadcast(m);
             if (!codec.encode(m, buffer))
                 continue;
             for (auto it = consoles.cbegin(); it != consoles.cend(); ++it) {

@@ -6,6 +6,7 @@
 #include <QFile>
 #include <QMetaObject>
 #include <QMutexLocker>
+#include <QVarLengthArray>
 
 namespace neptus::transport {
 
@@ -60,6 +61,7 @@ std::expected<void, QString> DdsTransport::start()
     dds_qset_reliability(lasting, DDS_RELIABILITY_RELIABLE, DDS_MSECS(100));
     dds_qset_durability(lasting, DDS_DURABILITY_TRANSIENT_LOCAL);
     dds_qset_history(lasting, DDS_HISTORY_KEEP_LAST, 1);
+    dds_qset_ignorelocal(lasting, DDS_IGNORELOCAL_PARTICIPANT);
     const dds_entity_t topic = dds_create_topic(m_participant, &neptus_Participant_desc, "neptus_participant", nullptr, nullptr);
     dds_listener_t *peers = dds_create_listener(this);
     dds_lset_data_available(peers, &DdsTransport::onParticipant);
@@ -112,6 +114,8 @@ void DdsTransport::onParticipant(dds_entity_t reader, void *self)
 dds_qos_t *DdsTransport::qosFor(const QString &abbrev) const
 {
     dds_qos_t *qos = dds_create_qos();
+    // Our own samples never come back to us (no copy, no listener call).
+    dds_qset_ignorelocal(qos, DDS_IGNORELOCAL_PARTICIPANT);
     if (m_config.lasting.contains(abbrev)) {
         dds_qset_reliability(qos, DDS_RELIABILITY_RELIABLE, DDS_MSECS(100));
         dds_qset_durability(qos, DDS_DURABILITY_TRANSIENT_LOCAL);
@@ -168,27 +172,31 @@ void DdsTransport::onData(dds_entity_t reader, void *self)
     }
 }
 
-bool DdsTransport::write(const msg::Message &message)
+dds_entity_t DdsTransport::writerFor(const QString &abbrev)
 {
-    if (m_participant <= 0 || !message.def())
-        return false;
+    if (m_participant <= 0)
+        return 0;
+    const dds_entity_t topic = topicFor(abbrev);
+    QMutexLocker lock(&m_mutex);
+    dds_entity_t writer = m_writers.value(abbrev, 0);
+    if (writer == 0) {
+        dds_qos_t *qos = qosFor(abbrev);
+        // Samples of a burst share datagrams; every send ends with a flush.
+        dds_qset_writer_batching(qos, true);
+        writer = dds_create_writer(m_participant, topic, qos, nullptr);
+        dds_delete_qos(qos);
+        if (writer < 0)
+            return 0;
+        m_writers.insert(abbrev, writer);
+    }
+    return writer;
+}
+
+bool DdsTransport::write(dds_entity_t writer, const msg::Message &message)
+{
     QByteArray packet;
     if (!m_codec.encode(message, packet))
         return false;
-    dds_entity_t writer;
-    {
-        const dds_entity_t topic = topicFor(message.abbrev());
-        QMutexLocker lock(&m_mutex);
-        writer = m_writers.value(message.abbrev(), 0);
-        if (writer == 0) {
-            dds_qos_t *qos = qosFor(message.abbrev());
-            writer = dds_create_writer(m_participant, topic, qos, nullptr);
-            dds_delete_qos(qos);
-            if (writer < 0)
-                return false;
-            m_writers.insert(message.abbrev(), writer);
-        }
-    }
     neptus_Envelope envelope{};
     envelope.src = message.header.src;
     envelope.src_ent = message.header.srcEnt;
@@ -203,22 +211,47 @@ bool DdsTransport::write(const msg::Message &message)
     return dds_write(writer, &envelope) == DDS_RETCODE_OK;
 }
 
-bool DdsTransport::broadcast(const msg::Message &message)
+msg::Message DdsTransport::own(const msg::Message &message) const
 {
     msg::Message own = message;
     own.header.src = m_config.systemId;
     if (own.header.timestamp == 0)
         own.header.timestamp = QDateTime::currentMSecsSinceEpoch() / 1000.0;
-    return write(own);
+    return own;
+}
+
+bool DdsTransport::broadcast(const msg::Message &message)
+{
+    return broadcast(std::span(&message, 1));
+}
+
+bool DdsTransport::broadcast(std::span<const msg::Message> messages)
+{
+    bool sent = true;
+    QVarLengthArray<dds_entity_t, 8> used;
+    for (const msg::Message &message : messages) {
+        const dds_entity_t writer = message.def() ? writerFor(message.abbrev()) : 0;
+        sent = writer > 0 && write(writer, own(message)) && sent;
+        if (writer > 0 && !used.contains(writer))
+            used.append(writer);
+    }
+    for (dds_entity_t writer : used)
+        dds_write_flush(writer);
+    return sent;
 }
 
 bool DdsTransport::publish(quint16 system, const msg::Message &message)
 {
+    const dds_entity_t writer = message.def() ? writerFor(message.abbrev()) : 0;
+    if (writer <= 0)
+        return false;
     msg::Message addressed = message;
     addressed.header.src = m_config.systemId;
     addressed.header.dst = system;
     addressed.header.timestamp = QDateTime::currentMSecsSinceEpoch() / 1000.0;
-    return write(addressed);
+    const bool sent = write(writer, addressed);
+    dds_write_flush(writer);
+    return sent;
 }
 
 } // namespace neptus::transport

@@ -12,6 +12,7 @@
 #include <expected>
 #include <functional>
 #include <memory>
+#include <span>
 
 namespace neptus::transport {
 
@@ -54,6 +55,10 @@ public:
 
     // Sends a message of this node to everyone (vehicles, simulators).
     bool broadcast(const msg::Message &message);
+    // Sends several at once (a burst of telemetry, a log replayed): messages
+    // of the same kind share datagrams, sent when all are written. False if
+    // any could not be sent.
+    bool broadcast(std::span<const msg::Message> messages);
     // OutputSink: to one system.
     bool publish(quint16 system, const msg::Message &message) override;
 
@@ -69,7 +74,11 @@ private:
     dds_entity_t topicFor(const QString &abbrev);
     // The QoS of a message's topic, the same for its readers and writers so they always match.
     dds_qos_t *qosFor(const QString &abbrev) const;
-    bool write(const msg::Message &message);
+    // The writer of a message's topic, made on first use; 0 if it cannot be.
+    dds_entity_t writerFor(const QString &abbrev);
+    // Writes without sending: samples wait in the writer's batch until flushed.
+    bool write(dds_entity_t writer, const msg::Message &message);
+    msg::Message own(const msg::Message &message) const;
 
     msg::Codec m_codec;
     DdsConfig m_config;

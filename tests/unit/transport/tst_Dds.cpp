@@ -81,3 +81,42 @@ TEST(DdsTransport, PeersWithOtherDefinitionsAreReported)
     EXPECT_EQ(differ.first().at(1).toString(), QStringLiteral("drifted-auv"));
     EXPECT_EQ(differ.first().at(2).toString(), QString::fromLatin1((*other)->digest()));
 }
+
+TEST(DdsTransport, ABurstArrivesWholeAndInOrder)
+{
+    DdsTransport console(test::shippedSchema(), DdsConfig{5, {}, 0x4001});
+    DdsTransport vehicle(test::shippedSchema(), DdsConfig{5, {}, 0x1f});
+    ASSERT_TRUE(console.start());
+    ASSERT_TRUE(vehicle.start());
+    QSignalSpy atConsole(&console, &DdsTransport::received);
+    const auto *entry = test::shippedSchema()->byAbbrev(u"LogBookEntry");
+    msg::Message probe(entry);
+    ASSERT_TRUE(QTest::qWaitFor([&] {
+        vehicle.broadcast(probe);
+        return atConsole.count() > 0;
+    }, 10000));
+    QTest::qWait(200);
+    atConsole.clear();
+
+    // A reliable topic's burst, with another kind of message in between: all
+    // of it arrives once flushed, nothing left waiting in a batch.
+    std::vector<msg::Message> burst;
+    for (int i = 0; i < 30; ++i) {
+        msg::Message m(entry);
+        m.setBytes(entry->indexOf(u"text"), QByteArray::number(i));
+        burst.push_back(m);
+    }
+    burst.emplace_back(test::shippedSchema()->byAbbrev(u"Abort"));
+    ASSERT_TRUE(vehicle.broadcast(burst));
+    ASSERT_TRUE(QTest::qWaitFor([&] { return atConsole.count() == 31; }, 5000)) << atConsole.count();
+    QStringList texts;
+    for (const auto &args : atConsole) {
+        const auto m = args.at(0).value<msg::Message>();
+        if (m.abbrev() == u"LogBookEntry")
+            texts << m.text(entry->indexOf(u"text"));
+    }
+    QStringList expected;
+    for (int i = 0; i < 30; ++i)
+        expected << QString::number(i);
+    EXPECT_EQ(texts, expected);
+}
