@@ -9,12 +9,24 @@ Console {
     formatVersion: 1
     title: "Generic console"
 
+    // Open each system once, when it appears, so its messages show.
+    property var openedSystems: ({})
+
+    function openNewSystems() {
+        for (let row = 0; row < tree.rows; ++row) {
+            const name = tree.model.data(tree.modelIndex(Qt.point(0, row)))
+            if (tree.depth(row) === 0 && !layout.openedSystems[name]) {
+                layout.openedSystems[name] = true
+                tree.expand(row)
+            }
+        }
+    }
+
     TreeView {
         id: tree
         anchors.fill: parent
         anchors.margins: Theme.spacing * 2
         clip: true
-        model: layout.session ? layout.session.tree : null
         columnWidthProvider: column => [tree.width * 0.4, tree.width * 0.3, tree.width * 0.1, tree.width * 0.2][column]
         delegate: Item {
             id: cell
@@ -58,32 +70,23 @@ Console {
                 onTapped: cell.treeView.toggleExpanded(cell.row)
             }
         }
+        model: layout.session ? layout.session.tree : null
     }
 
-    // Open each system once, when it appears, so its messages show.
-    property var openedSystems: ({})
-    function openNewSystems() {
-        for (let row = 0; row < tree.rows; ++row) {
-            const name = tree.model.data(tree.modelIndex(Qt.point(0, row)))
-            if (tree.depth(row) === 0 && !layout.openedSystems[name]) {
-                layout.openedSystems[name] = true
-                tree.expand(row)
-            }
-        }
-    }
     Connections {
         target: tree
+
         function onRowsChanged() { Qt.callLater(layout.openNewSystems) }
     }
 
     Text {
-        anchors.centerIn: parent
         width: parent.width * 0.6
-        visible: tree.rows === 0
-        horizontalAlignment: Text.AlignHCenter
-        wrapMode: Text.Wrap
-        text: "No systems heard yet.\nVehicles and other consoles appear here as soon as their messages arrive."
+        anchors.centerIn: parent
         color: Theme.textDim
         font.pixelSize: Theme.largeFontPixelSize
+        horizontalAlignment: Text.AlignHCenter
+        text: "No systems heard yet.\nVehicles and other consoles appear here as soon as their messages arrive."
+        visible: tree.rows === 0
+        wrapMode: Text.Wrap
     }
 }

@@ -1,0 +1,1 @@
+Console { Rectangle { id: r; x: 1; y: [1, (2)] } }
