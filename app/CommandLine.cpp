@@ -20,6 +20,10 @@ std::expected<CommandLine, QString> CommandLine::parse(const QStringList &argume
         QStringLiteral("Render the console, write it to a PNG file and exit."), QStringLiteral("file"));
     const QCommandLineOption screenshotDelay(QStringLiteral("screenshot-delay"),
         QStringLiteral("With --screenshot: wait this many milliseconds first (let data arrive)."), QStringLiteral("ms"));
+    const QCommandLineOption components(QStringLiteral("components"),
+        QStringLiteral("Also offer the components (.qml files) in this directory; watched while running. Repeatable."),
+        QStringLiteral("dir"));
+    const QCommandLineOption edit(QStringLiteral("edit"), QStringLiteral("Open the console in edit mode (the designer)."));
     const QCommandLineOption palette(QStringLiteral("palette"),
         QStringLiteral("Colour palette: day, dusk or night."), QStringLiteral("name"));
     const QCommandLineOption size(QStringLiteral("size"),
@@ -35,7 +39,7 @@ std::expected<CommandLine, QString> CommandLine::parse(const QStringList &argume
         QStringLiteral("Cyclone DDS domain id (default 0; -1 turns DDS off)."), QStringLiteral("id"));
     const QCommandLineOption ddsConfig(QStringLiteral("dds-config"),
         QStringLiteral("Cyclone DDS XML configuration (default: dds/loopback.xml, loopback only)."), QStringLiteral("file"));
-    parser.addOptions({console, screenshot, screenshotDelay, palette, size, selfTest, imcPort, imcPeer, ddsDomain, ddsConfig});
+    parser.addOptions({console, screenshot, screenshotDelay, components, edit, palette, size, selfTest, imcPort, imcPeer, ddsDomain, ddsConfig});
     if (!parser.parse(arguments))
         return std::unexpected(parser.errorText());
     if (parser.isSet(QStringLiteral("help")))
@@ -61,6 +65,12 @@ std::expected<CommandLine, QString> CommandLine::parse(const QStringList &argume
                                        .arg(parser.value(screenshotDelay)));
     }
     result.selfTest = parser.isSet(selfTest);
+    for (const QString &directory : parser.values(components)) {
+        if (!QFileInfo(directory).isDir())
+            return std::unexpected(QStringLiteral("--components: '%1' is not a directory").arg(directory));
+        result.componentDirectories << QFileInfo(directory).absoluteFilePath();
+    }
+    result.edit = parser.isSet(edit);
     result.palette = parser.value(palette).toLower();
     if (!result.palette.isEmpty() && result.palette != u"day" && result.palette != u"dusk"
         && result.palette != u"night")

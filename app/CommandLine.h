@@ -13,6 +13,8 @@ struct CommandLine
     QString screenshotFile;  // render, save a PNG, exit
     int screenshotDelayMs = 0; // wait this long after the first frame
     QString palette;         // day, dusk or night; empty = as last time
+    QStringList componentDirectories;   // --components, before the standard ones
+    bool edit = false;                  // start in edit mode
     QSize windowSize{1280, 800};
     quint16 imcPort = 6001;             // IMC over UDP, on 127.0.0.1
     QStringList imcPeers;               // static IMC destinations, "host:port"

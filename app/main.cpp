@@ -1,11 +1,13 @@
 // neptus: the console. Parses the command line, then shows a console layout,
 // renders it to a PNG (--screenshot) or checks every QML file (--self-test).
 #include "CommandLine.h"
+#include "ComponentPalette.h"
 #include "ConsoleSession.h"
 #include "DdsTransport.h"
 #include "ImcUdpTransport.h"
 #include "SelfTest.h"
 
+#include <QDir>
 #include <QGuiApplication>
 #include <QQmlApplicationEngine>
 #include <QQuickStyle>
@@ -101,11 +103,20 @@ int main(int argc, char *argv[])
         }
     }
 
+    // Components from --components, then the user's own and the system's
+    // (the user's directory is made so there is a place to drop them).
+    const QStringList standard = ComponentPalette::standardDirectories();
+    if (!standard.isEmpty())
+        QDir().mkpath(standard.first());
+    const QStringList componentDirectories = commandLine->componentDirectories + standard;
+
     QQmlApplicationEngine engine;
     engine.setInitialProperties({
         {QStringLiteral("session"), QVariant::fromValue(&session)},
         {QStringLiteral("consoleUrl"), QUrl::fromLocalFile(commandLine->consoleFile)},
         {QStringLiteral("initialPalette"), commandLine->palette},
+        {QStringLiteral("componentDirectories"), componentDirectories},
+        {QStringLiteral("editing"), commandLine->edit},
         {QStringLiteral("width"), commandLine->windowSize.width()},
         {QStringLiteral("height"), commandLine->windowSize.height()},
     });

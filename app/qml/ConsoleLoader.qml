@@ -1,5 +1,6 @@
 import QtQuick
 import Neptus.Components
+import Neptus.Shell
 
 // Loads a console layout file at run time (layouts are user data, not part of
 // the program) and, when it cannot, shows why in place of the console.
@@ -9,40 +10,95 @@ Item {
     property url source
     property QtObject session: null
     property Console item: null
+    // Why no console is shown ("" when one is).
     property string errorString: ""
+    // Why the latest change (an edit, an edited component) is not shown: the
+    // console keeps running as it was.
+    property string warning: ""
     readonly property string title: item ? item.title : ""
+    // The layout as a document the designer edits; the console is built from its text.
+    readonly property LayoutEditor editor: layoutEditor
+    // Bumped when components the console may use changed on disk.
+    property int componentsRevision: 0
 
-    onSourceChanged: load()
+    onComponentsRevisionChanged: rebuild()
 
-    function load() {
-        if (item) {
-            item.destroy()
-            item = null
+    // Components find the console's tree and alarms through the Session singleton.
+    Binding {
+        target: Session
+        property: "session"
+        value: loader.session
+    }
+
+    LayoutEditor {
+        id: layoutEditor
+        source: loader.source
+        onTextChanged: loader.rebuild()
+    }
+
+    function rebuild() {
+        if (source.toString() === "") {
+            replace(null)
+            errorString = ""
+            return
         }
+        const made = create()
+        if (typeof made === "string") {
+            if (item) {
+                warning = made
+                console.warn("Console " + source + " keeps its previous version: " + made)
+            } else {
+                fail(made)
+            }
+            return
+        }
+        replace(made)
         errorString = ""
-        if (source.toString() === "")
-            return
-        // Local files load synchronously, so errors are known right here.
-        const component = Qt.createComponent(source)
-        if (component.status !== Component.Ready) {
-            fail(component.errorString())
-            return
-        }
-        const object = component.createObject(loader, { width: loader.width, height: loader.height,
-                                                         session: loader.session })
-        if (!object) {
-            fail(component.errorString() || qsTr("the layout could not be created"))
-        } else if (!(object instanceof Console)) {
-            object.destroy()
-            fail(qsTr("the root item of a console layout must be a Console"))
+        warning = ""
+    }
+
+    // A new console object, or why there is none.
+    function create() {
+        let object = null
+        // Edited: built from the text the designer will save. Otherwise from
+        // the file itself, so errors point at its own lines.
+        if (layoutEditor.editable && layoutEditor.modified) {
+            try {
+                object = Qt.createQmlObject(layoutEditor.text, loader, source)
+            } catch (e) {
+                return (e.qmlErrors || []).map(error => source.toString().replace(/^file:\/\//, "") + ":"
+                                             + error.lineNumber + ":" + error.columnNumber + ": " + error.message).join("\n")
+                       || String(e)
+            }
         } else {
-            object.width = Qt.binding(() => loader.width)
-            object.height = Qt.binding(() => loader.height)
-            item = object
+            // (A file the designer cannot read may still be valid QML: it runs as it is.)
+            const component = Qt.createComponent(source)
+            if (component.status !== Component.Ready)
+                return component.errorString()
+            object = component.createObject(loader)
+            if (!object)
+                return component.errorString() || qsTr("the layout could not be created")
         }
+        if (!(object instanceof Console)) {
+            object.destroy()
+            return qsTr("the root item of a console layout must be a Console")
+        }
+        return object
+    }
+
+    function replace(object) {
+        if (item)
+            item.destroy()
+        item = object
+        if (!object)
+            return
+        object.session = Qt.binding(() => loader.session)
+        object.width = Qt.binding(() => loader.width)
+        object.height = Qt.binding(() => loader.height)
     }
 
     function fail(reason) {
+        replace(null)
         errorString = reason.trim()
         console.warn("Could not open console " + source + ": " + errorString)
     }

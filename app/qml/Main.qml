@@ -12,6 +12,11 @@ ApplicationWindow {
     property ConsoleSession session: null
     // "day", "dusk" or "night" from the command line; empty = as the user left it.
     property string initialPalette: ""
+    // Where drop-in components are looked for, first wins.
+    property list<string> componentDirectories
+    // Edit mode (the designer) or operate mode.
+    property bool editing: false
+    readonly property alias designer: designer
     readonly property alias consoleLoader: consoleLoader
 
     width: 1280
@@ -42,10 +47,25 @@ ApplicationWindow {
         onActivated: window.togglePalette()
     }
 
+    Shortcut {
+        sequence: "Ctrl+E"
+        context: Qt.ApplicationShortcut
+        enabled: consoleLoader.editor.editable
+        onActivated: window.editing = !window.editing
+    }
+
     header: TitleBar {
-        consoleTitle: consoleLoader.title
+        consoleTitle: consoleLoader.title + (consoleLoader.editor.modified ? " •" : "")
+        editing: window.editing
+        canEdit: consoleLoader.editor.editable
+        onEditToggleRequested: window.editing = !window.editing
         alarms: window.session ? window.session.alarms : null
         onPaletteToggleRequested: window.togglePalette()
+    }
+
+    ComponentPalette {
+        id: componentPalette
+        directories: window.componentDirectories
     }
 
     ConsoleLoader {
@@ -53,5 +73,14 @@ ApplicationWindow {
         anchors.fill: parent
         session: window.session
         source: window.consoleUrl
+        componentsRevision: componentPalette.revision
+    }
+
+    DesignerOverlay {
+        id: designer
+        anchors.fill: parent
+        loader: consoleLoader
+        palette: componentPalette
+        editing: window.editing && consoleLoader.editor.editable
     }
 }

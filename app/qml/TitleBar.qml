@@ -12,7 +12,11 @@ Rectangle {
     // when one rises to Error or worse.
     property AlarmListModel alarms: null
     readonly property int level: alarms ? alarms.rootLevel : AlarmLevel.Unknown
+    // Edit mode (the designer) or operate mode.
+    property bool editing: false
+    property bool canEdit: true
     signal paletteToggleRequested()
+    signal editToggleRequested()
 
     Connections {
         target: bar.alarms
@@ -63,6 +67,14 @@ Rectangle {
             color: Theme.text
             font.family: Theme.monospaceFont
             font.pixelSize: Theme.largeFontPixelSize
+        }
+        TouchButton {
+            objectName: "editButton"
+            visible: bar.canEdit
+            text: bar.editing ? qsTr("Done") : qsTr("Edit")
+            highlighted: bar.editing
+            toolTip: bar.editing ? qsTr("Back to operating the console (Ctrl+E)") : qsTr("Edit this console's layout (Ctrl+E)")
+            onClicked: bar.editToggleRequested()
         }
         TouchButton {
             objectName: "paletteButton"

@@ -30,8 +30,8 @@ Basic.Button {
     }
     background: Rectangle {
         color: button.down ? Theme.border : Theme.surface
-        border.color: button.visualFocus ? Theme.accent : Theme.border
-        border.width: button.visualFocus ? Theme.mm(0.6) : 1
+        border.color: button.visualFocus || button.highlighted || button.checked ? Theme.accent : Theme.border
+        border.width: button.visualFocus || button.highlighted || button.checked ? Theme.mm(0.6) : 1
         radius: Theme.radius
     }
 }

@@ -8,6 +8,8 @@
 #include "VariableTreeModel.h"
 
 #include <QDir>
+#include <QFile>
+#include <QTemporaryDir>
 #include <QQmlEngine>
 #include <QQuickStyle>
 #include <QtQml/qqmlextensionplugin.h>
@@ -54,6 +56,26 @@ public:
     }
     Q_INVOKABLE void advanceClock(int milliseconds) { m_clock.advance(milliseconds); }
 
+    // Files, for the designer's tests: a fresh directory per call, removed at exit.
+    Q_INVOKABLE QString makeTempDir()
+    {
+        m_dirs.push_back(std::make_unique<QTemporaryDir>());
+        return m_dirs.back()->path();
+    }
+    Q_INVOKABLE bool writeFile(const QString &path, const QString &text)
+    {
+        QFile file(path);
+        return file.open(QIODevice::WriteOnly) && file.write(text.toUtf8()) >= 0;
+    }
+    Q_INVOKABLE QString readFile(const QString &path) const
+    {
+        QFile file(path);
+        return file.open(QIODevice::ReadOnly) ? QString::fromUtf8(file.readAll()) : QString();
+    }
+    Q_INVOKABLE bool makeDir(const QString &path) const { return QDir().mkpath(path); }
+    Q_INVOKABLE QString sourceDir() const { return QStringLiteral(NEPTUS_SOURCE_DIR); }
+    Q_INVOKABLE qint64 now() const { return QDateTime::currentMSecsSinceEpoch(); }
+
 private:
     std::shared_ptr<const msg::Schema> m_schema;
     ManualClock m_clock{QDateTime::fromMSecsSinceEpoch(1'700'000'000'000, QTimeZone::UTC)};
@@ -61,6 +83,7 @@ private:
     tree::VariableTreeModel m_treeModel{&m_tree};
     alarms::AlarmGraph m_graph{&m_clock};
     alarms::AlarmListModel m_alarmModel{&m_graph};
+    std::vector<std::unique_ptr<QTemporaryDir>> m_dirs;
 };
 
 class Setup : public QObject

@@ -1,0 +1,214 @@
+#include "LayoutEditor.h"
+
+#include <QQmlContext>
+#include <QQmlEngine>
+#include <QQuickItem>
+
+using namespace neptus::layout;
+
+LayoutEditor::LayoutEditor(QObject *parent)
+    : QObject(parent)
+{
+}
+
+void LayoutEditor::setSource(const QUrl &source)
+{
+    if (source == m_source)
+        return;
+    m_source = source;
+    emit sourceChanged();
+    reload();
+}
+
+bool LayoutEditor::reload()
+{
+    m_document.reset();
+    setError({});
+    if (!m_source.isEmpty()) {
+        if (!m_source.isLocalFile()) {
+            setError(tr("%1: only layout files on this computer can be edited").arg(m_source.toString()));
+        } else if (auto document = LayoutDocument::load(m_source.toLocalFile())) {
+            m_document = std::move(*document);
+        } else {
+            setError(document.error());
+        }
+    }
+    if (m_modified) {
+        m_modified = false;
+        emit modifiedChanged();
+    }
+    emit textChanged();
+    return m_document.has_value();
+}
+
+bool LayoutEditor::save()
+{
+    if (!m_document)
+        return false;
+    if (auto saved = m_document->save(m_source.toLocalFile()); !saved) {
+        setError(saved.error());
+        return false;
+    }
+    setError({});
+    m_modified = false;
+    emit modifiedChanged();
+    return true;
+}
+
+void LayoutEditor::setError(const QString &error)
+{
+    if (error == m_error)
+        return;
+    m_error = error;
+    emit errorStringChanged();
+}
+
+bool LayoutEditor::apply(const std::function<bool(LayoutDocument &)> &edit)
+{
+    if (!m_document)
+        return false;
+    const QString before = m_document->text();
+    return edit(*m_document) && edited(m_document->text() != before);
+}
+
+bool LayoutEditor::edited(bool changed)
+{
+    if (!changed)
+        return false;
+    if (!m_modified) {
+        m_modified = true;
+        emit modifiedChanged();
+    }
+    emit textChanged();
+    return true;
+}
+
+QStringList LayoutEditor::componentIds() const
+{
+    QStringList ids;
+    if (m_document)
+        for (const auto &child : m_document->root().children)
+            if (!child->id().isEmpty())
+                ids << child->id();
+    return ids;
+}
+
+QString LayoutEditor::add(const QString &type, const QString &module, double x, double y, double width, double height)
+{
+    if (!m_document)
+        return {};
+    const QString id = m_document->addComponent(
+        type, module,
+        {{QStringLiteral("x"), std::round(x)}, {QStringLiteral("y"), std::round(y)}, {QStringLiteral("width"), std::round(width)},
+         {QStringLiteral("height"), std::round(height)}});
+    edited(!id.isEmpty());
+    return id;
+}
+
+bool LayoutEditor::setGeometry(const QString &id, double x, double y, double width, double height)
+{
+    return apply([&](LayoutDocument &d) {
+        return d.setProperties(id, {{QStringLiteral("x"), std::round(x)}, {QStringLiteral("y"), std::round(y)},
+                                    {QStringLiteral("width"), std::round(width)}, {QStringLiteral("height"), std::round(height)}});
+    });
+}
+
+bool LayoutEditor::setValue(const QString &id, const QString &name, const QVariant &value)
+{
+    // JavaScript values arrive wrapped (numbers as double, lists as QJSValue).
+    QVariant plain = value;
+    if (plain.metaType() == QMetaType::fromType<QJSValue>())
+        plain = plain.value<QJSValue>().toVariant();
+    return apply([&](LayoutDocument &d) { return d.setProperties(id, {{name, plain}}); });
+}
+
+bool LayoutEditor::setBinding(const QString &id, const QString &name, const QString &expression)
+{
+    return apply([&](LayoutDocument &d) { return d.setBinding(id, name, expression); });
+}
+
+bool LayoutEditor::resetProperty(const QString &id, const QString &name)
+{
+    return apply([&](LayoutDocument &d) { return d.resetProperty(id, name); });
+}
+
+bool LayoutEditor::remove(const QString &id)
+{
+    return apply([&](LayoutDocument &d) { return d.remove(id); });
+}
+
+QString LayoutEditor::duplicate(const QString &id, double dx, double dy)
+{
+    if (!m_document)
+        return {};
+    const QString copy = m_document->duplicate(id, dx, dy);
+    edited(!copy.isEmpty());
+    return copy;
+}
+
+int LayoutEditor::zIndexOf(const QString &id) const
+{
+    return static_cast<int>(componentIds().indexOf(id));
+}
+
+bool LayoutEditor::raise(const QString &id)
+{
+    const int z = zIndexOf(id);
+    return z >= 0 && z + 1 < componentIds().size() && apply([&](LayoutDocument &d) { return d.moveInZOrder(id, z + 1); });
+}
+
+bool LayoutEditor::lower(const QString &id)
+{
+    const int z = zIndexOf(id);
+    return z > 0 && apply([&](LayoutDocument &d) { return d.moveInZOrder(id, z - 1); });
+}
+
+bool LayoutEditor::undo()
+{
+    return m_document && edited(m_document->undo());
+}
+
+bool LayoutEditor::redo()
+{
+    return m_document && edited(m_document->redo());
+}
+
+QString LayoutEditor::typeOf(const QString &id) const
+{
+    const LayoutObject *object = m_document ? m_document->find(id) : nullptr;
+    return object ? object->type : QString();
+}
+
+QVariant LayoutEditor::value(const QString &id, const QString &name) const
+{
+    return m_document ? m_document->value(id, name) : QVariant();
+}
+
+bool LayoutEditor::isBinding(const QString &id, const QString &name) const
+{
+    return m_document && m_document->isBinding(id, name);
+}
+
+QString LayoutEditor::expression(const QString &id, const QString &name) const
+{
+    const LayoutObject *object = m_document ? m_document->find(id) : nullptr;
+    const auto *property = object ? object->property(name) : nullptr;
+    return property ? property->value : QString();
+}
+
+QString LayoutEditor::idOf(QObject *object)
+{
+    const QQmlContext *context = object ? qmlContext(object) : nullptr;
+    return context ? context->nameForObject(object) : QString();
+}
+
+QObject *LayoutEditor::itemWithId(QObject *console, const QString &id)
+{
+    const auto *root = qobject_cast<QQuickItem *>(console);
+    if (!root || id.isEmpty())
+        return nullptr;
+    for (QQuickItem *child : root->childItems())
+        if (idOf(child) == id)
+            return child;
+    return nullptr;
+}

@@ -1,0 +1,362 @@
+import QtQuick
+import QtQuick.Controls.Basic as Basic
+import Neptus.Components
+import Neptus.Shell
+
+// Edit mode (the paper's Editing mode) over a running console: the palette of
+// components on the left, the selected component's properties on the right,
+// and in between the console itself, where components are placed, selected,
+// moved and resized on a grid. Every edit goes through the LayoutEditor (one
+// undo step each) and the console is rebuilt from the result. While editing,
+// nothing reaches the console's components; in operate mode this is hidden.
+Item {
+    id: designer
+
+    property Item loader: null             // the ConsoleLoader
+    property ComponentPalette palette: fallbackPalette
+    property bool editing: false
+    readonly property LayoutEditor editor: loader ? loader.editor : fallbackEditor
+    // Id of the selected component, "" for none.
+    property string selected: ""
+    // Palette entry armed by a tap: the next tap on the console places it.
+    property string placing: ""
+    property real grid: 8
+    property bool paletteShown: true
+
+    visible: editing
+    enabled: editing
+
+    onEditingChanged: if (!editing) { selected = ""; placing = "" }
+
+    // Stand-ins while nothing is attached (a preview, the self-test).
+    LayoutEditor { id: fallbackEditor }
+    ComponentPalette { id: fallbackPalette }
+
+    function snap(v) { return Math.round(v / grid) * grid }
+    function itemFor(id) { return loader && loader.item ? editor.itemWithId(loader.item, id) : null }
+    function movable(id) {
+        return editor.value(id, "x") !== undefined && editor.value(id, "y") !== undefined
+    }
+    function entryFor(id) { return palette.entry(editor.typeOf(id)) }
+
+    function place(name, x, y) {
+        const entry = palette.entry(name)
+        if (!entry.name || entry.status !== "ready")
+            return ""
+        const w = entry.defaultWidth || 240, h = entry.defaultHeight || 160
+        const id = editor.add(entry.name, entry.module, snap(Math.max(0, x - w / 2)), snap(Math.max(0, y - h / 2)), w, h)
+        placing = ""
+        selected = id
+        return id
+    }
+    function overPanel(p) {
+        for (const panel of [paletteView, properties, toolbar]) {
+            if (panel.visible && panel.contains(panel.mapFromItem(canvas, p.x, p.y)))
+                return true
+        }
+        return false
+    }
+    function topmostAt(x, y) {
+        const ids = editor.componentIds
+        for (let i = ids.length - 1; i >= 0; --i) {
+            const item = itemFor(ids[i])
+            if (item && x >= item.x && x <= item.x + item.width && y >= item.y && y <= item.y + item.height)
+                return ids[i]
+        }
+        return ""
+    }
+    function removeSelected() {
+        if (selected !== "" && editor.remove(selected))
+            selected = ""
+    }
+    function duplicateSelected() {
+        if (selected !== "")
+            selected = editor.duplicate(selected, grid * 2, grid * 2) || selected
+    }
+    function nudge(dx, dy) {
+        const item = itemFor(selected)
+        if (item && movable(selected))
+            editor.setGeometry(selected, item.x + dx, item.y + dy, item.width, item.height)
+    }
+    function undo() { if (editor.undo()) keepSelection() }
+    function redo() { if (editor.redo()) keepSelection() }
+    function keepSelection() { if (editor.componentIds.indexOf(selected) < 0) selected = "" }
+
+    // --- The canvas: the console area, with a grid, taking every touch. ---
+    Item {
+        id: canvas
+        objectName: "designerCanvas"
+        anchors.fill: parent
+
+        Canvas {
+            id: gridLines
+            anchors.fill: parent
+            opacity: 0.35
+            onPaint: {
+                const ctx = getContext("2d")
+                ctx.reset()
+                ctx.fillStyle = Theme.textDim
+                const step = designer.grid * 4
+                for (let x = 0; x < width; x += step)
+                    for (let y = 0; y < height; y += step)
+                        ctx.fillRect(x - 1, y - 1, 2, 2)
+            }
+            Connections {
+                target: Theme
+                function onPaletteChanged() { gridLines.requestPaint() }
+            }
+        }
+
+        TapHandler {
+            onTapped: eventPoint => {
+                const p = eventPoint.position
+                if (designer.overPanel(p))
+                    return // a tap on a panel (they share the touch with the canvas)
+                if (designer.placing !== "")
+                    designer.place(designer.placing, p.x, p.y)
+                else
+                    designer.selected = designer.topmostAt(p.x, p.y)
+            }
+        }
+
+        Repeater {
+            model: designer.editor.componentIds
+            delegate: Item {
+                id: frame
+                required property string modelData
+                readonly property Item target: designer.loader && designer.loader.item ? designer.itemFor(modelData) : null
+                readonly property bool isSelected: designer.selected === modelData
+                readonly property bool canMove: designer.movable(modelData)
+                objectName: "frame-" + modelData
+                visible: target !== null
+                x: target ? target.x : 0
+                y: target ? target.y : 0
+                width: target ? target.width : 0
+                height: target ? target.height : 0
+                z: isSelected ? 1 : 0
+
+                Rectangle {
+                    anchors.fill: parent
+                    color: frame.isSelected ? Qt.rgba(Theme.accent.r, Theme.accent.g, Theme.accent.b, 0.12) : "transparent"
+                    border.color: frame.isSelected ? Theme.accent : Theme.border
+                    border.width: frame.isSelected ? Theme.mm(0.6) : 1
+                }
+                Text {
+                    anchors.left: parent.left
+                    anchors.bottom: parent.top
+                    text: frame.modelData + (frame.canMove ? "" : "  " + qsTr("(anchored: edit in the file)"))
+                    color: Theme.accent
+                    font.pixelSize: Theme.smallFontPixelSize
+                    visible: frame.isSelected
+                }
+
+                // Move: drag the selected component; it snaps to the grid and
+                // is written to the layout when let go.
+                property point startPos
+                DragHandler {
+                    id: mover
+                    target: null
+                    enabled: frame.isSelected && frame.canMove
+                    dragThreshold: 4
+                    onActiveChanged: {
+                        if (active) {
+                            frame.startPos = Qt.point(frame.target.x, frame.target.y)
+                        } else if (frame.target) {
+                            designer.editor.setGeometry(frame.modelData, frame.target.x, frame.target.y,
+                                                        frame.target.width, frame.target.height)
+                        }
+                    }
+                    // In scene coordinates: the frame moves under the finger.
+                    onCentroidChanged: {
+                        if (active && frame.target) {
+                            const d = Qt.point(centroid.scenePosition.x - centroid.scenePressPosition.x,
+                                               centroid.scenePosition.y - centroid.scenePressPosition.y)
+                            frame.target.x = Math.max(0, designer.snap(frame.startPos.x + d.x))
+                            frame.target.y = Math.max(0, designer.snap(frame.startPos.y + d.y))
+                        }
+                    }
+                }
+                TapHandler {
+                    onTapped: eventPoint => {
+                        if (!designer.overPanel(frame.mapToItem(canvas, eventPoint.position)))
+                            designer.selected = frame.modelData
+                    }
+                }
+
+                // Resize: touch-sized handles on the four corners.
+                Repeater {
+                    model: frame.isSelected && frame.canMove ? [Qt.point(0, 0), Qt.point(1, 0), Qt.point(0, 1), Qt.point(1, 1)] : []
+                    delegate: Rectangle {
+                        id: handle
+                        required property point modelData
+                        objectName: "handle-" + modelData.x + modelData.y
+                        width: Theme.touchTarget * 0.7
+                        height: width
+                        radius: width / 2
+                        x: modelData.x * frame.width - width / 2
+                        y: modelData.y * frame.height - height / 2
+                        color: Theme.surface
+                        border.color: Theme.accent
+                        border.width: Theme.mm(0.6)
+                        property rect startRect
+                        DragHandler {
+                            target: null
+                            dragThreshold: 2
+                            onActiveChanged: {
+                                const t = frame.target
+                                if (active) {
+                                    handle.startRect = Qt.rect(t.x, t.y, t.width, t.height)
+                                } else if (t) {
+                                    designer.editor.setGeometry(frame.modelData, t.x, t.y, t.width, t.height)
+                                }
+                            }
+                            onCentroidChanged: {
+                                const t = frame.target, r = handle.startRect, min = designer.grid * 4
+                                if (!active || !t)
+                                    return
+                                const translation = Qt.point(centroid.scenePosition.x - centroid.scenePressPosition.x,
+                                                             centroid.scenePosition.y - centroid.scenePressPosition.y)
+                                if (handle.modelData.x === 0) {
+                                    const left = Math.min(designer.snap(r.x + translation.x), r.x + r.width - min)
+                                    t.x = Math.max(0, left)
+                                    t.width = r.x + r.width - t.x
+                                } else {
+                                    t.width = Math.max(min, designer.snap(r.x + r.width + translation.x) - r.x)
+                                }
+                                if (handle.modelData.y === 0) {
+                                    const top = Math.min(designer.snap(r.y + translation.y), r.y + r.height - min)
+                                    t.y = Math.max(0, top)
+                                    t.height = r.y + r.height - t.y
+                                } else {
+                                    t.height = Math.max(min, designer.snap(r.y + r.height + translation.y) - r.y)
+                                }
+                            }
+                        }
+                    }
+                }
+            }
+        }
+
+        // Where a palette entry being dragged would land.
+        Rectangle {
+            id: ghost
+            objectName: "dropGhost"
+            visible: false
+            color: Qt.rgba(Theme.accent.r, Theme.accent.g, Theme.accent.b, 0.2)
+            border.color: Theme.accent
+            radius: Theme.radius
+        }
+    }
+
+    // --- Toolbar ---
+    Rectangle {
+        id: toolbar
+        anchors.horizontalCenter: parent.horizontalCenter
+        anchors.bottom: parent.bottom
+        anchors.bottomMargin: Theme.spacing * 2
+        width: tools.implicitWidth + Theme.spacing * 2
+        height: tools.implicitHeight + Theme.spacing * 2
+        color: Theme.titleBar
+        border.color: Theme.border
+        radius: Theme.radius
+        MouseArea {
+            anchors.fill: parent
+            acceptedButtons: Qt.AllButtons
+        }
+        Row {
+            id: tools
+            anchors.centerIn: parent
+            spacing: Theme.spacing
+            TouchButton { objectName: "paletteToggle"; text: designer.paletteShown ? qsTr("Hide palette") : qsTr("Palette"); onClicked: designer.paletteShown = !designer.paletteShown }
+            TouchButton { objectName: "undoButton"; text: qsTr("Undo"); enabled: designer.editor.canUndo; toolTip: qsTr("Ctrl+Z"); onClicked: designer.undo() }
+            TouchButton { objectName: "redoButton"; text: qsTr("Redo"); enabled: designer.editor.canRedo; toolTip: qsTr("Ctrl+Shift+Z"); onClicked: designer.redo() }
+            TouchButton { objectName: "duplicateButton"; text: qsTr("Duplicate"); enabled: designer.selected !== ""; toolTip: qsTr("Ctrl+D"); onClicked: designer.duplicateSelected() }
+            TouchButton { objectName: "raiseButton"; text: qsTr("Raise"); enabled: designer.selected !== ""; toolTip: qsTr("Page Up"); onClicked: designer.editor.raise(designer.selected) }
+            TouchButton { objectName: "lowerButton"; text: qsTr("Lower"); enabled: designer.selected !== ""; toolTip: qsTr("Page Down"); onClicked: designer.editor.lower(designer.selected) }
+            TouchButton { objectName: "deleteButton"; text: qsTr("Delete"); enabled: designer.selected !== ""; toolTip: qsTr("Delete"); onClicked: designer.removeSelected() }
+            TouchButton {
+                objectName: "saveButton"
+                text: designer.editor.modified ? qsTr("Save") : qsTr("Saved")
+                enabled: designer.editor.modified
+                highlighted: designer.editor.modified
+                toolTip: qsTr("Ctrl+S")
+                onClicked: designer.editor.save()
+            }
+        }
+    }
+
+    // Problems: a save that failed, an edit or a component the console could not take.
+    Rectangle {
+        objectName: "designerProblem"
+        anchors.horizontalCenter: toolbar.horizontalCenter
+        anchors.bottom: toolbar.top
+        anchors.bottomMargin: Theme.spacing
+        width: Math.min(parent.width * 0.6, problemText.implicitWidth + Theme.spacing * 4)
+        height: problemText.implicitHeight + Theme.spacing * 2
+        visible: problemText.text !== ""
+        color: Theme.surface
+        border.color: Theme.levelColor(4)
+        border.width: Theme.mm(0.5)
+        radius: Theme.radius
+        Text {
+            id: problemText
+            anchors.centerIn: parent
+            width: parent.width - Theme.spacing * 4
+            wrapMode: Text.Wrap
+            text: designer.editor.errorString || (designer.loader ? designer.loader.warning : "")
+            color: Theme.text
+            font.pixelSize: Theme.fontPixelSize
+        }
+    }
+
+    // --- Palette ---
+    ComponentPaletteView {
+        id: paletteView
+        objectName: "paletteView"
+        visible: designer.paletteShown
+        anchors { left: parent.left; top: parent.top; bottom: toolbar.top; margins: Theme.spacing }
+        width: Theme.mm(58)
+        palette: designer.palette
+        placing: designer.placing
+        onArmed: name => designer.placing = (designer.placing === name ? "" : name)
+        onDragged: (name, scenePoint, active) => {
+            const p = canvas.mapFromItem(null, scenePoint.x, scenePoint.y)
+            const entry = designer.palette.entry(name)
+            const w = entry.defaultWidth || 240, h = entry.defaultHeight || 160
+            ghost.x = designer.snap(Math.max(0, p.x - w / 2))
+            ghost.y = designer.snap(Math.max(0, p.y - h / 2))
+            ghost.width = w
+            ghost.height = h
+            ghost.visible = active
+            if (!active && p.x > paletteView.x + paletteView.width && p.x < canvas.width && p.y > 0 && p.y < canvas.height)
+                designer.place(name, p.x, p.y)
+        }
+    }
+
+    // --- Properties of the selection ---
+    PropertyEditor {
+        id: properties
+        objectName: "propertyEditor"
+        visible: designer.selected !== ""
+        anchors { right: parent.right; top: parent.top; bottom: toolbar.top; margins: Theme.spacing }
+        width: Theme.mm(72)
+        editor: designer.editor
+        palette: designer.palette
+        componentId: designer.selected
+        target: designer.selected !== "" ? designer.itemFor(designer.selected) : null
+    }
+
+    // --- Keyboard ---
+    Shortcut { enabled: designer.editing; sequence: "Ctrl+Z"; onActivated: designer.undo() }
+    Shortcut { enabled: designer.editing; sequences: ["Ctrl+Shift+Z", "Ctrl+Y"]; onActivated: designer.redo() }
+    Shortcut { enabled: designer.editing; sequence: "Ctrl+S"; onActivated: designer.editor.save() }
+    Shortcut { enabled: designer.editing && designer.selected !== ""; sequences: ["Delete", "Backspace"]; onActivated: designer.removeSelected() }
+    Shortcut { enabled: designer.editing && designer.selected !== ""; sequence: "Ctrl+D"; onActivated: designer.duplicateSelected() }
+    Shortcut { enabled: designer.editing && designer.selected !== ""; sequence: "PgUp"; onActivated: designer.editor.raise(designer.selected) }
+    Shortcut { enabled: designer.editing && designer.selected !== ""; sequence: "PgDown"; onActivated: designer.editor.lower(designer.selected) }
+    Shortcut { enabled: designer.editing; sequence: "Escape"; onActivated: { designer.selected = ""; designer.placing = "" } }
+    Shortcut { enabled: designer.editing && designer.selected !== ""; sequence: "Left"; onActivated: designer.nudge(-designer.grid, 0) }
+    Shortcut { enabled: designer.editing && designer.selected !== ""; sequence: "Right"; onActivated: designer.nudge(designer.grid, 0) }
+    Shortcut { enabled: designer.editing && designer.selected !== ""; sequence: "Up"; onActivated: designer.nudge(0, -designer.grid) }
+    Shortcut { enabled: designer.editing && designer.selected !== ""; sequence: "Down"; onActivated: designer.nudge(0, designer.grid) }
+}

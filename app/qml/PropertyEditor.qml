@@ -1,0 +1,270 @@
+import QtQuick
+import QtQuick.Controls.Basic as Basic
+import Neptus.Components
+import Neptus.Shell
+
+// The selected component's properties, each with an editor for its type
+// (number with unit, text, bool, colour, choice, tree path with completion
+// from the live tree). A property set by a hand-written binding shows the
+// expression; replacing it with a value needs a confirmation first.
+Rectangle {
+    id: panel
+
+    property LayoutEditor editor: null
+    property ComponentPalette palette: null
+    property string componentId: ""
+    property Item target: null
+
+    readonly property string type: editor ? (editor.text, editor.typeOf(componentId)) : ""
+    readonly property var entry: palette && type !== "" ? palette.entry(type) : ({})
+    readonly property var geometry: [{ name: "x", type: "number", unit: "px" }, { name: "y", type: "number", unit: "px" },
+                                     { name: "width", type: "number", unit: "px", min: 8 },
+                                     { name: "height", type: "number", unit: "px", min: 8 }]
+
+    color: Theme.surface
+    border.color: Theme.border
+    radius: Theme.radius
+
+    // Touches on the panel stay on the panel (not the console under it).
+    MouseArea {
+        anchors.fill: parent
+        acceptedButtons: Qt.AllButtons
+        onWheel: wheel => wheel.accepted = true
+    }
+
+    Flickable {
+        anchors.fill: parent
+        anchors.margins: Theme.spacing * 2
+        contentHeight: column.implicitHeight
+        clip: true
+        Column {
+            id: column
+            width: parent.width
+            spacing: Theme.spacing
+            Text {
+                text: (panel.entry.displayName || panel.type) + "  ·  " + panel.componentId
+                color: Theme.text
+                font.pixelSize: Theme.fontPixelSize
+                font.bold: true
+                width: parent.width
+                elide: Text.ElideRight
+            }
+            Text {
+                visible: text !== ""
+                width: parent.width
+                text: panel.entry.description || ""
+                color: Theme.textDim
+                font.pixelSize: Theme.smallFontPixelSize
+                wrapMode: Text.Wrap
+            }
+            Repeater {
+                model: panel.componentId !== "" ? panel.geometry.concat(panel.entry.properties || []) : []
+                delegate: PropertyRow {
+                    required property var modelData
+                    width: column.width
+                    editor: panel.editor
+                    componentId: panel.componentId
+                    spec: modelData
+                }
+            }
+        }
+    }
+
+    component PropertyRow: Column {
+        id: row
+        required property LayoutEditor editor
+        property string componentId
+        property var spec
+        readonly property string name: spec.name
+        readonly property bool bound: { editor.text; return editor.isBinding(componentId, name) }
+        readonly property var current: { editor.text; return editor.value(componentId, name) }
+        property bool confirming: false
+        objectName: "property-" + name
+        spacing: Theme.spacing / 2
+
+        function commit(value) { editor.setValue(componentId, name, value) }
+
+        Text {
+            text: row.name + (row.spec.unit ? " (" + row.spec.unit + ")" : "")
+            color: Theme.textDim
+            font.pixelSize: Theme.smallFontPixelSize
+        }
+        // A hand-written binding: shown, kept unless the user says otherwise.
+        Column {
+            visible: row.bound
+            width: parent.width
+            spacing: Theme.spacing / 2
+            Text {
+                width: parent.width
+                text: row.bound ? row.editor.expression(row.componentId, row.name) : ""
+                color: Theme.text
+                font.family: Theme.monospaceFont
+                font.pixelSize: Theme.smallFontPixelSize
+                wrapMode: Text.WrapAnywhere
+            }
+            Row {
+                spacing: Theme.spacing
+                TouchButton {
+                    objectName: "replaceBinding"
+                    visible: !row.confirming
+                    text: qsTr("Replace with a value…")
+                    onClicked: row.confirming = true
+                }
+                Text {
+                    visible: row.confirming
+                    anchors.verticalCenter: parent.verticalCenter
+                    text: qsTr("This drops the expression above.")
+                    color: Theme.text
+                    font.pixelSize: Theme.smallFontPixelSize
+                }
+                TouchButton {
+                    objectName: "confirmReplace"
+                    visible: row.confirming
+                    text: qsTr("Replace")
+                    onClicked: { row.confirming = false; row.editor.resetProperty(row.componentId, row.name) }
+                }
+                TouchButton {
+                    objectName: "keepBinding"
+                    visible: row.confirming
+                    text: qsTr("Keep")
+                    onClicked: row.confirming = false
+                }
+            }
+        }
+        Loader {
+            visible: !row.bound
+            active: !row.bound
+            width: parent.width
+            sourceComponent: ({ number: numberEditor, bool: boolEditor, color: colorEditor, enum: enumEditor,
+                                path: pathEditor })[row.spec.type] || textEditor
+        }
+
+        Component {
+            id: textEditor
+            Field {
+                objectName: "field-" + row.name
+                text: row.current === undefined ? "" : String(row.current)
+                onCommitted: row.commit(text)
+            }
+        }
+        Component {
+            id: numberEditor
+            Field {
+                objectName: "field-" + row.name
+                text: row.current === undefined ? "" : String(row.current)
+                inputMethodHints: Qt.ImhFormattedNumbersOnly
+                validator: DoubleValidator { bottom: row.spec.min !== undefined ? row.spec.min : -1e12
+                                             top: row.spec.max !== undefined ? row.spec.max : 1e12 }
+                onCommitted: row.commit(Number(text))
+            }
+        }
+        Component {
+            id: boolEditor
+            Basic.Switch {
+                objectName: "field-" + row.name
+                checked: row.current === true
+                implicitHeight: Theme.touchTarget
+                onToggled: row.commit(checked)
+            }
+        }
+        Component {
+            id: enumEditor
+            Basic.ComboBox {
+                objectName: "field-" + row.name
+                implicitHeight: Theme.touchTarget
+                model: row.spec.options || []
+                currentIndex: typeof row.current === "number" ? row.current : -1
+                onActivated: index => row.commit(index)
+                font.pixelSize: Theme.fontPixelSize
+            }
+        }
+        Component {
+            id: colorEditor
+            Column {
+                spacing: Theme.spacing / 2
+                Field {
+                    objectName: "field-" + row.name
+                    width: row.width
+                    text: row.current === undefined ? "" : String(row.current)
+                    onCommitted: row.commit(text)
+                }
+                Row {
+                    spacing: Theme.spacing / 2
+                    Repeater {
+                        model: ["#d32f2f", "#f9a825", "#2e7d32", "#1565c0", "#6a1b9a", "#212121", "#ffffff"]
+                        delegate: Rectangle {
+                            required property string modelData
+                            width: Theme.touchTarget * 0.8
+                            height: width
+                            radius: Theme.radius
+                            color: modelData
+                            border.color: Theme.border
+                            TapHandler { onTapped: row.commit(parent.modelData) }
+                        }
+                    }
+                }
+            }
+        }
+        Component {
+            id: pathEditor
+            Column {
+                spacing: Theme.spacing / 2
+                Field {
+                    id: pathField
+                    objectName: "field-" + row.name
+                    width: row.width
+                    text: row.current === undefined ? "" : String(row.current)
+                    font.family: Theme.monospaceFont
+                    onCommitted: row.commit(text)
+                    readonly property string folder: text.lastIndexOf("/") >= 0 ? text.substring(0, text.lastIndexOf("/")) : ""
+                    readonly property string stem: text.substring(text.lastIndexOf("/") + 1)
+                }
+                // Completion from the live tree: the children of what is typed so far.
+                Repeater {
+                    model: pathField.activeFocus && Session.tree
+                           ? Session.tree.children(pathField.folder).filter(name => name.startsWith(pathField.stem)).slice(0, 8)
+                           : []
+                    delegate: Rectangle {
+                        required property string modelData
+                        objectName: "completion-" + modelData
+                        width: row.width
+                        height: Theme.touchTarget * 0.8
+                        color: Theme.background
+                        border.color: Theme.border
+                        radius: Theme.radius
+                        Text {
+                            anchors.verticalCenter: parent.verticalCenter
+                            x: Theme.spacing
+                            text: parent.modelData
+                            color: Theme.text
+                            font.family: Theme.monospaceFont
+                            font.pixelSize: Theme.fontPixelSize
+                        }
+                        TapHandler {
+                            onTapped: {
+                                pathField.text = (pathField.folder ? pathField.folder + "/" : "") + parent.modelData
+                                pathField.forceActiveFocus()
+                            }
+                        }
+                    }
+                }
+            }
+        }
+    }
+
+    component Field: Basic.TextField {
+        implicitHeight: Theme.touchTarget
+        font.pixelSize: Theme.fontPixelSize
+        color: Theme.text
+        selectByMouse: true
+        background: Rectangle {
+            color: Theme.background
+            border.color: parent.activeFocus ? Theme.accent : Theme.border
+            border.width: parent.activeFocus ? Theme.mm(0.5) : 1
+            radius: Theme.radius
+        }
+        // Enter, or leaving the field with a valid value.
+        signal committed()
+        onEditingFinished: if (acceptableInput) committed()
+    }
+}

@@ -1,0 +1,58 @@
+import QtQuick
+import Neptus.Engine
+
+// One tree variable as a number with its unit, large enough to read at arm's
+// length; greyed when the value is stale, a dash until it is first heard.
+Rectangle {
+    id: readout
+
+    // Tree path of the value, e.g. "lauv-1/EstimatedState/depth".
+    property string path: ""
+    // Shown above the value; the path's last part when empty.
+    property string label: ""
+    property int decimals: 1
+    // Shown after the value; the variable's own unit when empty.
+    property string unit: ""
+
+    readonly property bool stale: variable.stale
+    readonly property string valueText: !variable.present ? "—"
+        : typeof variable.value === "number" ? variable.value.toFixed(Math.max(0, Math.min(decimals, 10)))
+        : variable.text
+
+    implicitWidth: Theme.mm(40)
+    implicitHeight: Theme.mm(18)
+    color: Theme.surface
+    border.color: Theme.border
+    border.width: Math.max(1, Theme.mm(0.3))
+    radius: Theme.radius
+
+    Accessible.role: Accessible.StaticText
+    Accessible.name: caption.text + " " + value.text
+
+    Variable {
+        id: variable
+        tree: Session.tree
+        path: readout.path
+    }
+
+    Text {
+        id: caption
+        anchors { left: parent.left; right: parent.right; top: parent.top; margins: Theme.spacing }
+        text: readout.label !== "" ? readout.label : (readout.path.split("/").pop() || qsTr("(no variable)"))
+        color: Theme.textDim
+        font.pixelSize: Theme.smallFontPixelSize
+        elide: Text.ElideRight
+    }
+    Text {
+        id: value
+        objectName: "value"
+        anchors { left: parent.left; right: parent.right; bottom: parent.bottom; margins: Theme.spacing }
+        text: readout.valueText + ((readout.unit || variable.unit) ? " " + (readout.unit || variable.unit) : "")
+        color: readout.stale ? Theme.textDim : Theme.text
+        font.pixelSize: Math.max(Theme.largeFontPixelSize, Math.min(readout.height * 0.4, readout.width / 7))
+        font.family: Theme.monospaceFont
+        horizontalAlignment: Text.AlignRight
+        fontSizeMode: Text.HorizontalFit
+        minimumPixelSize: Theme.smallFontPixelSize
+    }
+}

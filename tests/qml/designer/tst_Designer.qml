@@ -1,0 +1,284 @@
+import QtQuick
+import QtTest
+import Neptus.Components
+import Neptus.Shell
+import Neptus.Testing
+
+// The designer driven as a user drives it: taps on the palette and the
+// console, drags, typing in the property editor, keyboard shortcuts; and
+// drop-in components written to a watched directory while it runs.
+TestCase {
+    id: test
+    name: "Designer"
+    when: windowShown
+    visible: true
+    width: 1280
+    height: 800
+
+    readonly property string emptyLayout: "import QtQuick\nimport Neptus.Components\n\nConsole {\n    id: layout\n    title: \"Test ops\"\n}\n"
+
+    // What the shell puts together: palette, loader, designer.
+    Component {
+        id: shellComponent
+        Item {
+            id: shell
+            property alias palette: palette
+            property alias loader: loader
+            property alias designer: designer
+            property alias source: loader.source
+            property alias directories: palette.directories
+            property string file
+            width: test.width
+            height: test.height
+            ComponentPalette { id: palette }
+            ConsoleLoader {
+                id: loader
+                anchors.fill: parent
+                session: QtObject { property var tree: Fixtures.treeModel }
+                componentsRevision: palette.revision
+            }
+            DesignerOverlay {
+                id: designer
+                anchors.fill: parent
+                loader: loader
+                palette: palette
+                editing: true
+            }
+        }
+    }
+
+    // Shells of finished tests may linger until deleted: their shortcuts must not answer.
+    property var shells: []
+    function cleanup() {
+        for (const shell of shells)
+            if (shell)
+                shell.designer.editing = false
+        shells = []
+    }
+
+    function openShell(layoutText, componentDirectory) {
+        const dir = Fixtures.makeTempDir()
+        const file = dir + "/Ops.qml"
+        verify(Fixtures.writeFile(file, layoutText))
+        const shell = createTemporaryObject(shellComponent, test,
+            { directories: componentDirectory ? [componentDirectory] : [], source: "file://" + file })
+        tryVerify(() => shell.loader.item !== null, 3000, "the console opens: " + shell.loader.errorString)
+        shell.file = file
+        shells.push(shell)
+        return shell
+    }
+
+    function frame(shell, id) { return findChild(shell.designer, "frame-" + id) }
+    function liveItem(shell, id) { return shell.loader.editor.itemWithId(shell.loader.item, id) }
+    function type(text) {
+        for (const c of text)
+            keyClick(c)
+    }
+
+    function test_addSetPathMoveSaveReload() {
+        const shell = openShell(emptyLayout)
+        const editor = shell.loader.editor
+        // Tap the palette entry, then the console where it goes.
+        mouseClick(findChild(shell.designer, "palette-Readout"))
+        compare(shell.designer.placing, "Readout")
+        mouseClick(shell.designer, 700, 400)
+        compare(editor.componentIds, ["readout1"])
+        compare(shell.designer.selected, "readout1")
+        tryVerify(() => liveItem(shell, "readout1") !== null, 2000, "the console shows the new component")
+        compare(editor.value("readout1", "width"), 200)
+        compare(editor.value("readout1", "x") % 8, 0, "placed on the grid")
+
+        // Type a tree path in the property editor.
+        const field = findChild(shell.designer, "field-path")
+        verify(field, "the property editor offers the path")
+        waitForRendering(shell.designer)
+        mouseClick(field)
+        type("auv/EstimatedState/depth")
+        keyClick(Qt.Key_Return)
+        compare(editor.value("readout1", "path"), "auv/EstimatedState/depth")
+        // The component is bound to the tree: data shows up in it.
+        Fixtures.nameSystem(41, "auv")
+        Fixtures.ingest("EstimatedState", 41, { depth: 12.25 })
+        Fixtures.treeModel.sync()
+        tryVerify(() => findChild(liveItem(shell, "readout1"), "value").text === "12.3 m", 2000,
+                  "the readout shows the variable")
+
+        // Drag it: it moves by the drag, snapped to the 8 px grid.
+        const x0 = editor.value("readout1", "x"), y0 = editor.value("readout1", "y")
+        const f = frame(shell, "readout1")
+        // (Dragged on the still canvas: the frame itself follows the finger.)
+        const centre = f.mapToItem(shell.designer, f.width / 2, f.height / 2)
+        mouseDrag(shell.designer, centre.x, centre.y, 83, -37)
+        tryCompare(editor, "modified", true)
+        compare(editor.value("readout1", "x"), x0 + 80)
+        compare(editor.value("readout1", "y"), y0 - 40)
+
+        // Save, open again: the same layout, the same component.
+        mouseClick(findChild(shell.designer, "saveButton"))
+        compare(editor.modified, false)
+        const saved = Fixtures.readFile(shell.file)
+        compare(saved, editor.text)
+        verify(saved.indexOf("import Neptus.Components") >= 0)
+        const again = createTemporaryObject(shellComponent, test, { source: "file://" + shell.file })
+        shells.push(again)
+        tryVerify(() => again.loader.item !== null, 3000)
+        compare(again.loader.editor.text, saved)
+        const reopened = liveItem(again, "readout1")
+        verify(reopened)
+        compare(reopened.path, "auv/EstimatedState/depth")
+        compare(reopened.x, x0 + 80)
+    }
+
+    function test_undoAndRedoEveryEditFromTheKeyboard() {
+        const shell = openShell(emptyLayout)
+        const editor = shell.loader.editor
+        const states = [editor.text]
+        mouseClick(findChild(shell.designer, "palette-StatusLed"))
+        mouseClick(shell.designer, 600, 300)
+        states.push(editor.text)
+        keyClick(Qt.Key_Right)                                   // nudge
+        states.push(editor.text)
+        keyClick(Qt.Key_D, Qt.ControlModifier)                   // duplicate
+        states.push(editor.text)
+        compare(editor.componentIds.length, 2)
+        keyClick(Qt.Key_PageDown)                                // lower the copy
+        states.push(editor.text)
+        keyClick(Qt.Key_Delete)                                  // delete it
+        states.push(editor.text)
+        compare(editor.componentIds, ["statusLed1"])
+        for (let i = states.length - 2; i >= 0; --i) {
+            keyClick(Qt.Key_Z, Qt.ControlModifier)
+            compare(editor.text, states[i], "undo back to state " + i)
+        }
+        verify(!editor.canUndo)
+        for (let i = 1; i < states.length; ++i) {
+            keyClick(Qt.Key_Z, Qt.ControlModifier | Qt.ShiftModifier)
+            compare(editor.text, states[i], "redo to state " + i)
+        }
+        verify(!editor.canRedo)
+        // The console follows: after the last redo only one lamp is left.
+        tryVerify(() => liveItem(shell, "statusLed1") !== null && liveItem(shell, "statusLed2") === null)
+    }
+
+    function test_savingAnUneditedFileGivesTheSameBytes() {
+        const original = Fixtures.readFile(Fixtures.sourceDir() + "/qml/consoles/Default.qml")
+        verify(original.length > 0)
+        const shell = openShell(original)
+        verify(shell.loader.editor.save())
+        compare(Fixtures.readFile(shell.file), original)
+        // An edit undone is no edit either.
+        keyClick(Qt.Key_Escape)
+        mouseClick(findChild(shell.designer, "palette-Readout"))
+        mouseClick(shell.designer, 500, 500)
+        keyClick(Qt.Key_Z, Qt.ControlModifier)
+        verify(shell.loader.editor.save())
+        compare(Fixtures.readFile(shell.file), original)
+        compare(Fixtures.readFile(shell.file + ".bak"), original, "the previous version is kept")
+    }
+
+    function test_aHandWrittenBindingSurvivesAnEdit() {
+        const layout = "import QtQuick\nimport Neptus.Components\n\nConsole {\n    id: layout\n    title: \"Ops\"\n\n"
+            + "    function caption(t) {\n        return \"Depth of \" + t\n    }\n\n"
+            + "    // Hand-written: the label follows the title.\n"
+            + "    Readout {\n        id: depth\n        x: 400\n        y: 200\n        width: 200\n        height: 96\n"
+            + "        label: layout.caption(layout.title) // keep me\n        path: \"auv/EstimatedState/depth\"\n    }\n}\n"
+        const shell = openShell(layout)
+        const editor = shell.loader.editor
+        tryVerify(() => liveItem(shell, "depth") !== null)
+        compare(liveItem(shell, "depth").label, "Depth of Ops")
+        mouseClick(frame(shell, "depth"))
+        compare(shell.designer.selected, "depth")
+        // The panel shows the binding and asks before replacing it.
+        const row = findChild(shell.designer, "property-label")
+        verify(row.bound)
+        waitForRendering(shell.designer)
+        mouseClick(findChild(row, "replaceBinding"))
+        verify(findChild(row, "confirmReplace").visible)
+        waitForRendering(shell.designer)
+        mouseClick(findChild(row, "keepBinding"))
+        verify(editor.isBinding("depth", "label"))
+        // Edit something else: move it.
+        keyClick(Qt.Key_Down)
+        compare(editor.value("depth", "y"), 208)
+        verify(editor.save())
+        const saved = Fixtures.readFile(shell.file)
+        verify(saved.indexOf("        label: layout.caption(layout.title) // keep me\n") >= 0, saved)
+        verify(saved.indexOf("    // Hand-written: the label follows the title.\n") >= 0, saved)
+        verify(saved.indexOf("        return \"Depth of \" + t\n") >= 0, saved)
+        verify(saved.indexOf("        y: 208\n") >= 0, saved)
+        tryVerify(() => liveItem(shell, "depth") && liveItem(shell, "depth").label === "Depth of Ops")
+    }
+
+    function test_aDroppedInComponentAppearsAndReloadsInPlace() {
+        const components = Fixtures.makeTempDir()
+        const shell = openShell(emptyLayout, components)
+        verify(shell.palette.entry("Dial").name === undefined)
+        const dial = "import QtQuick\n\nRectangle {\n    property string path: \"\"\n    property color tint: \"#336699\"\n"
+                   + "    color: tint\n    radius: width / 2\n}\n"
+        const manifest = "{ \"displayName\": \"Dial\", \"category\": \"Team\", \"description\": \"Our own dial.\","
+                       + " \"defaultWidth\": 120, \"defaultHeight\": 120 }"
+        const written = Fixtures.now()
+        verify(Fixtures.writeFile(components + "/Dial.json", manifest))
+        verify(Fixtures.writeFile(components + "/Dial.qml", dial))
+        tryVerify(() => shell.palette.entry("Dial").status === "ready", 1000, "in the palette within a second")
+        const seen = Fixtures.now() - written
+        verify(seen <= 1000, "took " + seen + " ms")
+        console.log("drop-in component in the palette after " + seen + " ms")
+        compare(shell.palette.entry("Dial").category, "Team")
+        const names = shell.palette.entry("Dial").properties.map(p => p.name)
+        verify(names.indexOf("path") >= 0 && names.indexOf("tint") >= 0, "declared properties: " + names)
+
+        // Place it: the layout imports Neptus.User and the console shows it.
+        tryVerify(() => findChild(shell.designer, "palette-Dial") !== null)
+        mouseClick(findChild(shell.designer, "palette-Dial"))
+        mouseClick(shell.designer, 640, 400)
+        tryVerify(() => liveItem(shell, "dial1") !== null, 2000, shell.loader.warning)
+        verify(shell.loader.editor.text.indexOf("import Neptus.User") >= 0)
+        compare(String(liveItem(shell, "dial1").color), "#336699")
+
+        // Edit the component's file: the console picks up the new version.
+        verify(Fixtures.writeFile(components + "/Dial.qml", dial.replace("#336699", "#aa0000")))
+        tryVerify(() => liveItem(shell, "dial1") && String(liveItem(shell, "dial1").color) === "#aa0000", 2000,
+                  "the edited component reloads in place")
+    }
+
+    function test_aBrokenComponentIsReportedNotFatal() {
+        const components = Fixtures.makeTempDir()
+        verify(Fixtures.writeFile(components + "/Lamp.qml", "import QtQuick\nRectangle { color: \"green\" }\n"))
+        const shell = openShell(emptyLayout, components)
+        mouseClick(findChild(shell.designer, "palette-Lamp"))
+        mouseClick(shell.designer, 640, 400)
+        tryVerify(() => liveItem(shell, "lamp1") !== null)
+
+        // A new component with an error: listed with its error, not placeable.
+        verify(Fixtures.writeFile(components + "/Broken.qml", "import QtQuick\nRectangle {\n    colour: \"red\"\n}\n"))
+        tryVerify(() => shell.palette.entry("Broken").status === "error", 1000)
+        const error = shell.palette.entry("Broken").errorString
+        verify(error.indexOf("Broken.qml:3") >= 0, error)
+        compare(shell.designer.place("Broken", 100, 100), "")
+
+        // A component in use breaks: the console keeps running its last good version and says so.
+        ignoreWarning(/keeps its previous version/)
+        verify(Fixtures.writeFile(components + "/Lamp.qml", "import QtQuick\nRectangle { color: }\n"))
+        tryVerify(() => shell.palette.entry("Lamp").status === "error", 1000)
+        tryVerify(() => shell.loader.warning.indexOf("Lamp") >= 0, 2000, shell.loader.warning)
+        verify(shell.loader.item !== null)
+        verify(liveItem(shell, "lamp1") !== null)
+        verify(findChild(shell.designer, "designerProblem").visible)
+    }
+
+    function test_aFailedSaveLeavesTheOldFileIntact() {
+        const shell = openShell(emptyLayout)
+        const editor = shell.loader.editor
+        mouseClick(findChild(shell.designer, "palette-Readout"))
+        mouseClick(shell.designer, 400, 300)
+        // The backup cannot be written (a directory is in its place): the save
+        // stops before the layout is replaced.
+        verify(Fixtures.makeDir(shell.file + ".bak"))
+        mouseClick(findChild(shell.designer, "saveButton"))
+        verify(editor.modified, "still unsaved")
+        compare(Fixtures.readFile(shell.file), emptyLayout)
+        verify(editor.errorString.indexOf("Ops.qml.bak") >= 0, editor.errorString)
+        verify(findChild(shell.designer, "designerProblem").visible)
+    }
+}
