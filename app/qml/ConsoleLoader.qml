@@ -87,6 +87,7 @@ Item {
     }
 
     function replace(object) {
+        uninstallScripts()
         if (item)
             item.destroy()
         item = object
@@ -95,7 +96,35 @@ Item {
         object.session = Qt.binding(() => loader.session)
         object.width = Qt.binding(() => loader.width)
         object.height = Qt.binding(() => loader.height)
+        installScripts()
     }
+
+    // A component's `alarmScript` runs as the alarm "scripts/<its id>".
+    property var installedScripts: []
+    function installScripts() {
+        const scripts = Session.scripts
+        if (!item || !scripts)
+            return
+        const names = []
+        for (const child of item.children) {
+            const id = layoutEditor.idOf(child)
+            if (id === "" || typeof child.alarmScript !== "string" || child.alarmScript.trim() === "")
+                continue
+            const result = scripts.install(id, child.alarmScript)
+            if (!result.ok)
+                console.warn("Alarm script of " + id + ", line " + result.line + ": " + result.message)
+            names.push(id)
+        }
+        installedScripts = names
+    }
+    function uninstallScripts() {
+        const scripts = Session.scripts
+        if (scripts)
+            for (const name of installedScripts)
+                scripts.uninstall(name)
+        installedScripts = []
+    }
+    Component.onDestruction: uninstallScripts()
 
     function fail(reason) {
         replace(null)

@@ -57,6 +57,13 @@ Rectangle {
                 font.pixelSize: Theme.smallFontPixelSize
                 wrapMode: Text.Wrap
             }
+            ScriptEditor {
+                objectName: "scriptEditor"
+                width: column.width
+                editor: panel.editor
+                componentId: panel.componentId
+                visible: panel.target !== null && typeof panel.target.alarmScript === "string"
+            }
             Repeater {
                 model: panel.componentId !== "" ? panel.geometry.concat(panel.entry.properties || []) : []
                 delegate: PropertyRow {
@@ -249,6 +256,70 @@ Rectangle {
                     }
                 }
             }
+        }
+    }
+
+    // The component's alarm script: checked as it is typed, the error shown at
+    // its line; applied (one undo step) only when it compiles.
+    component ScriptEditor: Column {
+        id: scriptEditor
+        property LayoutEditor editor: null
+        property string componentId: ""
+        spacing: Theme.spacing / 2
+        readonly property string saved: editor ? (editor.text, editor.value(componentId, "alarmScript") || "") : ""
+        readonly property var check: Session.scripts && area.text.trim() !== "" ? Session.scripts.check(area.text) : ({ ok: true })
+        onSavedChanged: area.text = saved
+
+        Text {
+            text: qsTr("Alarm script → alarm \"scripts/%1\"").arg(scriptEditor.componentId)
+            color: Theme.textDim
+            font.pixelSize: Theme.smallFontPixelSize
+        }
+        Rectangle {
+            width: parent.width
+            height: Math.max(Theme.touchTarget * 2, area.implicitHeight + Theme.spacing)
+            color: Theme.background
+            border.color: scriptEditor.check.ok ? (area.activeFocus ? Theme.accent : Theme.border) : Theme.levelColor(4)
+            border.width: area.activeFocus || !scriptEditor.check.ok ? Theme.mm(0.5) : 1
+            radius: Theme.radius
+            // The line with the error, marked behind the text.
+            Rectangle {
+                visible: !scriptEditor.check.ok && scriptEditor.check.line > 0
+                x: 1
+                width: parent.width - 2
+                y: area.y + area.topPadding + (scriptEditor.check.line - 1) * metrics.lineSpacing
+                height: metrics.lineSpacing
+                color: Qt.rgba(1, 0, 0, 0.15)
+            }
+            FontMetrics { id: metrics; font: area.font }
+            Basic.TextArea {
+                id: area
+                objectName: "scriptArea"
+                anchors.fill: parent
+                font.family: Theme.monospaceFont
+                font.pixelSize: Theme.smallFontPixelSize
+                color: Theme.text
+                wrapMode: TextEdit.NoWrap
+                placeholderText: "return sys.lauv.Voltage.value < 22 ? Warning(\"low battery\") : Normal"
+                placeholderTextColor: Theme.textDim
+                background: null
+            }
+        }
+        Text {
+            objectName: "scriptError"
+            width: parent.width
+            visible: !scriptEditor.check.ok
+            text: scriptEditor.check.ok ? "" : qsTr("line %1, column %2: %3").arg(scriptEditor.check.line)
+                                               .arg(scriptEditor.check.column).arg(scriptEditor.check.message)
+            color: Theme.levelColor(4)
+            font.pixelSize: Theme.smallFontPixelSize
+            wrapMode: Text.Wrap
+        }
+        TouchButton {
+            objectName: "applyScript"
+            text: qsTr("Apply script")
+            enabled: scriptEditor.check.ok && area.text !== scriptEditor.saved
+            onClicked: scriptEditor.editor.setValue(scriptEditor.componentId, "alarmScript", area.text)
         }
     }
 

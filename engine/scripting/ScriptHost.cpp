@@ -228,6 +228,15 @@ void ScriptHost::runPending()
     QMetaObject::invokeMethod(m_worker, [this] { m_worker->tick(); }, Qt::BlockingQueuedConnection);
 }
 
+QVariantMap ScriptHost::install(const QString &name, const QString &source)
+{
+    const auto installed = setScript(name, source);
+    if (installed)
+        return {{QStringLiteral("ok"), true}};
+    return {{QStringLiteral("ok"), false}, {QStringLiteral("line"), installed.error().line},
+            {QStringLiteral("column"), installed.error().column}, {QStringLiteral("message"), installed.error().message}};
+}
+
 QVariantMap ScriptHost::check(const QString &source) const
 {
     const auto error = ScriptRunner::check(source);

@@ -50,6 +50,10 @@ public:
     // Runs what is due now and returns when done (tests; the host also does this every frame).
     void runPending();
 
+    // setScript()/removeScript() for QML (a console's components): {ok, line, column, message}.
+    Q_INVOKABLE QVariantMap install(const QString &name, const QString &source);
+    Q_INVOKABLE void uninstall(const QString &name) { removeScript(name); }
+
     // For a script editor: {ok, line, column, message}.
     Q_INVOKABLE QVariantMap check(const QString &source) const;
     // Runs `source` once against the current tree without keeping it:

@@ -13,6 +13,9 @@ Rectangle {
     property int decimals: 1
     // Shown after the value; the variable's own unit when empty.
     property string unit: ""
+    // JavaScript run against the tree whenever what it reads changes; its
+    // result raises the alarm "scripts/<this component's id>" (see docs/components.md).
+    property string alarmScript: ""
 
     readonly property bool stale: variable.stale
     readonly property string valueText: !variable.present ? "—"

@@ -4,6 +4,7 @@
 // tree and alarm graph, so tests drive the real models.
 #include "AlarmGraph.h"
 #include "AlarmListModel.h"
+#include "ScriptHost.h"
 #include "Schema.h"
 #include "VariableTreeModel.h"
 
@@ -26,6 +27,7 @@ class Fixtures : public QObject
     Q_OBJECT
     Q_PROPERTY(neptus::tree::VariableTreeModel *treeModel READ treeModel CONSTANT)
     Q_PROPERTY(neptus::alarms::AlarmListModel *alarmModel READ alarmModel CONSTANT)
+    Q_PROPERTY(neptus::scripting::ScriptHost *scripts READ scripts CONSTANT)
 
 public:
     Fixtures()
@@ -35,6 +37,14 @@ public:
 
     tree::VariableTreeModel *treeModel() { return &m_treeModel; }
     alarms::AlarmListModel *alarmModel() { return &m_alarmModel; }
+    scripting::ScriptHost *scripts() { return &m_scripts; }
+    // Level and message of an alarm node, after running the scripts that are due.
+    Q_INVOKABLE int alarmLevel(const QString &path)
+    {
+        m_scripts.runPending();
+        const auto node = m_graph.find(path);
+        return node == alarms::AlarmGraph::noNode ? -1 : static_cast<int>(m_graph.level(node));
+    }
 
     Q_INVOKABLE void nameSystem(int id, const QString &name) { m_tree.setSystemName(static_cast<quint16>(id), name); }
     Q_INVOKABLE void ingest(const QString &abbrev, int src, const QVariantMap &fields)
@@ -83,6 +93,7 @@ private:
     tree::VariableTreeModel m_treeModel{&m_tree};
     alarms::AlarmGraph m_graph{&m_clock};
     alarms::AlarmListModel m_alarmModel{&m_graph};
+    scripting::ScriptHost m_scripts{m_tree, m_graph};
     std::vector<std::unique_ptr<QTemporaryDir>> m_dirs;
 };
 

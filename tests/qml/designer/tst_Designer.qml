@@ -2,6 +2,7 @@ import QtQuick
 import QtTest
 import Neptus.Components
 import Neptus.Shell
+import Neptus.Engine
 import Neptus.Testing
 
 // The designer driven as a user drives it: taps on the palette and the
@@ -34,7 +35,10 @@ TestCase {
             ConsoleLoader {
                 id: loader
                 anchors.fill: parent
-                session: QtObject { property var tree: Fixtures.treeModel }
+                session: QtObject {
+                    property var tree: Fixtures.treeModel
+                    property var scripts: Fixtures.scripts
+                }
                 componentsRevision: palette.revision
             }
             DesignerOverlay {
@@ -280,5 +284,36 @@ TestCase {
         compare(Fixtures.readFile(shell.file), emptyLayout)
         verify(editor.errorString.indexOf("Ops.qml.bak") >= 0, editor.errorString)
         verify(findChild(shell.designer, "designerProblem").visible)
+    }
+
+    function test_aComponentsAlarmScriptIsCheckedAtItsLineAndRuns() {
+        const layout = "import QtQuick\nimport Neptus.Components\n\nConsole {\n    id: layout\n\n"
+            + "    Readout {\n        id: battery\n        x: 400\n        y: 200\n        width: 200\n        height: 96\n"
+            + "        path: \"boat/Voltage/value\"\n    }\n}\n"
+        const shell = openShell(layout)
+        const editor = shell.loader.editor
+        tryVerify(() => liveItem(shell, "battery") !== null)
+        mouseClick(frame(shell, "battery"))
+        waitForRendering(shell.designer)
+        const area = findChild(shell.designer, "scriptArea")
+        verify(area)
+        // A mistake on the second line: shown there, and it cannot be applied.
+        area.text = "const v = boat.Voltage.value\nif (v < 22 return Warning(\"low battery\")\nreturn Normal"
+        tryVerify(() => findChild(shell.designer, "scriptError").visible)
+        const error = findChild(shell.designer, "scriptError").text
+        verify(error.indexOf("line 2") === 0, error)
+        verify(!findChild(shell.designer, "applyScript").enabled)
+        // Mended: applied, written to the layout, running against the tree.
+        area.text = "const v = boat.Voltage.value\nif (v < 22) return Warning(\"low battery\")\nreturn Normal"
+        tryVerify(() => !findChild(shell.designer, "scriptError").visible)
+        waitForRendering(shell.designer)
+        mouseClick(findChild(shell.designer, "applyScript"))
+        verify(editor.text.indexOf("alarmScript: \"const v = boat.Voltage.value\\nif (v < 22)") >= 0, editor.text)
+        Fixtures.nameSystem(42, "boat")
+        Fixtures.ingest("Voltage", 42, { value: 21.5 })
+        tryVerify(() => Fixtures.alarmLevel("scripts/battery") === AlarmLevel.Warning, 2000,
+                  "level " + Fixtures.alarmLevel("scripts/battery"))
+        Fixtures.ingest("Voltage", 42, { value: 25 })
+        tryVerify(() => Fixtures.alarmLevel("scripts/battery") === AlarmLevel.Normal, 2000)
     }
 }
