@@ -2,6 +2,7 @@
 // renders it to a PNG (--screenshot) or checks every QML file (--self-test).
 #include "CommandLine.h"
 #include "ComponentPalette.h"
+#include "ConsoleCatalog.h"
 #include "ConsoleSession.h"
 #include "DdsTransport.h"
 #include "ImcUdpTransport.h"
@@ -116,6 +117,7 @@ int main(int argc, char *argv[])
         {QStringLiteral("consoleUrl"), QUrl::fromLocalFile(commandLine->consoleFile)},
         {QStringLiteral("initialPalette"), commandLine->palette},
         {QStringLiteral("componentDirectories"), componentDirectories},
+        {QStringLiteral("consoleDirectories"), ConsoleCatalog::standardDirectories()},
         {QStringLiteral("editing"), commandLine->edit},
         {QStringLiteral("width"), commandLine->windowSize.width()},
         {QStringLiteral("height"), commandLine->windowSize.height()},

@@ -110,7 +110,9 @@ Item {
             const id = layoutEditor.idOf(child)
             if (id === "" || typeof child.alarmScript !== "string" || child.alarmScript.trim() === "")
                 continue
-            const result = scripts.install(id, child.alarmScript)
+            // "$main" is the system the console follows.
+            const source = child.alarmScript.replace(/\$main\b/g, "sys[" + JSON.stringify(Session.mainSystem) + "]")
+            const result = scripts.install(id, source)
             if (!result.ok)
                 console.warn("Alarm script of " + id + ", line " + result.line + ": " + result.message)
             names.push(id)
@@ -125,6 +127,10 @@ Item {
         installedScripts = []
     }
     Component.onDestruction: uninstallScripts()
+    Connections {
+        target: Session
+        function onMainSystemChanged() { loader.installScripts() }
+    }
 
     function fail(reason) {
         replace(null)

@@ -13,7 +13,9 @@ ApplicationWindow {
     // "day", "dusk" or "night" from the command line; empty = as the user left it.
     property string initialPalette: ""
     // Where drop-in components are looked for, first wins.
-    property list<string> componentDirectories
+    property var componentDirectories: []
+    // Where console layouts are looked for (to open one for a vehicle).
+    property var consoleDirectories: []
     // Edit mode (the designer) or operate mode.
     property bool editing: false
     readonly property alias designer: designer
@@ -61,6 +63,29 @@ ApplicationWindow {
         onEditToggleRequested: window.editing = !window.editing
         alarms: window.session ? window.session.alarms : null
         onPaletteToggleRequested: window.togglePalette()
+    }
+
+    // Consoles to open for a vehicle (the systems list offers them).
+    ConsoleCatalog {
+        id: catalog
+        directories: window.consoleDirectories
+    }
+    Binding {
+        target: Session
+        property: "consoles"
+        value: catalog.consoles
+    }
+    Connections {
+        target: Session
+        function onOpenConsoleRequested(file, system) {
+            if (consoleLoader.editor.modified) {
+                consoleLoader.warning = qsTr("Save or undo the edits of this console before opening another one.")
+                return
+            }
+            window.editing = false
+            Session.mainSystem = system
+            window.consoleUrl = file
+        }
     }
 
     ComponentPalette {

@@ -8,6 +8,9 @@ Item {
     property string title: qsTr("Console")
     // Names of the systems this console is for; empty means every system.
     property list<string> systems
+    // Kinds of vehicle (IMC system types: UUV, USV, UAV, ...) a console made
+    // for one vehicle at a time is for; the systems list offers it for those.
+    property list<string> vehicleKinds
     // The running console's tree, alarms and scripts (session.tree,
     // session.alarms, session.scripts); null when a layout is only previewed.
     property QtObject session: null

@@ -35,7 +35,7 @@ Rectangle {
     Variable {
         id: variable
         tree: Session.tree
-        path: readout.path
+        path: Session.resolve(readout.path)
     }
 
     Text {

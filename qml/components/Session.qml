@@ -10,4 +10,23 @@ QtObject {
     readonly property var tree: session ? session.tree : null
     readonly property var alarms: session ? session.alarms : null
     readonly property var scripts: session ? session.scripts : null
+
+    // The system the console follows: a tree path "$main/EstimatedState/depth"
+    // means this system's. Chosen in the systems list, or by opening a
+    // console for a vehicle.
+    property string mainSystem: ""
+    function resolve(path) {
+        return path.replace(/^\$main(?=\/|$)/, mainSystem !== "" ? mainSystem : "$main")
+    }
+
+    // Console layouts there are ({file, title, kinds}), set by the shell; and
+    // how a component asks the shell to open one for a system.
+    property var consoles: []
+    signal openConsoleRequested(url file, string system)
+    function consoleFor(kind) {
+        for (const c of consoles)
+            if (c.kinds.indexOf(kind) >= 0)
+                return c
+        return null
+    }
 }

@@ -1,19 +1,34 @@
 import QtQuick
 import Neptus.Components
 
-// The generic console: every system the console hears, as a tree of its
-// messages and values. The map, alarms and instruments join it as those
-// components arrive.
+// The generic console: every system the console hears, its alarms, and the
+// tree of its messages and values. The map joins it with the map component.
 Console {
     id: layout
     formatVersion: 1
     title: "Generic console"
 
-    VariableTreeView {
-        id: variableTreeView1
+    SystemsList {
+        id: systemsList1
         x: 12
         y: 12
-        width: 1256
-        height: 720
+        width: 400
+        height: 300
+    }
+
+    AlarmList {
+        id: alarmList1
+        x: 12
+        y: 324
+        width: 400
+        height: 416
+    }
+
+    VariableTreeView {
+        id: variableTreeView1
+        x: 424
+        y: 12
+        width: 844
+        height: 728
     }
 }

@@ -16,6 +16,7 @@ TestCase {
     Component { id: titleBarComponent; TitleBar { width: 1280 } }
     Component { id: loaderComponent; ConsoleLoader { width: 800; height: 600 } }
     Component { id: spyComponent; SignalSpy {} }
+    Component { id: mainComponent; Main { visible: false } }
 
     function cleanup() { Theme.palette = Theme.Day }
 
@@ -72,5 +73,24 @@ TestCase {
             { source: Qt.resolvedUrl("data/NotAConsole.qml") })
         compare(loader.item, null)
         verify(loader.errorString.indexOf("must be a Console") >= 0, loader.errorString)
+    }
+
+    function test_opensTheConsoleMadeForAVehicleFromTheSystemsList() {
+        const consoles = "file://" + Fixtures.sourceDir() + "/qml/consoles/"
+        const window = createTemporaryObject(mainComponent, test, { consoleUrl: consoles + "Default.qml",
+                                                                     consoleDirectories: [Fixtures.sourceDir() + "/qml/consoles"] })
+        tryCompare(window.consoleLoader, "title", "Generic console")
+        const auv = Session.consoleFor("UUV")
+        verify(auv, "the catalog offers a console for UUVs")
+        compare(auv.title, "AUV console")
+        compare(String(auv.file), consoles + "AUV.qml")
+        compare(Session.consoleFor("USV"), null)
+        Session.openConsoleRequested(auv.file, "lauv-xplore-1")
+        tryCompare(window.consoleLoader, "title", "AUV console")
+        compare(Session.mainSystem, "lauv-xplore-1")
+        const depth = window.consoleLoader.editor.itemWithId(window.consoleLoader.item, "depth")
+        verify(depth)
+        compare(Session.resolve(depth.path), "lauv-xplore-1/EstimatedState/depth")
+        Session.mainSystem = ""
     }
 }

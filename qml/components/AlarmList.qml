@@ -1,0 +1,94 @@
+import QtQuick
+import Neptus.Engine
+
+// The active alarms, worst first as the alarm model orders them: where from,
+// level, message and since when. Tap one to acknowledge it; "Acknowledge all"
+// for the lot. Unacknowledged alarms are marked by a bar in their colour.
+Rectangle {
+    id: panel
+
+    readonly property int count: Session.alarms ? Session.alarms.count : 0
+
+    implicitWidth: Theme.mm(90)
+    implicitHeight: Theme.mm(60)
+    color: Theme.background
+    border.color: Theme.border
+    border.width: Math.max(1, Theme.mm(0.3))
+    radius: Theme.radius
+    clip: true
+
+    Text {
+        id: heading
+        anchors { left: parent.left; verticalCenter: ackAll.verticalCenter; leftMargin: Theme.spacing * 1.5 }
+        text: qsTr("Alarms (%1)").arg(panel.count)
+        color: Theme.textDim
+        font.pixelSize: Theme.smallFontPixelSize
+    }
+    TouchButton {
+        id: ackAll
+        objectName: "acknowledgeAll"
+        anchors { right: parent.right; top: parent.top; margins: Theme.spacing }
+        text: qsTr("Acknowledge all")
+        enabled: Session.alarms !== null && Session.alarms.unacknowledged > 0
+        onClicked: Session.alarms.acknowledgeAll()
+    }
+
+    ListView {
+        id: view
+        objectName: "alarmsView"
+        anchors { left: parent.left; right: parent.right; top: ackAll.bottom; bottom: parent.bottom; margins: Theme.spacing }
+        spacing: Theme.spacing / 2
+        model: Session.alarms
+        delegate: Rectangle {
+            id: row
+            required property int index
+            required property string origin
+            required property int level
+            required property string levelName
+            required property string message
+            required property bool acknowledged
+            objectName: "alarm-" + origin
+            width: ListView.view.width
+            height: Math.max(Theme.touchTarget, texts.implicitHeight + Theme.spacing)
+            radius: Theme.radius
+            color: Theme.surface
+            border.color: Theme.border
+            Rectangle {
+                width: Theme.mm(1.5)
+                height: parent.height
+                radius: Theme.radius
+                color: Theme.levelColor(row.level)
+                opacity: row.acknowledged ? 0.35 : 1
+            }
+            Column {
+                id: texts
+                anchors { left: parent.left; right: parent.right; verticalCenter: parent.verticalCenter; leftMargin: Theme.mm(3); rightMargin: Theme.spacing }
+                Text {
+                    width: parent.width
+                    text: row.levelName + "  ·  " + row.origin
+                    color: row.acknowledged ? Theme.textDim : Theme.text
+                    font.pixelSize: Theme.smallFontPixelSize
+                    font.bold: !row.acknowledged
+                    elide: Text.ElideMiddle
+                }
+                Text {
+                    width: parent.width
+                    text: row.message
+                    visible: text !== ""
+                    color: row.acknowledged ? Theme.textDim : Theme.text
+                    font.pixelSize: Theme.fontPixelSize
+                    wrapMode: Text.Wrap
+                }
+            }
+            TapHandler { onTapped: Session.alarms.acknowledge(row.index) }
+        }
+    }
+
+    Text {
+        anchors.centerIn: parent
+        visible: panel.count === 0
+        text: qsTr("No alarms.")
+        color: Theme.textDim
+        font.pixelSize: Theme.fontPixelSize
+    }
+}

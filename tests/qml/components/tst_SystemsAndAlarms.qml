@@ -1,0 +1,81 @@
+import QtQuick
+import QtTest
+import Neptus.Components
+import Neptus.Engine
+import Neptus.Testing
+
+// The systems list and the alarm list fed by the real tree and alarm models.
+TestCase {
+    id: test
+    name: "SystemsAndAlarms"
+    when: windowShown
+    visible: true
+    width: 1000
+    height: 600
+
+    QtObject {
+        id: fakeSession
+        property var tree: Fixtures.treeModel
+        property var alarms: Fixtures.alarmModel
+    }
+
+    SystemsList { id: systems; x: 0; y: 0; width: 480; height: 400 }
+    AlarmList { id: alarms; x: 500; y: 0; width: 480; height: 400 }
+
+    SignalSpy { id: openSpy; target: Session; signalName: "openConsoleRequested" }
+
+    function initTestCase() {
+        Session.session = fakeSession
+        Session.consoles = [{ file: "file:///consoles/AUV.qml", title: "AUV console", kinds: ["UUV"] }]
+    }
+    function cleanupTestCase() {
+        Session.session = null
+        Session.consoles = []
+        Session.mainSystem = ""
+    }
+
+    function test_systemsShowKindLinkAndOpenTheirConsole() {
+        Fixtures.nameSystem(51, "xplore")
+        Fixtures.ingest("Announce", 51, { sys_name: "xplore", sys_type: 2 })   // UUV
+        Fixtures.nameSystem(52, "caravela")
+        Fixtures.ingest("Announce", 52, { sys_name: "caravela", sys_type: 3 }) // USV
+        Fixtures.treeModel.sync()
+        tryVerify(() => findChild(systems, "system-xplore") !== null && findChild(systems, "system-caravela") !== null)
+        const auv = findChild(systems, "system-xplore"), asv = findChild(systems, "system-caravela")
+        tryCompare(auv, "kind", "UUV")
+        compare(asv.kind, "USV")
+        verify(findChild(auv, "detail").text.indexOf("0x0033") === 0, findChild(auv, "detail").text)
+        // Touch targets: a gloved finger.
+        verify(auv.height >= Theme.touchTarget)
+        // Only the UUV has a console made for its kind.
+        verify(findChild(auv, "openConsole").visible)
+        verify(!findChild(asv, "openConsole").visible)
+        verify(findChild(auv, "openConsole").height >= Theme.touchTarget)
+
+        // Tap: it becomes the main system; "$main" paths follow it.
+        mouseClick(asv, 20, asv.height / 2)
+        compare(Session.mainSystem, "caravela")
+        compare(Session.resolve("$main/EstimatedState/depth"), "caravela/EstimatedState/depth")
+        compare(Session.resolve("main/x"), "main/x")
+
+        mouseClick(findChild(auv, "openConsole"))
+        compare(openSpy.count, 1)
+        compare(String(openSpy.signalArguments[0][0]), "file:///consoles/AUV.qml")
+        compare(openSpy.signalArguments[0][1], "xplore")
+    }
+
+    function test_alarmsAreListedAndAcknowledgedByTouch() {
+        Fixtures.raise("systems/xplore/Batteries", AlarmLevel.Error, "battery low")
+        Fixtures.alarmModel.refresh()
+        tryVerify(() => findChild(alarms, "alarm-systems/xplore/Batteries") !== null)
+        const row = findChild(alarms, "alarm-systems/xplore/Batteries")
+        verify(!row.acknowledged)
+        verify(findChild(alarms, "acknowledgeAll").enabled)
+        mouseClick(row)
+        Fixtures.alarmModel.refresh()
+        tryVerify(() => findChild(alarms, "alarm-systems/xplore/Batteries").acknowledged)
+        Fixtures.raise("systems/xplore/Batteries", AlarmLevel.Normal, "")
+        Fixtures.alarmModel.refresh()
+        tryVerify(() => findChild(alarms, "alarm-systems/xplore/Batteries") === null)
+    }
+}
