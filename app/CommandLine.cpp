@@ -24,6 +24,11 @@ std::expected<CommandLine, QString> CommandLine::parse(const QStringList &argume
         QStringLiteral("Also offer the components (.qml files) in this directory; watched while running. Repeatable."),
         QStringLiteral("dir"));
     const QCommandLineOption edit(QStringLiteral("edit"), QStringLiteral("Open the console in edit mode (the designer)."));
+    const QCommandLineOption select(QStringLiteral("select"),
+        QStringLiteral("With --edit: select this component (by its id) to show its properties."), QStringLiteral("id"));
+    const QCommandLineOption system(QStringLiteral("system"),
+        QStringLiteral("The system the console follows (\"$main\" in its paths), e.g. the vehicle an AUV console is for."),
+        QStringLiteral("name"));
     const QCommandLineOption palette(QStringLiteral("palette"),
         QStringLiteral("Colour palette: day, dusk or night."), QStringLiteral("name"));
     const QCommandLineOption size(QStringLiteral("size"),
@@ -39,7 +44,7 @@ std::expected<CommandLine, QString> CommandLine::parse(const QStringList &argume
         QStringLiteral("Cyclone DDS domain id (default 0; -1 turns DDS off)."), QStringLiteral("id"));
     const QCommandLineOption ddsConfig(QStringLiteral("dds-config"),
         QStringLiteral("Cyclone DDS XML configuration (default: dds/loopback.xml, loopback only)."), QStringLiteral("file"));
-    parser.addOptions({console, screenshot, screenshotDelay, components, edit, palette, size, selfTest, imcPort, imcPeer, ddsDomain, ddsConfig});
+    parser.addOptions({console, screenshot, screenshotDelay, components, edit, select, system, palette, size, selfTest, imcPort, imcPeer, ddsDomain, ddsConfig});
     if (!parser.parse(arguments))
         return std::unexpected(parser.errorText());
     if (parser.isSet(QStringLiteral("help")))
@@ -71,6 +76,10 @@ std::expected<CommandLine, QString> CommandLine::parse(const QStringList &argume
         result.componentDirectories << QFileInfo(directory).absoluteFilePath();
     }
     result.edit = parser.isSet(edit);
+    result.select = parser.value(select);
+    if (!result.select.isEmpty() && !result.edit)
+        return std::unexpected(QStringLiteral("--select needs --edit"));
+    result.system = parser.value(system);
     result.palette = parser.value(palette).toLower();
     if (!result.palette.isEmpty() && result.palette != u"day" && result.palette != u"dusk"
         && result.palette != u"night")

@@ -15,6 +15,8 @@ struct CommandLine
     QString palette;         // day, dusk or night; empty = as last time
     QStringList componentDirectories;   // --components, before the standard ones
     bool edit = false;                  // start in edit mode
+    QString select;                     // with edit: the component selected
+    QString system;                     // the console's main system ($main)
     QSize windowSize{1280, 800};
     quint16 imcPort = 6001;             // IMC over UDP, on 127.0.0.1
     QStringList imcPeers;               // static IMC destinations, "host:port"

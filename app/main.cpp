@@ -119,6 +119,8 @@ int main(int argc, char *argv[])
         {QStringLiteral("componentDirectories"), componentDirectories},
         {QStringLiteral("consoleDirectories"), ConsoleCatalog::standardDirectories()},
         {QStringLiteral("editing"), commandLine->edit},
+        {QStringLiteral("initialSelection"), commandLine->select},
+        {QStringLiteral("mainSystem"), commandLine->system},
         {QStringLiteral("width"), commandLine->windowSize.width()},
         {QStringLiteral("height"), commandLine->windowSize.height()},
     });

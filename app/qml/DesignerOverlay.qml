@@ -142,8 +142,9 @@ Item {
                     border.width: frame.isSelected ? Theme.mm(0.6) : 1
                 }
                 Text {
-                    anchors.left: parent.left
-                    anchors.bottom: parent.top
+                    // Above the frame, or inside it when there is no room above.
+                    x: 0
+                    y: frame.y >= height ? -height : 0
                     text: frame.modelData + (frame.canMove ? "" : "  " + qsTr("(anchored: edit in the file)"))
                     color: Theme.accent
                     font.pixelSize: Theme.smallFontPixelSize

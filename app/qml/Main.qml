@@ -18,6 +18,9 @@ ApplicationWindow {
     property var consoleDirectories: []
     // Edit mode (the designer) or operate mode.
     property bool editing: false
+    // From the command line: the component selected in edit mode, the system followed.
+    property string initialSelection: ""
+    property string mainSystem: ""
     readonly property alias designer: designer
     readonly property alias consoleLoader: consoleLoader
 
@@ -34,6 +37,9 @@ ApplicationWindow {
     }
 
     Component.onCompleted: {
+        if (mainSystem !== "")
+            Session.mainSystem = mainSystem
+        designer.selected = initialSelection
         const requested = Theme.paletteNames.map(name => name.toLowerCase()).indexOf(initialPalette)
         Theme.palette = requested >= 0 ? requested : settings.palette
     }

@@ -325,6 +325,8 @@ Rectangle {
 
     component Field: Basic.TextField {
         implicitHeight: Theme.touchTarget
+        placeholderText: qsTr("(component's default)")
+        placeholderTextColor: Theme.textDim
         font.pixelSize: Theme.fontPixelSize
         color: Theme.text
         selectByMouse: true

@@ -316,4 +316,23 @@ TestCase {
         Fixtures.ingest("Voltage", 42, { value: 25 })
         tryVerify(() => Fixtures.alarmLevel("scripts/battery") === AlarmLevel.Normal, 2000)
     }
+
+    function test_theDocumentedExampleComponentWorks() {
+        // docs/components.md's complete example, as a user would save it.
+        const doc = Fixtures.readFile(Fixtures.sourceDir() + "/docs/components.md")
+        const example = doc.substring(doc.indexOf("### A complete example"))
+        const blocks = example.match(/```(qml|json)\n([\s\S]*?)```/g).map(b => b.replace(/^```\w+\n/, "").replace(/```$/, ""))
+        const components = Fixtures.makeTempDir()
+        verify(Fixtures.writeFile(components + "/DepthBar.qml", blocks[0]))
+        verify(Fixtures.writeFile(components + "/DepthBar.json", blocks[1]))
+        const shell = openShell(emptyLayout, components)
+        tryVerify(() => shell.palette.entry("DepthBar").status === "ready", 1000, shell.palette.entry("DepthBar").errorString)
+        compare(shell.palette.entry("DepthBar").displayName, "Depth bar")
+        compare(shell.designer.place("DepthBar", 300, 300), "depthBar1")
+        tryVerify(() => liveItem(shell, "depthBar1") !== null, 2000, shell.loader.warning)
+        compare(shell.loader.editor.value("depthBar1", "width"), 80)
+        // The documented alarm script compiles.
+        const script = example.match(/```js\n([\s\S]*?)```/)[1]
+        verify(Fixtures.scripts.check(script).ok, JSON.stringify(Fixtures.scripts.check(script)))
+    }
 }

@@ -33,8 +33,14 @@ TEST(CommandLine, ReadsEveryOption)
                              QStringLiteral("out.png"), QStringLiteral("--palette"), QStringLiteral("Night"),
                              QStringLiteral("--size"), QStringLiteral("1920x1080"), QStringLiteral("--self-test"),
                              QStringLiteral("--imc-port"), QStringLiteral("6010"), QStringLiteral("--imc-peer"),
-                             QStringLiteral("127.0.0.1:6002")});
+                             QStringLiteral("127.0.0.1:6002"), QStringLiteral("--components"), dir.path(),
+                             QStringLiteral("--edit"), QStringLiteral("--select"), QStringLiteral("depth"),
+                             QStringLiteral("--system"), QStringLiteral("lauv-1")});
     ASSERT_TRUE(line) << line.error().toStdString();
+    EXPECT_EQ(line->componentDirectories, QStringList{dir.path()});
+    EXPECT_TRUE(line->edit);
+    EXPECT_EQ(line->select, QStringLiteral("depth"));
+    EXPECT_EQ(line->system, QStringLiteral("lauv-1"));
     EXPECT_EQ(line->consoleFile, console);
     EXPECT_EQ(line->screenshotFile, QStringLiteral("out.png"));
     EXPECT_EQ(line->palette, QStringLiteral("night"));
@@ -69,6 +75,14 @@ TEST(CommandLine, NamesWhatIsWrong)
     line = parse({QStringLiteral("--imc-peer"), QStringLiteral("nohostport")});
     ASSERT_FALSE(line);
     EXPECT_TRUE(line.error().contains(QStringLiteral("127.0.0.1:6002")));
+
+    line = parse({QStringLiteral("--components"), QStringLiteral("/nonexistent/components")});
+    ASSERT_FALSE(line);
+    EXPECT_TRUE(line.error().contains(QStringLiteral("/nonexistent/components")));
+
+    line = parse({QStringLiteral("--select"), QStringLiteral("depth")});
+    ASSERT_FALSE(line);
+    EXPECT_TRUE(line.error().contains(QStringLiteral("--edit")));
 
     line = parse({QStringLiteral("stray")});
     ASSERT_FALSE(line);
