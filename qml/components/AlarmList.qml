@@ -8,6 +8,7 @@ Rectangle {
     id: panel
 
     readonly property int count: Session.alarms ? Session.alarms.count : 0
+    readonly property int unacknowledged: Session.alarms ? Session.alarms.unacknowledged : 0
 
     implicitWidth: Theme.mm(90)
     implicitHeight: Theme.mm(60)
@@ -29,7 +30,7 @@ Rectangle {
         objectName: "acknowledgeAll"
         anchors { right: parent.right; top: parent.top; margins: Theme.spacing }
         text: qsTr("Acknowledge all")
-        enabled: Session.alarms !== null && Session.alarms.unacknowledged > 0
+        enabled: panel.unacknowledged > 0
         onClicked: Session.alarms.acknowledgeAll()
     }
 
@@ -38,7 +39,7 @@ Rectangle {
         objectName: "alarmsView"
         anchors { left: parent.left; right: parent.right; top: ackAll.bottom; bottom: parent.bottom; margins: Theme.spacing }
         spacing: Theme.spacing / 2
-        model: Session.alarms
+        model: Session.alarms || null
         delegate: Rectangle {
             id: row
             required property int index

@@ -7,9 +7,9 @@ import QtQuick
 // show no data.
 QtObject {
     property QtObject session: null
-    readonly property var tree: session ? session.tree : null
-    readonly property var alarms: session ? session.alarms : null
-    readonly property var scripts: session ? session.scripts : null
+    readonly property var tree: session && session.tree ? session.tree : null
+    readonly property var alarms: session && session.alarms ? session.alarms : null
+    readonly property var scripts: session && session.scripts ? session.scripts : null
 
     // The system the console follows: a tree path "$main/EstimatedState/depth"
     // means this system's. Chosen in the systems list, or by opening a

@@ -37,6 +37,7 @@ TestCase {
                 anchors.fill: parent
                 session: QtObject {
                     property var tree: Fixtures.treeModel
+                    property var alarms: Fixtures.alarmModel
                     property var scripts: Fixtures.scripts
                 }
                 componentsRevision: palette.revision
@@ -49,6 +50,12 @@ TestCase {
                 editing: true
             }
         }
+    }
+
+    // Shortcuts need the window to have the keyboard.
+    function init() {
+        test.Window.window.requestActivate()
+        tryVerify(() => test.Window.window.active, 2000, "the test window is active")
     }
 
     // Shells of finished tests may linger until deleted: their shortcuts must not answer.
