@@ -16,6 +16,8 @@
 #include <QtQml/qqmlextensionplugin.h>
 #include <QtQuickTest>
 
+#include <memory>
+
 Q_IMPORT_QML_PLUGIN(Neptus_EnginePlugin)
 Q_IMPORT_QML_PLUGIN(Neptus_ComponentsPlugin)
 Q_IMPORT_QML_PLUGIN(Neptus_ShellPlugin)
@@ -109,9 +111,15 @@ public slots:
     void qmlEngineAvailable(QQmlEngine *)
     {
         // Test-only: the runner's own fixture, not part of any product module.
-        static Fixtures fixtures;
-        qmlRegisterSingletonInstance("Neptus.Testing", 1, 0, "Fixtures", &fixtures);
+        if (!m_fixtures)
+            m_fixtures = std::make_unique<Fixtures>();
+        qmlRegisterSingletonInstance("Neptus.Testing", 1, 0, "Fixtures", m_fixtures.get());
     }
+    // While the application still exists: the script host's thread and engine end cleanly.
+    void cleanupTestCase() { m_fixtures.reset(); }
+
+private:
+    std::unique_ptr<Fixtures> m_fixtures;
 };
 
 QUICK_TEST_MAIN_WITH_SETUP(neptus_qml, Setup)
