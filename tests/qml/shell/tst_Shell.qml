@@ -93,4 +93,13 @@ TestCase {
         compare(Session.resolve(depth.path), "lauv-xplore-1/EstimatedState/depth")
         Session.mainSystem = ""
     }
+
+    function test_runsValidQmlTheDesignerCannotReadButDoesNotEditIt() {
+        const loader = createTemporaryObject(loaderComponent, this,
+            { source: Qt.resolvedUrl("data/RegexConsole.qml") })
+        verify(loader.item !== null, loader.errorString)
+        compare(loader.title, "Regex console")
+        verify(!loader.editor.editable)
+        verify(loader.editor.errorString.indexOf("RegexConsole.qml:8:") >= 0, loader.editor.errorString)
+    }
 }
