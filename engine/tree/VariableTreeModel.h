@@ -66,6 +66,9 @@ public:
     // Takes the tree's changes and notifies views, Variables and listeners.
     // Runs by itself every frame (16 ms); tests call it directly.
     Q_INVOKABLE void sync();
+    // Recomputes ages and staleness; runs by itself every second (tests call it
+    // after moving their clock).
+    Q_INVOKABLE void refreshAges();
 
     // Used by Variable.
     void attach(Variable *variable);
@@ -88,7 +91,6 @@ private:
     NodeId nodeOf(const QModelIndex &index) const;
     QModelIndex indexOfNode(NodeId node, int column = 0) const;
     bool isStale(const VariableTree::Snapshot &snapshot) const;
-    void refreshAges();
     void resolvePending();
 
     VariableTree *m_tree;

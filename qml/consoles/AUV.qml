@@ -1,55 +1,97 @@
 import QtQuick
 import Neptus.Components
 
-// One autonomous underwater vehicle: its depth, altitude, battery and motor
-// at a glance, its alarms, and its part of the tree. Opened from the systems
-// list for a UUV; "$main" is that vehicle.
+// One autonomous underwater vehicle: heading, attitude, motor, the water
+// column, battery and depth at a glance; its alarms, the systems and the
+// tree. Opened from the systems list for a UUV; "$main" is that vehicle.
 Console {
     id: layout
     formatVersion: 1
     title: "AUV console"
     vehicleKinds: ["UUV"]
 
-    Readout {
-        id: depth
+    Compass {
+        id: compass1
         x: 12
         y: 12
-        width: 240
-        height: 112
+        width: 208
+        height: 208
+    }
+
+    AttitudeIndicator {
+        id: attitudeIndicator1
+        x: 232
+        y: 12
+        width: 208
+        height: 208
+    }
+
+    Gauge {
+        id: rpm
+        x: 452
+        y: 12
+        width: 208
+        height: 208
+        dangerAbove: 1900
+        label: "Motor"
+        maximum: 2000
+        path: "$main/Rpm@Motor/value"
+        warningAbove: 1600
+    }
+
+    DepthAltitudeBar {
+        id: depthAltitudeBar1
+        x: 672
+        y: 12
+        width: 96
+        height: 420
+    }
+
+    Battery {
+        id: battery1
+        x: 780
+        y: 12
+        width: 228
+        height: 80
+    }
+
+    Readout {
+        id: depth
+        x: 780
+        y: 104
+        width: 228
+        height: 104
         label: "Depth"
         path: "$main/EstimatedState/depth"
     }
 
     Readout {
-        id: altitude
-        x: 264
-        y: 12
-        width: 240
-        height: 112
-        label: "Altitude"
-        path: "$main/EstimatedState/alt"
-    }
-
-    Readout {
         id: battery
-        x: 516
-        y: 12
-        width: 240
-        height: 112
+        x: 780
+        y: 220
+        width: 228
+        height: 104
         alarmScript: "const v = $main[\"Voltage@Batteries\"].value\nif (v < 22)\n    return Warning(\"battery low: \" + v.toFixed(1) + \" V\")\nreturn Normal"
         label: "Battery"
         path: "$main/Voltage@Batteries/value"
     }
 
     Readout {
-        id: rpm
-        x: 768
-        y: 12
-        width: 240
-        height: 112
-        decimals: 0
-        label: "Motor"
-        path: "$main/Rpm@Motor/value"
+        id: altitude
+        x: 780
+        y: 336
+        width: 228
+        height: 96
+        label: "Altitude"
+        path: "$main/EstimatedState/alt"
+    }
+
+    SystemsList {
+        id: systemsList1
+        x: 12
+        y: 232
+        width: 648
+        height: 200
     }
 
     AlarmList {
@@ -60,19 +102,11 @@ Console {
         height: 728
     }
 
-    SystemsList {
-        id: systemsList1
-        x: 12
-        y: 136
-        width: 400
-        height: 604
-    }
-
     VariableTreeView {
         id: variableTreeView1
-        x: 424
-        y: 136
-        width: 584
-        height: 604
+        x: 12
+        y: 444
+        width: 996
+        height: 296
     }
 }
