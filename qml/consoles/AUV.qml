@@ -2,8 +2,9 @@ import QtQuick
 import Neptus.Components
 
 // One autonomous underwater vehicle: heading, attitude, motor, the water
-// column, battery and depth at a glance; its alarms, the systems and the
-// tree. Opened from the systems list for a UUV; "$main" is that vehicle.
+// column, battery and depth at a glance; Abort (slide to confirm); its
+// alarms, the systems and the tree. Opened from the systems list for a UUV;
+// "$main" is that vehicle.
 Console {
     id: layout
     formatVersion: 1
@@ -91,7 +92,15 @@ Console {
         x: 12
         y: 232
         width: 648
-        height: 200
+        height: 112
+    }
+
+    CommandButton {
+        id: abort
+        x: 12
+        y: 356
+        width: 648
+        height: 76
     }
 
     AlarmList {

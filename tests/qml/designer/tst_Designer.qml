@@ -80,6 +80,19 @@ TestCase {
     }
 
     function frame(shell, id) { return findChild(shell.designer, "frame-" + id) }
+    // A palette entry, scrolled into view (the list makes only what it shows).
+    function paletteEntry(shell, name) {
+        const list = findChild(shell.designer, "paletteList")
+        for (let i = 0; i < list.count; ++i) {
+            list.positionViewAtIndex(i, ListView.Contain)
+            const entry = list.itemAtIndex(i)
+            if (entry && entry.objectName === "palette-" + name) {
+                waitForRendering(shell.designer)
+                return entry
+            }
+        }
+        return null
+    }
     function liveItem(shell, id) { return shell.loader.editor.itemWithId(shell.loader.item, id) }
     function type(text) {
         for (const c of text)
@@ -90,7 +103,7 @@ TestCase {
         const shell = openShell(emptyLayout)
         const editor = shell.loader.editor
         // Tap the palette entry, then the console where it goes.
-        mouseClick(findChild(shell.designer, "palette-Readout"))
+        mouseClick(paletteEntry(shell, "Readout"))
         compare(shell.designer.placing, "Readout")
         mouseClick(shell.designer, 700, 400)
         compare(editor.componentIds, ["readout1"])
@@ -144,7 +157,7 @@ TestCase {
         const shell = openShell(emptyLayout)
         const editor = shell.loader.editor
         const states = [editor.text]
-        mouseClick(findChild(shell.designer, "palette-StatusLed"))
+        mouseClick(paletteEntry(shell, "StatusLed"))
         mouseClick(shell.designer, 600, 300)
         states.push(editor.text)
         keyClick(Qt.Key_Right)                                   // nudge
@@ -179,7 +192,7 @@ TestCase {
         compare(Fixtures.readFile(shell.file), original)
         // An edit undone is no edit either.
         keyClick(Qt.Key_Escape)
-        mouseClick(findChild(shell.designer, "palette-Readout"))
+        mouseClick(paletteEntry(shell, "Readout"))
         mouseClick(shell.designer, 500, 500)
         keyClick(Qt.Key_Z, Qt.ControlModifier)
         verify(shell.loader.editor.save())
@@ -237,8 +250,9 @@ TestCase {
         verify(names.indexOf("path") >= 0 && names.indexOf("tint") >= 0, "declared properties: " + names)
 
         // Place it: the layout imports Neptus.User and the console shows it.
-        tryVerify(() => findChild(shell.designer, "palette-Dial") !== null)
-        mouseClick(findChild(shell.designer, "palette-Dial"))
+        tryVerify(() => paletteEntry(shell, "Dial") !== null)
+        mouseClick(paletteEntry(shell, "Dial"))
+        compare(shell.designer.placing, "Dial")
         mouseClick(shell.designer, 640, 400)
         tryVerify(() => liveItem(shell, "dial1") !== null, 2000, shell.loader.warning)
         verify(shell.loader.editor.text.indexOf("import Neptus.User") >= 0)
@@ -254,7 +268,7 @@ TestCase {
         const components = Fixtures.makeTempDir()
         verify(Fixtures.writeFile(components + "/Lamp.qml", "import QtQuick\nRectangle { color: \"green\" }\n"))
         const shell = openShell(emptyLayout, components)
-        mouseClick(findChild(shell.designer, "palette-Lamp"))
+        mouseClick(paletteEntry(shell, "Lamp"))
         mouseClick(shell.designer, 640, 400)
         tryVerify(() => liveItem(shell, "lamp1") !== null)
 
@@ -278,7 +292,7 @@ TestCase {
     function test_aFailedSaveLeavesTheOldFileIntact() {
         const shell = openShell(emptyLayout)
         const editor = shell.loader.editor
-        mouseClick(findChild(shell.designer, "palette-Readout"))
+        mouseClick(paletteEntry(shell, "Readout"))
         mouseClick(shell.designer, 400, 300)
         // The backup cannot be written (a directory is in its place): the save
         // stops before the layout is replaced.
@@ -344,7 +358,7 @@ TestCase {
         const shell = openShell(emptyLayout)
         const editor = shell.loader.editor
         // Drag the palette entry onto the console: placed where it is let go.
-        const entry = findChild(shell.designer, "palette-Readout")
+        const entry = paletteEntry(shell, "Readout")
         const start = entry.mapToItem(shell.designer, entry.width / 2, entry.height / 2)
         mousePress(shell.designer, start.x, start.y)
         for (let i = 1; i <= 10; ++i)
