@@ -92,15 +92,15 @@ Console {
         x: 12
         y: 232
         width: 648
-        height: 112
+        height: 128
     }
 
     CommandButton {
         id: abort
         x: 12
-        y: 356
+        y: 368
         width: 648
-        height: 76
+        height: 64
     }
 
     AlarmList {
