@@ -53,6 +53,7 @@ public:
     {
         msg::Message m(m_schema->byAbbrev(abbrev));
         m.header.src = static_cast<quint16>(src);
+        m.header.timestamp = m_clock.now().toMSecsSinceEpoch() / 1000.0; // as a vehicle stamps it
         for (auto it = fields.cbegin(); it != fields.cend(); ++it) {
             const int index = m.def()->indexOf(it.key());
             if (it.value().typeId() == QMetaType::QString)
