@@ -28,12 +28,20 @@ int AlarmListModel::unacknowledged() const
     return static_cast<int>(std::count_if(m_rows.begin(), m_rows.end(), [](const auto &a) { return !a.acknowledged; }));
 }
 
+int AlarmListModel::levelOf(const QString &path) const
+{
+    const AlarmGraph::NodeId node = m_graph->find(path);
+    return node == AlarmGraph::noNode ? Unknown : static_cast<int>(m_graph->level(node));
+}
+
 void AlarmListModel::refresh()
 {
     const quint64 version = m_graph->version();
     if (version == m_seenVersion)
         return;
     m_seenVersion = version;
+    ++m_revision;
+    emit revisionChanged();
     const std::vector<AlarmGraph::Alarm> now = m_graph->activeAlarms();
     const int before = count();
     const int unackedBefore = unacknowledged();

@@ -21,6 +21,8 @@ class AlarmListModel : public QAbstractListModel
     Q_PROPERTY(QString rootLevelName READ rootLevelName NOTIFY rootLevelChanged)
     Q_PROPERTY(int count READ count NOTIFY countChanged)
     Q_PROPERTY(int unacknowledged READ unacknowledged NOTIFY countChanged)
+    // Changes whenever anything in the graph did (bind levelOf() to it).
+    Q_PROPERTY(int revision READ revision NOTIFY revisionChanged)
 
 public:
     enum Role { OriginRole = Qt::UserRole + 1, LevelRole, LevelNameRole, MessageRole, SinceRole, AcknowledgedRole };
@@ -31,6 +33,10 @@ public:
     QString rootLevelName() const { return levelName(static_cast<Level>(m_rootLevel)); }
     int count() const { return static_cast<int>(m_rows.size()); }
     int unacknowledged() const;
+
+    int revision() const { return m_revision; }
+    // The level of a node and everything under it ("systems/lauv"); Unknown if there is no such node.
+    Q_INVOKABLE int levelOf(const QString &path) const;
 
     Q_INVOKABLE void acknowledge(int row);
     Q_INVOKABLE void acknowledgeAll();
@@ -44,6 +50,7 @@ public:
 signals:
     void rootLevelChanged();
     void countChanged();
+    void revisionChanged();
     // An alarm rose to Error or Failure: flash, play a sound. Once per rise.
     void announced(const QString &origin, int level, const QString &message);
 
@@ -52,6 +59,7 @@ private:
     std::vector<AlarmGraph::Alarm> m_rows;
     quint64 m_seenVersion = ~quint64(0);
     int m_rootLevel = Unknown;
+    int m_revision = 0;
     QTimer m_timer;
 };
 

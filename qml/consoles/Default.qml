@@ -1,8 +1,9 @@
 import QtQuick
 import Neptus.Components
 
-// The generic console: every system the console hears, its alarms, and the
-// tree of its messages and values. The map joins it with the map component.
+// The generic console: every system the console hears, its health and
+// alarms, and the tree of its messages and values. The map joins it with the
+// map component.
 Console {
     id: layout
     formatVersion: 1
@@ -24,11 +25,19 @@ Console {
         height: 416
     }
 
-    VariableTreeView {
-        id: variableTreeView1
+    HealthStrip {
+        id: healthStrip1
         x: 424
         y: 12
         width: 844
-        height: 728
+        height: 56
+    }
+
+    VariableTreeView {
+        id: variableTreeView1
+        x: 424
+        y: 80
+        width: 844
+        height: 660
     }
 }

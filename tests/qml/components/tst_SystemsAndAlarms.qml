@@ -21,6 +21,7 @@ TestCase {
 
     SystemsList { id: systems; x: 0; y: 0; width: 480; height: 400 }
     AlarmList { id: alarms; x: 500; y: 0; width: 480; height: 400 }
+    HealthStrip { id: health; x: 0; y: 420; width: 980; height: 60 }
 
     SignalSpy { id: openSpy; target: Session; signalName: "openConsoleRequested" }
 
@@ -77,5 +78,27 @@ TestCase {
         Fixtures.raise("systems/xplore/Batteries", AlarmLevel.Normal, "")
         Fixtures.alarmModel.refresh()
         tryVerify(() => findChild(alarms, "alarm-systems/xplore/Batteries") === null)
+    }
+
+    function test_healthStripShowsEachSystemsWorstAlarm() {
+        Fixtures.nameSystem(53, "hermes")
+        Fixtures.ingest("Heartbeat", 53, {})
+        Fixtures.treeModel.sync()
+        tryVerify(() => findChild(health, "health-hermes") !== null)
+        const entry = findChild(health, "health-hermes")
+        Fixtures.raise("systems/hermes/Batteries", AlarmLevel.Warning, "low")
+        Fixtures.alarmModel.refresh()
+        tryCompare(entry, "level", AlarmLevel.Warning)
+        compare(String(findChild(entry, "lamp").children[0].color), String(Theme.levelColor(AlarmLevel.Warning)))
+        Fixtures.raise("systems/hermes/Motor", AlarmLevel.Failure, "stalled")
+        Fixtures.alarmModel.refresh()
+        tryCompare(entry, "level", AlarmLevel.Failure)
+        Fixtures.raise("systems/hermes/Motor", AlarmLevel.Normal, "")
+        Fixtures.raise("systems/hermes/Batteries", AlarmLevel.Normal, "")
+        Fixtures.alarmModel.refresh()
+        tryVerify(() => entry.level <= AlarmLevel.Normal)
+        verify(findChild(entry, "lamp").width >= Theme.touchTarget)
+        mouseClick(findChild(entry, "lamp"))
+        compare(Session.mainSystem, "hermes")
     }
 }
