@@ -1,12 +1,20 @@
 import QtQuick
+import QtQuick.Controls.Basic as Basic
+import Neptus.Engine
 
 // The variable tree (the paper's Fig. 3): every system the console hears,
 // its messages and their fields with value, unit and age. Each system opens
-// once when it first appears; tap a row to open or close it.
+// once when it first appears; tap a row to open or close it and select it.
+// Search finds a name anywhere in the tree (Enter for the next one) and
+// opens the way to it; "Copy path" puts the selected row's tree path on the
+// clipboard, ready for a component's path property or a script.
 Rectangle {
     id: view
 
     readonly property alias rows: tree.rows
+    // Tree path of the selected row ("" for none).
+    property string selectedPath: ""
+    property alias searchText: search.text
 
     implicitWidth: Theme.mm(120)
     implicitHeight: Theme.mm(80)
@@ -16,10 +24,80 @@ Rectangle {
     radius: Theme.radius
     clip: true
 
+    Row {
+        id: tools
+        anchors { left: parent.left; right: parent.right; top: parent.top; margins: Theme.spacing }
+        spacing: Theme.spacing
+        Basic.TextField {
+            id: search
+            objectName: "search"
+            width: parent.width - copy.width - parent.spacing
+            height: Theme.touchTarget
+            placeholderText: qsTr("Search the tree")
+            placeholderTextColor: Theme.textDim
+            color: Theme.text
+            font.pixelSize: Theme.fontPixelSize
+            background: Rectangle { color: Theme.surface; border.color: search.activeFocus ? Theme.accent : Theme.border; radius: Theme.radius }
+            onTextChanged: view.find(text, false)
+            onAccepted: view.find(text, true)
+        }
+        TouchButton {
+            id: copy
+            objectName: "copyPath"
+            text: qsTr("Copy path")
+            enabled: view.selectedPath !== ""
+            toolTip: view.selectedPath
+            onClicked: view.copyPath()
+        }
+    }
+    // The clipboard is reached through a text editor: QML has no other way.
+    TextEdit { id: clipboard; visible: false }
+    function copyPath() {
+        clipboard.text = selectedPath
+        clipboard.selectAll()
+        clipboard.copy()
+    }
+
+    // Depth-first over the whole model: the first node whose name contains
+    // `text` (after the selected one when `next`), opened up and shown.
+    function find(text, next) {
+        const model = tree.model
+        if (!model || text === "")
+            return false
+        const needle = text.toLowerCase()
+        let passedSelection = !next || selectedPath === ""
+        let found = null
+        function walk(parent) {
+            for (let row = 0; row < model.rowCount(parent) && !found; ++row) {
+                const index = model.index(row, 0, parent)
+                const path = model.data(index, VariableTreeModel.PathRole)
+                if (passedSelection && String(model.data(index)).toLowerCase().indexOf(needle) >= 0)
+                    found = index
+                else if (path === selectedPath)
+                    passedSelection = true
+                if (!found)
+                    walk(index)
+            }
+        }
+        walk(model.index(-1, -1))
+        if (!found && next && selectedPath !== "") {
+            passedSelection = true   // wrap around
+            walk(model.index(-1, -1))
+        }
+        if (!found)
+            return false
+        tree.expandToIndex(found)
+        tree.forceLayout()
+        const row = tree.rowAtIndex(found)
+        if (row >= 0)
+            tree.positionViewAtRow(row, TableView.Contain)
+        selectedPath = model.data(found, VariableTreeModel.PathRole)
+        return true
+    }
+
     TreeView {
         id: tree
-        anchors.fill: parent
-        anchors.margins: Theme.spacing
+        anchors { left: parent.left; right: parent.right; top: tools.bottom; bottom: parent.bottom; margins: Theme.spacing }
         clip: true
         model: Session.tree
         columnWidthProvider: column => [tree.width * 0.4, tree.width * 0.3, tree.width * 0.1, tree.width * 0.2][column]
@@ -34,12 +112,15 @@ Rectangle {
             required property int column
             required property string display
             required property bool stale
+            required property string path
             implicitHeight: Theme.touchTarget * 0.8
             implicitWidth: label.implicitWidth + Theme.spacing * 2
 
             Rectangle {
                 anchors.fill: parent
-                color: cell.row % 2 ? Theme.surface : Theme.background
+                color: cell.path === view.selectedPath && view.selectedPath !== ""
+                       ? Qt.rgba(Theme.accent.r, Theme.accent.g, Theme.accent.b, 0.2)
+                       : cell.row % 2 ? Theme.surface : Theme.background
             }
             Text {
                 id: label
@@ -61,8 +142,11 @@ Rectangle {
                 font.pixelSize: Theme.fontPixelSize
             }
             TapHandler {
-                enabled: cell.isTreeNode && cell.hasChildren
-                onTapped: cell.treeView.toggleExpanded(cell.row)
+                onTapped: {
+                    view.selectedPath = cell.path
+                    if (cell.isTreeNode && cell.hasChildren)
+                        cell.treeView.toggleExpanded(cell.row)
+                }
             }
         }
     }
