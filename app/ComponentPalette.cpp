@@ -308,6 +308,8 @@ QVariant ComponentPalette::data(const QModelIndex &index, int role) const
     case ErrorStringRole: return e.errorString;
     case SourceRole: return e.source;
     case BuiltInRole: return e.builtIn;
+    case DefaultWidthRole: return e.defaultWidth;
+    case DefaultHeightRole: return e.defaultHeight;
     default: return {};
     }
 }
@@ -317,30 +319,21 @@ QHash<int, QByteArray> ComponentPalette::roleNames() const
     return {{NameRole, "name"},           {ModuleRole, "module"},         {DisplayNameRole, "displayName"},
             {CategoryRole, "category"},   {DescriptionRole, "description"}, {IconRole, "icon"},
             {PropertiesRole, "properties"}, {StatusRole, "status"},        {ErrorStringRole, "errorString"},
-            {SourceRole, "source"},       {BuiltInRole, "builtIn"}};
-}
-
-QVariantMap ComponentPalette::toMap(const Entry &e) const
-{
-    return {{u"name"_s, e.name},
-            {u"module"_s, e.module},
-            {u"displayName"_s, e.displayName},
-            {u"category"_s, e.category},
-            {u"description"_s, e.description},
-            {u"icon"_s, e.icon},
-            {u"properties"_s, e.properties},
-            {u"status"_s, e.status},
-            {u"errorString"_s, e.errorString},
-            {u"source"_s, e.source},
-            {u"builtIn"_s, e.builtIn},
-            {u"defaultWidth"_s, e.defaultWidth},
-            {u"defaultHeight"_s, e.defaultHeight}};
+            {SourceRole, "source"},       {BuiltInRole, "builtIn"},       {DefaultWidthRole, "defaultWidth"},
+            {DefaultHeightRole, "defaultHeight"}};
 }
 
 QVariantMap ComponentPalette::entry(const QString &name) const
 {
-    for (const Entry &e : m_entries)
-        if (e.name == name)
-            return toMap(e);
+    // The same fields as the model's roles, by the roles' names.
+    for (int row = 0; row < m_entries.size(); ++row) {
+        if (m_entries[row].name != name)
+            continue;
+        QVariantMap map;
+        const QHash<int, QByteArray> roles = roleNames();
+        for (auto it = roles.cbegin(); it != roles.cend(); ++it)
+            map.insert(QString::fromLatin1(it.value()), data(index(row), it.key()));
+        return map;
+    }
     return {};
 }

@@ -42,6 +42,8 @@ public:
         ErrorStringRole,
         SourceRole,
         BuiltInRole,
+        DefaultWidthRole,
+        DefaultHeightRole,
     };
     Q_ENUM(Role)
 
@@ -99,7 +101,6 @@ private:
     bool writeModule(const QList<Entry> &users);
     void compile(Entry &entry);
     static void readManifest(Entry &entry, const QString &jsonFile);
-    QVariantMap toMap(const Entry &entry) const;
 
     QQmlEngine *m_engine = nullptr;
     QStringList m_directories;

@@ -11,10 +11,9 @@ Item {
     property string pitchPath: "$main/EstimatedState/theta"
     property real pixelsPerDegree: 0     // 0: 30° of pitch fill half the height
 
-    function degrees(v) { return v.present && typeof v.value === "number" ? (v.unit === "rad" ? v.value * 180 / Math.PI : v.value) : 0 }
-    readonly property bool present: roll.present && pitch.present
-    readonly property real rollDegrees: degrees(roll)
-    readonly property real pitchDegrees: degrees(pitch)
+    readonly property bool present: !isNaN(Session.degrees(roll)) && !isNaN(Session.degrees(pitch))
+    readonly property real rollDegrees: present ? Session.degrees(roll) : 0
+    readonly property real pitchDegrees: present ? Session.degrees(pitch) : 0
     readonly property bool stale: roll.stale || pitch.stale
     readonly property real scale: pixelsPerDegree > 0 ? pixelsPerDegree : Math.min(width, height) / 2 / 30
 

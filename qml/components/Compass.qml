@@ -10,9 +10,8 @@ Item {
     property string path: "$main/EstimatedState/psi"
     property string label: ""
 
-    readonly property bool present: variable.present && typeof variable.value === "number"
-    readonly property real degrees: !present ? 0
-        : ((variable.unit === "rad" ? variable.value * 180 / Math.PI : variable.value) % 360 + 360) % 360
+    readonly property bool present: !isNaN(Session.degrees(variable))
+    readonly property real degrees: present ? (Session.degrees(variable) % 360 + 360) % 360 : 0
     readonly property bool stale: variable.stale
 
     implicitWidth: Theme.mm(40)

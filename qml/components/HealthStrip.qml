@@ -7,7 +7,7 @@ import Neptus.Engine
 Rectangle {
     id: strip
 
-    readonly property var names: Session.tree ? (Session.tree.nodeCount, Session.tree.children("")) : []
+    readonly property var names: Session.systems
 
     implicitWidth: Theme.mm(120)
     implicitHeight: Theme.touchTarget + Theme.spacing * 2

@@ -10,6 +10,15 @@ QtObject {
     readonly property var tree: session && session.tree ? session.tree : null
     readonly property var alarms: session && session.alarms ? session.alarms : null
     readonly property var scripts: session && session.scripts ? session.scripts : null
+    // Names of the systems heard so far, kept current as the tree grows.
+    readonly property var systems: tree ? (tree.nodeCount, tree.children("")) : []
+
+    // A Variable's number in degrees: the tree's angles are radians (unit "rad").
+    function degrees(variable) {
+        if (!variable || !variable.present || typeof variable.value !== "number")
+            return NaN
+        return variable.unit === "rad" ? variable.value * 180 / Math.PI : variable.value
+    }
 
     // The system the console follows: a tree path "$main/EstimatedState/depth"
     // means this system's. Chosen in the systems list, or by opening a

@@ -8,7 +8,7 @@ import Neptus.Engine
 Rectangle {
     id: list
 
-    readonly property var names: Session.tree ? (Session.tree.nodeCount, Session.tree.children("")) : []
+    readonly property var names: Session.systems
 
     implicitWidth: Theme.mm(90)
     implicitHeight: Theme.mm(60)

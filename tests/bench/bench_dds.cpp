@@ -247,22 +247,21 @@ double throughput(Receiver &receiver, int packetBytes)
     return rate;
 }
 
-QProcessEnvironment ddsperfEnvironment()
+// ddsperf on domain 8 with the project's loopback configuration.
+void startDdsperf(QProcess &process, const QStringList &arguments)
 {
     QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
     env.insert(QStringLiteral("CYCLONEDDS_URI"), QStringLiteral("file://" NEPTUS_DDS_CONFIG));
-    return env;
+    process.setProcessEnvironment(env);
+    process.start(QStringLiteral("ddsperf"), QStringList{QStringLiteral("-i"), QStringLiteral("8")} + arguments);
 }
 
 Figures ddsperfRoundTrip(int packetBytes)
 {
     QProcess pongProcess, pingProcess;
-    pongProcess.setProcessEnvironment(ddsperfEnvironment());
-    pingProcess.setProcessEnvironment(ddsperfEnvironment());
-    pongProcess.start(QStringLiteral("ddsperf"), {QStringLiteral("-i"), QStringLiteral("8"), QStringLiteral("-D"), QStringLiteral("8"), QStringLiteral("pong")});
-    pingProcess.start(QStringLiteral("ddsperf"), {QStringLiteral("-i"), QStringLiteral("8"), QStringLiteral("-D"), QStringLiteral("5"),
-                                                 QStringLiteral("-Qminmatch:1"), QStringLiteral("-Qinitwait:5"), QStringLiteral("ping"),
-                                                 QStringLiteral("size"), QString::number(packetBytes)});
+    startDdsperf(pongProcess, {QStringLiteral("-D"), QStringLiteral("8"), QStringLiteral("pong")});
+    startDdsperf(pingProcess, {QStringLiteral("-D"), QStringLiteral("5"), QStringLiteral("-Qminmatch:1"), QStringLiteral("-Qinitwait:5"),
+                               QStringLiteral("ping"), QStringLiteral("size"), QString::number(packetBytes)});
     pingProcess.waitForFinished(20000);
     pongProcess.kill();
     pongProcess.waitForFinished(5000);
@@ -283,11 +282,8 @@ Figures ddsperfRoundTrip(int packetBytes)
 double ddsperfThroughput(int packetBytes)
 {
     QProcess sub, pub;
-    sub.setProcessEnvironment(ddsperfEnvironment());
-    pub.setProcessEnvironment(ddsperfEnvironment());
-    sub.start(QStringLiteral("ddsperf"), {QStringLiteral("-i"), QStringLiteral("8"), QStringLiteral("-D"), QStringLiteral("7"), QStringLiteral("sub")});
-    pub.start(QStringLiteral("ddsperf"), {QStringLiteral("-i"), QStringLiteral("8"), QStringLiteral("-D"), QStringLiteral("6"),
-                                         QStringLiteral("pub"), QStringLiteral("size"), QString::number(packetBytes)});
+    startDdsperf(sub, {QStringLiteral("-D"), QStringLiteral("7"), QStringLiteral("sub")});
+    startDdsperf(pub, {QStringLiteral("-D"), QStringLiteral("6"), QStringLiteral("pub"), QStringLiteral("size"), QString::number(packetBytes)});
     pub.waitForFinished(20000);
     sub.waitForFinished(20000);
     // "[10] 3.000  size 64 total 2533036 lost 0 delta 531408 lost 0 rate 531.42 kS/s 272.09 Mb/s (...)"

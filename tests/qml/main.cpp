@@ -87,7 +87,6 @@ public:
     }
     Q_INVOKABLE bool makeDir(const QString &path) const { return QDir().mkpath(path); }
     Q_INVOKABLE QString sourceDir() const { return QStringLiteral(NEPTUS_SOURCE_DIR); }
-    Q_INVOKABLE qint64 now() const { return QDateTime::currentMSecsSinceEpoch(); }
 
 private:
     std::shared_ptr<const msg::Schema> m_schema;

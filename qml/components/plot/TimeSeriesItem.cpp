@@ -16,7 +16,6 @@ TimeSeriesItem::TimeSeriesItem(QQuickItem *parent)
 
 void TimeSeriesItem::changed()
 {
-    m_dirty = true;
     polish();
     update();
 }
@@ -275,6 +274,5 @@ QSGNode *TimeSeriesItem::updatePaintNode(QSGNode *old, UpdatePaintNodeData *)
         std::copy(points.begin(), points.end(), geometry->vertexDataAsPoint2D());
         node->markDirty(QSGNode::DirtyGeometry);
     }
-    m_dirty = false;
     return root;
 }

@@ -88,5 +88,4 @@ private:
     bool m_live = true;
     double m_yMin = 0, m_yMax = 1;
     int m_capacity = 1'000'000;
-    bool m_dirty = true;
 };
