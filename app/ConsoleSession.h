@@ -5,6 +5,7 @@
 #include "HealthMonitor.h"
 #include "LinkRouter.h"
 #include "ScriptHost.h"
+#include "Tracks.h"
 #include "VariableTree.h"
 #include "VariableTreeModel.h"
 
@@ -26,6 +27,7 @@ class ConsoleSession : public QObject
     Q_PROPERTY(neptus::tree::VariableTreeModel *tree READ treeModel CONSTANT)
     Q_PROPERTY(neptus::alarms::AlarmListModel *alarms READ alarmModel CONSTANT)
     Q_PROPERTY(neptus::scripting::ScriptHost *scripts READ scripts CONSTANT)
+    Q_PROPERTY(neptus::geo::Tracks *tracks READ tracks CONSTANT)
 
 public:
     explicit ConsoleSession(std::shared_ptr<const neptus::msg::Schema> schema, QObject *parent = nullptr);
@@ -37,6 +39,7 @@ public:
     neptus::tree::VariableTreeModel *treeModel() { return &m_treeModel; }
     neptus::alarms::AlarmListModel *alarmModel() { return &m_alarmModel; }
     neptus::scripting::ScriptHost *scripts() { return m_scripts.get(); }
+    neptus::geo::Tracks *tracks() { return &m_tracks; }
 
     // A transport, by name ("IMC/UDP", "DDS"): commands to a system go over
     // the link it was last heard on.
@@ -57,6 +60,7 @@ private:
     std::shared_ptr<const neptus::msg::Schema> m_schema;
     neptus::tree::VariableTree m_tree;
     neptus::tree::VariableTreeModel m_treeModel{&m_tree};
+    neptus::geo::Tracks m_tracks{&m_treeModel};
     neptus::alarms::AlarmGraph m_graph;
     neptus::alarms::AlarmListModel m_alarmModel{&m_graph};
     neptus::alarms::HealthMonitor m_health{m_graph, m_tree};

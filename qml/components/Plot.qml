@@ -11,8 +11,7 @@ Rectangle {
     // Tree paths, one series each ("$main/EstimatedState/depth").
     property var paths: []
     property real span: 300
-    property var seriesColors: Theme.palette === Theme.Night ? ["#ff3030", "#c08000", "#a05050", "#ff8080"]
-                                                             : ["#1565c0", "#d32f2f", "#2e7d32", "#6a1b9a"]
+    property var seriesColors: Theme.traces
     readonly property alias series: series
     readonly property bool stale: {
         let any = false

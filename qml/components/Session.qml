@@ -10,6 +10,8 @@ QtObject {
     readonly property var tree: session && session.tree ? session.tree : null
     readonly property var alarms: session && session.alarms ? session.alarms : null
     readonly property var scripts: session && session.scripts ? session.scripts : null
+    // Where each system has been (trails for the map and the 3D scene).
+    readonly property var tracks: session && session.tracks ? session.tracks : null
     // Names of the systems heard so far, kept current as the tree grows.
     readonly property var systems: tree ? (tree.nodeCount, tree.children("")) : []
 

@@ -39,13 +39,16 @@ QtObject {
     readonly property var palettes: [
         { background: "#eef0f3", surface: "#ffffff", titleBar: "#dde1e7", text: "#0b0d10",
           textDim: "#454d5a", accent: "#0050aa", border: "#aab2be",
-          levels: ["#8a929e", "#1e8a2e", "#1f63c6", "#c98a00", "#d01f1f", "#8b008b"] },
+          levels: ["#8a929e", "#1e8a2e", "#1f63c6", "#c98a00", "#d01f1f", "#8b008b"],
+          sea: "#cfe0ec", traces: ["#1565c0", "#d32f2f", "#2e7d32", "#6a1b9a"] },
         { background: "#1d2229", surface: "#262c35", titleBar: "#14181d", text: "#e3e7ec",
           textDim: "#98a2b0", accent: "#5ea8ff", border: "#47515f",
-          levels: ["#6c7480", "#3fae52", "#4f8fe6", "#e0a52a", "#ef4b4b", "#d26ad2"] },
+          levels: ["#6c7480", "#3fae52", "#4f8fe6", "#e0a52a", "#ef4b4b", "#d26ad2"],
+          sea: "#142531", traces: ["#5ea8ff", "#ff6b6b", "#5fd07a", "#c58af9"] },
         { background: "#000000", surface: "#0a0000", titleBar: "#050000", text: "#a30000",
           textDim: "#6a0000", accent: "#c80000", border: "#360000",
-          levels: ["#2e1010", "#3a4a00", "#4a1a3a", "#8a4a00", "#c00000", "#ff1a1a"] }
+          levels: ["#2e1010", "#3a4a00", "#4a1a3a", "#8a4a00", "#c00000", "#ff1a1a"],
+          sea: "#050000", traces: ["#ff3030", "#c08000", "#a05050", "#ff8080"] }
     ]
     readonly property var colors: palettes[Math.max(0, Math.min(palette, palettes.length - 1))]
 
@@ -56,6 +59,11 @@ QtObject {
     readonly property color textDim: colors.textDim
     readonly property color accent: colors.accent
     readonly property color border: colors.border
+    // Behind a map without tiles.
+    readonly property color sea: colors.sea
+    // One colour per plotted series or per system's trail, in order.
+    readonly property var traces: colors.traces
+    function traceColor(index: int): color { return traces[Math.abs(index) % traces.length] }
 
     // Alarm levels, lowest first (the alarm graph's order).
     readonly property var levelNames: ["Unknown", "Normal", "Info", "Warning", "Error", "Failure"]

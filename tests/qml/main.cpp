@@ -6,10 +6,13 @@
 #include "AlarmListModel.h"
 #include "ScriptHost.h"
 #include "Schema.h"
+#include "Tracks.h"
 #include "VariableTreeModel.h"
 
 #include <QDir>
 #include <QFile>
+#include <QFileInfo>
+#include <QImage>
 #include <QTemporaryDir>
 #include <QQmlEngine>
 #include <QQuickStyle>
@@ -30,6 +33,7 @@ class Fixtures : public QObject
     Q_PROPERTY(neptus::tree::VariableTreeModel *treeModel READ treeModel CONSTANT)
     Q_PROPERTY(neptus::alarms::AlarmListModel *alarmModel READ alarmModel CONSTANT)
     Q_PROPERTY(neptus::scripting::ScriptHost *scripts READ scripts CONSTANT)
+    Q_PROPERTY(neptus::geo::Tracks *tracks READ tracks CONSTANT)
 
 public:
     Fixtures()
@@ -40,6 +44,7 @@ public:
     tree::VariableTreeModel *treeModel() { return &m_treeModel; }
     alarms::AlarmListModel *alarmModel() { return &m_alarmModel; }
     scripting::ScriptHost *scripts() { return &m_scripts; }
+    geo::Tracks *tracks() { return &m_tracks; }
     // Level and message of an alarm node, after running the scripts that are due.
     Q_INVOKABLE int alarmLevel(const QString &path)
     {
@@ -86,6 +91,13 @@ public:
         return file.open(QIODevice::ReadOnly) ? QString::fromUtf8(file.readAll()) : QString();
     }
     Q_INVOKABLE bool makeDir(const QString &path) const { return QDir().mkpath(path); }
+    // A 256-pixel map tile of one colour, its folders made as needed.
+    Q_INVOKABLE bool writeTile(const QString &path, const QColor &color) const
+    {
+        QImage tile(256, 256, QImage::Format_RGB32);
+        tile.fill(color);
+        return QDir().mkpath(QFileInfo(path).path()) && tile.save(path, "PNG");
+    }
     Q_INVOKABLE QString sourceDir() const { return QStringLiteral(NEPTUS_SOURCE_DIR); }
 
 private:
@@ -93,6 +105,7 @@ private:
     ManualClock m_clock{QDateTime::fromMSecsSinceEpoch(1'700'000'000'000, QTimeZone::UTC)};
     tree::VariableTree m_tree{&m_clock};
     tree::VariableTreeModel m_treeModel{&m_tree};
+    geo::Tracks m_tracks{&m_treeModel};
     alarms::AlarmGraph m_graph{&m_clock};
     alarms::AlarmListModel m_alarmModel{&m_graph};
     scripting::ScriptHost m_scripts{m_tree, m_graph};

@@ -1,0 +1,184 @@
+#include "Tracks.h"
+
+#include "Geodesy.h"
+
+#include <cmath>
+
+namespace neptus::geo {
+
+Tracks::Tracks(tree::VariableTreeModel *model, QObject *parent)
+    : QObject(parent)
+    , m_model(model)
+    , m_consumer(model->tree()->addConsumer())
+{
+    connect(model, &tree::VariableTreeModel::synced, this, &Tracks::update);
+}
+
+QStringList Tracks::systems() const
+{
+    QStringList names;
+    for (const auto &t : m_tracks)
+        names << t->system;
+    return names;
+}
+
+const Tracks::Track *Tracks::track(const QString &system) const
+{
+    for (const auto &t : m_tracks)
+        if (t->system == system)
+            return t.get();
+    return nullptr;
+}
+
+QVariantMap Tracks::home() const
+{
+    return {{QStringLiteral("lat"), degrees(m_homeLat)},
+            {QStringLiteral("lon"), degrees(m_homeLon)},
+            {QStringLiteral("height"), m_homeHeight},
+            {QStringLiteral("valid"), m_hasHome}};
+}
+
+void Tracks::setHome(const QVariantMap &home)
+{
+    bool latOk = false, lonOk = false;
+    const double lat = home.value(QStringLiteral("lat")).toDouble(&latOk);
+    const double lon = home.value(QStringLiteral("lon")).toDouble(&lonOk);
+    if (!latOk || !lonOk || std::abs(lat) > 90 || std::abs(lon) > 180) {
+        qWarning("Tracks: a home needs lat in [-90, 90] and lon in [-180, 180] degrees");
+        return;
+    }
+    m_homeLat = radians(lat);
+    m_homeLon = radians(lon);
+    m_homeHeight = home.value(QStringLiteral("height")).toDouble();
+    m_hasHome = true;
+    emit homeChanged();
+}
+
+QVariantMap Tracks::latest(const QString &system) const
+{
+    const Track *t = track(system);
+    if (!t)
+        return {};
+    const Fix &f = t->latest;
+    return {{QStringLiteral("lat"), degrees(f.lat)},   {QStringLiteral("lon"), degrees(f.lon)},
+            {QStringLiteral("height"), f.height},      {QStringLiteral("depth"), f.depth},
+            {QStringLiteral("roll"), degrees(f.roll)}, {QStringLiteral("pitch"), degrees(f.pitch)},
+            {QStringLiteral("heading"), degrees(f.heading)}, {QStringLiteral("time"), f.time},
+            {QStringLiteral("count"), qulonglong(t->fixes.size())}};
+}
+
+int Tracks::count(const QString &system) const
+{
+    const Track *t = track(system);
+    return t ? int(t->fixes.size()) : 0;
+}
+
+void Tracks::clear(const QString &system)
+{
+    for (auto &t : m_tracks)
+        if (t->system == system) {
+            t->dropped += t->fixes.size();
+            t->fixes.clear();
+            ++t->revision;
+            ++m_revision;
+            emit updated();
+        }
+}
+
+Tracks::Track &Tracks::trackFor(quint16 id, const QString &system)
+{
+    for (auto &t : m_tracks)
+        if (t->id == id) {
+            if (t->system != system) {
+                t->system = system; // named by its Announce
+                emit systemsChanged();
+            }
+            return *t;
+        }
+    m_tracks.push_back(std::make_unique<Track>());
+    m_tracks.back()->id = id;
+    m_tracks.back()->system = system;
+    emit systemsChanged();
+    return *m_tracks.back();
+}
+
+void Tracks::append(const QString &system, const Fix &fix)
+{
+    quint16 id = 0xFFFF;
+    if (const Track *t = track(system))
+        id = t->id;
+    else
+        id = quint16(0xF000 + m_tracks.size()); // not from the tree: a private id
+    Track &t = trackFor(id, system);
+    t.latest = fix;
+    if (!m_hasHome) {
+        m_homeLat = fix.lat;
+        m_homeLon = fix.lon;
+        m_homeHeight = 0;
+        m_hasHome = true;
+        emit homeChanged();
+    }
+    bool add = t.fixes.empty();
+    if (!add) {
+        const Fix &last = t.fixes.back();
+        const Eigen::Vector3d d = toNed({fix.lat, fix.lon, fix.height}, {last.lat, last.lon, last.height});
+        add = std::hypot(d.x(), d.y(), fix.depth - last.depth) >= m_minimumSpacing || fix.time - last.time >= 10;
+    }
+    if (add) {
+        if (t.fixes.size() >= m_capacity) {
+            const std::size_t forget = m_capacity / 10;
+            t.fixes.erase(t.fixes.begin(), t.fixes.begin() + std::ptrdiff_t(forget));
+            t.dropped += forget;
+        }
+        t.fixes.push_back(fix);
+    }
+    ++t.revision;
+    ++m_revision;
+}
+
+void Tracks::read(tree::NodeId node)
+{
+    const tree::VariableTree &tree = *m_model->tree();
+    auto field = [&](const char *name) {
+        return tree.snapshot(tree.childByName(node, QString::fromLatin1(name))).value.toDouble();
+    };
+    const double lat = field("lat"), lon = field("lon");
+    if (!std::isfinite(lat) || !std::isfinite(lon) || std::abs(lat) > M_PI / 2 || std::abs(lon) > M_PI)
+        return; // an invalid position is not drawn at the wrong place
+    const Geodetic p = imcPosition(lat, lon, field("height"), field("x"), field("y"), field("z"));
+    Fix fix;
+    fix.time = tree.snapshot(node).timestamp;
+    fix.lat = p.lat;
+    fix.lon = p.lon;
+    fix.height = float(p.height);
+    fix.depth = float(field("depth"));
+    fix.roll = float(field("phi"));
+    fix.pitch = float(field("theta"));
+    fix.heading = float(field("psi"));
+    const quint16 id = tree.systemOf(node);
+    Track &t = trackFor(id, tree.systemName(id));
+    if (t.fixes.empty() && !m_hasHome) {
+        m_homeLat = lat; // the vehicle's own reference, not its offset position
+        m_homeLon = lon;
+        m_homeHeight = field("height");
+        m_hasHome = true;
+        emit homeChanged();
+    }
+    append(t.system, fix);
+}
+
+void Tracks::update()
+{
+    if (!m_model)
+        return;
+    const tree::VariableTree &tree = *m_model->tree();
+    const auto changes = m_model->tree()->takeChanges(m_consumer);
+    const quint64 before = m_revision;
+    for (const tree::NodeId node : changes.changedNodes)
+        if (tree.kind(node) == tree::VariableTree::Kind::Message && tree.name(node) == QLatin1String("EstimatedState"))
+            read(node);
+    if (m_revision != before)
+        emit updated();
+}
+
+} // namespace neptus::geo

@@ -1,0 +1,101 @@
+#pragma once
+
+#include "VariableTreeModel.h"
+
+#include <QObject>
+#include <QPointer>
+#include <QVariantMap>
+#include <QtQml/qqmlregistration.h>
+
+#include <vector>
+
+namespace neptus::geo {
+
+// Where each system has been: its EstimatedState positions as absolute
+// geodetic fixes, kept by the console (not by a map), so trails survive a
+// console being rebuilt in the designer and are shared by the 2D map and the
+// 3D scene. Updated once per frame from the tree model; a fix is added when
+// the system moved at least `minimumSpacing` metres, or every 10 s when it
+// stands still. Holds up to `capacity` fixes per system, then forgets the
+// oldest tenth.
+class Tracks : public QObject
+{
+    Q_OBJECT
+    QML_ELEMENT
+    QML_UNCREATABLE("made by the console")
+    Q_PROPERTY(QStringList systems READ systems NOTIFY systemsChanged)
+    Q_PROPERTY(quint64 revision READ revision NOTIFY updated)
+    Q_PROPERTY(QVariantMap home READ home WRITE setHome NOTIFY homeChanged)
+
+public:
+    struct Fix
+    {
+        double time = 0; // s since 1970, the vehicle's stamp
+        double lat = 0;  // rad
+        double lon = 0;  // rad
+        float height = 0; // m above the ellipsoid
+        float depth = 0;  // m (the vehicle's own measure)
+        float roll = 0, pitch = 0, heading = 0; // rad
+    };
+    struct Track
+    {
+        quint16 id = 0xFFFF;    // IMC id: the name may change (Announce)
+        QString system;
+        std::vector<Fix> fixes; // the trail, oldest first
+        Fix latest;             // the last state heard, moved or not
+        quint64 dropped = 0;    // fixes forgotten from the front so far
+        quint64 revision = 0;   // grows with every change
+    };
+
+    explicit Tracks(tree::VariableTreeModel *model, QObject *parent = nullptr);
+
+    QStringList systems() const;
+    quint64 revision() const { return m_revision; }
+    const Track *track(const QString &system) const;
+
+    // {lat, lon (degrees), height, valid}: the origin of local NED grids and
+    // of the 3D scene. The first system's reference until set.
+    QVariantMap home() const;
+    void setHome(const QVariantMap &home);
+    bool hasHome() const { return m_hasHome; }
+    double homeLat() const { return m_homeLat; } // rad
+    double homeLon() const { return m_homeLon; } // rad
+    double homeHeight() const { return m_homeHeight; }
+
+    // The last state of a system for QML: {lat, lon, height, depth, roll,
+    // pitch, heading (degrees), time, count}; empty when never heard.
+    Q_INVOKABLE QVariantMap latest(const QString &system) const;
+    Q_INVOKABLE int count(const QString &system) const;
+    Q_INVOKABLE void clear(const QString &system);
+
+    double minimumSpacing() const { return m_minimumSpacing; }
+    void setMinimumSpacing(double metres) { m_minimumSpacing = metres; }
+    std::size_t capacity() const { return m_capacity; }
+    void setCapacity(std::size_t fixes) { m_capacity = std::max<std::size_t>(fixes, 10); }
+
+    // Adds a fix directly (replay, tests, benchmarks).
+    void append(const QString &system, const Fix &fix);
+
+    // Takes the tree's changes; runs after every model sync.
+    void update();
+
+signals:
+    void systemsChanged();
+    void updated();
+    void homeChanged();
+
+private:
+    Track &trackFor(quint16 id, const QString &system);
+    void read(tree::NodeId estimatedState);
+
+    QPointer<tree::VariableTreeModel> m_model;
+    int m_consumer = -1;
+    std::vector<std::unique_ptr<Track>> m_tracks;
+    quint64 m_revision = 0;
+    bool m_hasHome = false;
+    double m_homeLat = 0, m_homeLon = 0, m_homeHeight = 0;
+    double m_minimumSpacing = 0.1;
+    std::size_t m_capacity = 2'000'000;
+};
+
+} // namespace neptus::geo

@@ -1,0 +1,443 @@
+import QtQuick
+import QtQuick.Shapes
+import QtLocation
+import QtPositioning
+import Neptus.Engine
+
+// The 2D map (the paper's Renderer2D): every known system at its position
+// with its heading, kind and name, and the trail of where it has been; tiles
+// from a local folder or a tile server on the local network, never from the
+// internet; a lat/lon grid on plain sea when there are no tiles; a local
+// north/east grid around home; follow a system, measure distance and
+// bearing, a scale bar. Drag to pan, pinch or wheel to zoom, two-finger turn
+// to rotate; every button is a touch target.
+Rectangle {
+    id: root
+
+    // Where tiles come from, read when the map is made (the designer remakes
+    // the console on every change). A folder of z/x/y.png tiles...
+    property string tileDirectory: ""
+    // ...or a tile server that serves <url>z/x/y.png (e.g. "http://10.0.0.2:8080/tiles/")...
+    property string tileServer: ""
+    // ...or a folder of Qt Location's own offline tile files (osm_100-l-8-z-x-y.png).
+    property string offlineDirectory: ""
+    // The system the map keeps centred: a name, "$main", or "" for none.
+    property string follow: "$main"
+    property bool showGrid: true
+    property bool showTrails: true
+    property real trailWidth: 2
+    property real initialZoomLevel: 15
+
+    readonly property bool hasTiles: tileServer !== "" || tileDirectory !== "" || offlineDirectory !== ""
+    readonly property var tracks: Session.tracks
+    readonly property var systems: tracks ? tracks.systems : []
+    readonly property string followed: following ? Session.resolve(follow) : ""
+    property bool following: follow !== ""
+    property bool measuring: false
+    property var measurePoints: [] // up to two {lat, lon}
+    readonly property var measurement: measurePoints.length === 2
+        ? Geo.measure(measurePoints[0].lat, measurePoints[0].lon, measurePoints[1].lat, measurePoints[1].lon) : null
+    readonly property alias map: map
+    // Changes whenever what is on screen moves: overlays bind to it.
+    readonly property var view: [map.center, map.zoomLevel, map.bearing, map.width, map.height, map.mapReady]
+    readonly property var home: tracks ? tracks.home : ({ valid: false })
+    readonly property real metresPerPixel: Geo.metresPerPixel(map.center.latitude, map.zoomLevel)
+
+    implicitWidth: Theme.mm(160)
+    implicitHeight: Theme.mm(110)
+    color: hasTiles ? Theme.surface : Theme.sea
+    clip: true
+
+    function colorOf(system) { return Theme.traceColor(Math.max(0, systems.indexOf(system))) }
+    function screenPoint(lat, lon) {
+        root.view
+        return map.fromCoordinate(QtPositioning.coordinate(lat, lon), false)
+    }
+    // 1, 2 or 5 times a power of ten, at least `value`.
+    function niceStep(value) {
+        const p = Math.pow(10, Math.floor(Math.log10(value)))
+        for (const m of [1, 2, 5, 10])
+            if (m * p >= value)
+                return m * p
+        return 10 * p
+    }
+    function formatDistance(metres) {
+        return metres >= 1000 ? (metres / 1000).toFixed(metres >= 10000 ? 0 : 2) + " km" : metres.toFixed(metres >= 10 ? 0 : 1) + " m"
+    }
+    function centreOn(system) {
+        const s = tracks ? tracks.latest(system) : null
+        if (s && s.lat !== undefined)
+            map.center = QtPositioning.coordinate(s.lat, s.lon)
+    }
+    function zoomBy(steps) {
+        map.zoomLevel = Math.max(map.minimumZoomLevel, Math.min(map.maximumZoomLevel, map.zoomLevel + steps))
+    }
+
+    Plugin {
+        id: tiles
+        name: "osm"
+        // No providers' list from the internet, and the only map type used is
+        // the custom one below: nothing at start reaches beyond the given source.
+        PluginParameter { name: "osm.mapping.providersrepository.disabled"; value: true }
+        PluginParameter {
+            name: "osm.mapping.custom.host"
+            value: root.tileServer !== "" ? root.tileServer.replace(/\/?$/, "/")
+                 : root.tileDirectory !== "" ? "file://" + root.tileDirectory.replace(/\/?$/, "/")
+                 : "file:///nonexistent-neptus-tiles/"
+        }
+        PluginParameter { name: "osm.mapping.offline.directory"; value: root.offlineDirectory }
+        PluginParameter { name: "osm.useragent"; value: "Neptus-Qt" }
+    }
+
+    Map {
+        id: map
+        objectName: "map"
+        anchors.fill: parent
+        plugin: tiles
+        activeMapType: supportedMapTypes[supportedMapTypes.length - 1]
+        color: root.color
+        copyrightsVisible: false
+        zoomLevel: root.initialZoomLevel
+        center: QtPositioning.coordinate(0, 0)
+        property bool placed: false
+
+        DragHandler {
+            id: drag
+            target: null
+            onTranslationChanged: (delta) => map.pan(-delta.x, -delta.y)
+            onActiveChanged: if (active) root.following = false
+        }
+        PinchHandler {
+            id: pinch
+            target: null
+            property var startCentroid
+            onActiveChanged: if (active) startCentroid = map.toCoordinate(centroid.position, false)
+            onScaleChanged: (delta) => {
+                map.zoomLevel += Math.log2(delta)
+                map.alignCoordinateToPoint(startCentroid, centroid.position)
+            }
+            onRotationChanged: (delta) => {
+                map.bearing -= delta
+                map.alignCoordinateToPoint(startCentroid, centroid.position)
+            }
+        }
+        WheelHandler {
+            onWheel: (event) => {
+                const at = map.toCoordinate(point.position, false)
+                map.zoomLevel += event.angleDelta.y / 120
+                map.alignCoordinateToPoint(at, point.position)
+            }
+        }
+        TapHandler {
+            onTapped: (eventPoint) => {
+                if (!root.measuring)
+                    return
+                const c = map.toCoordinate(eventPoint.position, false)
+                const p = { lat: c.latitude, lon: c.longitude }
+                root.measurePoints = root.measurePoints.length >= 2 ? [p] : root.measurePoints.concat([p])
+            }
+        }
+    }
+
+    // First view: home, once it is known (a vehicle was heard or it was set).
+    Connections {
+        target: root.tracks
+        function onHomeChanged() { root.placeAtHome() }
+        function onUpdated() {
+            if (root.followed !== "")
+                root.centreOn(root.followed)
+        }
+    }
+    function placeAtHome() {
+        if (map.placed || !home.valid)
+            return
+        map.center = QtPositioning.coordinate(home.lat, home.lon)
+        map.placed = true
+    }
+    Component.onCompleted: placeAtHome()
+
+    // Lat/lon grid: the map itself when there are no tiles.
+    Shape {
+        id: graticule
+        objectName: "graticule"
+        anchors.fill: parent
+        visible: !root.hasTiles
+        preferredRendererType: Shape.CurveRenderer
+        readonly property real step: root.niceStep(360 / (256 * Math.pow(2, map.zoomLevel)) * 150)
+        ShapePath {
+            strokeColor: Theme.border
+            strokeWidth: 1
+            fillColor: "transparent"
+            PathMultiline {
+                paths: {
+                    root.view
+                    const tl = map.toCoordinate(Qt.point(0, 0), false), br = map.toCoordinate(Qt.point(map.width, map.height), false)
+                    const tr = map.toCoordinate(Qt.point(map.width, 0), false), bl = map.toCoordinate(Qt.point(0, map.height), false)
+                    const lats = [tl.latitude, br.latitude, tr.latitude, bl.latitude].filter(Number.isFinite)
+                    const lons = [tl.longitude, br.longitude, tr.longitude, bl.longitude].filter(Number.isFinite)
+                    if (!lats.length || !lons.length)
+                        return []
+                    const s = graticule.step, lines = []
+                    const south = Math.max(-85, Math.min(...lats)), north = Math.min(85, Math.max(...lats))
+                    const west = Math.min(...lons), east = Math.max(...lons)
+                    for (let lat = Math.ceil(south / s) * s; lat <= north && lines.length < 200; lat += s)
+                        lines.push([root.screenPoint(lat, west), root.screenPoint(lat, east)])
+                    for (let lon = Math.ceil(west / s) * s; lon <= east && lines.length < 200; lon += s)
+                        lines.push([root.screenPoint(south, lon), root.screenPoint(north, lon)])
+                    return lines
+                }
+            }
+        }
+    }
+
+    // North/east grid around home, in metres, and home's axes.
+    Shape {
+        id: nedGrid
+        objectName: "nedGrid"
+        anchors.fill: parent
+        visible: root.showGrid && root.home.valid
+        readonly property real step: root.niceStep(root.metresPerPixel * 120)
+        readonly property var lines: {
+            root.view
+            if (!visible)
+                return { grid: [], axes: [] }
+            const h = root.home, s = step
+            const c = Geo.toNed(map.center.latitude, map.center.longitude, h.lat, h.lon)
+            const r = root.metresPerPixel * Math.hypot(map.width, map.height) / 2
+            const at = (n, e) => { const g = Geo.fromNed(n, e, h.lat, h.lon); return root.screenPoint(g.lat, g.lon) }
+            const grid = [], axes = []
+            for (let e = Math.floor((c.east - r) / s) * s; e <= c.east + r && grid.length < 120; e += s)
+                (Math.abs(e) < s / 2 ? axes : grid).push([at(c.north - r, e), at(c.north + r, e)])
+            for (let n = Math.floor((c.north - r) / s) * s; n <= c.north + r && grid.length < 240; n += s)
+                (Math.abs(n) < s / 2 ? axes : grid).push([at(n, c.east - r), at(n, c.east + r)])
+            return { grid: grid, axes: axes }
+        }
+        ShapePath {
+            strokeColor: Qt.alpha(Theme.accent, 0.35)
+            strokeWidth: 1
+            fillColor: "transparent"
+            PathMultiline { paths: nedGrid.lines.grid }
+        }
+        ShapePath {
+            strokeColor: Theme.accent
+            strokeWidth: Math.max(2, Theme.mm(0.4))
+            fillColor: "transparent"
+            PathMultiline { paths: nedGrid.lines.axes }
+        }
+    }
+    Text {
+        objectName: "gridLabel"
+        visible: nedGrid.visible
+        anchors { left: parent.left; top: parent.top; margins: Theme.spacing }
+        text: qsTr("grid %1 · home %2°, %3°").arg(root.formatDistance(nedGrid.step))
+                .arg(root.home.lat !== undefined ? root.home.lat.toFixed(5) : "–")
+                .arg(root.home.lon !== undefined ? root.home.lon.toFixed(5) : "–")
+        color: Theme.textDim
+        font.pixelSize: Theme.smallFontPixelSize
+    }
+
+    // Trails, one per system, drawn by the scene graph.
+    Repeater {
+        model: root.showTrails ? root.systems : []
+        TrailItem {
+            required property string modelData
+            objectName: "trail:" + modelData
+            anchors.fill: parent
+            tracks: root.tracks
+            system: modelData
+            color: root.colorOf(modelData)
+            lineWidth: root.trailWidth
+            centerLatitude: map.center.latitude
+            centerLongitude: map.center.longitude
+            zoomLevel: map.zoomLevel
+            bearing: map.bearing
+        }
+    }
+
+    // Systems: an arrow (or a kind's mark) along the heading, and the name.
+    Repeater {
+        id: markers
+        model: root.systems
+        Item {
+            id: marker
+            required property string modelData
+            required property int index
+            objectName: "marker:" + modelData
+            readonly property var state: (root.tracks.revision, root.tracks.latest(modelData))
+            readonly property point at: state.lat !== undefined ? root.screenPoint(state.lat, state.lon) : Qt.point(-1e6, -1e6)
+            readonly property string kind: kindVariable.present ? kindVariable.text : ""
+            readonly property bool selected: Session.mainSystem === modelData
+            readonly property color tint: root.colorOf(modelData)
+            readonly property bool stale: positionVariable.stale
+            opacity: stale ? 0.45 : 1
+            x: at.x - width / 2
+            y: at.y - height / 2
+            width: Theme.touchTarget
+            height: Theme.touchTarget
+            Variable { id: kindVariable; tree: Session.tree; path: marker.modelData + "/Announce/sys_type" }
+            Variable { id: positionVariable; tree: Session.tree; path: marker.modelData + "/EstimatedState/lat" }
+
+            Shape {
+                id: mark
+                objectName: "mark"
+                anchors.centerIn: parent
+                width: Theme.mm(6)
+                height: Theme.mm(6)
+                rotation: (marker.state.heading || 0) - map.bearing
+                preferredRendererType: Shape.CurveRenderer
+                ShapePath {
+                    strokeColor: Theme.text
+                    strokeWidth: marker.selected ? 3 : 1.5
+                    fillColor: marker.tint
+                    // UAV: a delta wing; vessels and the rest: an arrow.
+                    PathPolyline {
+                        readonly property real w: mark.width
+                        readonly property real h: mark.height
+                        path: marker.kind === "UAV"
+                              ? [Qt.point(w / 2, 0), Qt.point(w, h * 0.8), Qt.point(w / 2, h * 0.6), Qt.point(0, h * 0.8), Qt.point(w / 2, 0)]
+                              : [Qt.point(w / 2, 0), Qt.point(w * 0.85, h), Qt.point(w / 2, h * 0.75), Qt.point(w * 0.15, h), Qt.point(w / 2, 0)]
+                    }
+                }
+            }
+            Rectangle {
+                anchors { top: mark.bottom; horizontalCenter: parent.horizontalCenter; topMargin: Theme.mm(0.5) }
+                width: label.implicitWidth + Theme.spacing * 2
+                height: label.implicitHeight + 2
+                radius: Theme.radius
+                color: Qt.alpha(Theme.surface, 0.85)
+                border.color: marker.tint
+                Text {
+                    id: label
+                    anchors.centerIn: parent
+                    text: marker.modelData + (marker.kind ? " · " + marker.kind : "") + (marker.stale ? qsTr(" (stale)") : "")
+                    color: Theme.text
+                    font.pixelSize: Theme.smallFontPixelSize
+                    font.bold: marker.selected
+                }
+            }
+            TapHandler { onTapped: Session.mainSystem = marker.modelData }
+        }
+    }
+
+    // Measuring: the points tapped, the line between them, distance and bearing.
+    Shape {
+        anchors.fill: parent
+        visible: root.measuring && root.measurePoints.length > 0
+        ShapePath {
+            strokeColor: Theme.accent
+            strokeWidth: Math.max(2, Theme.mm(0.5))
+            strokeStyle: ShapePath.DashLine
+            fillColor: "transparent"
+            PathPolyline {
+                path: {
+                    root.view
+                    return root.measurePoints.map(p => root.screenPoint(p.lat, p.lon))
+                }
+            }
+        }
+    }
+    Repeater {
+        model: root.measuring ? root.measurePoints : []
+        Rectangle {
+            required property var modelData
+            readonly property point at: root.screenPoint(modelData.lat, modelData.lon)
+            x: at.x - width / 2
+            y: at.y - height / 2
+            width: Theme.mm(3)
+            height: width
+            radius: width / 2
+            color: Theme.accent
+            border.color: Theme.surface
+        }
+    }
+    Rectangle {
+        objectName: "measurement"
+        visible: root.measuring
+        anchors { horizontalCenter: parent.horizontalCenter; top: parent.top; topMargin: Theme.spacing }
+        width: measureText.implicitWidth + Theme.spacing * 4
+        height: Theme.touchTarget
+        radius: Theme.radius
+        color: Theme.surface
+        border.color: Theme.accent
+        Text {
+            id: measureText
+            objectName: "measureText"
+            anchors.centerIn: parent
+            text: root.measurement && root.measurement.valid
+                  ? qsTr("%1 · %2°").arg(root.formatDistance(root.measurement.distance))
+                        .arg(Math.round(root.measurement.bearing) % 360)
+                  : root.measurePoints.length === 1 ? qsTr("tap the second point") : qsTr("tap two points to measure")
+            color: Theme.text
+            font.pixelSize: Theme.fontPixelSize
+            font.family: Theme.monospaceFont
+        }
+    }
+
+    // Scale bar: a round length that fits in a quarter of the width.
+    Item {
+        id: scaleBar
+        objectName: "scaleBar"
+        readonly property real metres: {
+            const most = root.metresPerPixel * root.width / 4
+            const p = Math.pow(10, Math.floor(Math.log10(most)))
+            return [5, 2, 1].map(m => m * p).find(v => v <= most) || p
+        }
+        readonly property string text: root.formatDistance(metres)
+        anchors { left: parent.left; bottom: parent.bottom; margins: Theme.spacing * 2 }
+        width: metres / root.metresPerPixel
+        height: Theme.mm(6)
+        Rectangle { anchors.bottom: parent.bottom; width: parent.width; height: Theme.mm(0.8); color: Theme.text }
+        Rectangle { anchors.bottom: parent.bottom; width: Theme.mm(0.6); height: Theme.mm(2.5); color: Theme.text }
+        Rectangle { anchors { bottom: parent.bottom; right: parent.right } width: Theme.mm(0.6); height: Theme.mm(2.5); color: Theme.text }
+        Text {
+            anchors { bottom: parent.bottom; bottomMargin: Theme.mm(1.2); horizontalCenter: parent.horizontalCenter }
+            text: scaleBar.text
+            color: Theme.text
+            style: Text.Outline
+            styleColor: Theme.surface
+            font.pixelSize: Theme.smallFontPixelSize
+        }
+    }
+
+    // Controls, at the right edge for the thumb.
+    Column {
+        anchors { right: parent.right; top: parent.top; margins: Theme.spacing }
+        spacing: Theme.spacing
+        TouchButton { objectName: "zoomIn"; text: "+"; toolTip: qsTr("Zoom in"); onClicked: root.zoomBy(1) }
+        TouchButton { objectName: "zoomOut"; text: "−"; toolTip: qsTr("Zoom out"); onClicked: root.zoomBy(-1) }
+        TouchButton {
+            objectName: "followButton"
+            text: "◎"
+            toolTip: qsTr("Follow %1").arg(Session.resolve(root.follow))
+            highlighted: root.followed !== ""
+            enabled: root.follow !== ""
+            onClicked: {
+                root.following = !root.following
+                if (root.followed !== "")
+                    root.centreOn(root.followed)
+            }
+        }
+        TouchButton {
+            objectName: "measureButton"
+            text: "↔"
+            toolTip: qsTr("Measure distance and bearing")
+            highlighted: root.measuring
+            onClicked: { root.measuring = !root.measuring; root.measurePoints = [] }
+        }
+        TouchButton {
+            objectName: "northUp"
+            text: "N"
+            toolTip: qsTr("North up")
+            highlighted: map.bearing !== 0
+            onClicked: map.bearing = 0
+        }
+    }
+    Text {
+        objectName: "noTiles"
+        visible: !root.hasTiles
+        anchors { right: parent.right; bottom: parent.bottom; margins: Theme.spacing }
+        text: qsTr("no map tiles: grid only")
+        color: Theme.textDim
+        font.pixelSize: Theme.smallFontPixelSize
+    }
+}

@@ -1,0 +1,199 @@
+import QtQuick
+import QtTest
+import QtPositioning
+import Neptus.Components
+import Neptus.Engine
+import Neptus.Testing
+
+// The 2D map fed by the real tree and tracks: systems where their
+// EstimatedState puts them, trails drawn where the map projects, offline
+// tiles from a folder, the grid when there are none, follow, measure, scale.
+TestCase {
+    id: test
+    name: "Map2D"
+    when: windowShown
+    visible: true
+    width: 900
+    height: 640
+
+    QtObject {
+        id: fakeSession
+        property var tree: Fixtures.treeModel
+        property var tracks: Fixtures.tracks
+    }
+
+    readonly property real homeLat: 41.18
+    readonly property real homeLon: -8.70
+    function rad(d) { return d * Math.PI / 180 }
+
+    Map2D { id: map2d; x: 0; y: 0; width: 800; height: 600; initialZoomLevel: 15 }
+
+    Component {
+        id: tiledMap
+        Map2D { width: 400; height: 300; initialZoomLevel: 15; showTrails: false; showGrid: false }
+    }
+
+    function initTestCase() {
+        Session.session = fakeSession
+        Fixtures.nameSystem(71, "alpha")
+        Fixtures.nameSystem(72, "bravo")
+        // alpha drives 500 m north from home in 50 m steps; bravo sits 300 m east.
+        for (let i = 0; i <= 10; ++i) {
+            Fixtures.ingest("EstimatedState", 71, { lat: rad(homeLat), lon: rad(homeLon), x: 50 * i, y: 0, psi: Math.PI / 2 })
+            Fixtures.treeModel.sync()
+        }
+        Fixtures.ingest("EstimatedState", 72, { lat: rad(homeLat), lon: rad(homeLon), x: 0, y: 300, psi: 0 })
+        Fixtures.ingest("Announce", 72, { sys_name: "bravo", sys_type: 3 })
+        Fixtures.treeModel.sync()
+    }
+    function cleanupTestCase() { Session.session = null; Session.mainSystem = "" }
+
+    function marker(name) { return findChild(map2d, "marker:" + name) }
+    function centreOf(item) { return item.mapToItem(map2d, item.width / 2, item.height / 2) }
+
+    function test_1_systemsAreDrawnWhereTheirStateSaysAlongTheirHeading() {
+        compare(Fixtures.tracks.systems, ["alpha", "bravo"])
+        tryCompare(map2d.home, "valid", true)
+        fuzzyCompare(map2d.map.center.latitude, homeLat, 1e-9, "the map opens at home")
+        const alpha = marker("alpha"), bravo = marker("bravo")
+        verify(alpha && bravo)
+        const expectAlpha = map2d.map.fromCoordinate(QtPositioning.coordinate(homeLat, homeLon).atDistanceAndAzimuth(500, 0), false)
+        const a = centreOf(alpha)
+        fuzzyCompare(a.x, expectAlpha.x, 1.5)
+        fuzzyCompare(a.y, expectAlpha.y, 1.5)
+        verify(a.y < map2d.height / 2, "north is up")
+        const b = centreOf(bravo)
+        verify(b.x > map2d.width / 2 + 50, "bravo is east of home")
+        compare(findChild(alpha, "mark").rotation, 90, "heading east")
+        compare(findChild(bravo, "mark").rotation, 0)
+        tryVerify(() => bravo.kind === "USV", 2000, "the kind from its Announce")
+    }
+
+    function test_2_trailsAreProjectedExactlyAsTheMapProjects() {
+        const trail = findChild(map2d, "trail:alpha")
+        verify(trail)
+        compare(trail.pointCount, 11)
+        for (const view of [{ zoom: 15, bearing: 0 }, { zoom: 15.37, bearing: 30 }, { zoom: 12.2, bearing: -75 }]) {
+            map2d.map.zoomLevel = view.zoom
+            map2d.map.bearing = view.bearing
+            for (const d of [0, 250, 500, 3000]) {
+                const c = QtPositioning.coordinate(homeLat, homeLon).atDistanceAndAzimuth(d, 60)
+                const ours = trail.project(c.latitude, c.longitude)
+                const theirs = map2d.map.fromCoordinate(c, false)
+                fuzzyCompare(ours.x, theirs.x, 0.5, "x at zoom " + view.zoom + " bearing " + view.bearing)
+                fuzzyCompare(ours.y, theirs.y, 0.5, "y at zoom " + view.zoom + " bearing " + view.bearing)
+            }
+        }
+        map2d.map.zoomLevel = 15
+        map2d.map.bearing = 0
+        map2d.map.center = QtPositioning.coordinate(homeLat, homeLon)
+        // And it is on screen: the trail's colour halfway along it.
+        waitForRendering(map2d)
+        const mid = trail.project(QtPositioning.coordinate(homeLat, homeLon).atDistanceAndAzimuth(225, 0).latitude, homeLon)
+        const image = grabImage(map2d)
+        let found = false
+        for (let dx = -3; dx <= 3 && !found; ++dx)
+            for (let dy = -3; dy <= 3 && !found; ++dy)
+                found = Qt.colorEqual(image.pixel(Math.round(mid.x) + dx, Math.round(mid.y) + dy), map2d.colorOf("alpha"))
+        verify(found, "trail colour near " + mid.x + "," + mid.y)
+    }
+
+    function test_3_withoutTilesTheMapIsAGridOnPlainSea() {
+        verify(!map2d.hasTiles)
+        compare(String(map2d.color), String(Theme.sea))
+        verify(findChild(map2d, "graticule").visible)
+        verify(findChild(map2d, "noTiles").visible)
+        verify(findChild(map2d, "nedGrid").visible, "north/east grid around home")
+        verify(findChild(map2d, "nedGrid").lines.grid.length > 4)
+        verify(findChild(map2d, "nedGrid").lines.axes.length === 2, "home's north and east axes")
+    }
+
+    function test_4_tilesComeFromALocalFolder() {
+        const dir = Fixtures.makeTempDir()
+        const n = Math.pow(2, 15)
+        const tx = Math.floor((homeLon + 180) / 360 * n)
+        const ty = Math.floor((1 - Math.asinh(Math.tan(rad(homeLat))) / Math.PI) / 2 * n)
+        for (let x = tx - 2; x <= tx + 2; ++x)
+            for (let y = ty - 2; y <= ty + 2; ++y)
+                verify(Fixtures.writeTile(dir + "/15/" + x + "/" + y + ".png", "#ff00ff"))
+        const m = createTemporaryObject(tiledMap, test, { x: 0, y: 0, tileDirectory: dir })
+        verify(m.hasTiles)
+        verify(!findChild(m, "graticule").visible)
+        tryVerify(() => Qt.colorEqual(grabImage(m).pixel(100, 180), "#ff00ff"), 10000, "a tile from the folder is drawn")
+    }
+
+    function test_5_followKeepsTheMainSystemCentredUntilTheMapIsDragged() {
+        Session.mainSystem = "alpha"
+        map2d.following = true
+        Fixtures.ingest("EstimatedState", 71, { lat: rad(homeLat), lon: rad(homeLon), x: 900, y: 0, psi: 0 })
+        Fixtures.treeModel.sync()
+        const s = Fixtures.tracks.latest("alpha")
+        fuzzyCompare(map2d.map.center.latitude, s.lat, 1e-9)
+        fuzzyCompare(map2d.map.center.longitude, s.lon, 1e-9)
+        verify(findChild(map2d, "followButton").highlighted)
+
+        mouseDrag(map2d, 300, 450, 120, -80)
+        verify(!map2d.following, "dragging the map stops following")
+        verify(Math.abs(map2d.map.center.latitude - s.lat) > 1e-5)
+        mouseClick(findChild(map2d, "followButton"))
+        verify(map2d.following)
+        fuzzyCompare(map2d.map.center.latitude, s.lat, 1e-9, "and the button centres it again")
+        Session.mainSystem = ""
+    }
+
+    function test_6_measureDistanceAndBearingBetweenTwoTaps() {
+        map2d.following = false
+        mouseClick(findChild(map2d, "measureButton"))
+        verify(map2d.measuring)
+        compare(findChild(map2d, "measureText").text, "tap two points to measure")
+        const p1 = Qt.point(150, 520), p2 = Qt.point(450, 520)
+        mouseClick(map2d, p1.x, p1.y)
+        compare(findChild(map2d, "measureText").text, "tap the second point")
+        mouseClick(map2d, p2.x, p2.y)
+        const a = map2d.map.toCoordinate(p1, false), b = map2d.map.toCoordinate(p2, false)
+        const expected = Geo.measure(a.latitude, a.longitude, b.latitude, b.longitude)
+        // Qt's own distance is on a sphere; the ellipsoid is 0.26 % wider east-west at 41° N.
+        fuzzyCompare(expected.distance / a.distanceTo(b), 1.0026, 0.0005, "Vincenty against Qt's spherical distance")
+        fuzzyCompare(expected.bearing, 90, 0.5, "east along the screen is east")
+        compare(findChild(map2d, "measureText").text,
+                map2d.formatDistance(expected.distance) + " · " + (Math.round(expected.bearing) % 360) + "°")
+        mouseClick(findChild(map2d, "measureButton"))
+        verify(!map2d.measuring)
+    }
+
+    function test_7_scaleBarIsARoundLengthOfTheRightWidth() {
+        const bar = findChild(map2d, "scaleBar")
+        for (const zoom of [8, 12.5, 15, 18]) {
+            map2d.map.zoomLevel = zoom
+            fuzzyCompare(bar.width * map2d.metresPerPixel, bar.metres, 1e-6)
+            verify(bar.width <= map2d.width / 4 + 0.5)
+            verify(bar.width >= map2d.width / 20, "not a speck at zoom " + zoom)
+            verify(/^[125]0*$/.test(String(bar.metres)) || bar.metres < 1, bar.metres + " is 1, 2 or 5 times a power of ten")
+        }
+        map2d.map.zoomLevel = 15
+    }
+
+    function test_8_zoomButtonsAndTouchTargets() {
+        const before = map2d.map.zoomLevel
+        mouseClick(findChild(map2d, "zoomIn"))
+        compare(map2d.map.zoomLevel, before + 1)
+        mouseClick(findChild(map2d, "zoomOut"))
+        compare(map2d.map.zoomLevel, before)
+        for (const name of ["zoomIn", "zoomOut", "followButton", "measureButton", "northUp"]) {
+            const b = findChild(map2d, name)
+            verify(b.width >= Theme.touchTarget && b.height >= Theme.touchTarget, name)
+        }
+        verify(marker("alpha").width >= Theme.touchTarget, "a system is a touch target: tap to make it main")
+        mouseClick(marker("bravo"))
+        compare(Session.mainSystem, "bravo")
+        Session.mainSystem = ""
+    }
+
+    function test_9_aSystemNotHeardForAWhileIsGreyed() {
+        verify(!marker("alpha").stale)
+        Fixtures.advanceClock(10000)
+        Fixtures.treeModel.refreshAges()
+        tryVerify(() => marker("alpha").stale)
+        verify(marker("alpha").opacity < 1)
+    }
+}

@@ -1,0 +1,127 @@
+// Tracks: the console's record of where each system has been, fed by the tree.
+#include "Geodesy.h"
+#include "Schemas.h"
+#include "Tracks.h"
+#include "VariableTreeModel.h"
+
+#include <QSignalSpy>
+
+#include <gtest/gtest.h>
+
+using namespace neptus;
+using namespace neptus::geo;
+
+namespace {
+
+msg::Message state(quint16 src, double latDeg, double lonDeg, double x, double y, double depth, double psi = 0)
+{
+    msg::Message m(neptus::test::shippedSchema()->byAbbrev(u"EstimatedState"));
+    m.header.src = src;
+    m.header.timestamp = 1000;
+    auto set = [&](const char16_t *name, double v) { m.setNumber(m.def()->indexOf(name), v); };
+    set(u"lat", radians(latDeg));
+    set(u"lon", radians(lonDeg));
+    set(u"x", x);
+    set(u"y", y);
+    set(u"z", depth);
+    set(u"depth", depth);
+    set(u"psi", psi);
+    return m;
+}
+
+struct TrackRecording : ::testing::Test
+{
+    ManualClock clock;
+    tree::VariableTree tree{&clock};
+    tree::VariableTreeModel model{&tree};
+    Tracks tracks{&model};
+};
+
+} // namespace
+
+TEST_F(TrackRecording, EachSystemGetsATrailOfAbsolutePositions)
+{
+    tree.setSystemName(0x1f, QStringLiteral("lauv"));
+    QSignalSpy updated(&tracks, &Tracks::updated);
+    for (int i = 0; i < 5; ++i) {
+        tree.ingest(state(0x1f, 41.18, -8.70, 10.0 * i, 0, 2, 0.5));
+        model.sync(); // one frame per message: each is a fix
+    }
+    tree.ingest(state(0x20, 41.0, -8.0, 0, 0, 0));
+    model.sync();
+
+    EXPECT_EQ(tracks.systems(), (QStringList{QStringLiteral("lauv"), QStringLiteral("0x0020")}));
+    const auto *t = tracks.track(QStringLiteral("lauv"));
+    ASSERT_TRUE(t);
+    ASSERT_EQ(t->fixes.size(), 5u);
+    EXPECT_GE(updated.count(), 5);
+    // The last fix is the reference moved 40 m north, 2 m down.
+    const auto g = inverse(radians(41.18), radians(-8.70), t->fixes.back().lat, t->fixes.back().lon);
+    ASSERT_TRUE(g);
+    EXPECT_NEAR(g->distance, 40, 0.01);
+    EXPECT_NEAR(g->initialAzimuth, 0, 1e-6);
+    EXPECT_NEAR(t->fixes.back().depth, 2, 1e-6);
+
+    const auto latest = tracks.latest(QStringLiteral("lauv"));
+    EXPECT_NEAR(latest.value(QStringLiteral("heading")).toDouble(), degrees(0.5), 1e-4);
+    EXPECT_EQ(latest.value(QStringLiteral("count")).toInt(), 5);
+    EXPECT_TRUE(tracks.latest(QStringLiteral("nobody")).isEmpty());
+    // Home: the first system's reference.
+    EXPECT_NEAR(tracks.home().value(QStringLiteral("lat")).toDouble(), 41.18, 1e-12);
+}
+
+TEST_F(TrackRecording, StandingStillAddsNoFixesButKeepsTheLatestState)
+{
+    for (int i = 0; i < 10; ++i) {
+        tree.ingest(state(0x1f, 41.18, -8.70, 0, 0, 0, 0.1 * i));
+        model.sync();
+    }
+    EXPECT_EQ(tracks.count(QStringLiteral("0x001f")), 1);
+    EXPECT_NEAR(tracks.latest(QStringLiteral("0x001f")).value(QStringLiteral("heading")).toDouble(), degrees(0.9), 1e-4);
+}
+
+TEST_F(TrackRecording, ATrackKeepsItsPointsWhenTheSystemIsNamedLater)
+{
+    tree.ingest(state(0x1f, 41.18, -8.70, 0, 0, 0));
+    model.sync();
+    ASSERT_EQ(tracks.systems(), QStringList{QStringLiteral("0x001f")});
+    tree.setSystemName(0x1f, QStringLiteral("lauv"));
+    tree.ingest(state(0x1f, 41.18, -8.70, 5, 0, 0));
+    model.sync();
+    EXPECT_EQ(tracks.systems(), QStringList{QStringLiteral("lauv")});
+    EXPECT_EQ(tracks.count(QStringLiteral("lauv")), 2);
+}
+
+TEST_F(TrackRecording, InvalidPositionsAreNotDrawnAnywhere)
+{
+    tree.ingest(state(0x1f, 91, 0, 0, 0, 0));
+    model.sync();
+    EXPECT_EQ(tracks.count(QStringLiteral("0x001f")), 0);
+}
+
+TEST_F(TrackRecording, AFullTrackForgetsItsOldestTenth)
+{
+    tracks.setCapacity(100);
+    for (int i = 0; i < 150; ++i)
+        tracks.append(QStringLiteral("sim"), Tracks::Fix{double(i), radians(41) + i * 1e-5, radians(-8), 0, 0, 0, 0, 0});
+    const auto *t = tracks.track(QStringLiteral("sim"));
+    ASSERT_TRUE(t);
+    EXPECT_LE(t->fixes.size(), 100u);
+    EXPECT_EQ(t->fixes.size() + t->dropped, 150u);
+    EXPECT_EQ(t->fixes.back().time, 149);
+    tracks.clear(QStringLiteral("sim"));
+    EXPECT_EQ(tracks.count(QStringLiteral("sim")), 0);
+}
+
+TEST_F(TrackRecording, HomeIsSetAndBadHomesAreRefused)
+{
+    tracks.setHome({{QStringLiteral("lat"), 41.5}, {QStringLiteral("lon"), -8.5}});
+    EXPECT_TRUE(tracks.home().value(QStringLiteral("valid")).toBool());
+    EXPECT_EQ(tracks.home().value(QStringLiteral("lat")).toDouble(), 41.5);
+    tracks.setHome({{QStringLiteral("lat"), 123}, {QStringLiteral("lon"), 0}});
+    EXPECT_EQ(tracks.home().value(QStringLiteral("lat")).toDouble(), 41.5) << "refused";
+    // A home set by hand is not replaced by the first vehicle.
+    tree.ingest(state(0x1f, 40, -8, 0, 0, 0));
+    model.sync();
+    EXPECT_EQ(tracks.home().value(QStringLiteral("lat")).toDouble(), 41.5);
+}
