@@ -73,9 +73,10 @@ Rectangle {
         map.zoomLevel = Math.max(map.minimumZoomLevel, Math.min(map.maximumZoomLevel, map.zoomLevel + steps))
     }
 
+    // Without a tile source the map is only a projection (no tile requests at all).
     Plugin {
         id: tiles
-        name: "osm"
+        name: root.hasTiles ? "osm" : "itemsoverlay"
         // No providers' list from the internet, and the only map type used is
         // the custom one below: nothing at start reaches beyond the given source.
         PluginParameter { name: "osm.mapping.providersrepository.disabled"; value: true }

@@ -4,7 +4,8 @@
 // Also 2 x 250,000 points in a 24-hour span (all of them in view). Prints
 // p50 / p99 of the frame-to-frame time and the render thread's share.
 // Run: tools/bench plot
-#include <QElapsedTimer>
+#include "FrameTimes.h"
+
 #include <QGuiApplication>
 #include <QQmlComponent>
 #include <QQmlEngine>
@@ -12,46 +13,23 @@
 #include <QQuickWindow>
 #include <QtQml/qqmlextensionplugin.h>
 
-#include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <vector>
 
 Q_IMPORT_QML_PLUGIN(Neptus_EnginePlugin)
 Q_IMPORT_QML_PLUGIN(Neptus_ComponentsPlugin)
 
 namespace {
 
-struct Run
-{
-    double p50 = 0, p99 = 0, max = 0;
-};
+using neptus::test::FrameTimes;
 
-Run measure(QQuickWindow &window, QObject *series, int frames, double &t)
+FrameTimes measure(QQuickWindow &window, QObject *series, int frames, double &t)
 {
-    std::vector<double> ms;
-    QElapsedTimer frame;
-    bool started = false;
-    QObject::connect(&window, &QQuickWindow::frameSwapped, &window, [&] {
-        if (started)
-            ms.push_back(frame.nsecsElapsed() / 1e6);
-        started = true;
-        frame.start();
+    return neptus::test::measureFrames(window, frames, [&] {
         t += 0.02;
         QMetaObject::invokeMethod(series, "append", Q_ARG(int, 0), Q_ARG(double, t), Q_ARG(double, std::sin(t)));
         QMetaObject::invokeMethod(series, "append", Q_ARG(int, 1), Q_ARG(double, t), Q_ARG(double, std::cos(t)));
-        window.update();
     });
-    window.update();
-    QElapsedTimer total;
-    total.start();
-    while (static_cast<int>(ms.size()) < frames && total.elapsed() < 120000)
-        QCoreApplication::processEvents(QEventLoop::AllEvents, 5);
-    QObject::disconnect(&window, &QQuickWindow::frameSwapped, nullptr, nullptr);
-    std::sort(ms.begin(), ms.end());
-    if (ms.empty())
-        return {};
-    return {ms[ms.size() / 2], ms[ms.size() * 99 / 100], ms.back()};
 }
 
 } // namespace
@@ -84,16 +62,16 @@ int main(int argc, char **argv)
     }
     std::printf("Plot, 1280x800, software OpenGL (%s), 2 series x %d points\n",
                 qPrintable(QString::fromLatin1(qgetenv("QT_QPA_PLATFORM"))), points);
-    const Run recent = measure(window, series, 300, t);
+    const FrameTimes recent = measure(window, series, 300, t);
     std::printf("%-46s p50 %6.2f ms  p99 %6.2f ms  max %6.2f ms\n", "last 5 min in view (15,000 points), live", recent.p50,
                 recent.p99, recent.max);
     plot->setProperty("span", 24 * 3600.0);
-    const Run all = measure(window, series, 300, t);
+    const FrameTimes all = measure(window, series, 300, t);
     std::printf("%-46s p50 %6.2f ms  p99 %6.2f ms  max %6.2f ms\n", "all 500,000 points in view, live", all.p50, all.p99,
                 all.max);
     // What the window costs without the plot's lines: the software renderer's floor.
     series->setProperty("visible", false);
-    const Run floor = measure(window, series, 300, t);
+    const FrameTimes floor = measure(window, series, 300, t);
     std::printf("%-46s p50 %6.2f ms  p99 %6.2f ms  max %6.2f ms\n", "baseline: same window, lines hidden", floor.p50,
                 floor.p99, floor.max);
     return 0;

@@ -6,6 +6,7 @@
 #include <QSGGeometryNode>
 #include <QSGTransformNode>
 
+#include <climits>
 #include <cmath>
 
 using neptus::geo::Tracks;
@@ -15,6 +16,10 @@ namespace {
 constexpr std::size_t chunkSize = 4096; // fixes per scene-graph node
 constexpr double unitsPerWorld = 1 << 20; // vertex units: about 38 m at the equator
 
+// Points closer together than this on screen are drawn as one: zoomed out,
+// a survey of 0.5 m steps is a few points per pixel.
+constexpr double keepPixels = 0.75;
+
 // A chunk: a transform (view) above a line strip (its points, relative to
 // its first point so floats keep their precision).
 struct ChunkNode : QSGTransformNode
@@ -22,8 +27,30 @@ struct ChunkNode : QSGTransformNode
     QSGGeometryNode line;
     QSGGeometry geometry{QSGGeometry::defaultAttributes_Point2D(), 0};
     QSGFlatColorMaterial material;
-    Eigen::Vector2d origin{0, 0}; // Mercator of the chunk's first point
-    std::size_t uploaded = 0;     // points in the geometry
+    Eigen::Vector2d origin{0, 0};        // Mercator of the chunk's first point
+    std::vector<QSGGeometry::Point2D> points; // every fix of the chunk, in vertex units
+    int detail = INT_MIN;                // the zoom (quarter levels) the geometry was thinned for
+
+    // Uploads the points, leaving out those within `spacing` units of the last one drawn.
+    void upload(int detailKey, double spacing)
+    {
+        std::vector<QSGGeometry::Point2D> kept;
+        kept.reserve(points.size());
+        const double spacing2 = spacing * spacing;
+        for (std::size_t k = 0; k < points.size(); ++k) {
+            const bool last = k + 1 == points.size();
+            if (!kept.empty() && !last) {
+                const double dx = points[k].x - kept.back().x, dy = points[k].y - kept.back().y;
+                if (dx * dx + dy * dy < spacing2)
+                    continue;
+            }
+            kept.push_back(points[k]);
+        }
+        geometry.allocate(int(kept.size()));
+        std::copy(kept.begin(), kept.end(), geometry.vertexDataAsPoint2D());
+        line.markDirty(QSGNode::DirtyGeometry);
+        detail = detailKey;
+    }
 
     ChunkNode()
     {
@@ -147,7 +174,10 @@ QSGNode *TrailItem::updatePaintNode(QSGNode *old, UpdatePaintNodeData *)
     if (!track)
         return root;
 
-    // Upload what is new: fill the last chunk, add chunks as needed.
+    // Upload what is new (fill the last chunk, add chunks as needed) and
+    // thin each chunk again when the zoom changed by a quarter level.
+    const int detail = int(std::floor(m_zoom * 4));
+    const double spacing = keepPixels * unitsPerWorld / (256 * std::exp2(detail / 4.0 + 0.25));
     const auto &fixes = track->fixes;
     const std::size_t chunks = fixes.size() < 2 ? 0 : (fixes.size() - 2) / chunkSize + 1;
     auto *chunk = static_cast<ChunkNode *>(root->firstChild());
@@ -160,16 +190,13 @@ QSGNode *TrailItem::updatePaintNode(QSGNode *old, UpdatePaintNodeData *)
         // Chunk i draws fixes [i*C, (i+1)*C], sharing its last point with the next.
         const std::size_t first = i * chunkSize;
         const std::size_t count = std::min(fixes.size(), first + chunkSize + 1) - first;
-        if (count != chunk->uploaded) {
-            chunk->geometry.allocate(int(count));
-            auto *v = chunk->geometry.vertexDataAsPoint2D();
-            for (std::size_t k = 0; k < count; ++k) {
-                const Eigen::Vector2d m = (toMercator(fixes[first + k].lat, fixes[first + k].lon) - chunk->origin) * unitsPerWorld;
-                v[k].set(float(m.x()), float(m.y()));
-            }
-            chunk->uploaded = count;
-            chunk->line.markDirty(QSGNode::DirtyGeometry);
+        const bool grew = count != chunk->points.size();
+        for (std::size_t k = chunk->points.size(); k < count; ++k) {
+            const Eigen::Vector2d m = (toMercator(fixes[first + k].lat, fixes[first + k].lon) - chunk->origin) * unitsPerWorld;
+            chunk->points.push_back({float(m.x()), float(m.y())});
         }
+        if (grew || chunk->detail != detail)
+            chunk->upload(detail, spacing);
         chunk = static_cast<ChunkNode *>(chunk->nextSibling());
     }
 

@@ -120,6 +120,13 @@ TestCase {
         verify(m.hasTiles)
         verify(!findChild(m, "graticule").visible)
         tryVerify(() => Qt.colorEqual(grabImage(m).pixel(100, 180), "#ff00ff"), 10000, "a tile from the folder is drawn")
+        // The tiled map projects as the tile-less one: the trail item agrees with it too.
+        m.showTrails = true
+        const trail = findChild(m, "trail:alpha")
+        verify(trail)
+        const c = QtPositioning.coordinate(homeLat, homeLon).atDistanceAndAzimuth(700, 200)
+        fuzzyCompare(trail.project(c.latitude, c.longitude).x, m.map.fromCoordinate(c, false).x, 0.5)
+        fuzzyCompare(trail.project(c.latitude, c.longitude).y, m.map.fromCoordinate(c, false).y, 0.5)
     }
 
     function test_5_followKeepsTheMainSystemCentredUntilTheMapIsDragged() {
