@@ -73,10 +73,9 @@ Rectangle {
         map.zoomLevel = Math.max(map.minimumZoomLevel, Math.min(map.maximumZoomLevel, map.zoomLevel + steps))
     }
 
-    // Without a tile source the map is only a projection (no tile requests at all).
     Plugin {
         id: tiles
-        name: root.hasTiles ? "osm" : "itemsoverlay"
+        name: "osm"
         // No providers' list from the internet, and the only map type used is
         // the custom one below: nothing at start reaches beyond the given source.
         PluginParameter { name: "osm.mapping.providersrepository.disabled"; value: true }
@@ -100,8 +99,15 @@ Rectangle {
         copyrightsVisible: false
         zoomLevel: root.initialZoomLevel
         center: QtPositioning.coordinate(0, 0)
+        // Without a tile source the map is only the projection: hidden, it
+        // requests no tiles at all.
+        visible: root.hasTiles
         property bool placed: false
+    }
 
+    // Gestures, beside the map (which may be hidden) and under the overlays.
+    Item {
+        anchors.fill: parent
         DragHandler {
             id: drag
             target: null
