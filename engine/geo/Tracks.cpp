@@ -67,6 +67,16 @@ QVariantMap Tracks::latest(const QString &system) const
             {QStringLiteral("count"), qulonglong(t->fixes.size())}};
 }
 
+QVariantMap Tracks::ned(const QString &system) const
+{
+    const Track *t = track(system);
+    if (!t || !m_hasHome)
+        return {};
+    const auto &f = t->latest;
+    const Eigen::Vector3d d = toNed({f.lat, f.lon, f.height}, {m_homeLat, m_homeLon, m_homeHeight});
+    return {{QStringLiteral("north"), d.x()}, {QStringLiteral("east"), d.y()}, {QStringLiteral("down"), d.z()}};
+}
+
 int Tracks::count(const QString &system) const
 {
     const Track *t = track(system);

@@ -66,6 +66,9 @@ public:
     // pitch, heading (degrees), time, count}; empty when never heard.
     Q_INVOKABLE QVariantMap latest(const QString &system) const;
     Q_INVOKABLE int count(const QString &system) const;
+    // The last position of a system in metres from home: {north, east, down};
+    // empty when unknown.
+    Q_INVOKABLE QVariantMap ned(const QString &system) const;
     Q_INVOKABLE void clear(const QString &system);
 
     double minimumSpacing() const { return m_minimumSpacing; }

@@ -37,11 +37,21 @@ Rectangle {
     property var measurePoints: [] // up to two {lat, lon}
     readonly property var measurement: measurePoints.length === 2
         ? Geo.measure(measurePoints[0].lat, measurePoints[0].lon, measurePoints[1].lat, measurePoints[1].lon) : null
-    readonly property alias map: map
+    // The view: the map's own camera (Web Mercator, 256-pixel tiles, as Qt
+    // Location's). The tile map, when there are tiles, follows it.
+    property real centerLatitude: 0
+    property real centerLongitude: 0
+    property real zoomLevel: initialZoomLevel
+    property real bearing: 0
+    readonly property real minimumZoomLevel: 2
+    readonly property real maximumZoomLevel: 20
+    property bool placed: false
+    // The Qt Location map drawing the tiles (null without a tile source).
+    readonly property var tileMap: tileLoader.item
     // Changes whenever what is on screen moves: overlays bind to it.
-    readonly property var view: [map.center, map.zoomLevel, map.bearing, map.width, map.height, map.mapReady]
+    readonly property var view: [centerLatitude, centerLongitude, zoomLevel, bearing, width, height]
     readonly property var home: tracks ? tracks.home : ({ valid: false })
-    readonly property real metresPerPixel: Geo.metresPerPixel(map.center.latitude, map.zoomLevel)
+    readonly property real metresPerPixel: Geo.metresPerPixel(centerLatitude, zoomLevel)
 
     implicitWidth: Theme.mm(160)
     implicitHeight: Theme.mm(110)
@@ -49,10 +59,44 @@ Rectangle {
     clip: true
 
     function colorOf(system) { return Theme.traceColor(Math.max(0, systems.indexOf(system))) }
+    // Web Mercator in [0, 1) across the world, and back.
+    function mercator(lat, lon) {
+        const s = Math.sin(Math.max(-85.0511287798, Math.min(85.0511287798, lat)) * Math.PI / 180)
+        return { x: (lon + 180) / 360, y: 0.5 - Math.log((1 + s) / (1 - s)) / (4 * Math.PI) }
+    }
+    function fromMercator(x, y) {
+        return { lat: Math.atan(Math.sinh(Math.PI * (1 - 2 * y))) * 180 / Math.PI, lon: x * 360 - 180 }
+    }
+    function worldSize() { return 256 * Math.pow(2, zoomLevel) }
+    // Where a position is drawn, in this item's coordinates.
     function screenPoint(lat, lon) {
         root.view
-        return map.fromCoordinate(QtPositioning.coordinate(lat, lon), false)
+        const m = mercator(lat, lon), c = mercator(centerLatitude, centerLongitude), k = worldSize()
+        const dx = (m.x - c.x) * k, dy = (m.y - c.y) * k, b = bearing * Math.PI / 180
+        return Qt.point(width / 2 + dx * Math.cos(b) + dy * Math.sin(b), height / 2 - dx * Math.sin(b) + dy * Math.cos(b))
     }
+    // The position drawn at a point: {lat, lon}.
+    function toCoordinate(x, y) {
+        const c = mercator(centerLatitude, centerLongitude), k = worldSize(), b = bearing * Math.PI / 180
+        const sx = x - width / 2, sy = y - height / 2
+        return fromMercator(c.x + (sx * Math.cos(b) - sy * Math.sin(b)) / k, c.y + (sx * Math.sin(b) + sy * Math.cos(b)) / k)
+    }
+    function centreAt(lat, lon) {
+        centerLatitude = Math.max(-85, Math.min(85, lat))
+        centerLongitude = ((lon + 540) % 360) - 180
+    }
+    // Moves the view by a screen offset.
+    function pan(dx, dy) {
+        const c = toCoordinate(width / 2 + dx, height / 2 + dy)
+        centreAt(c.lat, c.lon)
+    }
+    // Moves the view so that a position is drawn at a point (gestures keep
+    // what is under the fingers there).
+    function alignCoordinateToPoint(coordinate, point) {
+        const now = screenPoint(coordinate.lat, coordinate.lon)
+        pan(now.x - point.x, now.y - point.y)
+    }
+    function setZoom(zoom) { zoomLevel = Math.max(minimumZoomLevel, Math.min(maximumZoomLevel, zoom)) }
     // 1, 2 or 5 times a power of ten, at least `value`.
     function niceStep(value) {
         const p = Math.pow(10, Math.floor(Math.log10(value)))
@@ -67,80 +111,78 @@ Rectangle {
     function centreOn(system) {
         const s = tracks ? tracks.latest(system) : null
         if (s && s.lat !== undefined)
-            map.center = QtPositioning.coordinate(s.lat, s.lon)
+            centreAt(s.lat, s.lon)
     }
     function zoomBy(steps) {
-        map.zoomLevel = Math.max(map.minimumZoomLevel, Math.min(map.maximumZoomLevel, map.zoomLevel + steps))
+        setZoom(zoomLevel + steps)
     }
 
-    Plugin {
-        id: tiles
-        name: "osm"
-        // No providers' list from the internet, and the only map type used is
-        // the custom one below: nothing at start reaches beyond the given source.
-        PluginParameter { name: "osm.mapping.providersrepository.disabled"; value: true }
-        PluginParameter {
-            name: "osm.mapping.custom.host"
-            value: root.tileServer !== "" ? root.tileServer.replace(/\/?$/, "/")
-                 : root.tileDirectory !== "" ? "file://" + root.tileDirectory.replace(/\/?$/, "/")
-                 : "file:///nonexistent-neptus-tiles/"
-        }
-        PluginParameter { name: "osm.mapping.offline.directory"; value: root.offlineDirectory }
-        PluginParameter { name: "osm.useragent"; value: "Neptus-Qt" }
-    }
-
-    Map {
-        id: map
-        objectName: "map"
+    // Tiles, when there is a source: Qt Location's map, following the view.
+    Loader {
+        id: tileLoader
         anchors.fill: parent
-        plugin: tiles
-        activeMapType: supportedMapTypes[supportedMapTypes.length - 1]
-        color: root.color
-        copyrightsVisible: false
-        zoomLevel: root.initialZoomLevel
-        center: QtPositioning.coordinate(0, 0)
-        // Without a tile source the map is only the projection: hidden, it
-        // requests no tiles at all.
-        visible: root.hasTiles
-        property bool placed: false
+        active: root.hasTiles
+        sourceComponent: Map {
+            objectName: "map"
+            plugin: Plugin {
+                name: "osm"
+                // No providers' list from the internet, and the only map type
+                // used is the custom one: nothing reaches beyond the given source.
+                PluginParameter { name: "osm.mapping.providersrepository.disabled"; value: true }
+                PluginParameter {
+                    name: "osm.mapping.custom.host"
+                    value: root.tileServer !== "" ? root.tileServer.replace(/\/?$/, "/")
+                         : root.tileDirectory !== "" ? "file://" + root.tileDirectory.replace(/\/?$/, "/")
+                         : "file:///nonexistent-neptus-tiles/"
+                }
+                PluginParameter { name: "osm.mapping.offline.directory"; value: root.offlineDirectory }
+                PluginParameter { name: "osm.useragent"; value: "Neptus-Qt" }
+            }
+            activeMapType: supportedMapTypes[supportedMapTypes.length - 1]
+            color: root.color
+            copyrightsVisible: false
+            minimumZoomLevel: root.minimumZoomLevel
+            center: QtPositioning.coordinate(root.centerLatitude, root.centerLongitude)
+            zoomLevel: root.zoomLevel
+            bearing: root.bearing
+        }
     }
 
-    // Gestures, beside the map (which may be hidden) and under the overlays.
+    // Gestures, over the tiles and under the overlays.
     Item {
         anchors.fill: parent
         DragHandler {
             id: drag
             target: null
-            onTranslationChanged: (delta) => map.pan(-delta.x, -delta.y)
+            onTranslationChanged: (delta) => root.pan(-delta.x, -delta.y)
             onActiveChanged: if (active) root.following = false
         }
         PinchHandler {
             id: pinch
             target: null
             property var startCentroid
-            onActiveChanged: if (active) startCentroid = map.toCoordinate(centroid.position, false)
+            onActiveChanged: if (active) startCentroid = root.toCoordinate(centroid.position.x, centroid.position.y)
             onScaleChanged: (delta) => {
-                map.zoomLevel += Math.log2(delta)
-                map.alignCoordinateToPoint(startCentroid, centroid.position)
+                root.setZoom(root.zoomLevel + Math.log2(delta))
+                root.alignCoordinateToPoint(startCentroid, centroid.position)
             }
             onRotationChanged: (delta) => {
-                map.bearing -= delta
-                map.alignCoordinateToPoint(startCentroid, centroid.position)
+                root.bearing = ((root.bearing - delta) % 360 + 360) % 360
+                root.alignCoordinateToPoint(startCentroid, centroid.position)
             }
         }
         WheelHandler {
             onWheel: (event) => {
-                const at = map.toCoordinate(point.position, false)
-                map.zoomLevel += event.angleDelta.y / 120
-                map.alignCoordinateToPoint(at, point.position)
+                const at = root.toCoordinate(point.position.x, point.position.y)
+                root.setZoom(root.zoomLevel + event.angleDelta.y / 120)
+                root.alignCoordinateToPoint(at, point.position)
             }
         }
         TapHandler {
             onTapped: (eventPoint) => {
                 if (!root.measuring)
                     return
-                const c = map.toCoordinate(eventPoint.position, false)
-                const p = { lat: c.latitude, lon: c.longitude }
+                const p = root.toCoordinate(eventPoint.position.x, eventPoint.position.y)
                 root.measurePoints = root.measurePoints.length >= 2 ? [p] : root.measurePoints.concat([p])
             }
         }
@@ -156,21 +198,22 @@ Rectangle {
         }
     }
     function placeAtHome() {
-        if (map.placed || !home.valid)
+        if (placed || !home.valid)
             return
-        map.center = QtPositioning.coordinate(home.lat, home.lon)
-        map.placed = true
+        centreAt(home.lat, home.lon)
+        placed = true
     }
     Component.onCompleted: placeAtHome()
 
-    // Lat/lon grid: the map itself when there are no tiles.
+    // Lat/lon grid: the map itself when there are no tiles (and no
+    // north/east grid, which takes its place once home is known).
     Shape {
         id: graticule
         objectName: "graticule"
         anchors.fill: parent
-        visible: !root.hasTiles
+        visible: !root.hasTiles && !nedGrid.visible
         preferredRendererType: Shape.CurveRenderer
-        readonly property real step: root.niceStep(360 / (256 * Math.pow(2, map.zoomLevel)) * 150)
+        readonly property real step: root.niceStep(360 / root.worldSize() * 150)
         ShapePath {
             strokeColor: Theme.border
             strokeWidth: 1
@@ -178,10 +221,10 @@ Rectangle {
             PathMultiline {
                 paths: {
                     root.view
-                    const tl = map.toCoordinate(Qt.point(0, 0), false), br = map.toCoordinate(Qt.point(map.width, map.height), false)
-                    const tr = map.toCoordinate(Qt.point(map.width, 0), false), bl = map.toCoordinate(Qt.point(0, map.height), false)
-                    const lats = [tl.latitude, br.latitude, tr.latitude, bl.latitude].filter(Number.isFinite)
-                    const lons = [tl.longitude, br.longitude, tr.longitude, bl.longitude].filter(Number.isFinite)
+                    const corners = [root.toCoordinate(0, 0), root.toCoordinate(root.width, root.height),
+                                     root.toCoordinate(root.width, 0), root.toCoordinate(0, root.height)]
+                    const lats = corners.map(c => c.lat).filter(Number.isFinite)
+                    const lons = corners.map(c => c.lon).filter(Number.isFinite)
                     if (!lats.length || !lons.length)
                         return []
                     const s = graticule.step, lines = []
@@ -209,8 +252,8 @@ Rectangle {
             if (!visible)
                 return { grid: [], axes: [] }
             const h = root.home, s = step
-            const c = Geo.toNed(map.center.latitude, map.center.longitude, h.lat, h.lon)
-            const r = root.metresPerPixel * Math.hypot(map.width, map.height) / 2
+            const c = Geo.toNed(root.centerLatitude, root.centerLongitude, h.lat, h.lon)
+            const r = root.metresPerPixel * Math.hypot(root.width, root.height) / 2
             const at = (n, e) => { const g = Geo.fromNed(n, e, h.lat, h.lon); return root.screenPoint(g.lat, g.lon) }
             const grid = [], axes = []
             for (let e = Math.floor((c.east - r) / s) * s; e <= c.east + r && grid.length < 120; e += s)
@@ -254,10 +297,10 @@ Rectangle {
             system: modelData
             color: root.colorOf(modelData)
             lineWidth: root.trailWidth
-            centerLatitude: map.center.latitude
-            centerLongitude: map.center.longitude
-            zoomLevel: map.zoomLevel
-            bearing: map.bearing
+            centerLatitude: root.centerLatitude
+            centerLongitude: root.centerLongitude
+            zoomLevel: root.zoomLevel
+            bearing: root.bearing
         }
     }
 
@@ -290,7 +333,7 @@ Rectangle {
                 anchors.centerIn: parent
                 width: Theme.mm(6)
                 height: Theme.mm(6)
-                rotation: (marker.state.heading || 0) - map.bearing
+                rotation: (marker.state.heading || 0) - root.bearing
                 preferredRendererType: Shape.CurveRenderer
                 ShapePath {
                     strokeColor: Theme.text
@@ -435,8 +478,8 @@ Rectangle {
             objectName: "northUp"
             text: "N"
             toolTip: qsTr("North up")
-            highlighted: map.bearing !== 0
-            onClicked: map.bearing = 0
+            highlighted: root.bearing !== 0
+            onClicked: root.bearing = 0
         }
     }
     Text {

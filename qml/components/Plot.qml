@@ -124,7 +124,9 @@ Rectangle {
                             color: plot.seriesColors[index % plot.seriesColors.length] }
                 Text {
                     text: (plot.paths[index] || "").split("/").slice(-2).join(" ") + "  "
-                          + (source && source.present ? source.text + (source.unit ? " " + source.unit : "") : "—")
+                          + (!source || !source.present ? "—"
+                             : (typeof source.value === "number" ? source.value.toFixed(Math.abs(source.value) >= 100 ? 0 : 2) : source.text)
+                               + (source.unit ? " " + source.unit : ""))
                     color: Theme.text
                     font.pixelSize: Theme.smallFontPixelSize
                 }

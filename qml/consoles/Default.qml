@@ -1,43 +1,87 @@
 import QtQuick
 import Neptus.Components
 
-// The generic console: every system the console hears, its health and
-// alarms, and the tree of its messages and values. The map joins it with the
-// map component.
+// The generic console: where every system is (map and 3D scene, with
+// trails), the main system's instruments and depth over time, every system
+// heard and the alarms. Tap a system on the map or in the list to make it
+// the main one.
 Console {
     id: layout
     formatVersion: 1
     title: "Generic console"
 
+    Map2D {
+        id: map2D1
+        x: 8
+        y: 8
+        width: 624
+        height: 440
+        initialZoomLevel: 16.5
+    }
+
+    Scene3D {
+        id: scene3D1
+        x: 640
+        y: 8
+        width: 632
+        height: 440
+        vehicleScale: 2
+    }
+
+    Compass {
+        id: compass1
+        x: 8
+        y: 456
+        width: 180
+        height: 180
+    }
+
+    AttitudeIndicator {
+        id: attitudeIndicator1
+        x: 196
+        y: 456
+        width: 180
+        height: 180
+    }
+
+    Battery {
+        id: battery1
+        x: 8
+        y: 644
+        width: 368
+        height: 100
+    }
+
+    DepthAltitudeBar {
+        id: depthAltitudeBar1
+        x: 384
+        y: 456
+        width: 88
+        height: 288
+    }
+
+    Plot {
+        id: plot1
+        x: 480
+        y: 456
+        width: 420
+        height: 288
+        paths: ["$main/EstimatedState/depth", "$main/EstimatedState/alt"]
+    }
+
     SystemsList {
         id: systemsList1
-        x: 12
-        y: 12
-        width: 400
-        height: 300
+        x: 908
+        y: 456
+        width: 364
+        height: 160
     }
 
     AlarmList {
         id: alarmList1
-        x: 12
-        y: 324
-        width: 400
-        height: 416
-    }
-
-    HealthStrip {
-        id: healthStrip1
-        x: 424
-        y: 12
-        width: 844
-        height: 56
-    }
-
-    VariableTreeView {
-        id: variableTreeView1
-        x: 424
-        y: 80
-        width: 844
-        height: 660
+        x: 908
+        y: 624
+        width: 364
+        height: 120
     }
 }

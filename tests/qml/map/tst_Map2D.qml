@@ -54,10 +54,11 @@ TestCase {
     function test_1_systemsAreDrawnWhereTheirStateSaysAlongTheirHeading() {
         compare(Fixtures.tracks.systems, ["alpha", "bravo"])
         tryCompare(map2d.home, "valid", true)
-        fuzzyCompare(map2d.map.center.latitude, homeLat, 1e-9, "the map opens at home")
+        fuzzyCompare(map2d.centerLatitude, homeLat, 1e-9, "the map opens at home")
         const alpha = marker("alpha"), bravo = marker("bravo")
         verify(alpha && bravo)
-        const expectAlpha = map2d.map.fromCoordinate(QtPositioning.coordinate(homeLat, homeLon).atDistanceAndAzimuth(500, 0), false)
+        const north500 = QtPositioning.coordinate(homeLat, homeLon).atDistanceAndAzimuth(500, 0)
+        const expectAlpha = map2d.screenPoint(north500.latitude, north500.longitude)
         const a = centreOf(alpha)
         fuzzyCompare(a.x, expectAlpha.x, 1.5)
         fuzzyCompare(a.y, expectAlpha.y, 1.5)
@@ -69,24 +70,39 @@ TestCase {
         tryVerify(() => bravo.kind === "USV", 2000, "the kind from its Announce")
     }
 
-    function test_2_trailsAreProjectedExactlyAsTheMapProjects() {
+    // Our projection against Qt Location's own, on a map with tiles (where
+    // Qt Location draws them): overlays, trails and tiles must line up.
+    function checkProjection(m, trail, what) {
+        for (const view of [{ zoom: 15, bearing: 0 }, { zoom: 15.37, bearing: 30 }, { zoom: 12.2, bearing: 285 }]) {
+            m.zoomLevel = view.zoom
+            m.bearing = view.bearing
+            for (const d of [0, 250, 500, 3000]) {
+                const c = QtPositioning.coordinate(homeLat, homeLon).atDistanceAndAzimuth(d, 60)
+                const ours = m.screenPoint(c.latitude, c.longitude)
+                const trails = trail.project(c.latitude, c.longitude)
+                const where = what + " at zoom " + view.zoom + " bearing " + view.bearing
+                fuzzyCompare(trails.x, ours.x, 0.01, "trail x " + where)
+                fuzzyCompare(trails.y, ours.y, 0.01, "trail y " + where)
+                if (m.tileMap) {
+                    const theirs = m.tileMap.fromCoordinate(c, false)
+                    fuzzyCompare(ours.x, theirs.x, 0.5, "Qt Location x " + where)
+                    fuzzyCompare(ours.y, theirs.y, 0.5, "Qt Location y " + where)
+                }
+                const back = m.toCoordinate(ours.x, ours.y)
+                fuzzyCompare(back.lat, c.latitude, 1e-9, "back " + where)
+                fuzzyCompare(back.lon, c.longitude, 1e-9, "back " + where)
+            }
+        }
+        m.zoomLevel = 15
+        m.bearing = 0
+        m.centreAt(homeLat, homeLon)
+    }
+
+    function test_2_trailsAreDrawnWhereTheMapProjects() {
         const trail = findChild(map2d, "trail:alpha")
         verify(trail)
         compare(trail.pointCount, 11)
-        for (const view of [{ zoom: 15, bearing: 0 }, { zoom: 15.37, bearing: 30 }, { zoom: 12.2, bearing: -75 }]) {
-            map2d.map.zoomLevel = view.zoom
-            map2d.map.bearing = view.bearing
-            for (const d of [0, 250, 500, 3000]) {
-                const c = QtPositioning.coordinate(homeLat, homeLon).atDistanceAndAzimuth(d, 60)
-                const ours = trail.project(c.latitude, c.longitude)
-                const theirs = map2d.map.fromCoordinate(c, false)
-                fuzzyCompare(ours.x, theirs.x, 0.5, "x at zoom " + view.zoom + " bearing " + view.bearing)
-                fuzzyCompare(ours.y, theirs.y, 0.5, "y at zoom " + view.zoom + " bearing " + view.bearing)
-            }
-        }
-        map2d.map.zoomLevel = 15
-        map2d.map.bearing = 0
-        map2d.map.center = QtPositioning.coordinate(homeLat, homeLon)
+        checkProjection(map2d, trail, "no tiles")
         // And it is on screen: the trail's colour halfway along it.
         waitForRendering(map2d)
         const mid = trail.project(QtPositioning.coordinate(homeLat, homeLon).atDistanceAndAzimuth(225, 0).latitude, homeLon)
@@ -101,11 +117,16 @@ TestCase {
     function test_3_withoutTilesTheMapIsAGridOnPlainSea() {
         verify(!map2d.hasTiles)
         compare(String(map2d.color), String(Theme.sea))
-        verify(findChild(map2d, "graticule").visible)
         verify(findChild(map2d, "noTiles").visible)
         verify(findChild(map2d, "nedGrid").visible, "north/east grid around home")
         verify(findChild(map2d, "nedGrid").lines.grid.length > 4)
         verify(findChild(map2d, "nedGrid").lines.axes.length === 2, "home's north and east axes")
+        verify(!findChild(map2d, "graticule").visible, "one grid at a time")
+        map2d.showGrid = false
+        verify(findChild(map2d, "graticule").visible, "without the north/east grid: latitude and longitude")
+        const lines = findChild(map2d, "graticule").data[0].pathElements[0].paths
+        verify(lines.length >= 4, "lines of latitude and longitude across the view: " + lines.length)
+        map2d.showGrid = true
     }
 
     function test_4_tilesComeFromALocalFolder() {
@@ -116,17 +137,16 @@ TestCase {
         for (let x = tx - 2; x <= tx + 2; ++x)
             for (let y = ty - 2; y <= ty + 2; ++y)
                 verify(Fixtures.writeTile(dir + "/15/" + x + "/" + y + ".png", "#ff00ff"))
+        verify(!map2d.tileMap, "no tile source, no Qt Location map: nothing is requested")
         const m = createTemporaryObject(tiledMap, test, { x: 0, y: 0, tileDirectory: dir })
         verify(m.hasTiles)
         verify(!findChild(m, "graticule").visible)
         tryVerify(() => Qt.colorEqual(grabImage(m).pixel(100, 180), "#ff00ff"), 10000, "a tile from the folder is drawn")
-        // The tiled map projects as the tile-less one: the trail item agrees with it too.
+        // Tiles, trails and overlays line up: Qt Location projects as we do.
         m.showTrails = true
         const trail = findChild(m, "trail:alpha")
-        verify(trail)
-        const c = QtPositioning.coordinate(homeLat, homeLon).atDistanceAndAzimuth(700, 200)
-        fuzzyCompare(trail.project(c.latitude, c.longitude).x, m.map.fromCoordinate(c, false).x, 0.5)
-        fuzzyCompare(trail.project(c.latitude, c.longitude).y, m.map.fromCoordinate(c, false).y, 0.5)
+        verify(trail && m.tileMap)
+        checkProjection(m, trail, "with tiles")
     }
 
     function test_5_followKeepsTheMainSystemCentredUntilTheMapIsDragged() {
@@ -135,16 +155,16 @@ TestCase {
         Fixtures.ingest("EstimatedState", 71, { lat: rad(homeLat), lon: rad(homeLon), x: 900, y: 0, psi: 0 })
         Fixtures.treeModel.sync()
         const s = Fixtures.tracks.latest("alpha")
-        fuzzyCompare(map2d.map.center.latitude, s.lat, 1e-9)
-        fuzzyCompare(map2d.map.center.longitude, s.lon, 1e-9)
+        fuzzyCompare(map2d.centerLatitude, s.lat, 1e-9)
+        fuzzyCompare(map2d.centerLongitude, s.lon, 1e-9)
         verify(findChild(map2d, "followButton").highlighted)
 
         mouseDrag(map2d, 300, 450, 120, -80)
         verify(!map2d.following, "dragging the map stops following")
-        verify(Math.abs(map2d.map.center.latitude - s.lat) > 1e-5)
+        verify(Math.abs(map2d.centerLatitude - s.lat) > 1e-5)
         mouseClick(findChild(map2d, "followButton"))
         verify(map2d.following)
-        fuzzyCompare(map2d.map.center.latitude, s.lat, 1e-9, "and the button centres it again")
+        fuzzyCompare(map2d.centerLatitude, s.lat, 1e-9, "and the button centres it again")
         Session.mainSystem = ""
     }
 
@@ -157,7 +177,8 @@ TestCase {
         mouseClick(map2d, p1.x, p1.y)
         compare(findChild(map2d, "measureText").text, "tap the second point")
         mouseClick(map2d, p2.x, p2.y)
-        const a = map2d.map.toCoordinate(p1, false), b = map2d.map.toCoordinate(p2, false)
+        const p = map2d.toCoordinate(p1.x, p1.y), q = map2d.toCoordinate(p2.x, p2.y)
+        const a = QtPositioning.coordinate(p.lat, p.lon), b = QtPositioning.coordinate(q.lat, q.lon)
         const expected = Geo.measure(a.latitude, a.longitude, b.latitude, b.longitude)
         // Qt's own distance is on a sphere; the ellipsoid is 0.26 % wider east-west at 41° N.
         fuzzyCompare(expected.distance / a.distanceTo(b), 1.0026, 0.0005, "Vincenty against Qt's spherical distance")
@@ -171,21 +192,21 @@ TestCase {
     function test_7_scaleBarIsARoundLengthOfTheRightWidth() {
         const bar = findChild(map2d, "scaleBar")
         for (const zoom of [8, 12.5, 15, 18]) {
-            map2d.map.zoomLevel = zoom
+            map2d.zoomLevel = zoom
             fuzzyCompare(bar.width * map2d.metresPerPixel, bar.metres, 1e-6)
             verify(bar.width <= map2d.width / 4 + 0.5)
             verify(bar.width >= map2d.width / 20, "not a speck at zoom " + zoom)
             verify(/^[125]0*$/.test(String(bar.metres)) || bar.metres < 1, bar.metres + " is 1, 2 or 5 times a power of ten")
         }
-        map2d.map.zoomLevel = 15
+        map2d.zoomLevel = 15
     }
 
     function test_8_zoomButtonsAndTouchTargets() {
-        const before = map2d.map.zoomLevel
+        const before = map2d.zoomLevel
         mouseClick(findChild(map2d, "zoomIn"))
-        compare(map2d.map.zoomLevel, before + 1)
+        compare(map2d.zoomLevel, before + 1)
         mouseClick(findChild(map2d, "zoomOut"))
-        compare(map2d.map.zoomLevel, before)
+        compare(map2d.zoomLevel, before)
         for (const name of ["zoomIn", "zoomOut", "followButton", "measureButton", "northUp"]) {
             const b = findChild(map2d, name)
             verify(b.width >= Theme.touchTarget && b.height >= Theme.touchTarget, name)

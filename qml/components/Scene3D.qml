@@ -1,0 +1,282 @@
+import QtQuick
+import QtQuick3D
+import Neptus.Engine
+
+// The 3D scene (the paper's Renderer3D): every system as a 3D model with its
+// roll, pitch and heading, at its depth below the water surface, over a
+// seabed or terrain, with its trail. Models and terrain are files in any
+// format OpenSceneGraph reads (.obj, .3ds, .osgt, .ive, .flt, ...), in
+// metres, Z up, Y forward. One finger orbits, two pinch to zoom and drag to
+// pan, the wheel zooms; the buttons do the same for gloves.
+Rectangle {
+    id: root
+
+    // A model file for every vehicle; a built-in torpedo shape when empty.
+    property string vehicleModel: ""
+    // A terrain or seabed model, metres east/north/up from home; a rolling
+    // stand-in seabed at seabedDepth when empty.
+    property string terrainSource: ""
+    property real seabedDepth: 30
+    // The system the camera keeps in the middle: a name, "$main", or "".
+    property string follow: "$main"
+    property bool showTrails: true
+    // Draws vehicles larger than life so they can be seen from afar.
+    property real vehicleScale: 1
+
+    readonly property var tracks: Session.tracks
+    readonly property var systems: tracks ? tracks.systems : []
+    property bool following: follow !== ""
+    readonly property string followed: following ? Session.resolve(follow) : ""
+    // The camera: a point it orbits, its distance, and angles in degrees.
+    property vector3d target: Qt.vector3d(0, 0, 0)
+    property real distance: 25
+    property real yaw: 30
+    property real pitch: -25
+    readonly property alias view: view
+    // The vehicles' 3D nodes by system name (for the labels over them).
+    property var nodes: ({})
+
+    implicitWidth: Theme.mm(160)
+    implicitHeight: Theme.mm(110)
+    color: Theme.background
+    clip: true
+
+    // North, east, down (metres from home) to the scene: x east, y up, z south.
+    function scenePosition(ned) { return ned.north === undefined ? Qt.vector3d(0, 0, 0) : Qt.vector3d(ned.east, -ned.down, -ned.north) }
+    // Heading about the vertical, then pitch about the body's right, then roll
+    // about its forward axis (a model's forward is -z, north at heading 0).
+    function attitude(rollDeg, pitchDeg, headingDeg) {
+        return Quaternion.fromAxisAndAngle(Qt.vector3d(0, 1, 0), -headingDeg)
+            .times(Quaternion.fromAxisAndAngle(Qt.vector3d(1, 0, 0), pitchDeg))
+            .times(Quaternion.fromAxisAndAngle(Qt.vector3d(0, 0, 1), -rollDeg))
+    }
+    function colorOf(system) { return Theme.traceColor(Math.max(0, systems.indexOf(system))) }
+    function zoomBy(factor) { distance = Math.max(2, Math.min(5000, distance * factor)) }
+    function resetView() { yaw = 30; pitch = -25; distance = 25; if (followed === "") target = Qt.vector3d(0, 0, 0) }
+
+    function keepFollowing() {
+        if (followed !== "" && systems.indexOf(followed) >= 0)
+            target = scenePosition(tracks.ned(followed))
+    }
+    Connections {
+        target: root.tracks
+        function onUpdated() { root.keepFollowing() }
+    }
+
+    View3D {
+        id: view
+        objectName: "view"
+        anchors.fill: parent
+        camera: camera
+        environment: SceneEnvironment {
+            backgroundMode: SceneEnvironment.Color
+            clearColor: Theme.palette === Theme.Night ? "#000000" : Theme.palette === Theme.Dusk ? "#1b2633" : "#bcd6ea"
+            antialiasingMode: SceneEnvironment.NoAA
+        }
+
+        Node {
+            id: orbit
+            position: root.target
+            eulerRotation: Qt.vector3d(root.pitch, root.yaw, 0)
+            PerspectiveCamera {
+                id: camera
+                objectName: "camera"
+                z: root.distance
+                clipNear: 0.5
+                clipFar: 20000
+            }
+        }
+        DirectionalLight {
+            eulerRotation: Qt.vector3d(-55, -30, 0)
+            brightness: Theme.palette === Theme.Night ? 0.35 : 1.0
+            ambientColor: Theme.palette === Theme.Night ? "#200000" : "#505a64"
+        }
+
+        // The water surface, seen from above and from below.
+        Model {
+            objectName: "water"
+            source: "#Rectangle"
+            eulerRotation.x: -90
+            scale: Qt.vector3d(60, 60, 1)
+            materials: DefaultMaterial {
+                diffuseColor: Theme.palette === Theme.Night ? "#300000" : "#4f9fd6"
+                opacity: 0.3
+                cullMode: Material.NoCulling
+                specularAmount: 0
+            }
+        }
+
+        // Seabed or terrain.
+        Model {
+            objectName: "seabed"
+            geometry: root.terrainSource !== "" ? terrain : seabed
+            materials: PrincipledMaterial {
+                vertexColorsEnabled: true
+                baseColor: Theme.palette === Theme.Night ? "#600000" : "#ffffff"
+                roughness: 0.9
+                cullMode: Material.NoCulling
+            }
+            ModelGeometry { id: terrain; objectName: "terrain"; source: root.terrainSource !== "" ? "file://" + root.terrainSource : "" }
+            // One geometry for every vehicle that uses the model file.
+            ModelGeometry { id: vehicleGeometry; objectName: "vehicleGeometry"; source: root.vehicleModel !== "" ? "file://" + root.vehicleModel : "" }
+            SeabedGeometry { id: seabed; depth: root.seabedDepth }
+        }
+
+        // Trails.
+        Repeater3D {
+            model: root.showTrails ? root.systems : []
+            Model {
+                required property string modelData
+                objectName: "trail:" + modelData
+                geometry: TrailGeometry { tracks: root.tracks; system: modelData }
+                materials: PrincipledMaterial {
+                    lighting: PrincipledMaterial.NoLighting
+                    baseColor: root.colorOf(modelData)
+                    lineWidth: 2
+                }
+            }
+        }
+
+        // Vehicles.
+        Repeater3D {
+            id: vehicles
+            model: root.systems
+            onObjectAdded: (index, object) => root.nodes = Object.assign({}, root.nodes, { [object.modelData]: object })
+            Node {
+                id: vehicle
+                required property string modelData
+                objectName: "vehicle:" + modelData
+                readonly property var state: (root.tracks.revision, root.tracks.latest(modelData))
+                position: (root.tracks.revision, root.scenePosition(root.tracks.ned(modelData)))
+                rotation: root.attitude(state.roll || 0, state.pitch || 0, state.heading || 0)
+                scale: Qt.vector3d(root.vehicleScale, root.vehicleScale, root.vehicleScale)
+
+                // A file's model (Y forward, Z up: turned so -z is forward, y up)...
+                Model {
+                    visible: root.vehicleModel !== ""
+                    geometry: vehicleGeometry
+                    materials: PrincipledMaterial { vertexColorsEnabled: true; baseColor: root.colorOf(vehicle.modelData) }
+                }
+                // ...or a torpedo 2 m long: hull, nose, tail fins.
+                Node {
+                    visible: root.vehicleModel === ""
+                    Model {
+                        source: "#Cylinder"
+                        eulerRotation.x: 90
+                        scale: Qt.vector3d(0.004, 0.018, 0.004)
+                        materials: PrincipledMaterial { baseColor: root.colorOf(vehicle.modelData); roughness: 0.4 }
+                    }
+                    Model {
+                        source: "#Sphere"
+                        z: -0.9
+                        scale: Qt.vector3d(0.004, 0.004, 0.004)
+                        materials: PrincipledMaterial { baseColor: Theme.palette === Theme.Night ? "#400000" : "#f2c200" }
+                    }
+                    Model {
+                        source: "#Cube"
+                        z: 0.8
+                        scale: Qt.vector3d(0.009, 0.0015, 0.003)
+                        materials: PrincipledMaterial { baseColor: "#303030" }
+                    }
+                    Model {
+                        source: "#Cube"
+                        z: 0.8
+                        scale: Qt.vector3d(0.0015, 0.009, 0.003)
+                        materials: PrincipledMaterial { baseColor: "#303030" }
+                    }
+                }
+            }
+        }
+    }
+
+    // Names over the vehicles (a 2D overlay, so they stay readable).
+    Repeater {
+        model: root.systems
+        Rectangle {
+            id: label
+            required property string modelData
+            required property int index
+            objectName: "label:" + modelData
+            readonly property var node: root.nodes[modelData] || null
+            readonly property vector3d at: (camera.scenePosition, orbit.eulerRotation, root.tracks.revision, root.width, root.height,
+                                            node ? view.mapFrom3DScene(node.scenePosition) : Qt.vector3d(-1e6, -1e6, -1))
+            readonly property bool stale: positionVariable.stale
+            visible: at.z > 0
+            x: at.x - width / 2
+            y: at.y - height - Theme.mm(5)
+            width: text.implicitWidth + Theme.spacing * 2
+            height: text.implicitHeight + 2
+            radius: Theme.radius
+            color: Qt.alpha(Theme.surface, 0.8)
+            border.color: root.colorOf(modelData)
+            opacity: stale ? 0.45 : 1
+            Variable { id: positionVariable; tree: Session.tree; path: label.modelData + "/EstimatedState/lat" }
+            Text {
+                id: text
+                anchors.centerIn: parent
+                readonly property var s: (root.tracks.revision, root.tracks.latest(label.modelData))
+                text: label.modelData + (s.depth !== undefined ? "  " + s.depth.toFixed(1) + " m" : "")
+                      + (label.stale ? qsTr(" (stale)") : "")
+                color: Theme.text
+                font.pixelSize: Theme.smallFontPixelSize
+                font.bold: Session.mainSystem === label.modelData
+            }
+        }
+    }
+
+    // Gestures.
+    DragHandler {
+        id: orbitDrag
+        objectName: "orbitDrag"
+        target: null
+        maximumPointCount: 1
+        property point last
+        onActiveChanged: last = centroid.position
+        onCentroidChanged: {
+            if (!active)
+                return
+            root.yaw -= (centroid.position.x - last.x) * 0.3
+            root.pitch = Math.max(-89, Math.min(89, root.pitch - (centroid.position.y - last.y) * 0.3))
+            last = centroid.position
+        }
+    }
+    PinchHandler {
+        target: null
+        onScaleChanged: (delta) => root.zoomBy(1 / delta)
+        onTranslationChanged: (delta) => {
+            // Two fingers drag the point looked at, across the view.
+            root.following = false
+            const k = root.distance / root.height
+            const yawRad = root.yaw * Math.PI / 180
+            root.target = root.target.plus(Qt.vector3d(-(delta.x * Math.cos(yawRad) + delta.y * Math.sin(yawRad)) * k, 0,
+                                                       (delta.x * Math.sin(yawRad) - delta.y * Math.cos(yawRad)) * k))
+        }
+    }
+    WheelHandler { onWheel: (event) => root.zoomBy(Math.pow(0.9, event.angleDelta.y / 120)) }
+
+    Column {
+        anchors { right: parent.right; top: parent.top; margins: Theme.spacing }
+        spacing: Theme.spacing
+        TouchButton { objectName: "zoomIn"; text: "+"; toolTip: qsTr("Closer"); onClicked: root.zoomBy(0.7) }
+        TouchButton { objectName: "zoomOut"; text: "−"; toolTip: qsTr("Farther"); onClicked: root.zoomBy(1 / 0.7) }
+        TouchButton {
+            objectName: "followButton"
+            text: "◎"
+            toolTip: qsTr("Follow %1").arg(Session.resolve(root.follow))
+            highlighted: root.followed !== ""
+            enabled: root.follow !== ""
+            onClicked: { root.following = !root.following; root.keepFollowing() }
+        }
+        TouchButton { objectName: "resetView"; text: "⟲"; toolTip: qsTr("Reset the view"); onClicked: root.resetView() }
+    }
+    Text {
+        objectName: "modelError"
+        anchors { left: parent.left; bottom: parent.bottom; margins: Theme.spacing }
+        text: [terrain.errorString, vehicleGeometry.errorString].filter(e => e !== "").join("\n")
+        visible: text !== ""
+        color: Theme.levelColor(4)
+        font.pixelSize: Theme.smallFontPixelSize
+        wrapMode: Text.Wrap
+        width: parent.width - 2 * Theme.spacing
+    }
+}

@@ -1,0 +1,45 @@
+#pragma once
+
+#include "Tracks.h"
+
+#include <QPointer>
+#include <QQuick3DGeometry>
+#include <QVector3D>
+#include <QtQml/qqmlregistration.h>
+
+// One system's trail as a 3D line strip, in metres from the tracks' home:
+// x east, y up, z south (Qt Quick 3D's axes). Rebuilt when the track grows.
+class TrailGeometry : public QQuick3DGeometry
+{
+    Q_OBJECT
+    QML_ELEMENT
+    Q_PROPERTY(neptus::geo::Tracks *tracks READ tracks WRITE setTracks NOTIFY tracksChanged)
+    Q_PROPERTY(QString system READ system WRITE setSystem NOTIFY systemChanged)
+    Q_PROPERTY(int pointCount READ pointCount NOTIFY pointCountChanged)
+
+public:
+    explicit TrailGeometry(QQuick3DObject *parent = nullptr);
+
+    neptus::geo::Tracks *tracks() const { return m_tracks; }
+    void setTracks(neptus::geo::Tracks *tracks);
+    QString system() const { return m_system; }
+    void setSystem(const QString &system);
+    int pointCount() const { return m_pointCount; }
+
+signals:
+    void tracksChanged();
+    void systemChanged();
+    void pointCountChanged();
+
+private:
+    void rebuild();
+
+    QPointer<neptus::geo::Tracks> m_tracks;
+    QString m_system;
+    int m_pointCount = 0;
+    quint64 m_revision = ~0ull;
+    // Points converted so far (x, y, z floats), kept while the track only grows.
+    QByteArray m_vertices;
+    quint64 m_dropped = 0;
+    QVector3D m_min, m_max;
+};

@@ -1,0 +1,42 @@
+import QtQuick
+import Neptus.Components
+
+// The inspector: every system the console hears, its health and alarms, and
+// the tree of its messages and values, as large as the screen allows.
+Console {
+    id: layout
+    formatVersion: 1
+    title: "Inspector"
+
+    SystemsList {
+        id: systemsList1
+        x: 12
+        y: 12
+        width: 400
+        height: 300
+    }
+
+    AlarmList {
+        id: alarmList1
+        x: 12
+        y: 324
+        width: 400
+        height: 416
+    }
+
+    HealthStrip {
+        id: healthStrip1
+        x: 424
+        y: 12
+        width: 844
+        height: 56
+    }
+
+    VariableTreeView {
+        id: variableTreeView1
+        x: 424
+        y: 80
+        width: 844
+        height: 660
+    }
+}
