@@ -68,3 +68,22 @@ TEST(ConsoleSession, IngestFeedsTreeAndHealth)
     EXPECT_NE(session.variableTree().find(u"0x001f/EntityState@7/state"), tree::noNode);
     EXPECT_EQ(session.alarmGraph().rootLevel(), alarms::Error);
 }
+
+// What the joystick sends: RemoteActions with its tuple list, recorded under out/.
+TEST(ConsoleSession, TheJoysticksRemoteActionsGoOutAndAreRecorded)
+{
+    ConsoleSession session(test::shippedSchema());
+    session.variableTree().setSystemName(0x1f, QStringLiteral("lauv"));
+    RecordingSink sink;
+    session.addLink(QStringLiteral("IMC/UDP"), &sink);
+    msg::Message beat(test::shippedSchema()->byAbbrev(u"Heartbeat"));
+    beat.header.src = 0x1f;
+    session.ingest(beat, QStringLiteral("IMC/UDP"));
+    const QVariantMap actions{{QStringLiteral("abbrev"), QStringLiteral("RemoteActions")},
+                              {QStringLiteral("fields"), QVariantMap{{QStringLiteral("actions"), QStringLiteral("Heading=0.25;Thrust=0.50")}}}};
+    ASSERT_EQ(session.send(QStringLiteral("lauv"), actions), QString());
+    ASSERT_EQ(sink.sent.size(), 1u);
+    EXPECT_EQ(sink.sent[0].second.abbrev(), QStringLiteral("RemoteActions"));
+    const auto &tree = session.variableTree();
+    EXPECT_EQ(tree.snapshot(tree.find(u"lauv/out/RemoteActions/actions")).value.toString(), QStringLiteral("Heading=0.25;Thrust=0.50"));
+}
