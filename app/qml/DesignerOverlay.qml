@@ -22,6 +22,9 @@ Item {
     property string placing: ""
     property real grid: 8
     property bool paletteShown: true
+    // The left panel shows the variable tree instead of the palette: drag a
+    // value onto the console to make a readout of it.
+    property bool variablesShown: false
 
     visible: editing
     enabled: editing
@@ -49,8 +52,15 @@ Item {
         selected = id
         return id
     }
+    // A readout of a tree variable, centred at (x, y) of the canvas.
+    function placeReadout(path, x, y) {
+        const id = place("Readout", x, y)
+        if (id !== "")
+            editor.setValue(id, "path", path)
+        return id
+    }
     function overPanel(p) {
-        for (const panel of [paletteView, properties, toolbar]) {
+        for (const panel of [paletteView, variablesView, properties, toolbar]) {
             if (panel.visible && panel.contains(panel.mapFromItem(canvas, p.x, p.y)))
                 return true
         }
@@ -268,7 +278,14 @@ Item {
             id: tools
             anchors.centerIn: parent
             spacing: Theme.spacing
-            TouchButton { objectName: "paletteToggle"; text: designer.paletteShown ? qsTr("Hide palette") : qsTr("Palette"); onClicked: designer.paletteShown = !designer.paletteShown }
+            TouchButton { objectName: "paletteToggle"; text: designer.paletteShown ? qsTr("Hide palette") : qsTr("Palette"); onClicked: { designer.paletteShown = !designer.paletteShown; designer.variablesShown = false } }
+            TouchButton {
+                objectName: "variablesToggle"
+                text: qsTr("Variables")
+                highlighted: designer.variablesShown
+                toolTip: qsTr("Drag a value onto the console to show it")
+                onClicked: { designer.variablesShown = !designer.variablesShown; designer.paletteShown = !designer.variablesShown }
+            }
             TouchButton { objectName: "undoButton"; text: qsTr("Undo"); enabled: designer.editor.canUndo; toolTip: qsTr("Ctrl+Z"); onClicked: designer.undo() }
             TouchButton { objectName: "redoButton"; text: qsTr("Redo"); enabled: designer.editor.canRedo; toolTip: qsTr("Ctrl+Shift+Z"); onClicked: designer.redo() }
             TouchButton { objectName: "duplicateButton"; text: qsTr("Duplicate"); enabled: designer.selected !== ""; toolTip: qsTr("Ctrl+D"); onClicked: designer.duplicateSelected() }
@@ -331,6 +348,47 @@ Item {
             ghost.visible = active
             if (!active && p.x > paletteView.x + paletteView.width && p.x < canvas.width && p.y > 0 && p.y < canvas.height)
                 designer.place(name, p.x, p.y)
+        }
+    }
+
+    // --- Variables: drag a value onto the console, or select it and add ---
+    Rectangle {
+        id: variablesView
+        objectName: "variablesView"
+        visible: designer.variablesShown
+        anchors { left: parent.left; top: parent.top; bottom: toolbar.top; margins: Theme.spacing }
+        width: Theme.mm(90)
+        color: Theme.surface
+        border.color: Theme.border
+        radius: Theme.radius
+        // Touches on the panel stay on the panel.
+        MouseArea { anchors.fill: parent; acceptedButtons: Qt.AllButtons; onWheel: wheel => wheel.accepted = true }
+        VariableTreeView {
+            id: variableTree
+            objectName: "designerTree"
+            anchors { left: parent.left; right: parent.right; top: parent.top; bottom: addReadout.top; margins: Theme.spacing }
+            dragLeaves: true
+            onLeafDragged: (path, scenePoint, active) => {
+                const p = canvas.mapFromItem(null, scenePoint.x, scenePoint.y)
+                const entry = designer.palette.entry("Readout")
+                const w = entry.defaultWidth || 200, h = entry.defaultHeight || 96
+                ghost.x = designer.snap(Math.max(0, p.x - w / 2))
+                ghost.y = designer.snap(Math.max(0, p.y - h / 2))
+                ghost.width = w
+                ghost.height = h
+                ghost.visible = active
+                if (!active && p.x > variablesView.x + variablesView.width && p.x < canvas.width && p.y > 0 && p.y < canvas.height)
+                    designer.placeReadout(path, p.x, p.y)
+            }
+        }
+        TouchButton {
+            id: addReadout
+            objectName: "addReadout"
+            anchors { left: parent.left; right: parent.right; bottom: parent.bottom; margins: Theme.spacing }
+            text: qsTr("Add a readout of %1").arg(variableTree.selectedPath.split("/").pop() || "…")
+            enabled: variableTree.selectedIsLeaf
+            onClicked: designer.placeReadout(variableTree.selectedPath,
+                                             variablesView.x + variablesView.width + Theme.mm(40), canvas.height / 3)
         }
     }
 

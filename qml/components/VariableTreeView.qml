@@ -14,6 +14,14 @@ Rectangle {
     readonly property alias rows: tree.rows
     // Tree path of the selected row ("" for none).
     property string selectedPath: ""
+    // Whether the selected row is a value (a field), not a branch.
+    readonly property bool selectedIsLeaf: selectedPath !== "" && Session.tree !== null
+                                           && (Session.tree.nodeCount, Session.tree.children(selectedPath).length === 0)
+    // In the designer: a value's row is dragged sideways onto the console
+    // (to make a readout of it); the list still scrolls up and down.
+    property bool dragLeaves: false
+    // While a value's row is dragged (active) and where it ends (not active), in scene coordinates.
+    signal leafDragged(string path, point scenePoint, bool active)
     property alias searchText: search.text
 
     implicitWidth: Theme.mm(120)
@@ -60,6 +68,22 @@ Rectangle {
 
     // Depth-first over the whole model: the first node whose name contains
     // `text` (after the selected one when `next`), opened up and shown.
+    // The name cell of a row, by its path, scrolled into view (null when its
+    // branch is closed).
+    function cellForPath(path) {
+        const shown = tree.rowAtIndex(Session.tree.indexOfPath(path))
+        if (shown >= 0) {
+            tree.forceLayout()
+            tree.positionViewAtRow(shown, TableView.AlignVCenter)
+        }
+        for (let row = 0; row < tree.rows; ++row) {
+            const item = tree.itemAtCell(Qt.point(0, row))
+            if (item && item.path === path)
+                return item
+        }
+        return null
+    }
+
     function find(text, next) {
         const model = tree.model
         if (!model || text === "")
@@ -97,9 +121,11 @@ Rectangle {
 
     TreeView {
         id: tree
+        objectName: "variableTree"
         anchors { left: parent.left; right: parent.right; top: tools.bottom; bottom: parent.bottom; margins: Theme.spacing }
         clip: true
         model: Session.tree
+        flickableDirection: view.dragLeaves ? Flickable.VerticalFlick : Flickable.AutoFlickDirection
         columnWidthProvider: column => [tree.width * 0.4, tree.width * 0.3, tree.width * 0.1, tree.width * 0.2][column]
         delegate: Item {
             id: cell
@@ -140,6 +166,17 @@ Rectangle {
                 text: cell.expanded ? "▾" : "▸"
                 color: Theme.textDim
                 font.pixelSize: Theme.fontPixelSize
+            }
+            DragHandler {
+                target: null
+                enabled: view.dragLeaves && !cell.hasChildren && cell.path !== ""
+                property point lastScene
+                onActiveChanged: {
+                    if (active)
+                        view.selectedPath = cell.path
+                    view.leafDragged(cell.path, lastScene, active)
+                }
+                onCentroidChanged: if (active) { lastScene = centroid.scenePosition; view.leafDragged(cell.path, lastScene, true) }
             }
             TapHandler {
                 onTapped: {

@@ -429,4 +429,55 @@ TestCase {
         verify(!shell.loader.editor.modified)
         Session.mainSystem = ""
     }
+
+    function test_dragATreeValueOntoTheConsoleMakesAReadoutOfIt() {
+        Fixtures.nameSystem(93, "tree-auv")
+        Fixtures.ingest("EstimatedState", 93, { depth: 4.25 })
+        Fixtures.treeModel.sync()
+        const shell = openShell(emptyLayout)
+        mouseClick(findChild(shell.designer, "variablesToggle"))
+        const panel = findChild(shell.designer, "variablesView")
+        verify(panel.visible)
+        verify(!findChild(shell.designer, "paletteView").visible, "in place of the palette")
+        const tree = findChild(shell.designer, "designerTree")
+        const path = "tree-auv/EstimatedState/depth"
+        tree.searchText = "depth"
+        for (let i = 0; i < 10 && tree.selectedPath !== path; ++i)
+            tree.find("depth", true) // Enter: the next match (other systems have a depth too)
+        compare(tree.selectedPath, path)
+        // Its row scrolled wholly into view.
+        const list = findChild(tree, "variableTree")
+        tryVerify(() => {
+            const c = tree.cellForPath(path)
+            const at = c ? c.mapToItem(list, 0, 0) : null
+            return at && at.y >= 0 && at.y + c.height <= list.height
+        }, 3000, "the value's row is shown")
+        // (A press while the list still moves only stops it, as on any list.)
+        tryVerify(() => !list.moving && !list.flicking, 3000, "the list has stopped")
+        waitForRendering(tree)
+        const cell = tree.cellForPath(path)
+        compare(cell.path, path)
+        // Sideways, out of the panel and onto the console.
+        mouseDrag(cell, 30, cell.height / 2, panel.width + 300, 0, Qt.LeftButton, Qt.NoModifier, 30)
+        const ids = shell.loader.editor.componentIds
+        compare(ids.length, 1, "one component made")
+        compare(shell.loader.editor.typeOf(ids[0]), "Readout")
+        compare(shell.loader.editor.value(ids[0], "path"), path)
+        tryVerify(() => shell.designer.itemFor(ids[0]) !== null)
+        const readout = shell.designer.itemFor(ids[0])
+        verify(readout.x > panel.x + panel.width - readout.width, "where it was dropped")
+        tryCompare(findChild(readout, "value"), "text", "4.3 m", 3000, "and it shows the value")
+
+        // Or: select it, then the button (keyboard and gloves).
+        mouseClick(tree.cellForPath(path))
+        verify(tree.selectedIsLeaf)
+        const add = findChild(shell.designer, "addReadout")
+        verify(add.enabled && add.height >= Theme.touchTarget)
+        mouseClick(add)
+        compare(shell.loader.editor.componentIds.length, 2)
+        compare(shell.loader.editor.value(shell.loader.editor.componentIds[1], "path"), path)
+        // A branch is not a value: no readout of it.
+        tree.selectedPath = "tree-auv/EstimatedState"
+        verify(!findChild(shell.designer, "addReadout").enabled)
+    }
 }
