@@ -12,7 +12,14 @@
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
+#include <QEventLoop>
 #include <QImage>
+#include <QMediaCaptureSession>
+#include <QMediaFormat>
+#include <QMediaRecorder>
+#include <QTimer>
+#include <QVideoFrame>
+#include <QVideoFrameInput>
 #include <QTemporaryDir>
 #include <QQmlEngine>
 #include <QQuickStyle>
@@ -91,6 +98,52 @@ public:
         return file.open(QIODevice::ReadOnly) ? QString::fromUtf8(file.readAll()) : QString();
     }
     Q_INVOKABLE bool makeDir(const QString &path) const { return QDir().mkpath(path); }
+    // A video file of `frames` frames of one colour (320x240, 10 per second),
+    // encoded by Qt Multimedia itself. Returns "" or what went wrong.
+    Q_INVOKABLE QString writeVideo(const QString &path, const QColor &color, int frames)
+    {
+        QMediaCaptureSession session;
+        QVideoFrameInput input;
+        QMediaRecorder recorder;
+        session.setVideoFrameInput(&input);
+        session.setRecorder(&recorder);
+        QMediaFormat format(QMediaFormat::MPEG4);
+        format.setVideoCodec(QMediaFormat::VideoCodec::H264);
+        recorder.setMediaFormat(format);
+        recorder.setOutputLocation(QUrl::fromLocalFile(path));
+        recorder.setVideoFrameRate(10);
+        QImage image(320, 240, QImage::Format_RGB32);
+        image.fill(color);
+        int sent = 0;
+        QEventLoop loop;
+        QString error;
+        auto sendMore = [&] {
+            while (sent < frames) {
+                QVideoFrame frame(image);
+                frame.setStartTime(sent * 100'000);
+                frame.setEndTime((sent + 1) * 100'000);
+                if (!input.sendVideoFrame(frame))
+                    return; // wait for readyToSendVideoFrame
+                ++sent;
+            }
+            recorder.stop();
+        };
+        QObject::connect(&input, &QVideoFrameInput::readyToSendVideoFrame, &loop, sendMore);
+        QObject::connect(&recorder, &QMediaRecorder::errorOccurred, &loop, [&](QMediaRecorder::Error, const QString &text) {
+            error = text;
+            loop.quit();
+        });
+        QObject::connect(&recorder, &QMediaRecorder::recorderStateChanged, &loop, [&](QMediaRecorder::RecorderState state) {
+            if (state == QMediaRecorder::StoppedState)
+                loop.quit();
+        });
+        QTimer::singleShot(20000, &loop, [&] { error = QStringLiteral("timed out encoding"); loop.quit(); });
+        recorder.record();
+        loop.exec();
+        if (error.isEmpty() && !QFileInfo(path).size())
+            error = QStringLiteral("nothing was written");
+        return error;
+    }
     // A 256-pixel map tile of one colour, its folders made as needed.
     Q_INVOKABLE bool writeTile(const QString &path, const QColor &color) const
     {
