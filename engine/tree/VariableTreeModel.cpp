@@ -154,6 +154,8 @@ void VariableTreeModel::refreshAges()
         if (count == 0)
             continue;
         const QModelIndex p = indexOfNode(static_cast<NodeId>(parent));
+        // Staleness greys every column of a row; only the age column's text changes.
+        emit dataChanged(index(0, NameColumn, p), index(count - 1, UnitColumn, p), {StaleRole});
         emit dataChanged(index(0, AgeColumn, p), index(count - 1, AgeColumn, p), {Qt::DisplayRole, AgeRole, StaleRole});
     }
     for (const QPointer<Variable> &variable : m_variables) {

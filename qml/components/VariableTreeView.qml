@@ -68,16 +68,16 @@ Rectangle {
 
     // Depth-first over the whole model: the first node whose name contains
     // `text` (after the selected one when `next`), opened up and shown.
-    // The name cell of a row, by its path, scrolled into view (null when its
-    // branch is closed).
-    function cellForPath(path) {
+    // A cell of a row (column 0: name, 1: value, 2: unit, 3: age), by the
+    // row's path, scrolled into view (null when its branch is closed).
+    function cellForPath(path, column) {
         const shown = tree.rowAtIndex(Session.tree.indexOfPath(path))
         if (shown >= 0) {
             tree.forceLayout()
             tree.positionViewAtRow(shown, TableView.AlignVCenter)
         }
         for (let row = 0; row < tree.rows; ++row) {
-            const item = tree.itemAtCell(Qt.point(0, row))
+            const item = tree.itemAtCell(Qt.point(column || 0, row))
             if (item && item.path === path)
                 return item
         }
@@ -139,7 +139,7 @@ Rectangle {
             required property string display
             required property bool stale
             required property string path
-            implicitHeight: Theme.touchTarget * 0.8
+            implicitHeight: Theme.touchTarget
             implicitWidth: label.implicitWidth + Theme.spacing * 2
 
             Rectangle {
@@ -150,6 +150,7 @@ Rectangle {
             }
             Text {
                 id: label
+                objectName: "text"
                 anchors.verticalCenter: parent.verticalCenter
                 x: cell.isTreeNode ? cell.depth * Theme.mm(4) + Theme.mm(5) : Theme.spacing
                 width: parent.width - x - Theme.spacing

@@ -101,4 +101,17 @@ TestCase {
         mouseClick(findChild(entry, "lamp"))
         compare(Session.mainSystem, "hermes")
     }
+
+    function test_aSystemNotHeardForAWhileIsGreyedAndWarns() {
+        Fixtures.nameSystem(53, "quiet")
+        Fixtures.ingest("Heartbeat", 53, {})
+        Fixtures.treeModel.sync()
+        tryVerify(() => findChild(systems, "system-quiet") !== null)
+        const row = findChild(systems, "system-quiet")
+        compare(String(findChild(row, "detail").color), String(Theme.text))
+        Fixtures.advanceClock(10000)
+        Fixtures.treeModel.refreshAges()
+        tryCompare(findChild(row, "detail"), "color", Theme.textDim)
+        verify(findChild(row, "detail").text.indexOf("10.0 s") > 0, findChild(row, "detail").text)
+    }
 }

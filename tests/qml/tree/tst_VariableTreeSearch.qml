@@ -56,4 +56,23 @@ TestCase {
         view.searchText = "no-such-name"
         compare(view.selectedPath, "")
     }
+
+    function test_staleValuesGreyAndRowsAreTouchTargets() {
+        Fixtures.nameSystem(82, "greyer")
+        Fixtures.ingest("Voltage", 82, { value: 24.5 })
+        Fixtures.treeModel.sync()
+        view.searchText = "greyer"
+        const path = "greyer/Voltage/value"
+        view.find("value", false)
+        for (let i = 0; i < 10 && view.selectedPath !== path; ++i)
+            view.find("value", true)
+        tryVerify(() => view.cellForPath(path, 1) !== null, 3000)
+        const value = view.cellForPath(path, 1)
+        compare(findChild(value, "text").text, "24.5")
+        compare(String(findChild(value, "text").color), String(Theme.text))
+        verify(view.cellForPath(path, 0).height >= Theme.touchTarget, "a row is a touch target")
+        Fixtures.advanceClock(10000)
+        Fixtures.treeModel.refreshAges()
+        tryCompare(findChild(view.cellForPath(path, 1), "text"), "color", Theme.textDim, 2000, "stale: greyed")
+    }
 }
