@@ -38,21 +38,12 @@ int main(int argc, char **argv)
 {
     QGuiApplication app(argc, argv);
     QQmlEngine engine;
-    QQmlComponent component(&engine);
-    component.setData("import QtQuick\nimport Neptus.Components\n"
-                      "Plot { width: 1280; height: 800; span: 300; paths: [\"a/X/v\", \"b/X/v\"] }",
-                      QUrl());
     QQuickWindow window;
-    window.resize(1280, 800);
-    std::unique_ptr<QObject> object(component.create());
-    auto *plot = qobject_cast<QQuickItem *>(object.get());
-    if (!plot) {
-        std::fprintf(stderr, "%s\n", qPrintable(component.errorString()));
+    const auto plot = neptus::test::showInWindow(engine, window, "import QtQuick\nimport Neptus.Components\n"
+        "Plot { width: 1280; height: 800; span: 300; paths: [\"a/X/v\", \"b/X/v\"] }");
+    if (!plot)
         return 1;
-    }
-    plot->setParentItem(window.contentItem());
     auto *series = plot->property("series").value<QObject *>();
-    window.show();
 
     const int points = 250'000;
     double t = 0;

@@ -5,7 +5,13 @@
 // redraws) and the window is asked for another frame, `frames` times.
 #include <QCoreApplication>
 #include <QElapsedTimer>
+#include <QQmlComponent>
+#include <QQmlEngine>
+#include <QQuickItem>
 #include <QQuickWindow>
+
+#include <cstdio>
+#include <memory>
 
 #include <algorithm>
 #include <functional>
@@ -18,6 +24,23 @@ struct FrameTimes
     double p50 = 0, p99 = 0, max = 0;
     int frames = 0;
 };
+
+// Makes the item described by `qml` and shows it in `window`; null (and
+// the QML error printed) when it cannot be made.
+inline std::unique_ptr<QQuickItem> showInWindow(QQmlEngine &engine, QQuickWindow &window, const QByteArray &qml)
+{
+    QQmlComponent component(&engine);
+    component.setData(qml, QUrl());
+    std::unique_ptr<QQuickItem> item(qobject_cast<QQuickItem *>(component.create()));
+    if (!item) {
+        std::fprintf(stderr, "%s\n", qPrintable(component.errorString()));
+        return nullptr;
+    }
+    item->setParentItem(window.contentItem());
+    window.resize(int(item->width()), int(item->height()));
+    window.show();
+    return item;
+}
 
 inline FrameTimes measureFrames(QQuickWindow &window, int frames, const std::function<void()> &step)
 {
