@@ -273,8 +273,9 @@ Rectangle {
         objectName: "modelError"
         anchors { left: parent.left; bottom: parent.bottom; margins: Theme.spacing }
         text: [terrain.errorString, vehicleGeometry.errorString].filter(e => e !== "").join("\n")
+              || (terrain.loading || vehicleGeometry.loading ? qsTr("Reading models…") : "")
         visible: text !== ""
-        color: Theme.levelColor(4)
+        color: terrain.errorString || vehicleGeometry.errorString ? Theme.levelColor(4) : Theme.textDim
         font.pixelSize: Theme.smallFontPixelSize
         wrapMode: Text.Wrap
         width: parent.width - 2 * Theme.spacing

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "ModelImport.h"
+
 #include <QQuick3DGeometry>
 #include <QUrl>
 #include <QVector3D>
@@ -7,7 +9,8 @@
 
 // A model or terrain file (any format OpenSceneGraph reads, see
 // engine/models/ModelLoader.h) as Qt Quick 3D geometry: positions, normals
-// and vertex colours. Files are in metres with Z up and, for vehicles, Y
+// and vertex colours. Read in a separate process (ModelImport), so a damaged
+// file is an error message and a large one does not freeze the screen. Files are in metres with Z up and, for vehicles, Y
 // forward (OpenSceneGraph's east-north-up); the scene's axes are Qt Quick
 // 3D's (x east, y up, z south), so a model's +Y points north.
 class ModelGeometry : public QQuick3DGeometry
@@ -16,6 +19,7 @@ class ModelGeometry : public QQuick3DGeometry
     QML_ELEMENT
     Q_PROPERTY(QUrl source READ source WRITE setSource NOTIFY sourceChanged)
     Q_PROPERTY(QString errorString READ errorString NOTIFY loaded)
+    Q_PROPERTY(bool loading READ loading NOTIFY loadingChanged)
     Q_PROPERTY(int triangleCount READ triangleCount NOTIFY loaded)
     Q_PROPERTY(QVector3D boundsMin READ boundsMin NOTIFY loaded)
     Q_PROPERTY(QVector3D boundsMax READ boundsMax NOTIFY loaded)
@@ -26,6 +30,7 @@ public:
     QUrl source() const { return m_source; }
     void setSource(const QUrl &source);
     QString errorString() const { return m_error; }
+    bool loading() const { return m_import.running(); }
     int triangleCount() const { return m_triangles; }
     QVector3D boundsMin() const { return m_min; }
     QVector3D boundsMax() const { return m_max; }
@@ -33,8 +38,12 @@ public:
 signals:
     void sourceChanged();
     void loaded();
+    void loadingChanged();
 
 private:
+    void imported();
+
+    neptus::models::ModelImport m_import;
     QUrl m_source;
     QString m_error;
     int m_triangles = 0;
