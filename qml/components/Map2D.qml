@@ -154,6 +154,7 @@ Rectangle {
         DragHandler {
             id: drag
             target: null
+            maximumPointCount: 1 // two fingers are the pinch's
             onTranslationChanged: (delta) => root.pan(-delta.x, -delta.y)
             onActiveChanged: if (active) root.following = false
         }

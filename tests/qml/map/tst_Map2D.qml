@@ -224,4 +224,35 @@ TestCase {
         tryVerify(() => marker("alpha").stale)
         verify(marker("alpha").opacity < 1)
     }
+
+    // Two fingers: spread to zoom in, turn to rotate; what is under them stays there.
+    function test_pinchZoomsAndTurnsTheMap() {
+        map2d.following = false
+        map2d.measuring = false
+        map2d.setZoom(15)
+        map2d.bearing = 0
+        const z = map2d.zoomLevel
+        const under = map2d.toCoordinate(400, 520)
+        let t = touchEvent(map2d)
+        t.press(0, map2d, 340, 520).press(1, map2d, 460, 520).commit()
+        // (In small steps: a pinch starts once the fingers moved the drag threshold.)
+        for (let step = 1; step <= 20; ++step)
+            t.move(0, map2d, 340 - 3 * step, 520).move(1, map2d, 460 + 3 * step, 520).commit()
+        t.release(0, map2d, 280, 520).release(1, map2d, 520, 520).commit()
+        verify(map2d.zoomLevel > z + 0.6, "spreading 120 px to 240 px zooms in about one level: " + (map2d.zoomLevel - z))
+        const stays = map2d.screenPoint(under.lat, under.lon)
+        verify(Math.abs(stays.x - 400) < 15 && Math.abs(stays.y - 520) < 15, "the point between the fingers stays: " + stays)
+
+        t = touchEvent(map2d)
+        t.press(0, map2d, 340, 520).press(1, map2d, 460, 520).commit()
+        for (let step = 1; step <= 15; ++step) {
+            const a = step * 3 * Math.PI / 180
+            t.move(0, map2d, 400 - 60 * Math.cos(a), 520 - 60 * Math.sin(a))
+             .move(1, map2d, 400 + 60 * Math.cos(a), 520 + 60 * Math.sin(a)).commit()
+        }
+        t.release(0, map2d, 340, 520).release(1, map2d, 460, 520).commit()
+        verify(map2d.bearing !== 0, "turning two fingers turns the map")
+        mouseClick(findChild(map2d, "northUp"))
+        compare(map2d.bearing, 0, "North up")
+    }
 }

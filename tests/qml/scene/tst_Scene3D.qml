@@ -150,4 +150,16 @@ TestCase {
         tryVerify(() => label.stale)
         verify(label.opacity < 1)
     }
+
+    function test_9_pinchZoomsTheCamera() {
+        scene.resetView()
+        const d = scene.distance
+        const t = touchEvent(scene)
+        t.press(0, scene, 350, 300).press(1, scene, 450, 300).commit()
+        for (let step = 1; step <= 17; ++step)
+            t.move(0, scene, 350 - 3 * step, 300).move(1, scene, 450 + 3 * step, 300).commit()
+        t.release(0, scene, 300, 300).release(1, scene, 500, 300).commit()
+        // (The first few pixels only start the pinch.)
+        verify(scene.distance < d * 0.8, "spreading the fingers brings the camera closer: " + scene.distance)
+    }
 }
