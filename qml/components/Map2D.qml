@@ -97,14 +97,6 @@ Rectangle {
         pan(now.x - point.x, now.y - point.y)
     }
     function setZoom(zoom) { zoomLevel = Math.max(minimumZoomLevel, Math.min(maximumZoomLevel, zoom)) }
-    // 1, 2 or 5 times a power of ten, at least `value`.
-    function niceStep(value) {
-        const p = Math.pow(10, Math.floor(Math.log10(value)))
-        for (const m of [1, 2, 5, 10])
-            if (m * p >= value)
-                return m * p
-        return 10 * p
-    }
     function formatDistance(metres) {
         return metres >= 1000 ? (metres / 1000).toFixed(metres >= 10000 ? 0 : 2) + " km" : metres.toFixed(metres >= 10 ? 0 : 1) + " m"
     }
@@ -208,73 +200,35 @@ Rectangle {
 
     // Lat/lon grid: the map itself when there are no tiles (and no
     // north/east grid, which takes its place once home is known).
-    Shape {
+    MapGridItem {
         id: graticule
         objectName: "graticule"
         anchors.fill: parent
         visible: !root.hasTiles && !nedGrid.visible
-        preferredRendererType: Shape.CurveRenderer
-        readonly property real step: root.niceStep(360 / root.worldSize() * 150)
-        ShapePath {
-            strokeColor: Theme.border
-            strokeWidth: 1
-            fillColor: "transparent"
-            PathMultiline {
-                paths: {
-                    root.view
-                    const corners = [root.toCoordinate(0, 0), root.toCoordinate(root.width, root.height),
-                                     root.toCoordinate(root.width, 0), root.toCoordinate(0, root.height)]
-                    const lats = corners.map(c => c.lat).filter(Number.isFinite)
-                    const lons = corners.map(c => c.lon).filter(Number.isFinite)
-                    if (!lats.length || !lons.length)
-                        return []
-                    const s = graticule.step, lines = []
-                    const south = Math.max(-85, Math.min(...lats)), north = Math.min(85, Math.max(...lats))
-                    const west = Math.min(...lons), east = Math.max(...lons)
-                    for (let lat = Math.ceil(south / s) * s; lat <= north && lines.length < 200; lat += s)
-                        lines.push([root.screenPoint(lat, west), root.screenPoint(lat, east)])
-                    for (let lon = Math.ceil(west / s) * s; lon <= east && lines.length < 200; lon += s)
-                        lines.push([root.screenPoint(south, lon), root.screenPoint(north, lon)])
-                    return lines
-                }
-            }
-        }
+        kind: MapGridItem.LatitudeLongitude
+        centerLatitude: root.centerLatitude
+        centerLongitude: root.centerLongitude
+        zoomLevel: root.zoomLevel
+        bearing: root.bearing
+        color: Theme.border
     }
 
     // North/east grid around home, in metres, and home's axes.
-    Shape {
+    MapGridItem {
         id: nedGrid
         objectName: "nedGrid"
         anchors.fill: parent
         visible: root.showGrid && root.home.valid
-        readonly property real step: root.niceStep(root.metresPerPixel * 120)
-        readonly property var lines: {
-            root.view
-            if (!visible)
-                return { grid: [], axes: [] }
-            const h = root.home, s = step
-            const c = Geo.toNed(root.centerLatitude, root.centerLongitude, h.lat, h.lon)
-            const r = root.metresPerPixel * Math.hypot(root.width, root.height) / 2
-            const at = (n, e) => { const g = Geo.fromNed(n, e, h.lat, h.lon); return root.screenPoint(g.lat, g.lon) }
-            const grid = [], axes = []
-            for (let e = Math.floor((c.east - r) / s) * s; e <= c.east + r && grid.length < 120; e += s)
-                (Math.abs(e) < s / 2 ? axes : grid).push([at(c.north - r, e), at(c.north + r, e)])
-            for (let n = Math.floor((c.north - r) / s) * s; n <= c.north + r && grid.length < 240; n += s)
-                (Math.abs(n) < s / 2 ? axes : grid).push([at(n, c.east - r), at(n, c.east + r)])
-            return { grid: grid, axes: axes }
-        }
-        ShapePath {
-            strokeColor: Qt.alpha(Theme.accent, 0.35)
-            strokeWidth: 1
-            fillColor: "transparent"
-            PathMultiline { paths: nedGrid.lines.grid }
-        }
-        ShapePath {
-            strokeColor: Theme.accent
-            strokeWidth: Math.max(2, Theme.mm(0.4))
-            fillColor: "transparent"
-            PathMultiline { paths: nedGrid.lines.axes }
-        }
+        kind: MapGridItem.NorthEast
+        centerLatitude: root.centerLatitude
+        centerLongitude: root.centerLongitude
+        zoomLevel: root.zoomLevel
+        bearing: root.bearing
+        homeLatitude: root.home.valid ? root.home.lat : 0
+        homeLongitude: root.home.valid ? root.home.lon : 0
+        color: Qt.alpha(Theme.accent, 0.35)
+        axisColor: Theme.accent
+        axisWidth: Math.max(2, Theme.mm(0.4))
     }
     Text {
         objectName: "gridLabel"

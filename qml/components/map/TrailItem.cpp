@@ -1,6 +1,6 @@
 #include "TrailItem.h"
 
-#include "Geodesy.h"
+#include "MapProjection.h"
 
 #include <QSGFlatColorMaterial>
 #include <QSGGeometryNode>
@@ -148,13 +148,8 @@ void TrailItem::trackUpdated()
 
 QPointF TrailItem::project(double lat, double lon) const
 {
-    using namespace neptus::geo;
-    const Eigen::Vector2d d = toMercator(radians(lat), radians(lon)) - toMercator(radians(m_centerLat), radians(m_centerLon));
-    const double scale = 256 * std::exp2(m_zoom);
-    const double b = radians(m_bearing);
-    // Drawn as the map draws: north up turned by the bearing, about the centre.
-    const double x = d.x() * scale, y = d.y() * scale;
-    return {width() / 2 + x * std::cos(b) + y * std::sin(b), height() / 2 - x * std::sin(b) + y * std::cos(b)};
+    const MapProjection view{m_centerLat, m_centerLon, m_zoom, m_bearing, size()};
+    return view.project(neptus::geo::radians(lat), neptus::geo::radians(lon));
 }
 
 QSGNode *TrailItem::updatePaintNode(QSGNode *old, UpdatePaintNodeData *)
@@ -201,8 +196,9 @@ QSGNode *TrailItem::updatePaintNode(QSGNode *old, UpdatePaintNodeData *)
     }
 
     // The view: every chunk's transform, every frame the map moves.
-    const Eigen::Vector2d center = toMercator(radians(m_centerLat), radians(m_centerLon));
-    const double scale = 256 * std::exp2(m_zoom);
+    const MapProjection view{m_centerLat, m_centerLon, m_zoom, m_bearing, size()};
+    const Eigen::Vector2d center = view.centerMercator();
+    const double scale = view.worldSize();
     for (auto *node = root->firstChild(); node; node = node->nextSibling()) {
         auto *c = static_cast<ChunkNode *>(node);
         const Eigen::Vector2d offset = (c->origin - center) * unitsPerWorld;

@@ -119,13 +119,24 @@ TestCase {
         compare(String(map2d.color), String(Theme.sea))
         verify(findChild(map2d, "noTiles").visible)
         verify(findChild(map2d, "nedGrid").visible, "north/east grid around home")
-        verify(findChild(map2d, "nedGrid").lines.grid.length > 4)
-        verify(findChild(map2d, "nedGrid").lines.axes.length === 2, "home's north and east axes")
+        const ned = findChild(map2d, "nedGrid")
+        tryVerify(() => ned.lineCount > 4, 2000, "north/east lines: " + ned.lineCount)
+        compare(ned.axisCount, 2, "home's north and east axes")
+        verify(/^[125]0*$/.test(String(ned.step)), ned.step + " m: a round step")
+        compare(findChild(map2d, "gridLabel").text.indexOf("grid " + map2d.formatDistance(ned.step)), 0)
+        // Home's east-west axis is drawn through home (150 px west of it, clear of the systems).
+        waitForRendering(map2d)
+        const home = map2d.screenPoint(homeLat, homeLon)
+        const image = grabImage(map2d)
+        let onAxis = false
+        for (let dy = -2; dy <= 2 && !onAxis; ++dy)
+            onAxis = Qt.colorEqual(image.pixel(Math.round(home.x) - 150, Math.round(home.y) + dy), Theme.accent)
+        verify(onAxis, "the axis colour beside home at " + home)
         verify(!findChild(map2d, "graticule").visible, "one grid at a time")
         map2d.showGrid = false
         verify(findChild(map2d, "graticule").visible, "without the north/east grid: latitude and longitude")
-        const lines = findChild(map2d, "graticule").data[0].pathElements[0].paths
-        verify(lines.length >= 4, "lines of latitude and longitude across the view: " + lines.length)
+        const graticule = findChild(map2d, "graticule")
+        tryVerify(() => graticule.lineCount >= 4, 2000, "lines of latitude and longitude across the view: " + graticule.lineCount)
         map2d.showGrid = true
     }
 
