@@ -44,9 +44,8 @@ QSGGeometryNode *linesNode(QSGNode *parent, QSGGeometryNode *node, const std::ve
 } // namespace
 
 MapGridItem::MapGridItem(QQuickItem *parent)
-    : QQuickItem(parent)
+    : MapOverlayItem(parent)
 {
-    setFlag(ItemHasContents);
 }
 
 void MapGridItem::set(double &member, double value)
@@ -85,12 +84,6 @@ void MapGridItem::setAxisColor(const QColor &c)
     emit changed();
 }
 
-void MapGridItem::geometryChange(const QRectF &newGeometry, const QRectF &oldGeometry)
-{
-    QQuickItem::geometryChange(newGeometry, oldGeometry);
-    polish();
-}
-
 double MapGridItem::niceStep(double value)
 {
     const double p = std::pow(10, std::floor(std::log10(value)));
@@ -98,11 +91,6 @@ double MapGridItem::niceStep(double value)
         if (m * p >= value * (1 - 1e-12))
             return m * p;
     return 10 * p;
-}
-
-MapProjection MapGridItem::projection() const
-{
-    return {m_centerLat, m_centerLon, m_zoom, m_bearing, size()};
 }
 
 double MapGridItem::step() const
@@ -120,7 +108,7 @@ void MapGridItem::updatePolish()
     if (width() > 0 && height() > 0) {
         if (m_kind == NorthEast) {
             const Geodetic home{radians(m_homeLat), radians(m_homeLon), 0};
-            const Eigen::Vector3d c = toNed({radians(m_centerLat), radians(m_centerLon), 0}, home);
+            const Eigen::Vector3d c = toNed({radians(view.centerLat), radians(view.centerLon), 0}, home);
             const double r = view.metresPerPixel() * std::hypot(width(), height()) / 2;
             auto at = [&](double north, double east) {
                 // On the surface: the Earth drops away by d² / 2R.
@@ -139,7 +127,7 @@ void MapGridItem::updatePolish()
             // The view's corners bound the lines (any bearing).
             double south = 90, north = -90, west = 180, east = -180;
             const Eigen::Vector2d center = view.centerMercator();
-            const double b = radians(m_bearing), k = view.worldSize();
+            const double b = radians(view.bearing), k = view.worldSize();
             for (const QPointF corner : {QPointF(0, 0), QPointF(width(), 0), QPointF(0, height()), QPointF(width(), height())}) {
                 const double sx = corner.x() - width() / 2, sy = corner.y() - height() / 2;
                 const Eigen::Vector2d ll = fromMercator(center + Eigen::Vector2d(sx * std::cos(b) - sy * std::sin(b),

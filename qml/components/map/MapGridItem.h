@@ -1,9 +1,8 @@
 #pragma once
 
-#include "MapProjection.h"
+#include "MapOverlayItem.h"
 
 #include <QColor>
-#include <QQuickItem>
 #include <QtQml/qqmlregistration.h>
 
 #include <vector>
@@ -12,22 +11,18 @@
 // north/east lines every `step` metres around a home, with home's own two
 // axes stronger; or lines of latitude and longitude. The step is a round
 // number (1, 2 or 5 times a power of ten) about 120 pixels apart.
-class MapGridItem : public QQuickItem
+class MapGridItem : public MapOverlayItem
 {
     Q_OBJECT
     QML_ELEMENT
     Q_PROPERTY(Kind kind READ kind WRITE setKind NOTIFY changed)
-    Q_PROPERTY(double centerLatitude MEMBER m_centerLat WRITE setCenterLatitude NOTIFY changed)
-    Q_PROPERTY(double centerLongitude MEMBER m_centerLon WRITE setCenterLongitude NOTIFY changed)
-    Q_PROPERTY(double zoomLevel MEMBER m_zoom WRITE setZoomLevel NOTIFY changed)
-    Q_PROPERTY(double bearing MEMBER m_bearing WRITE setBearing NOTIFY changed)
     Q_PROPERTY(double homeLatitude MEMBER m_homeLat WRITE setHomeLatitude NOTIFY changed)
     Q_PROPERTY(double homeLongitude MEMBER m_homeLon WRITE setHomeLongitude NOTIFY changed)
     Q_PROPERTY(QColor color MEMBER m_color WRITE setColor NOTIFY changed)
     Q_PROPERTY(QColor axisColor MEMBER m_axisColor WRITE setAxisColor NOTIFY changed)
     Q_PROPERTY(double axisWidth MEMBER m_axisWidth WRITE setAxisWidth NOTIFY changed)
     // Metres (north/east) or degrees (latitude/longitude) between lines.
-    Q_PROPERTY(double step READ step NOTIFY changed)
+    Q_PROPERTY(double step READ step NOTIFY drawn)
     Q_PROPERTY(int lineCount READ lineCount NOTIFY drawn)
     Q_PROPERTY(int axisCount READ axisCount NOTIFY drawn)
 
@@ -39,10 +34,6 @@ public:
 
     Kind kind() const { return m_kind; }
     void setKind(Kind kind);
-    void setCenterLatitude(double v) { set(m_centerLat, v); }
-    void setCenterLongitude(double v) { set(m_centerLon, v); }
-    void setZoomLevel(double v) { set(m_zoom, v); }
-    void setBearing(double v) { set(m_bearing, v); }
     void setHomeLatitude(double v) { set(m_homeLat, v); }
     void setHomeLongitude(double v) { set(m_homeLon, v); }
     void setAxisWidth(double v) { set(m_axisWidth, v); }
@@ -64,14 +55,13 @@ protected:
     void updatePolish() override;
     // ...and handed to the scene graph here.
     QSGNode *updatePaintNode(QSGNode *old, UpdatePaintNodeData *) override;
-    void geometryChange(const QRectF &newGeometry, const QRectF &oldGeometry) override;
+    void viewUpdated() override { polish(); }
 
 private:
     void set(double &member, double value);
-    MapProjection projection() const;
 
     Kind m_kind = NorthEast;
-    double m_centerLat = 0, m_centerLon = 0, m_zoom = 2, m_bearing = 0, m_homeLat = 0, m_homeLon = 0;
+    double m_homeLat = 0, m_homeLon = 0;
     double m_axisWidth = 2;
     QColor m_color = Qt::gray, m_axisColor = Qt::blue;
     int m_lineCount = 0, m_axisCount = 0;

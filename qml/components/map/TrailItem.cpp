@@ -64,9 +64,8 @@ struct ChunkNode : QSGTransformNode
 } // namespace
 
 TrailItem::TrailItem(QQuickItem *parent)
-    : QQuickItem(parent)
+    : MapOverlayItem(parent)
 {
-    setFlag(ItemHasContents);
 }
 
 void TrailItem::setTracks(Tracks *tracks)
@@ -109,20 +108,6 @@ void TrailItem::setLineWidth(double width)
     emit colorChanged();
 }
 
-#define NEPTUS_VIEW_SETTER(Name, member)                                                                     \
-    void TrailItem::Name(double value)                                                                       \
-    {                                                                                                        \
-        if (member == value || !std::isfinite(value))                                                        \
-            return;                                                                                          \
-        member = value;                                                                                      \
-        update();                                                                                            \
-        emit viewChanged();                                                                                  \
-    }
-NEPTUS_VIEW_SETTER(setCenterLatitude, m_centerLat)
-NEPTUS_VIEW_SETTER(setCenterLongitude, m_centerLon)
-NEPTUS_VIEW_SETTER(setZoomLevel, m_zoom)
-NEPTUS_VIEW_SETTER(setBearing, m_bearing)
-#undef NEPTUS_VIEW_SETTER
 
 void TrailItem::invalidate()
 {
@@ -146,12 +131,6 @@ void TrailItem::trackUpdated()
     update();
 }
 
-QPointF TrailItem::project(double lat, double lon) const
-{
-    const MapProjection view{m_centerLat, m_centerLon, m_zoom, m_bearing, size()};
-    return view.project(neptus::geo::radians(lat), neptus::geo::radians(lon));
-}
-
 QSGNode *TrailItem::updatePaintNode(QSGNode *old, UpdatePaintNodeData *)
 {
     using namespace neptus::geo;
@@ -171,7 +150,8 @@ QSGNode *TrailItem::updatePaintNode(QSGNode *old, UpdatePaintNodeData *)
 
     // Upload what is new (fill the last chunk, add chunks as needed) and
     // thin each chunk again when the zoom changed by a quarter level.
-    const int detail = int(std::floor(m_zoom * 4));
+    const MapProjection view = projection();
+    const int detail = int(std::floor(view.zoom * 4));
     const double spacing = keepPixels * unitsPerWorld / (256 * std::exp2(detail / 4.0 + 0.25));
     const auto &fixes = track->fixes;
     const std::size_t chunks = fixes.size() < 2 ? 0 : (fixes.size() - 2) / chunkSize + 1;
@@ -196,7 +176,6 @@ QSGNode *TrailItem::updatePaintNode(QSGNode *old, UpdatePaintNodeData *)
     }
 
     // The view: every chunk's transform, every frame the map moves.
-    const MapProjection view{m_centerLat, m_centerLon, m_zoom, m_bearing, size()};
     const Eigen::Vector2d center = view.centerMercator();
     const double scale = view.worldSize();
     for (auto *node = root->firstChild(); node; node = node->nextSibling()) {
@@ -204,7 +183,7 @@ QSGNode *TrailItem::updatePaintNode(QSGNode *old, UpdatePaintNodeData *)
         const Eigen::Vector2d offset = (c->origin - center) * unitsPerWorld;
         QMatrix4x4 m;
         m.translate(float(width() / 2), float(height() / 2));
-        m.rotate(float(-m_bearing), 0, 0, 1);
+        m.rotate(float(-view.bearing), 0, 0, 1);
         m.scale(float(scale / unitsPerWorld));
         m.translate(float(offset.x()), float(offset.y()));
         c->setMatrix(m);

@@ -4,7 +4,8 @@
 
 #include <QColor>
 #include <QPointer>
-#include <QQuickItem>
+#include "MapOverlayItem.h"
+
 #include <QtQml/qqmlregistration.h>
 
 // One system's trail over a Web Mercator map, drawn by the scene graph. The
@@ -13,7 +14,7 @@
 // thousands of points costs nothing to move and only its newest chunk is
 // re-uploaded as it grows. The view (centre, zoom, bearing) is the map's,
 // bound from QML; the projection matches Qt Location's (256-pixel tiles).
-class TrailItem : public QQuickItem
+class TrailItem : public MapOverlayItem
 {
     Q_OBJECT
     QML_ELEMENT
@@ -21,10 +22,6 @@ class TrailItem : public QQuickItem
     Q_PROPERTY(QString system READ system WRITE setSystem NOTIFY systemChanged)
     Q_PROPERTY(QColor color READ color WRITE setColor NOTIFY colorChanged)
     Q_PROPERTY(double lineWidth READ lineWidth WRITE setLineWidth NOTIFY colorChanged)
-    Q_PROPERTY(double centerLatitude READ centerLatitude WRITE setCenterLatitude NOTIFY viewChanged)
-    Q_PROPERTY(double centerLongitude READ centerLongitude WRITE setCenterLongitude NOTIFY viewChanged)
-    Q_PROPERTY(double zoomLevel READ zoomLevel WRITE setZoomLevel NOTIFY viewChanged)
-    Q_PROPERTY(double bearing READ bearing WRITE setBearing NOTIFY viewChanged)
     Q_PROPERTY(int pointCount READ pointCount NOTIFY pointCountChanged)
 
 public:
@@ -38,25 +35,12 @@ public:
     void setColor(const QColor &color);
     double lineWidth() const { return m_lineWidth; }
     void setLineWidth(double width);
-    double centerLatitude() const { return m_centerLat; }
-    void setCenterLatitude(double degrees);
-    double centerLongitude() const { return m_centerLon; }
-    void setCenterLongitude(double degrees);
-    double zoomLevel() const { return m_zoom; }
-    void setZoomLevel(double zoom);
-    double bearing() const { return m_bearing; }
-    void setBearing(double degrees);
     int pointCount() const { return m_pointCount; }
-
-    // Where a position (degrees) is drawn, in item coordinates: what the
-    // trail's transform does, for tests to compare with the map's own.
-    Q_INVOKABLE QPointF project(double lat, double lon) const;
 
 signals:
     void tracksChanged();
     void systemChanged();
     void colorChanged();
-    void viewChanged();
     void pointCountChanged();
 
 protected:
@@ -70,7 +54,6 @@ private:
     QString m_system;
     QColor m_color = Qt::yellow;
     double m_lineWidth = 2;
-    double m_centerLat = 0, m_centerLon = 0, m_zoom = 2, m_bearing = 0;
     int m_pointCount = 0;
     quint64 m_seenRevision = ~0ull;
     // What the scene graph holds, touched only in updatePaintNode.
