@@ -84,7 +84,9 @@ void ModelImport::done(std::expected<Mesh, QString> result)
     if (m_process) {
         QProcess *process = m_process.release();
         process->disconnect(this);
-        // Deleted later: this may run inside the process's own signal.
+        // Deleted later (this may run inside the process's own signal), and
+        // with this object at the latest (a killed reader may not be reaped yet).
+        process->setParent(this);
         connect(process, &QProcess::finished, process, &QObject::deleteLater);
         if (process->state() == QProcess::NotRunning)
             process->deleteLater();

@@ -131,7 +131,8 @@ TEST(Geodesy, WebMercator)
     EXPECT_NEAR(toMercator(radians(85.0511287798), radians(-180)).norm(), 0, 1e-10);
     // Google Maps JavaScript API, "Map and tile coordinates": Chicago (41.85, -87.65)
     // has world coordinate (65.67, 95.17) on the 256-unit world.
-    const auto world = toMercator(radians(41.85), radians(-87.65)) * 256;
+    // (A Vector2d, not auto: an Eigen expression would outlive its operand.)
+    const Eigen::Vector2d world = toMercator(radians(41.85), radians(-87.65)) * 256;
     EXPECT_NEAR(world.x(), 65.67, 0.005);
     EXPECT_NEAR(world.y(), 95.17, 0.005);
     const auto back = fromMercator(toMercator(radians(-33.9), radians(151.2)));
