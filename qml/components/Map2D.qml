@@ -59,6 +59,15 @@ Rectangle {
     clip: true
 
     function colorOf(system) { return Theme.traceColor(Math.max(0, systems.indexOf(system))) }
+    // A system's mark by kind, as points in a unit square, nose up.
+    function markShape(kind) {
+        switch (kind) {
+        case "UUV": return [[0.5, 0], [0.72, 0.3], [0.66, 1], [0.5, 0.85], [0.34, 1], [0.28, 0.3], [0.5, 0]]
+        case "USV": return [[0.5, 0], [0.8, 0.35], [0.8, 1], [0.2, 1], [0.2, 0.35], [0.5, 0]]
+        case "UAV": return [[0.5, 0], [1, 0.8], [0.5, 0.6], [0, 0.8], [0.5, 0]]
+        default: return [[0.5, 0], [0.85, 1], [0.5, 0.75], [0.15, 1], [0.5, 0]]
+        }
+    }
     // Web Mercator in [0, 1) across the world, and back.
     function mercator(lat, lon) {
         const s = Math.sin(Math.max(-85.0511287798, Math.min(85.0511287798, lat)) * Math.PI / 180)
@@ -104,6 +113,21 @@ Rectangle {
         const s = tracks ? tracks.latest(system) : null
         if (s && s.lat !== undefined)
             centreAt(s.lat, s.lon)
+    }
+    // Every system in view, with a margin; stops following.
+    function fitAll() {
+        const ms = systems.map(name => tracks.latest(name)).filter(st => st.lat !== undefined).map(st => mercator(st.lat, st.lon))
+        if (ms.length === 0)
+            return
+        following = false
+        const minX = Math.min(...ms.map(m => m.x)), maxX = Math.max(...ms.map(m => m.x))
+        const minY = Math.min(...ms.map(m => m.y)), maxY = Math.max(...ms.map(m => m.y))
+        const c = fromMercator((minX + maxX) / 2, (minY + maxY) / 2)
+        bearing = 0
+        centreAt(c.lat, c.lon)
+        // The span takes at most 70 % of the smaller side; one system: street level.
+        const span = Math.max(maxX - minX, maxY - minY)
+        setZoom(span > 0 ? Math.log2(0.7 * Math.min(width, height) / (256 * span)) : 17)
     }
     function zoomBy(steps) {
         setZoom(zoomLevel + steps)
@@ -294,13 +318,13 @@ Rectangle {
                     strokeColor: Theme.text
                     strokeWidth: marker.selected ? 3 : 1.5
                     fillColor: marker.tint
-                    // UAV: a delta wing; vessels and the rest: an arrow.
+                    // The kind's mark, nose up: a slim arrow (UUV), a hull
+                    // (USV), a delta wing (UAV), a wide arrow (anything else).
                     PathPolyline {
+                        objectName: "markPath"
                         readonly property real w: mark.width
                         readonly property real h: mark.height
-                        path: marker.kind === "UAV"
-                              ? [Qt.point(w / 2, 0), Qt.point(w, h * 0.8), Qt.point(w / 2, h * 0.6), Qt.point(0, h * 0.8), Qt.point(w / 2, 0)]
-                              : [Qt.point(w / 2, 0), Qt.point(w * 0.85, h), Qt.point(w / 2, h * 0.75), Qt.point(w * 0.15, h), Qt.point(w / 2, 0)]
+                        path: root.markShape(marker.kind).map(p => Qt.point(p[0] * w, p[1] * h))
                     }
                 }
             }
@@ -421,6 +445,12 @@ Rectangle {
                 if (root.followed !== "")
                     root.centreOn(root.followed)
             }
+        }
+        TouchButton {
+            objectName: "fitAll"
+            text: "⊡"
+            toolTip: qsTr("Show every system")
+            onClicked: root.fitAll()
         }
         TouchButton {
             objectName: "measureButton"

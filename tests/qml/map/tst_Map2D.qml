@@ -68,6 +68,11 @@ TestCase {
         compare(findChild(alpha, "mark").rotation, 90, "heading east")
         compare(findChild(bravo, "mark").rotation, 0)
         tryVerify(() => bravo.kind === "USV", 2000, "the kind from its Announce")
+        // Each kind its own mark; an unknown kind the plain arrow.
+        compare(findChild(bravo, "markPath").path.length, map2d.markShape("USV").length)
+        compare(findChild(alpha, "markPath").path.length, map2d.markShape("").length)
+        const shapes = ["UUV", "USV", "UAV", ""].map(k => JSON.stringify(map2d.markShape(k)))
+        compare(new Set(shapes).size, 4, "four different marks")
     }
 
     // Our projection against Qt Location's own, on a map with tiles (where
@@ -218,7 +223,16 @@ TestCase {
         compare(map2d.zoomLevel, before + 1)
         mouseClick(findChild(map2d, "zoomOut"))
         compare(map2d.zoomLevel, before)
-        for (const name of ["zoomIn", "zoomOut", "followButton", "measureButton", "northUp"]) {
+        // Show every system: both markers inside the map, well clear of its edges.
+        map2d.setZoom(19)
+        mouseClick(findChild(map2d, "fitAll"))
+        for (const name of ["alpha", "bravo"]) {
+            const c = centreOf(marker(name))
+            verify(c.x > 0.1 * map2d.width && c.x < 0.9 * map2d.width && c.y > 0.1 * map2d.height && c.y < 0.9 * map2d.height,
+                   name + " in view at " + c)
+        }
+        map2d.setZoom(before)
+        for (const name of ["zoomIn", "zoomOut", "followButton", "fitAll", "measureButton", "northUp"]) {
             const b = findChild(map2d, name)
             verify(b.width >= Theme.touchTarget && b.height >= Theme.touchTarget, name)
         }
