@@ -7,6 +7,9 @@
 TrailGeometry::TrailGeometry(QQuick3DObject *parent)
     : QQuick3DGeometry(parent)
 {
+    m_uploadTimer.setSingleShot(true);
+    m_uploadTimer.setInterval(250);
+    connect(&m_uploadTimer, &QTimer::timeout, this, &TrailGeometry::upload);
 }
 
 void TrailGeometry::setTracks(neptus::geo::Tracks *tracks)
@@ -72,8 +75,22 @@ void TrailGeometry::rebuild()
         }
     }
 
+    if (count != m_pointCount) {
+        m_pointCount = count;
+        emit pointCountChanged();
+    }
+    // A new or restarted trail shows at once; growth at most every 250 ms.
+    if (restart)
+        upload();
+    else if (!m_uploadTimer.isActive())
+        m_uploadTimer.start();
+}
+
+void TrailGeometry::upload()
+{
+    m_uploadTimer.stop();
     clear();
-    if (count >= 2) {
+    if (m_pointCount >= 2) {
         setVertexData(m_vertices);
         setStride(3 * sizeof(float));
         setPrimitiveType(PrimitiveType::LineStrip);
@@ -81,8 +98,6 @@ void TrailGeometry::rebuild()
         setBounds(m_min, m_max);
     }
     update();
-    if (count != m_pointCount) {
-        m_pointCount = count;
-        emit pointCountChanged();
-    }
+    m_uploadedCount = m_pointCount >= 2 ? m_pointCount : 0;
+    emit uploaded();
 }

@@ -3,12 +3,15 @@
 #include "Tracks.h"
 
 #include <QPointer>
+#include <QTimer>
 #include <QQuick3DGeometry>
 #include <QVector3D>
 #include <QtQml/qqmlregistration.h>
 
 // One system's trail as a 3D line strip, in metres from the tracks' home:
-// x east, y up, z south (Qt Quick 3D's axes). Rebuilt when the track grows.
+// x east, y up, z south (Qt Quick 3D's axes). New fixes are converted as
+// they come, but the whole strip goes to the GPU at most 4 times a second
+// (a long trail is megabytes; the vehicle itself moves every frame).
 class TrailGeometry : public QQuick3DGeometry
 {
     Q_OBJECT
@@ -16,6 +19,8 @@ class TrailGeometry : public QQuick3DGeometry
     Q_PROPERTY(neptus::geo::Tracks *tracks READ tracks WRITE setTracks NOTIFY tracksChanged)
     Q_PROPERTY(QString system READ system WRITE setSystem NOTIFY systemChanged)
     Q_PROPERTY(int pointCount READ pointCount NOTIFY pointCountChanged)
+    // Points in the geometry handed to the GPU (catches up within 250 ms).
+    Q_PROPERTY(int uploadedCount READ uploadedCount NOTIFY uploaded)
 
 public:
     explicit TrailGeometry(QQuick3DObject *parent = nullptr);
@@ -25,18 +30,23 @@ public:
     QString system() const { return m_system; }
     void setSystem(const QString &system);
     int pointCount() const { return m_pointCount; }
+    int uploadedCount() const { return m_uploadedCount; }
 
 signals:
     void tracksChanged();
     void systemChanged();
     void pointCountChanged();
+    void uploaded();
 
 private:
     void rebuild();
+    void upload();
 
+    QTimer m_uploadTimer;
     QPointer<neptus::geo::Tracks> m_tracks;
     QString m_system;
     int m_pointCount = 0;
+    int m_uploadedCount = 0;
     quint64 m_revision = ~0ull;
     // Points converted so far (x, y, z floats), kept while the track only grows.
     QByteArray m_vertices;
