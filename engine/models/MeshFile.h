@@ -1,6 +1,6 @@
 #pragma once
 
-#include "ModelLoader.h"
+#include "Mesh.h"
 
 #include <QByteArray>
 #include <QByteArrayView>

@@ -1,8 +1,9 @@
 #pragma once
 
-#include "ModelLoader.h"
+#include "Mesh.h"
 
 #include <QObject>
+#include <QString>
 #include <QProcess>
 
 #include <chrono>

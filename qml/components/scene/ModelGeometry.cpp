@@ -1,6 +1,5 @@
 #include "ModelGeometry.h"
 
-#include "ModelLoader.h"
 
 #include <QVector3D>
 

@@ -3,6 +3,7 @@
 // And the mesh format between the two, which the console checks byte by byte.
 #include "MeshFile.h"
 #include "ModelImport.h"
+#include "ModelLoader.h"
 
 #include <QDir>
 #include <QFile>
