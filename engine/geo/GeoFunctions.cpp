@@ -1,9 +1,7 @@
 #include "GeoFunctions.h"
 
 #include "Geodesy.h"
-
-#include <cmath>
-#include <numbers>
+#include "MapProjection.h"
 
 namespace neptus::geo {
 
@@ -17,25 +15,24 @@ QVariantMap GeoFunctions::measure(double lat1, double lon1, double lat2, double 
             {QStringLiteral("valid"), true}};
 }
 
-QVariantMap GeoFunctions::toNed(double lat, double lon, double originLat, double originLon) const
-{
-    const auto ned = geo::toNed({radians(lat), radians(lon), 0}, {radians(originLat), radians(originLon), 0});
-    return {{QStringLiteral("north"), ned.x()}, {QStringLiteral("east"), ned.y()}};
-}
-
-QVariantMap GeoFunctions::fromNed(double north, double east, double originLat, double originLon) const
-{
-    const Geodetic origin{radians(originLat), radians(originLon), 0};
-    // Down chosen so the point lies on the surface: the Earth's curve drops
-    // away by d² / 2R over a distance d.
-    const double drop = (north * north + east * east) / (2 * wgs84.a);
-    const auto p = geo::fromNed({north, east, drop}, origin);
-    return {{QStringLiteral("lat"), degrees(p.lat)}, {QStringLiteral("lon"), degrees(p.lon)}};
-}
-
 double GeoFunctions::metresPerPixel(double lat, double zoomLevel) const
 {
-    return 2 * std::numbers::pi * wgs84.a * std::cos(radians(lat)) / (256 * std::exp2(zoomLevel));
+    return geo::metresPerPixel(radians(lat), zoomLevel);
+}
+
+QPointF GeoFunctions::project(double lat, double lon, double centerLat, double centerLon, double zoomLevel,
+                              double bearing, double width, double height) const
+{
+    const MapProjection view{centerLat, centerLon, zoomLevel, bearing, {width, height}};
+    return view.project(radians(lat), radians(lon));
+}
+
+QVariantMap GeoFunctions::coordinateAt(double x, double y, double centerLat, double centerLon, double zoomLevel,
+                                       double bearing, double width, double height) const
+{
+    const MapProjection view{centerLat, centerLon, zoomLevel, bearing, {width, height}};
+    const Eigen::Vector2d c = view.toCoordinate({x, y});
+    return {{QStringLiteral("lat"), degrees(c.x())}, {QStringLiteral("lon"), degrees(c.y())}};
 }
 
 } // namespace neptus::geo

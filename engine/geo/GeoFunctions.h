@@ -1,6 +1,7 @@
 #pragma once
 
 #include <QObject>
+#include <QPointF>
 #include <QVariantMap>
 #include <QtQml/qqmlregistration.h>
 
@@ -18,13 +19,16 @@ public:
     using QObject::QObject;
     // {distance (m), bearing (degrees from north), valid} along the WGS84 ellipsoid.
     Q_INVOKABLE QVariantMap measure(double lat1, double lon1, double lat2, double lon2) const;
-    // {north, east} metres of (lat, lon) from an origin.
-    Q_INVOKABLE QVariantMap toNed(double lat, double lon, double originLat, double originLon) const;
-    // {lat, lon} of the point `north`, `east` metres from an origin, on the ellipsoid's surface.
-    Q_INVOKABLE QVariantMap fromNed(double north, double east, double originLat, double originLon) const;
     // Metres a screen pixel covers at a latitude on a Web Mercator map of
     // 256-pixel tiles at a zoom level.
     Q_INVOKABLE double metresPerPixel(double lat, double zoomLevel) const;
+    // Where (lat, lon) is drawn on a map of `width` x `height` pixels centred
+    // on (centerLat, centerLon) at a zoom level, turned by `bearing` degrees;
+    // and the {lat, lon} drawn at a point of it (MapProjection).
+    Q_INVOKABLE QPointF project(double lat, double lon, double centerLat, double centerLon, double zoomLevel,
+                                double bearing, double width, double height) const;
+    Q_INVOKABLE QVariantMap coordinateAt(double x, double y, double centerLat, double centerLon, double zoomLevel,
+                                         double bearing, double width, double height) const;
 };
 
 } // namespace neptus::geo

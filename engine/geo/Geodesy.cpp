@@ -143,4 +143,9 @@ Eigen::Vector2d fromMercator(const Eigen::Vector2d &xy)
     return {std::atan(std::sinh(pi * (1 - 2 * xy.y()))), xy.x() * 2 * pi - pi};
 }
 
+double metresPerPixel(double lat, double zoomLevel)
+{
+    return 2 * pi * wgs84.a * std::cos(lat) / (256 * std::exp2(zoomLevel));
+}
+
 } // namespace neptus::geo

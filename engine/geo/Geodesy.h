@@ -64,6 +64,9 @@ std::optional<Geodesic> inverse(double lat1, double lon1, double lat2, double lo
 // world, x east from 180° W, y south from 85.05° N.
 Eigen::Vector2d toMercator(double lat, double lon);
 Eigen::Vector2d fromMercator(const Eigen::Vector2d &xy); // (lat, lon)
+// Metres one screen pixel covers at a latitude (rad) on a Web Mercator map of
+// 256-pixel tiles at a zoom level (as Qt Location and tile servers draw it).
+double metresPerPixel(double lat, double zoomLevel);
 
 constexpr double degrees(double radians) { return radians * 57.295779513082320876798154814105; }
 constexpr double radians(double degrees) { return degrees * 0.017453292519943295769236907684886; }

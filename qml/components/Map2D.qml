@@ -68,27 +68,15 @@ Rectangle {
         default: return [[0.5, 0], [0.85, 1], [0.5, 0.75], [0.15, 1], [0.5, 0]]
         }
     }
-    // Web Mercator in [0, 1) across the world, and back.
-    function mercator(lat, lon) {
-        const s = Math.sin(Math.max(-85.0511287798, Math.min(85.0511287798, lat)) * Math.PI / 180)
-        return { x: (lon + 180) / 360, y: 0.5 - Math.log((1 + s) / (1 - s)) / (4 * Math.PI) }
-    }
-    function fromMercator(x, y) {
-        return { lat: Math.atan(Math.sinh(Math.PI * (1 - 2 * y))) * 180 / Math.PI, lon: x * 360 - 180 }
-    }
-    function worldSize() { return 256 * Math.pow(2, zoomLevel) }
-    // Where a position is drawn, in this item's coordinates.
+    // Where a position is drawn, in this item's coordinates, and the position
+    // drawn at a point ({lat, lon}): the projection the trails and grids are
+    // drawn with (MapProjection).
     function screenPoint(lat, lon) {
         root.view
-        const m = mercator(lat, lon), c = mercator(centerLatitude, centerLongitude), k = worldSize()
-        const dx = (m.x - c.x) * k, dy = (m.y - c.y) * k, b = bearing * Math.PI / 180
-        return Qt.point(width / 2 + dx * Math.cos(b) + dy * Math.sin(b), height / 2 - dx * Math.sin(b) + dy * Math.cos(b))
+        return Geo.project(lat, lon, centerLatitude, centerLongitude, zoomLevel, bearing, width, height)
     }
-    // The position drawn at a point: {lat, lon}.
     function toCoordinate(x, y) {
-        const c = mercator(centerLatitude, centerLongitude), k = worldSize(), b = bearing * Math.PI / 180
-        const sx = x - width / 2, sy = y - height / 2
-        return fromMercator(c.x + (sx * Math.cos(b) - sy * Math.sin(b)) / k, c.y + (sx * Math.sin(b) + sy * Math.cos(b)) / k)
+        return Geo.coordinateAt(x, y, centerLatitude, centerLongitude, zoomLevel, bearing, width, height)
     }
     function centreAt(lat, lon) {
         centerLatitude = Math.max(-85, Math.min(85, lat))
@@ -114,20 +102,20 @@ Rectangle {
         if (s && s.lat !== undefined)
             centreAt(s.lat, s.lon)
     }
-    // Every system in view, with a margin; stops following.
+    // Every system in view, with a margin; north up; stops following.
     function fitAll() {
-        const ms = systems.map(name => tracks.latest(name)).filter(st => st.lat !== undefined).map(st => mercator(st.lat, st.lon))
-        if (ms.length === 0)
+        bearing = 0
+        const ps = systems.map(name => tracks.latest(name)).filter(st => st.lat !== undefined).map(st => screenPoint(st.lat, st.lon))
+        if (ps.length === 0)
             return
         following = false
-        const minX = Math.min(...ms.map(m => m.x)), maxX = Math.max(...ms.map(m => m.x))
-        const minY = Math.min(...ms.map(m => m.y)), maxY = Math.max(...ms.map(m => m.y))
-        const c = fromMercator((minX + maxX) / 2, (minY + maxY) / 2)
-        bearing = 0
+        const minX = Math.min(...ps.map(p => p.x)), maxX = Math.max(...ps.map(p => p.x))
+        const minY = Math.min(...ps.map(p => p.y)), maxY = Math.max(...ps.map(p => p.y))
+        const c = toCoordinate((minX + maxX) / 2, (minY + maxY) / 2)
         centreAt(c.lat, c.lon)
         // The span takes at most 70 % of the smaller side; one system: street level.
         const span = Math.max(maxX - minX, maxY - minY)
-        setZoom(span > 0 ? Math.log2(0.7 * Math.min(width, height) / (256 * span)) : 17)
+        setZoom(span > 0 ? zoomLevel + Math.log2(0.7 * Math.min(width, height) / span) : 17)
     }
     function zoomBy(steps) {
         setZoom(zoomLevel + steps)

@@ -126,12 +126,8 @@ void MapGridItem::updatePolish()
         } else {
             // The view's corners bound the lines (any bearing).
             double south = 90, north = -90, west = 180, east = -180;
-            const Eigen::Vector2d center = view.centerMercator();
-            const double b = radians(view.bearing), k = view.worldSize();
             for (const QPointF corner : {QPointF(0, 0), QPointF(width(), 0), QPointF(0, height()), QPointF(width(), height())}) {
-                const double sx = corner.x() - width() / 2, sy = corner.y() - height() / 2;
-                const Eigen::Vector2d ll = fromMercator(center + Eigen::Vector2d(sx * std::cos(b) - sy * std::sin(b),
-                                                                                  sx * std::sin(b) + sy * std::cos(b)) / k);
+                const Eigen::Vector2d ll = view.toCoordinate(corner);
                 south = std::min(south, degrees(ll.x()));
                 north = std::max(north, degrees(ll.x()));
                 west = std::min(west, degrees(ll.y()));

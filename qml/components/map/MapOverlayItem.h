@@ -41,6 +41,7 @@ public:
         return projection().project(neptus::geo::radians(lat), neptus::geo::radians(lon));
     }
 
+
 signals:
     void viewChanged();
 

@@ -135,6 +135,9 @@ TEST(Geodesy, WebMercator)
     const Eigen::Vector2d world = toMercator(radians(41.85), radians(-87.65)) * 256;
     EXPECT_NEAR(world.x(), 65.67, 0.005);
     EXPECT_NEAR(world.y(), 95.17, 0.005);
+    // OpenStreetMap wiki, "Zoom levels": 156,543.03 m per pixel at the equator at zoom 0, halving per level.
+    EXPECT_NEAR(metresPerPixel(0, 0), 156543.03, 0.01);
+    EXPECT_NEAR(metresPerPixel(radians(60), 18), 156543.03 / 2 / (1 << 18), 1e-6);
     const auto back = fromMercator(toMercator(radians(-33.9), radians(151.2)));
     EXPECT_NEAR(degrees(back.x()), -33.9, 1e-12);
     EXPECT_NEAR(degrees(back.y()), 151.2, 1e-12);

@@ -7,9 +7,10 @@
 
 #include <cmath>
 
-// The map's view as Map2D keeps it (Web Mercator, 256-pixel tiles, as Qt
-// Location draws them): where a position is drawn, for the scene-graph items
-// that draw over the map.
+// A map's view (Web Mercator, 256-pixel tiles, as Qt Location and tile
+// servers draw them): where a position is drawn and what is drawn at a
+// point. The one projection of Map2D, its trail and grid items (and QML's
+// Geo.project / Geo.coordinateAt).
 struct MapProjection
 {
     double centerLat = 0, centerLon = 0; // degrees
@@ -32,9 +33,14 @@ struct MapProjection
     }
     // A position in radians on screen.
     QPointF project(double lat, double lon) const { return fromMercator(neptus::geo::toMercator(lat, lon)); }
-    // Metres one pixel covers at the centre.
-    double metresPerPixel() const
+    // The position (lat, lon in radians) drawn at a point.
+    Eigen::Vector2d toCoordinate(QPointF point) const
     {
-        return 2 * M_PI * neptus::geo::wgs84.a * std::cos(neptus::geo::radians(centerLat)) / worldSize();
+        const double b = neptus::geo::radians(bearing), k = worldSize();
+        const double sx = point.x() - size.width() / 2, sy = point.y() - size.height() / 2;
+        return neptus::geo::fromMercator(centerMercator()
+            + Eigen::Vector2d(sx * std::cos(b) - sy * std::sin(b), sx * std::sin(b) + sy * std::cos(b)) / k);
     }
+    // Metres one pixel covers at the centre.
+    double metresPerPixel() const { return neptus::geo::metresPerPixel(neptus::geo::radians(centerLat), zoom); }
 };
