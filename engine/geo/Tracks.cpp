@@ -112,29 +112,36 @@ Tracks::Track &Tracks::trackFor(quint16 id, const QString &system)
     return *m_tracks.back();
 }
 
+void Tracks::homeOnce(double lat, double lon, double height)
+{
+    if (m_hasHome)
+        return;
+    m_homeLat = lat;
+    m_homeLon = lon;
+    m_homeHeight = height;
+    m_hasHome = true;
+    emit homeChanged();
+}
+
 void Tracks::append(const QString &system, const Fix &fix)
 {
-    quint16 id = 0xFFFF;
-    if (const Track *t = track(system))
-        id = t->id;
-    else
-        id = quint16(0xF000 + m_tracks.size()); // not from the tree: a private id
-    Track &t = trackFor(id, system);
+    const Track *known = track(system);
+    // Not from the tree: a private id, past any IMC system's.
+    Track &t = trackFor(known ? known->id : quint16(0xF000 + m_tracks.size()), system);
+    homeOnce(fix.lat, fix.lon, 0);
+    add(t, fix);
+}
+
+void Tracks::add(Track &t, const Fix &fix)
+{
     t.latest = fix;
-    if (!m_hasHome) {
-        m_homeLat = fix.lat;
-        m_homeLon = fix.lon;
-        m_homeHeight = 0;
-        m_hasHome = true;
-        emit homeChanged();
-    }
-    bool add = t.fixes.empty();
-    if (!add) {
+    bool keep = t.fixes.empty();
+    if (!keep) {
         const Fix &last = t.fixes.back();
         const Eigen::Vector3d d = toNed({fix.lat, fix.lon, fix.height}, {last.lat, last.lon, last.height});
-        add = std::hypot(d.x(), d.y(), fix.depth - last.depth) >= m_minimumSpacing || fix.time - last.time >= 10;
+        keep = std::hypot(d.x(), d.y(), fix.depth - last.depth) >= m_minimumSpacing || fix.time - last.time >= 10;
     }
-    if (add) {
+    if (keep) {
         if (t.fixes.size() >= m_capacity) {
             const std::size_t forget = m_capacity / 10;
             t.fixes.erase(t.fixes.begin(), t.fixes.begin() + std::ptrdiff_t(forget));
@@ -166,15 +173,8 @@ void Tracks::read(tree::NodeId node)
     fix.pitch = float(field("theta"));
     fix.heading = float(field("psi"));
     const quint16 id = tree.systemOf(node);
-    Track &t = trackFor(id, tree.systemName(id));
-    if (t.fixes.empty() && !m_hasHome) {
-        m_homeLat = lat; // the vehicle's own reference, not its offset position
-        m_homeLon = lon;
-        m_homeHeight = field("height");
-        m_hasHome = true;
-        emit homeChanged();
-    }
-    append(t.system, fix);
+    homeOnce(lat, lon, field("height")); // the vehicle's own reference, not its offset position
+    add(trackFor(id, tree.systemName(id)), fix);
 }
 
 void Tracks::update()

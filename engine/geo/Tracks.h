@@ -89,6 +89,9 @@ signals:
 
 private:
     Track &trackFor(quint16 id, const QString &system);
+    // Home is the first position heard, unless set.
+    void homeOnce(double lat, double lon, double height);
+    void add(Track &track, const Fix &fix);
     void read(tree::NodeId estimatedState);
 
     QPointer<tree::VariableTreeModel> m_model;
