@@ -31,7 +31,8 @@ Rectangle {
     readonly property bool hasTiles: tileServer !== "" || tileDirectory !== "" || offlineDirectory !== ""
     readonly property var tracks: Session.tracks
     readonly property var systems: tracks ? tracks.systems : []
-    readonly property string followed: following ? Session.resolve(follow) : ""
+    // The system followed now: "" when not following or "$main" is not chosen yet.
+    readonly property string followed: following && !Session.resolve(follow).startsWith("$main") ? Session.resolve(follow) : ""
     property bool following: follow !== ""
     property bool measuring: false
     property var measurePoints: [] // up to two {lat, lon}

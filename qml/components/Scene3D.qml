@@ -26,7 +26,8 @@ Rectangle {
     readonly property var tracks: Session.tracks
     readonly property var systems: tracks ? tracks.systems : []
     property bool following: follow !== ""
-    readonly property string followed: following ? Session.resolve(follow) : ""
+    // The system followed now: "" when not following or "$main" is not chosen yet.
+    readonly property string followed: following && !Session.resolve(follow).startsWith("$main") ? Session.resolve(follow) : ""
     // The camera: a point it orbits, its distance, and angles in degrees.
     property vector3d target: Qt.vector3d(0, 0, 0)
     property real distance: 25

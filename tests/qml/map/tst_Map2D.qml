@@ -55,6 +55,8 @@ TestCase {
         compare(Fixtures.tracks.systems, ["alpha", "bravo"])
         tryCompare(map2d.home, "valid", true)
         fuzzyCompare(map2d.centerLatitude, homeLat, 1e-9, "the map opens at home")
+        compare(map2d.followed, "", "no main system yet: nothing is followed")
+        verify(!findChild(map2d, "followButton").highlighted, "and the follow button does not say it is")
         const alpha = marker("alpha"), bravo = marker("bravo")
         verify(alpha && bravo)
         const north500 = QtPositioning.coordinate(homeLat, homeLon).atDistanceAndAzimuth(500, 0)
