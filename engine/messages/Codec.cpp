@@ -431,17 +431,18 @@ uchar *putFields(uchar *p, const Message &message)
 }
 
 template<bool Swap>
-void encodePacket(const Schema &schema, const Message &message, qsizetype payloadSize, uchar *out)
+void encodePacket(const Schema &schema, const Message &message, const Message::Header &header, qsizetype payloadSize,
+                  uchar *out)
 {
     uchar *p = out;
     p = put<Swap>(p, schema.syncNumber());
     p = put<Swap>(p, message.id());
     p = put<Swap>(p, static_cast<quint16>(payloadSize));
-    p = put<Swap>(p, message.header.timestamp);
-    p = put<Swap>(p, message.header.src);
-    p = put<Swap>(p, message.header.srcEnt);
-    p = put<Swap>(p, message.header.dst);
-    p = put<Swap>(p, message.header.dstEnt);
+    p = put<Swap>(p, header.timestamp);
+    p = put<Swap>(p, header.src);
+    p = put<Swap>(p, header.srcEnt);
+    p = put<Swap>(p, header.dst);
+    p = put<Swap>(p, header.dstEnt);
     p = putFields<Swap>(p, message);
     put<Swap>(p, crc16(QByteArrayView(out, Codec::headerSize + payloadSize)));
 }
@@ -482,6 +483,12 @@ std::expected<Message, CodecError> Codec::decode(QByteArrayView packet) const
 
 std::expected<void, CodecError> Codec::encode(const Message &message, QByteArray &out, ByteOrder order) const
 {
+    return encode(message, message.header, out, order);
+}
+
+std::expected<void, CodecError> Codec::encode(const Message &message, const Message::Header &header, QByteArray &out,
+                                              ByteOrder order) const
+{
     SizeCounter counter(m_maxDepth);
     Frame root{nullptr, message.def(), -1, -1};
     const qsizetype payload = counter.payload(message, message.def() ? &root : nullptr, 0);
@@ -495,9 +502,9 @@ std::expected<void, CodecError> Codec::encode(const Message &message, QByteArray
     auto *bytes = reinterpret_cast<uchar *>(out.data());
     const bool swap = (order == ByteOrder::BigEndian) != (Q_BYTE_ORDER == Q_BIG_ENDIAN);
     if (swap)
-        encodePacket<true>(*m_schema, message, payload, bytes);
+        encodePacket<true>(*m_schema, message, header, payload, bytes);
     else
-        encodePacket<false>(*m_schema, message, payload, bytes);
+        encodePacket<false>(*m_schema, message, header, payload, bytes);
     return {};
 }
 

@@ -64,6 +64,10 @@ public:
     // and the schema; the rest of the header from message.header.
     std::expected<void, CodecError> encode(const Message &message, QByteArray &out,
                                            ByteOrder order = ByteOrder::LittleEndian) const;
+    // The same with another header (a sender stamping its own id and time
+    // on a message it forwards), without copying the message.
+    std::expected<void, CodecError> encode(const Message &message, const Message::Header &header, QByteArray &out,
+                                           ByteOrder order = ByteOrder::LittleEndian) const;
     std::expected<QByteArray, CodecError> encode(const Message &message,
                                                  ByteOrder order = ByteOrder::LittleEndian) const;
 

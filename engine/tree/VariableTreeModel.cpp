@@ -15,6 +15,9 @@ VariableTreeModel::VariableTreeModel(VariableTree *tree, QObject *parent)
 {
     m_knownChildren.assign(1, 0);
     m_frame.setInterval(16);
+    // A coarse timer may fire up to 5 % late: 0.8 ms more on a value's way
+    // to the screen, every time it happens to land on a late tick.
+    m_frame.setTimerType(Qt::PreciseTimer);
     connect(&m_frame, &QTimer::timeout, this, &VariableTreeModel::sync);
     m_frame.start();
     m_ageTimer.setInterval(1000);

@@ -1,7 +1,12 @@
 // DDS benchmarks of the Neptus-Qt envelope path, each beside ddsperf in the
-// same run on the same loopback configuration (dds/loopback.xml):
+// same run on the same loopback configuration (dds/loopback.xml), taking
+// turns with it several times so that both meet the same moods of the machine:
 //   1. round trip: a pong process (this program, --pong) echoes LogBookEntry
-//      envelopes; compared with `ddsperf ping` / `ddsperf pong`;
+//      envelopes; compared with `ddsperf ping` / `ddsperf pong`. ddsperf
+//      prints a percentile line a second, so ours is cut into one-second
+//      windows too; both report the median window. ddsperf prints HALF of
+//      each round trip (ddsperf.c, process_pong: (now - sent) / 2), so its
+//      figures are doubled here, and the run shows that they must be;
 //   2. throughput: a publisher process (--pub) writes as fast as it can, this
 //      process counts what arrives; compared with `ddsperf pub` / `ddsperf sub`;
 //   3. end to end: a publisher process (--paced) stamps LogBookEntry.htime
@@ -10,7 +15,7 @@
 //      visible in QML, frames included.
 // Both sides receive as the console does: on Cyclone's threads, straight
 // into a thread-safe consumer (DdsTransport::setDirectReceiver).
-// Run: tools/bench dds
+// Run: tools/bench dds [--only roundtrip|throughput|qml]
 #include "DdsTransport.h"
 #include "Schemas.h"
 #include "Variable.h"
@@ -33,16 +38,21 @@
 #include <condition_variable>
 #include <cstdio>
 #include <mutex>
+#include <utility>
 
 Q_IMPORT_QML_PLUGIN(Neptus_EnginePlugin)
 
 using namespace neptus;
+using Steady = std::chrono::steady_clock;
+using namespace std::chrono_literals;
 
 namespace {
 
 constexpr dds_domainid_t benchDomain = 9;
 constexpr quint16 pinger = 0x4001, ponger = 0x4002, publisher = 0x4003, pacer = 0x4004;
 constexpr int pacedSamples = 400;
+// Ours and ddsperf's take turns; round trips are short and noisy, so more of them.
+constexpr int roundTripTurns = 5, throughputTurns = 3;
 
 transport::DdsConfig configFor(quint16 system)
 {
@@ -77,6 +87,22 @@ Figures percentiles(std::vector<double> values)
     std::sort(values.begin(), values.end());
     return {values[values.size() / 2], values[values.size() * 99 / 100], static_cast<int>(values.size())};
 }
+
+double median(std::vector<double> values)
+{
+    return percentiles(std::move(values)).p50;
+}
+
+// Round-trip percentiles per one-second window, as ddsperf prints them.
+struct Windows
+{
+    std::vector<double> p50, p99;
+    void add(const Figures &f)
+    {
+        p50.push_back(f.p50);
+        p99.push_back(f.p99);
+    }
+};
 
 // Child processes. ------------------------------------------------------------
 
@@ -155,9 +181,10 @@ struct Receiver
     std::mutex mutex;
     std::condition_variable done;
     msg::Message ping;
-    int pingsLeft = 0;
-    std::chrono::steady_clock::time_point sent;
+    bool pinging = false;
+    Steady::time_point deadline, sent;
     std::vector<double> micros;
+    std::vector<Steady::time_point> arrived; // when each echo came back
 
     void operator()(const msg::Message &m)
     {
@@ -178,52 +205,77 @@ struct Receiver
 
     void echoed()
     {
-        const auto now = std::chrono::steady_clock::now();
+        const auto now = Steady::now();
         std::lock_guard lock(mutex);
-        if (pingsLeft <= 0)
+        if (!pinging)
             return;
         micros.push_back(std::chrono::duration<double, std::micro>(now - sent).count());
-        if (--pingsLeft == 0) {
+        arrived.push_back(now);
+        if (now >= deadline) {
+            pinging = false;
             done.notify_one();
             return;
         }
-        sent = std::chrono::steady_clock::now();
+        sent = Steady::now();
         dds->broadcast(ping);
     }
 
-    // Sends `rounds` pings one after the other; false if an echo stays away for a second.
-    bool pingPong(const msg::Message &message, int rounds)
+    // Pings one after the other until `duration` has passed (at least one
+    // round); false if an echo stays away for a second.
+    bool pingFor(const msg::Message &message, Steady::duration duration)
     {
         std::unique_lock lock(mutex);
         ping = message;
-        pingsLeft = rounds;
         micros.clear();
-        sent = std::chrono::steady_clock::now();
+        arrived.clear();
+        pinging = true;
+        sent = Steady::now();
+        deadline = sent + duration;
         dds->broadcast(ping);
         for (;;) {
             const std::size_t before = micros.size();
-            if (done.wait_for(lock, std::chrono::seconds(1), [&] { return pingsLeft == 0; }))
+            if (done.wait_for(lock, 1s, [&] { return !pinging; }))
                 return true;
             if (micros.size() == before) {
-                pingsLeft = 0;
+                pinging = false;
                 return false;
             }
         }
     }
+
+    // The round trips of the last pingFor, one-second window by window; a
+    // last, partial window is left out.
+    Windows windows() const
+    {
+        Windows w;
+        std::vector<double> window;
+        Steady::time_point start = arrived.empty() ? Steady::time_point() : arrived.front();
+        for (std::size_t i = 0; i < micros.size(); ++i) {
+            if (arrived[i] - start >= 1s) {
+                w.add(percentiles(window));
+                window.clear();
+                while (arrived[i] - start >= 1s)
+                    start += 1s;
+            }
+            window.push_back(micros[i]);
+        }
+        return w;
+    }
 };
 
-Figures roundTrip(Receiver &receiver, int packetBytes, int rounds)
+// Three one-second windows of round trips (and a little: the first window
+// starts at the first echo), after the pong has matched our writer and we its.
+Windows roundTrip(Receiver &receiver, int packetBytes)
 {
     const msg::Message entry = entryOfSize(packetBytes);
-    // Until the pong has matched our writer and we its.
     QElapsedTimer waited;
     waited.start();
     bool matched = false;
     while (!matched && waited.elapsed() < 15000)
-        matched = receiver.pingPong(entry, 1);
-    if (!matched || !receiver.pingPong(entry, rounds))
+        matched = receiver.pingFor(entry, 0s);
+    if (!matched || !receiver.pingFor(entry, 3100ms))
         return {};
-    return percentiles(receiver.micros);
+    return receiver.windows();
 }
 
 // Samples per second arriving from a --pub process, over 3 s once it streams.
@@ -256,25 +308,33 @@ void startDdsperf(QProcess &process, const QStringList &arguments)
     process.start(QStringLiteral("ddsperf"), QStringList{QStringLiteral("-i"), QStringLiteral("8")} + arguments);
 }
 
-Figures ddsperfRoundTrip(int packetBytes)
+// ddsperf's round trips, doubled: it prints half of each. `halfShare` gets,
+// per line, its printed mean times its round trips in that second: the share
+// of each second its printed figures account for. Pings go one after the
+// other, so about 1 means it prints whole round trips and under 0.5 halves.
+Windows ddsperfRoundTrip(int packetBytes, std::vector<double> &halfShare)
 {
     QProcess pongProcess, pingProcess;
-    startDdsperf(pongProcess, {QStringLiteral("-D"), QStringLiteral("8"), QStringLiteral("pong")});
+    startDdsperf(pongProcess, {QStringLiteral("-D"), QStringLiteral("10"), QStringLiteral("pong")});
     startDdsperf(pingProcess, {QStringLiteral("-D"), QStringLiteral("5"), QStringLiteral("-Qminmatch:1"), QStringLiteral("-Qinitwait:5"),
                                QStringLiteral("ping"), QStringLiteral("size"), QString::number(packetBytes)});
     pingProcess.waitForFinished(20000);
     pongProcess.kill();
     pongProcess.waitForFinished(5000);
     const QString output = QString::fromUtf8(pingProcess.readAllStandardOutput());
-    // "... size 64 mean 29.7us min 11.5us 50% 26.3us 90% 33.3us 99% 83.9us max ... cnt 16699": the last second's line.
-    static const QRegularExpression line(QStringLiteral(R"(50% ([\d.]+)us 90% [\d.]+us 99% ([\d.]+)us .* cnt (\d+))"));
-    Figures f;
-    auto it = line.globalMatch(output);
-    while (it.hasNext()) {
+    // "... size 64 mean 29.7us min 11.5us 50% 26.3us 90% 33.3us 99% 83.9us max ... cnt 16699", a line a second.
+    static const QRegularExpression line(
+        QStringLiteral(R"(mean ([\d.]+)us min [\d.]+us 50% ([\d.]+)us 90% [\d.]+us 99% ([\d.]+)us .* cnt (\d+))"));
+    Windows w;
+    bool first = true;
+    for (auto it = line.globalMatch(output); it.hasNext();) {
         const auto m = it.next();
-        f = {m.captured(1).toDouble(), m.captured(2).toDouble(), m.captured(3).toInt()};
+        if (std::exchange(first, false))
+            continue; // discovery and warm-up
+        w.add({2 * m.captured(2).toDouble(), 2 * m.captured(3).toDouble(), m.captured(4).toInt()});
+        halfShare.push_back(m.captured(1).toDouble() * m.captured(4).toDouble() / 1e6);
     }
-    return f;
+    return w;
 }
 
 // Samples per second `ddsperf sub` reports while `ddsperf pub` writes as fast
@@ -346,6 +406,7 @@ int main(int argc, char **argv)
         return publishFlat(args[2].toInt(), args[3].toInt());
     if (args.contains(QStringLiteral("--paced")))
         return publishPaced();
+    const QString only = args.size() == 3 && args[1] == QStringLiteral("--only") ? args[2] : QString();
 
     auto schema = test::shippedSchema();
     tree::VariableTree tree;
@@ -358,27 +419,54 @@ int main(int argc, char **argv)
     if (!dds.start())
         return 1;
 
-    std::printf("DDS on loopback (dds/loopback.xml); both sides receive on Cyclone's threads (direct receiver)\n\n");
-    std::printf("Round trip, p50 / p99 in microseconds\n");
-    std::printf("%-8s %-28s %-28s %s\n", "packet", "Neptus-Qt envelope", "ddsperf ping/pong", "ratio p50 / p99");
-    QProcess *echo = startChild({QStringLiteral("--pong")});
-    for (int size : {64, 1024}) {
-        const Figures a = roundTrip(receiver, size, 50000);
-        const Figures b = ddsperfRoundTrip(size);
-        std::printf("%-8d %7.1f / %7.1f (n=%5d)   %7.1f / %7.1f (n=%6d)   %.2fx / %.2fx\n", size, a.p50, a.p99, a.count,
-                    b.p50, b.p99, b.count, ratio(a.p50, b.p50), ratio(a.p99, b.p99));
-        std::fflush(stdout);
+    std::printf("DDS on loopback (dds/loopback.xml); both sides receive on Cyclone's threads (direct receiver);\n"
+                "ours and ddsperf take turns: %d times each for round trips, %d for throughput\n\n", roundTripTurns, throughputTurns);
+    if (only.isEmpty() || only == u"roundtrip") {
+        std::printf("Round trip in microseconds: median over one-second windows of each window's p50 and p99\n");
+        std::printf("%-7s %-30s %-30s %s\n", "packet", "Neptus-Qt envelope", "ddsperf ping/pong (doubled)", "ratio p50 / p99");
+        QProcess *echo = startChild({QStringLiteral("--pong")});
+        std::vector<double> halfShare;
+        for (int size : {64, 1024}) {
+            Windows ours, theirs;
+            for (int turn = 0; turn < roundTripTurns; ++turn) {
+                const Windows a = roundTrip(receiver, size);
+                ours.p50.insert(ours.p50.end(), a.p50.begin(), a.p50.end());
+                ours.p99.insert(ours.p99.end(), a.p99.begin(), a.p99.end());
+                const Windows b = ddsperfRoundTrip(size, halfShare);
+                theirs.p50.insert(theirs.p50.end(), b.p50.begin(), b.p50.end());
+                theirs.p99.insert(theirs.p99.end(), b.p99.begin(), b.p99.end());
+            }
+            const double a50 = median(ours.p50), a99 = median(ours.p99), b50 = median(theirs.p50), b99 = median(theirs.p99);
+            std::printf("%-7d %7.1f / %7.1f (%2zu windows)  %7.1f / %7.1f (%2zu windows)  %.2fx / %.2fx\n", size, a50, a99,
+                        ours.p50.size(), b50, b99, theirs.p50.size(), ratio(a50, b50), ratio(a99, b99));
+            const auto worst = [](const std::vector<double> &v) { return v.empty() ? 0.0 : *std::max_element(v.begin(), v.end()); };
+            std::printf("        worst window p99: %.1f                ddsperf %.1f\n", worst(ours.p99), worst(theirs.p99));
+            std::fflush(stdout);
+        }
+        stopChild(echo);
+        std::printf("ddsperf's printed mean x its round trips per second = %.2f s of each second (median of %zu lines):\n"
+                    "pings go one at a time, so it prints half of each round trip (whole ones would make about 1)\n",
+                    median(halfShare), halfShare.size());
     }
-    stopChild(echo);
 
-    std::printf("\nThroughput, samples/s received (publisher writing as fast as it can, reliable)\n");
-    std::printf("%-8s %-20s %-20s %s\n", "packet", "Neptus-Qt envelope", "ddsperf pub/sub", "ratio");
-    for (int size : {64, 1024}) {
-        const double a = throughput(receiver, size);
-        const double b = ddsperfThroughput(size);
-        std::printf("%-8d %10.0f           %10.0f           %.2fx\n", size, a, b, ratio(a, b));
-        std::fflush(stdout);
+    if (only.isEmpty() || only == u"throughput") {
+        std::printf("\nThroughput, samples/s received (publisher writing as fast as it can, reliable): median of %d turns\n", throughputTurns);
+        std::printf("%-7s %-20s %-20s %-7s %s\n", "packet", "Neptus-Qt envelope", "ddsperf pub/sub", "ratio", "turns (ours / ddsperf)");
+        for (int size : {64, 1024}) {
+            std::vector<double> ours, theirs;
+            QString each;
+            for (int turn = 0; turn < throughputTurns; ++turn) {
+                ours.push_back(throughput(receiver, size));
+                theirs.push_back(ddsperfThroughput(size));
+                each += QStringLiteral("%1/%2k ").arg(ours.back() / 1000, 0, 'f', 0).arg(theirs.back() / 1000, 0, 'f', 0);
+            }
+            std::printf("%-7d %10.0f           %10.0f           %.2fx   %s\n", size, median(ours), median(theirs),
+                        ratio(median(ours), median(theirs)), qPrintable(each));
+            std::fflush(stdout);
+        }
     }
+    if (!only.isEmpty() && only != u"qml")
+        return 0;
 
     std::printf("\nPublish -> QML Variable changed (tree ingest + frame sync every 16 ms), microseconds\n");
     QQmlEngine engine;

@@ -8,6 +8,8 @@
 #include <QMutexLocker>
 #include <QVarLengthArray>
 
+#include <array>
+
 namespace neptus::transport {
 
 DdsTransport::DdsTransport(std::shared_ptr<const msg::Schema> schema, DdsConfig config, QObject *parent)
@@ -142,23 +144,46 @@ dds_entity_t DdsTransport::topicFor(const QString &abbrev)
     return topic;
 }
 
+namespace {
+
+// Samples are taken into envelopes each Cyclone thread keeps, not into loans:
+// a packet's bytes land in the buffer the previous sample grew, so taking a
+// sample allocates nothing (a loan is freed and allocated again each time).
+struct TakeBuffers
+{
+    static constexpr int count = 16;
+    std::array<neptus_Envelope, count> envelopes{};
+    std::array<void *, count> samples{};
+    std::array<dds_sample_info_t, count> infos{};
+    TakeBuffers()
+    {
+        for (int i = 0; i < count; ++i)
+            samples[i] = &envelopes[i];
+    }
+    ~TakeBuffers()
+    {
+        for (auto &envelope : envelopes)
+            dds_sample_free(&envelope, &neptus_Envelope_desc, DDS_FREE_CONTENTS);
+    }
+};
+
+} // namespace
+
 void DdsTransport::onData(dds_entity_t reader, void *self)
 {
     auto *transport = static_cast<DdsTransport *>(self);
-    void *samples[16] = {};
-    dds_sample_info_t infos[16];
+    thread_local TakeBuffers buffers;
     for (;;) {
-        const dds_return_t n = dds_take(reader, samples, infos, 16, 16);
+        const dds_return_t n = dds_take(reader, buffers.samples.data(), buffers.infos.data(), TakeBuffers::count,
+                                        TakeBuffers::count);
         if (n <= 0)
             break;
         for (int i = 0; i < n; ++i) {
-            if (!infos[i].valid_data)
-                continue;
-            const auto *envelope = static_cast<const neptus_Envelope *>(samples[i]);
-            if (envelope->src == transport->m_config.systemId)
-                continue; // our own
+            const neptus_Envelope &envelope = buffers.envelopes[i];
+            if (!buffers.infos[i].valid_data || envelope.src == transport->m_config.systemId)
+                continue; // a disposal, or our own
             auto message = transport->m_codec.decode(
-                QByteArrayView(envelope->packet._buffer, static_cast<qsizetype>(envelope->packet._length)));
+                QByteArrayView(envelope.packet._buffer, static_cast<qsizetype>(envelope.packet._length)));
             if (!message)
                 continue;
             if (transport->m_direct) {
@@ -168,56 +193,52 @@ void DdsTransport::onData(dds_entity_t reader, void *self)
             QMetaObject::invokeMethod(transport, [transport, m = std::move(*message)] { emit transport->received(m); },
                                       Qt::QueuedConnection);
         }
-        dds_return_loan(reader, samples, n);
     }
 }
 
-dds_entity_t DdsTransport::writerFor(const QString &abbrev)
+dds_entity_t DdsTransport::writerFor(const msg::MessageDef &def)
 {
     if (m_participant <= 0)
         return 0;
-    const dds_entity_t topic = topicFor(abbrev);
+    {
+        QMutexLocker lock(&m_mutex);
+        if (const dds_entity_t writer = m_writers.value(def.id, 0))
+            return writer;
+    }
+    const dds_entity_t topic = topicFor(def.abbrev);
     QMutexLocker lock(&m_mutex);
-    dds_entity_t writer = m_writers.value(abbrev, 0);
+    dds_entity_t writer = m_writers.value(def.id, 0);
     if (writer == 0) {
-        dds_qos_t *qos = qosFor(abbrev);
+        dds_qos_t *qos = qosFor(def.abbrev);
         // Samples of a burst share datagrams; every send ends with a flush.
         dds_qset_writer_batching(qos, true);
         writer = dds_create_writer(m_participant, topic, qos, nullptr);
         dds_delete_qos(qos);
         if (writer < 0)
             return 0;
-        m_writers.insert(abbrev, writer);
+        m_writers.insert(def.id, writer);
     }
     return writer;
 }
 
-bool DdsTransport::write(dds_entity_t writer, const msg::Message &message)
+bool DdsTransport::write(dds_entity_t writer, const msg::Message &message, const msg::Message::Header &header)
 {
-    QByteArray packet;
-    if (!m_codec.encode(message, packet))
+    // Encoded into a buffer each thread keeps: sending allocates nothing.
+    thread_local QByteArray packet;
+    if (!m_codec.encode(message, header, packet))
         return false;
     neptus_Envelope envelope{};
-    envelope.src = message.header.src;
-    envelope.src_ent = message.header.srcEnt;
-    envelope.dst = message.header.dst;
-    envelope.dst_ent = message.header.dstEnt;
-    envelope.timestamp = message.header.timestamp;
+    envelope.src = header.src;
+    envelope.src_ent = header.srcEnt;
+    envelope.dst = header.dst;
+    envelope.dst_ent = header.dstEnt;
+    envelope.timestamp = header.timestamp;
     envelope.mgid = message.id();
     envelope.packet._buffer = reinterpret_cast<uint8_t *>(packet.data());
     envelope.packet._length = static_cast<uint32_t>(packet.size());
     envelope.packet._maximum = static_cast<uint32_t>(packet.size());
     envelope.packet._release = false;
     return dds_write(writer, &envelope) == DDS_RETCODE_OK;
-}
-
-msg::Message DdsTransport::own(const msg::Message &message) const
-{
-    msg::Message own = message;
-    own.header.src = m_config.systemId;
-    if (own.header.timestamp == 0)
-        own.header.timestamp = QDateTime::currentMSecsSinceEpoch() / 1000.0;
-    return own;
 }
 
 bool DdsTransport::broadcast(const msg::Message &message)
@@ -227,29 +248,39 @@ bool DdsTransport::broadcast(const msg::Message &message)
 
 bool DdsTransport::broadcast(std::span<const msg::Message> messages)
 {
+    const double now = QDateTime::currentMSecsSinceEpoch() / 1000.0;
     bool sent = true;
     QVarLengthArray<dds_entity_t, 8> used;
+    const msg::MessageDef *def = nullptr;
+    dds_entity_t writer = 0;
     for (const msg::Message &message : messages) {
-        const dds_entity_t writer = message.def() ? writerFor(message.abbrev()) : 0;
-        sent = writer > 0 && write(writer, own(message)) && sent;
-        if (writer > 0 && !used.contains(writer))
-            used.append(writer);
+        if (message.def() != def) { // a burst is mostly of one kind: look its writer up once
+            def = message.def();
+            writer = def ? writerFor(*def) : 0;
+            if (writer > 0 && !used.contains(writer))
+                used.append(writer);
+        }
+        msg::Message::Header header = message.header;
+        header.src = m_config.systemId;
+        if (header.timestamp == 0)
+            header.timestamp = now;
+        sent = writer > 0 && write(writer, message, header) && sent;
     }
-    for (dds_entity_t writer : used)
-        dds_write_flush(writer);
+    for (dds_entity_t w : used)
+        dds_write_flush(w);
     return sent;
 }
 
 bool DdsTransport::publish(quint16 system, const msg::Message &message)
 {
-    const dds_entity_t writer = message.def() ? writerFor(message.abbrev()) : 0;
+    const dds_entity_t writer = message.def() ? writerFor(*message.def()) : 0;
     if (writer <= 0)
         return false;
-    msg::Message addressed = message;
-    addressed.header.src = m_config.systemId;
-    addressed.header.dst = system;
-    addressed.header.timestamp = QDateTime::currentMSecsSinceEpoch() / 1000.0;
-    const bool sent = write(writer, addressed);
+    msg::Message::Header header = message.header;
+    header.src = m_config.systemId;
+    header.dst = system;
+    header.timestamp = QDateTime::currentMSecsSinceEpoch() / 1000.0;
+    const bool sent = write(writer, message, header);
     dds_write_flush(writer);
     return sent;
 }

@@ -75,20 +75,19 @@ private:
     // The QoS of a message's topic, the same for its readers and writers so they always match.
     dds_qos_t *qosFor(const QString &abbrev) const;
     // The writer of a message's topic, made on first use; 0 if it cannot be.
-    dds_entity_t writerFor(const QString &abbrev);
-    // Writes without sending: samples wait in the writer's batch until flushed.
-    bool write(dds_entity_t writer, const msg::Message &message);
-    msg::Message own(const msg::Message &message) const;
+    dds_entity_t writerFor(const msg::MessageDef &def);
+    // Writes `message` with `header` without sending: samples wait in the
+    // writer's batch until flushed.
+    bool write(dds_entity_t writer, const msg::Message &message, const msg::Message::Header &header);
 
     msg::Codec m_codec;
     DdsConfig m_config;
     dds_entity_t m_participant = 0;
     QMutex m_mutex;
     QHash<QString, dds_entity_t> m_topics;
-    QHash<QString, dds_entity_t> m_writers;
+    QHash<quint16, dds_entity_t> m_writers; // by message id
     dds_entity_t m_participantWriter = 0;
     QHash<quint16, QString> m_peerDigests;
-    QByteArray m_buffer;
     std::function<void(const msg::Message &)> m_direct;
 };
 

@@ -137,6 +137,39 @@ TEST(Codec, BigEndianSendersDecodeToTheSameValues)
     }
 }
 
+// A sender stamps its own header on a message it forwards without copying
+// it: the bytes are those of the message carrying that header, in both orders.
+TEST(Codec, AnotherHeaderGivesThePacketWithThatHeader)
+{
+    NEPTUS_REQUIRE_FIXTURE(path, "imc/vectors.txt");
+    ASSERT_TRUE(neptus::test::imcSchema());
+    const Codec codec(neptus::test::imcSchema());
+    const auto vectors = readVectors(path);
+    ASSERT_FALSE(vectors.empty());
+    for (const auto &v : vectors) {
+        auto decoded = codec.decode(v.bytes);
+        ASSERT_TRUE(decoded) << v.name.toStdString();
+        const Message::Header original = decoded->header;
+        const Message::Header other{1234.5, 0x4001, 7, 0x0022, 3};
+        ASSERT_FALSE(other == original) << v.name.toStdString();
+        Message restamped = *decoded;
+        restamped.header = other;
+        for (auto order : {Codec::ByteOrder::LittleEndian, Codec::ByteOrder::BigEndian}) {
+            QByteArray withOther;
+            ASSERT_TRUE(codec.encode(*decoded, other, withOther, order)) << v.name.toStdString();
+            EXPECT_EQ(withOther.toHex().toStdString(), codec.encode(restamped, order)->toHex().toStdString()) << v.name.toStdString();
+            auto back = codec.decode(withOther);
+            ASSERT_TRUE(back) << v.name.toStdString();
+            EXPECT_TRUE(back->header == other) << v.name.toStdString();
+        }
+        EXPECT_TRUE(decoded->header == original) << "the message itself is left alone";
+        // Its own header gives the other implementation's bytes.
+        QByteArray same;
+        ASSERT_TRUE(codec.encode(*decoded, original, same));
+        EXPECT_EQ(same.toHex().toStdString(), v.bytes.toHex().toStdString()) << v.name.toStdString();
+    }
+}
+
 TEST(Codec, DecodedValuesReadByIndexAndName)
 {
     NEPTUS_REQUIRE_FIXTURE(path, "imc/vectors.txt");

@@ -99,16 +99,21 @@ TEST(DdsTransport, ABurstArrivesWholeAndInOrder)
     atConsole.clear();
 
     // A reliable topic's burst, with another kind of message in between: all
-    // of it arrives once flushed, nothing left waiting in a batch.
-    std::vector<msg::Message> burst;
-    for (int i = 0; i < 30; ++i) {
+    // of it arrives once flushed, nothing left waiting in a batch. One text is
+    // long: the receiving side reuses its buffers, and the short ones after
+    // it must not come back with its tail.
+    auto entryWith = [&](int i) {
         msg::Message m(entry);
-        m.setBytes(entry->indexOf(u"text"), QByteArray::number(i));
-        burst.push_back(m);
-    }
+        m.setBytes(entry->indexOf(u"text"), i == 10 ? QByteArray(1500, 'x') + QByteArray::number(i) : QByteArray::number(i));
+        return m;
+    };
+    std::vector<msg::Message> burst;
+    for (int i = 0; i < 30; ++i)
+        burst.push_back(entryWith(i));
     burst.emplace_back(test::shippedSchema()->byAbbrev(u"Abort"));
+    burst.push_back(entryWith(30));
     ASSERT_TRUE(vehicle.broadcast(burst));
-    ASSERT_TRUE(QTest::qWaitFor([&] { return atConsole.count() == 31; }, 5000)) << atConsole.count();
+    ASSERT_TRUE(QTest::qWaitFor([&] { return atConsole.count() == 32; }, 5000)) << atConsole.count();
     QStringList texts;
     for (const auto &args : atConsole) {
         const auto m = args.at(0).value<msg::Message>();
@@ -116,7 +121,7 @@ TEST(DdsTransport, ABurstArrivesWholeAndInOrder)
             texts << m.text(entry->indexOf(u"text"));
     }
     QStringList expected;
-    for (int i = 0; i < 30; ++i)
-        expected << QString::number(i);
+    for (int i = 0; i <= 30; ++i)
+        expected << QString::fromLatin1(entryWith(i).bytes(entry->indexOf(u"text")));
     EXPECT_EQ(texts, expected);
 }
