@@ -52,7 +52,7 @@ std::expected<void, QString> DdsTransport::start()
         dds_delete_qos(qos);
         if (reader < 0) {
             dds_delete_listener(listener);
-            return std::unexpected(QStringLiteral("DDS: cannot read topic neptus_%1: %2")
+            return std::unexpected(QStringLiteral("DDS: cannot read topic neptus/%1: %2")
                                        .arg(def->abbrev, QString::fromUtf8(dds_strretcode(reader))));
         }
     }
@@ -64,7 +64,7 @@ std::expected<void, QString> DdsTransport::start()
     dds_qset_durability(lasting, DDS_DURABILITY_TRANSIENT_LOCAL);
     dds_qset_history(lasting, DDS_HISTORY_KEEP_LAST, 1);
     dds_qset_ignorelocal(lasting, DDS_IGNORELOCAL_PARTICIPANT);
-    const dds_entity_t topic = dds_create_topic(m_participant, &neptus_Participant_desc, "neptus_participant", nullptr, nullptr);
+    const dds_entity_t topic = dds_create_topic(m_participant, &neptus_Participant_desc, "neptus/participant", nullptr, nullptr);
     dds_listener_t *peers = dds_create_listener(this);
     dds_lset_data_available(peers, &DdsTransport::onParticipant);
     const dds_entity_t peerReader = dds_create_reader(m_participant, topic, lasting, peers);
@@ -138,7 +138,7 @@ dds_entity_t DdsTransport::topicFor(const QString &abbrev)
     const auto it = m_topics.constFind(abbrev);
     if (it != m_topics.cend())
         return *it;
-    const QByteArray name = "neptus_" + abbrev.toUtf8();
+    const QByteArray name = "neptus/" + abbrev.toUtf8();
     const dds_entity_t topic = dds_create_topic(m_participant, &neptus_Envelope_desc, name.constData(), nullptr, nullptr);
     m_topics.insert(abbrev, topic);
     return topic;

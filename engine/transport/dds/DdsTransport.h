@@ -34,7 +34,7 @@ struct DdsConfig
 };
 
 // Cyclone DDS between consoles and vehicles: every message of the schema on
-// its own topic ("neptus_<abbrev>"), carried as an IMC packet in a fixed
+// its own topic ("neptus/<abbrev>"), carried as an IMC packet in a fixed
 // envelope (Envelope.idl), reliable, keyed by the sender. Samples arrive on
 // Cyclone's threads and are handed to this object's thread as `received`.
 class DdsTransport : public QObject, public tree::VariableTree::OutputSink
