@@ -41,6 +41,16 @@ inline std::vector<Vector> readVectors(const QString &path)
     return vectors;
 }
 
+// The packet of the vector called `name` in imc/vectors.txt; empty if absent.
+inline QByteArray vectorNamed(const char *name)
+{
+    for (const auto &v : readVectors(fixturePath("imc/vectors.txt"))) {
+        if (v.name == QLatin1StringView(name))
+            return v.bytes;
+    }
+    return {};
+}
+
 } // namespace neptus::test
 
 // Skips the test, visibly and with the reason, when a fixture is missing.

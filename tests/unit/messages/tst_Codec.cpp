@@ -13,15 +13,6 @@ using neptus::test::readVectors;
 
 namespace {
 
-QByteArray vector(const char *name)
-{
-    for (const auto &v : readVectors(neptus::test::fixturePath("imc/vectors.txt"))) {
-        if (v.name == QLatin1StringView(name))
-            return v.bytes;
-    }
-    return {};
-}
-
 // Rewrites the CRC so that a deliberately damaged packet gets past the check.
 QByteArray withCrc(QByteArray packet)
 {
@@ -174,7 +165,7 @@ TEST(Codec, DecodedValuesReadByIndexAndName)
 {
     NEPTUS_REQUIRE_FIXTURE(path, "imc/vectors.txt");
     const Codec codec(neptus::test::imcSchema());
-    auto state = codec.decode(vector("EstimatedState"));
+    auto state = codec.decode(neptus::test::vectorNamed("EstimatedState"));
     ASSERT_TRUE(state);
     EXPECT_EQ(state->abbrev(), QStringLiteral("EstimatedState"));
     EXPECT_NEAR(state->number(u"lat"), 0.7188, 1e-3);
@@ -182,13 +173,13 @@ TEST(Codec, DecodedValuesReadByIndexAndName)
     EXPECT_EQ(state->header.src, state->header.src);
     EXPECT_GT(state->header.timestamp, 1.6e9);
 
-    auto entity = codec.decode(vector("EntityState"));
+    auto entity = codec.decode(neptus::test::vectorNamed("EntityState"));
     ASSERT_TRUE(entity);
     const int stateField = entity->def()->indexOf(u"state");
     EXPECT_EQ(entity->enumText(stateField), entity->field(stateField).enumeration->format(entity->integer(stateField)));
     EXPECT_EQ(entity->text(u"description"), QStringLiteral("battery low"));
 
-    auto announce = codec.decode(vector("Announce"));
+    auto announce = codec.decode(neptus::test::vectorNamed("Announce"));
     ASSERT_TRUE(announce);
     EXPECT_EQ(announce->text(u"sys_name"), QStringLiteral("lauv-xplore-1"));
     EXPECT_EQ(announce->enumText(announce->def()->indexOf(u"sys_type")), QStringLiteral("UUV"));
@@ -200,7 +191,7 @@ TEST(Codec, UnknownMessagesAreKeptWhole)
 {
     NEPTUS_REQUIRE_FIXTURE(path, "imc/vectors.txt");
     const Codec codec(neptus::test::imcSchema());
-    QByteArray packet = vector("Heartbeat");
+    QByteArray packet = neptus::test::vectorNamed("Heartbeat");
     packet.insert(20, QByteArray("\x01\x02\x03", 3));
     setU16(packet, 2, 999);  // an id IMC does not define
     setU16(packet, 4, 3);    // three payload bytes
@@ -220,8 +211,8 @@ TEST(Codec, EveryKindOfBadInputHasItsOwnError)
     NEPTUS_REQUIRE_FIXTURE(path, "imc/vectors.txt");
     const Codec codec(neptus::test::imcSchema());
     using Kind = CodecError::Kind;
-    const QByteArray heartbeat = vector("Heartbeat");
-    const QByteArray entityState = vector("EntityState");  // has a plaintext
+    const QByteArray heartbeat = neptus::test::vectorNamed("Heartbeat");
+    const QByteArray entityState = neptus::test::vectorNamed("EntityState");  // has a plaintext
     ASSERT_FALSE(heartbeat.isEmpty());
     ASSERT_FALSE(entityState.isEmpty());
 
@@ -278,7 +269,7 @@ TEST(Codec, NestedMessagesAreChecked)
     const Schema &schema = *neptus::test::imcSchema();
 
     // PlanControl.arg carrying a Goto is the vector "PlanControl+Goto".
-    QByteArray plan = vector("PlanControl+Goto");
+    QByteArray plan = neptus::test::vectorNamed("PlanControl+Goto");
     ASSERT_FALSE(plan.isEmpty());
     auto decoded = codec.decode(plan);
     ASSERT_TRUE(decoded) << decoded.error().toString().toStdString();

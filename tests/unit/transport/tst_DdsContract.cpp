@@ -24,15 +24,6 @@ namespace {
 
 constexpr dds_domainid_t domain = 11;
 
-QByteArray vector(const QString &path, const char *name)
-{
-    for (const auto &v : test::readVectors(path)) {
-        if (v.name == QLatin1StringView(name))
-            return v.bytes;
-    }
-    return {};
-}
-
 // The page's QoS table.
 dds_qos_t *telemetryQos()
 {
@@ -103,7 +94,7 @@ bool writeParticipant(dds_entity_t writer, quint16 system, const char *name, con
 TEST(DdsContract, AVehicleMadeFromThePageAloneIsShownAndCommanded)
 {
     NEPTUS_REQUIRE_FIXTURE(vectors, "imc/vectors.txt");
-    const QByteArray announce = vector(vectors, "Announce"), state = vector(vectors, "EstimatedState");
+    const QByteArray announce = test::vectorNamed("Announce"), state = test::vectorNamed("EstimatedState");
     ASSERT_FALSE(announce.isEmpty());
     ASSERT_FALSE(state.isEmpty());
     const quint16 vehicle = qFromLittleEndian<quint16>(announce.constData() + 14); // lauv-xplore-1, 0x00d1
