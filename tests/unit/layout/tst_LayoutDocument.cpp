@@ -328,27 +328,3 @@ TEST(LayoutDocumentDeathTest, ACrashMidSaveLeavesTheOldFileIntact)
     EXPECT_EQ(readFile(path), saved);
     EXPECT_TRUE(LayoutDocument::load(path));
 }
-
-TEST(LayoutDocument, FuzzCorpusAndRegressionsReadBackStably)
-{
-    // The same property fuzz_layout checks, on its seeds and on every input
-    // that once broke it (tests/fuzz/regressions/layout).
-    int files = 0;
-    for (const char *kind : {"corpus", "regressions"}) {
-        const QDir dir(QStringLiteral(NEPTUS_SOURCE_DIR "/tests/fuzz/%1/layout").arg(QLatin1StringView(kind)));
-        for (const QString &name : dir.entryList(QDir::Files)) {
-            QFile file(dir.filePath(name));
-            ASSERT_TRUE(file.open(QIODevice::ReadOnly));
-            ++files;
-            auto document = LayoutDocument::parse(QString::fromUtf8(file.readAll()));
-            if (!document)
-                continue;
-            const QString written = document->text();
-            EXPECT_EQ(parsed(written).text(), written) << name.toStdString();
-            const QString id = document->addComponent(u"Gauge"_s, u"Neptus.Components"_s, {{u"x"_s, 1}});
-            document->duplicate(id, 1, 1);
-            EXPECT_TRUE(LayoutDocument::parse(document->text())) << name.toStdString();
-        }
-    }
-    EXPECT_GE(files, 5);
-}
