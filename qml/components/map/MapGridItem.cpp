@@ -48,42 +48,6 @@ MapGridItem::MapGridItem(QQuickItem *parent)
 {
 }
 
-void MapGridItem::set(double &member, double value)
-{
-    if (member == value || !std::isfinite(value))
-        return;
-    member = value;
-    polish();
-    emit changed();
-}
-
-void MapGridItem::setKind(Kind kind)
-{
-    if (m_kind == kind)
-        return;
-    m_kind = kind;
-    polish();
-    emit changed();
-}
-
-void MapGridItem::setColor(const QColor &c)
-{
-    if (m_color == c)
-        return;
-    m_color = c;
-    update();
-    emit changed();
-}
-
-void MapGridItem::setAxisColor(const QColor &c)
-{
-    if (m_axisColor == c)
-        return;
-    m_axisColor = c;
-    update();
-    emit changed();
-}
-
 double MapGridItem::niceStep(double value)
 {
     const double p = std::pow(10, std::floor(std::log10(value)));

@@ -5,6 +5,7 @@
 #include <QColor>
 #include <QtQml/qqmlregistration.h>
 
+#include <cmath>
 #include <vector>
 
 // The grids over (or instead of) the map tiles, drawn by the scene graph:
@@ -33,12 +34,12 @@ public:
     explicit MapGridItem(QQuickItem *parent = nullptr);
 
     Kind kind() const { return m_kind; }
-    void setKind(Kind kind);
-    void setHomeLatitude(double v) { set(m_homeLat, v); }
-    void setHomeLongitude(double v) { set(m_homeLon, v); }
-    void setAxisWidth(double v) { set(m_axisWidth, v); }
-    void setColor(const QColor &c);
-    void setAxisColor(const QColor &c);
+    void setKind(Kind kind) { assign(m_kind, kind, Relayout); }
+    void setHomeLatitude(double v) { assignFinite(m_homeLat, v); }
+    void setHomeLongitude(double v) { assignFinite(m_homeLon, v); }
+    void setAxisWidth(double v) { assignFinite(m_axisWidth, v); }
+    void setColor(const QColor &c) { assign(m_color, c, Repaint); }
+    void setAxisColor(const QColor &c) { assign(m_axisColor, c, Repaint); }
     double step() const;
     int lineCount() const { return m_lineCount; }
     int axisCount() const { return m_axisCount; }
@@ -58,7 +59,25 @@ protected:
     void viewUpdated() override { polish(); }
 
 private:
-    void set(double &member, double value);
+    // A new value redraws the grid: Relayout works its lines out again first.
+    enum Redraw { Relayout, Repaint };
+    template <typename T>
+    void assign(T &member, const T &value, Redraw redraw)
+    {
+        if (member == value)
+            return;
+        member = value;
+        if (redraw == Relayout)
+            polish();
+        else
+            update();
+        emit changed();
+    }
+    void assignFinite(double &member, double value)
+    {
+        if (std::isfinite(value))
+            assign(member, value, Relayout);
+    }
 
     Kind m_kind = NorthEast;
     double m_homeLat = 0, m_homeLon = 0;
