@@ -102,6 +102,11 @@ struct Windows
         p50.push_back(f.p50);
         p99.push_back(f.p99);
     }
+    void add(const Windows &w)
+    {
+        p50.insert(p50.end(), w.p50.begin(), w.p50.end());
+        p99.insert(p99.end(), w.p99.begin(), w.p99.end());
+    }
 };
 
 // Child processes. ------------------------------------------------------------
@@ -429,12 +434,8 @@ int main(int argc, char **argv)
         for (int size : {64, 1024}) {
             Windows ours, theirs;
             for (int turn = 0; turn < roundTripTurns; ++turn) {
-                const Windows a = roundTrip(receiver, size);
-                ours.p50.insert(ours.p50.end(), a.p50.begin(), a.p50.end());
-                ours.p99.insert(ours.p99.end(), a.p99.begin(), a.p99.end());
-                const Windows b = ddsperfRoundTrip(size, halfShare);
-                theirs.p50.insert(theirs.p50.end(), b.p50.begin(), b.p50.end());
-                theirs.p99.insert(theirs.p99.end(), b.p99.begin(), b.p99.end());
+                ours.add(roundTrip(receiver, size));
+                theirs.add(ddsperfRoundTrip(size, halfShare));
             }
             const double a50 = median(ours.p50), a99 = median(ours.p99), b50 = median(theirs.p50), b99 = median(theirs.p99);
             std::printf("%-7d %7.1f / %7.1f (%2zu windows)  %7.1f / %7.1f (%2zu windows)  %.2fx / %.2fx\n", size, a50, a99,
