@@ -44,8 +44,32 @@ std::expected<CommandLine, QString> CommandLine::parse(const QStringList &argume
         QStringLiteral("Cyclone DDS domain id (default 0; -1 turns DDS off)."), QStringLiteral("id"));
     const QCommandLineOption ddsConfig(QStringLiteral("dds-config"),
         QStringLiteral("Cyclone DDS XML configuration (default: dds/loopback.xml, loopback only)."), QStringLiteral("file"));
-    parser.addOptions({console, screenshot, screenshotDelay, components, edit, select, system, palette, size, selfTest, imcPort, imcPeer, ddsDomain, ddsConfig});
-    if (!parser.parse(arguments))
+    const QCommandLineOption defs(QStringLiteral("defs"),
+        QStringLiteral("Message definition file to load instead of the shipped ones (repeatable)."), QStringLiteral("file"));
+    const QCommandLineOption defsFor(QStringLiteral("defs-for"),
+        QStringLiteral("Decode what SYSTEM (an IMC id like 0x00d1, or the name it announces) sends, and encode "
+                       "what goes to it, with the definitions in FILE (IMC.xml or IMC.xml.gz); also written "
+                       "--defs-for SYSTEM FILE (repeatable)."),
+        QStringLiteral("system=file"));
+    const QCommandLineOption imcDiscovery(QStringLiteral("imc-discovery"),
+        QStringLiteral("IMC discovery (announce to and listen on ports 30100-30104): on or off (default on)."),
+        QStringLiteral("on|off"));
+    const QCommandLineOption dumpTree(QStringLiteral("dump-tree"),
+        QStringLiteral("On exit, write every variable of the tree (path, value, unit) to this file."), QStringLiteral("file"));
+    const QCommandLineOption quitAfter(QStringLiteral("quit-after"),
+        QStringLiteral("Exit after this many milliseconds."), QStringLiteral("ms"));
+    parser.addOptions({console, screenshot, screenshotDelay, components, edit, select, system, palette, size, selfTest,
+                       imcPort, imcPeer, ddsDomain, ddsConfig, defs, defsFor, imcDiscovery, dumpTree, quitAfter});
+    // "--defs-for SYSTEM FILE" (two words, as the documentation writes it) is
+    // "--defs-for SYSTEM=FILE" to the parser, which takes one value per option.
+    QStringList words = arguments;
+    for (qsizetype i = 0; i + 2 < words.size(); ++i) {
+        if (words[i] == u"--defs-for" && !words[i + 1].contains(u'=') && !words[i + 2].startsWith(u'-')) {
+            words[i + 1] += u'=' + words[i + 2];
+            words.removeAt(i + 2);
+        }
+    }
+    if (!parser.parse(words))
         return std::unexpected(parser.errorText());
     if (parser.isSet(QStringLiteral("help")))
         return std::unexpected(parser.helpText());
@@ -111,6 +135,35 @@ std::expected<CommandLine, QString> CommandLine::parse(const QStringList &argume
         result.ddsConfig = QFileInfo(parser.value(ddsConfig)).absoluteFilePath();
         if (!QFileInfo(result.ddsConfig).isFile())
             return std::unexpected(QStringLiteral("DDS configuration '%1' does not exist").arg(result.ddsConfig));
+    }
+    for (const QString &file : parser.values(defs)) {
+        if (!QFileInfo(file).isFile())
+            return std::unexpected(QStringLiteral("--defs: '%1' does not exist").arg(file));
+        result.definitionFiles << QFileInfo(file).absoluteFilePath();
+    }
+    for (const QString &value : parser.values(defsFor)) {
+        const qsizetype equals = value.indexOf(u'=');
+        if (equals <= 0 || equals == value.size() - 1)
+            return std::unexpected(QStringLiteral("--defs-for must look like 0x00d1=IMC.xml or lauv-xplore-1=IMC.xml.gz, not '%1'")
+                                       .arg(value));
+        const QString file = value.mid(equals + 1);
+        if (!QFileInfo(file).isFile())
+            return std::unexpected(QStringLiteral("--defs-for: '%1' does not exist").arg(file));
+        result.definitionsFor.append({value.left(equals), QFileInfo(file).absoluteFilePath()});
+    }
+    if (parser.isSet(imcDiscovery)) {
+        const QString value = parser.value(imcDiscovery).toLower();
+        if (value != u"on" && value != u"off")
+            return std::unexpected(QStringLiteral("--imc-discovery must be on or off, not '%1'").arg(parser.value(imcDiscovery)));
+        result.imcDiscovery = value == u"on";
+    }
+    result.dumpTreeFile = parser.value(dumpTree);
+    if (parser.isSet(quitAfter)) {
+        bool ok = false;
+        result.quitAfterMs = parser.value(quitAfter).toInt(&ok);
+        if (!ok || result.quitAfterMs <= 0)
+            return std::unexpected(QStringLiteral("--quit-after must be a number of milliseconds, not '%1'")
+                                       .arg(parser.value(quitAfter)));
     }
     static const QRegularExpression peer(QStringLiteral("^[^:\\s]+:(\\d{1,5})$"));
     for (const QString &value : parser.values(imcPeer)) {

@@ -4,6 +4,8 @@
 #include <QStringList>
 #include <QSize>
 
+#include <utility>
+
 #include <expected>
 
 // What the `neptus` command line asks for, already checked.
@@ -18,8 +20,13 @@ struct CommandLine
     QString select;                     // with edit: the component selected
     QString system;                     // the console's main system ($main)
     QSize windowSize{1280, 800};
+    QStringList definitionFiles;        // --defs: instead of msgdefs/
+    QList<std::pair<QString, QString>> definitionsFor; // --defs-for SYSTEM=FILE
     quint16 imcPort = 6001;             // IMC over UDP, on 127.0.0.1
     QStringList imcPeers;               // static IMC destinations, "host:port"
+    bool imcDiscovery = true;           // announce to and listen on 30100-30104
+    QString dumpTreeFile;               // write the variable tree there on exit
+    int quitAfterMs = 0;                // run this long, then exit (0: until closed)
     int ddsDomain = 0;                  // -1: no DDS
     QString ddsConfig;                  // Cyclone XML; empty: dds/loopback.xml
     bool selfTest = false;

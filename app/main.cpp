@@ -4,11 +4,10 @@
 #include "ComponentPalette.h"
 #include "ConsoleCatalog.h"
 #include "ConsoleSession.h"
-#include "DdsTransport.h"
-#include "ImcUdpTransport.h"
 #include "SelfTest.h"
 
 #include <QDir>
+#include <QFile>
 #include <QGuiApplication>
 #include <QQmlApplicationEngine>
 #include <QQuickStyle>
@@ -58,50 +57,40 @@ int main(int argc, char *argv[])
     if (commandLine->selfTest)
         return runSelfTest(*commandLine);
 
-    auto schema = neptus::msg::Schema::load(neptus::msg::Schema::filesIn(QStringLiteral(NEPTUS_MSGDEFS_DIR)));
+    const QStringList definitionFiles = commandLine->definitionFiles.isEmpty()
+        ? neptus::msg::Schema::filesIn(QStringLiteral(NEPTUS_MSGDEFS_DIR))
+        : commandLine->definitionFiles;
+    auto schema = neptus::msg::Schema::load(definitionFiles);
     if (!schema) {
         std::fprintf(stderr, "neptus: %s\n", qPrintable(schema.error().toString()));
         return 1;
     }
     ConsoleSession session(*schema);
+    for (const auto &[system, file] : commandLine->definitionsFor) {
+        if (auto set = session.setDefinitionsFor(system, file); !set) {
+            std::fprintf(stderr, "neptus: %s\n", qPrintable(set.error()));
+            return 1;
+        }
+    }
 
     // IMC over UDP, on loopback unless a vehicle elsewhere is named.
-    std::unique_ptr<neptus::transport::ImcUdpTransport> imc;
     if (commandLine->imcPort != 0) {
         neptus::transport::ImcUdpConfig config;
         config.port = commandLine->imcPort;
+        config.discovery = commandLine->imcDiscovery;
         for (const QString &peer : commandLine->imcPeers) {
             const qsizetype colon = peer.lastIndexOf(u':');
             config.destinations.append({QHostAddress(peer.left(colon)), static_cast<quint16>(peer.mid(colon + 1).toUInt())});
         }
-        imc = std::make_unique<neptus::transport::ImcUdpTransport>(*schema, config);
-        if (auto started = imc->start(); !started) {
+        if (auto started = session.startImc(config); !started)
             std::fprintf(stderr, "neptus: %s; carrying on without IMC\n", qPrintable(started.error()));
-            imc.reset();
-        } else {
-            QObject::connect(imc.get(), &neptus::transport::ImcUdpTransport::received, &session,
-                             [&session](const neptus::msg::Message &m) { session.ingest(m, QStringLiteral("IMC/UDP")); });
-            session.addLink(QStringLiteral("IMC/UDP"), imc.get());
-        }
     }
 
     // Cyclone DDS on the loopback configuration unless told otherwise.
-    std::unique_ptr<neptus::transport::DdsTransport> dds;
     if (commandLine->ddsDomain >= 0) {
-        dds = std::make_unique<neptus::transport::DdsTransport>(
-            *schema, neptus::transport::DdsConfig{static_cast<dds_domainid_t>(commandLine->ddsDomain), commandLine->ddsConfig});
-        // Straight into the session from Cyclone's threads: the tree and alarms are thread-safe.
-        dds->setDirectReceiver([&session](const neptus::msg::Message &m) { session.ingest(m, QStringLiteral("DDS")); });
-        if (auto started = dds->start(); !started) {
+        const neptus::transport::DdsConfig config{static_cast<dds_domainid_t>(commandLine->ddsDomain), commandLine->ddsConfig};
+        if (auto started = session.startDds(config); !started)
             std::fprintf(stderr, "neptus: %s; carrying on without DDS\n", qPrintable(started.error()));
-            dds.reset();
-        } else {
-            session.addLink(QStringLiteral("DDS"), dds.get());
-            QObject::connect(dds.get(), &neptus::transport::DdsTransport::definitionsDiffer, &session,
-                             [&session](quint16 system, const QString &, const QString &theirs, const QString &ours) {
-                                 session.definitionsDiffer(system, theirs, ours);
-                             });
-        }
     }
 
     // Components from --components, then the user's own and the system's
@@ -140,5 +129,16 @@ int main(int argc, char *argv[])
             });
         }, Qt::SingleShotConnection);
     }
-    return QCoreApplication::exec();
+    if (commandLine->quitAfterMs > 0)
+        QTimer::singleShot(commandLine->quitAfterMs, &app, [] { QCoreApplication::exit(0); });
+    const int status = QCoreApplication::exec();
+    if (!commandLine->dumpTreeFile.isEmpty()) {
+        QFile dump(commandLine->dumpTreeFile);
+        if (!dump.open(QIODevice::WriteOnly | QIODevice::Truncate) || dump.write(session.dumpTree().toUtf8()) < 0) {
+            std::fprintf(stderr, "neptus: could not write the tree to '%s': %s\n",
+                         qPrintable(commandLine->dumpTreeFile), qPrintable(dump.errorString()));
+            return status == 0 ? 1 : status;
+        }
+    }
+    return status;
 }

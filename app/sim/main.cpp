@@ -1,6 +1,8 @@
 // neptus-sim: one simulated vehicle speaking IMC over UDP on loopback, as a
 // DUNE vehicle does: it streams to the consoles it hears a Heartbeat from,
-// announces itself, and prints every command addressed to it. Faults and a
+// announces itself, answers EntityList and EntityInfo queries, and prints
+// every command addressed to it. With --like-dune it is as strict as a stock
+// DUNE vehicle (IMC discovery only, unknown senders ignored). Faults and a
 // communications drop can be switched on from the command line.
 #include "Codec.h"
 #include "DdsTransport.h"
@@ -12,6 +14,8 @@
 #include <QElapsedTimer>
 #include <QHash>
 #include <QNetworkDatagram>
+#include <QRegularExpression>
+#include <QSet>
 #include <QTimer>
 #include <QUdpSocket>
 
@@ -20,6 +24,15 @@
 using namespace neptus;
 
 namespace {
+
+// IMC's discovery ports on loopback.
+QList<std::pair<QHostAddress, quint16>> imcDiscoveryPorts()
+{
+    QList<std::pair<QHostAddress, quint16>> ports;
+    for (quint16 port = 30100; port <= 30104; ++port)
+        ports.append({QHostAddress::LocalHost, port});
+    return ports;
+}
 
 int usage(const QString &why)
 {
@@ -50,7 +63,11 @@ int main(int argc, char *argv[])
     const QCommandLineOption defs(QStringLiteral("defs"), QStringLiteral("Message definition file (repeatable; default msgdefs/)."), QStringLiteral("file"));
     const QCommandLineOption dds(QStringLiteral("dds"), QStringLiteral("Also publish over Cyclone DDS (loopback configuration)."));
     const QCommandLineOption domain(QStringLiteral("dds-domain"), QStringLiteral("DDS domain id (default 0)."), QStringLiteral("id"), QStringLiteral("0"));
-    parser.addOptions({id, name, kind, port, console, announcePort, phase, fault, drop, defs, dds, domain});
+    const QCommandLineOption dune(QStringLiteral("like-dune"),
+        QStringLiteral("Behave as a stock DUNE vehicle: announce only to the IMC discovery ports (127.0.0.1:30100-30104) "
+                       "and listen there, take messages only from systems that announced themselves, stream to those "
+                       "heard from in the last 30 s, send the EntityList only when asked."));
+    parser.addOptions({id, name, kind, port, console, announcePort, phase, fault, drop, defs, dds, domain, dune});
     if (!parser.parse(QCoreApplication::arguments()))
         return usage(parser.errorText());
     if (parser.isSet(QStringLiteral("help")))
@@ -105,6 +122,8 @@ int main(int argc, char *argv[])
     if (parser.isSet(announcePort))
         announceTo.append({QHostAddress::LocalHost, static_cast<quint16>(parser.value(announcePort).toUInt())});
 
+    const bool likeDune = parser.isSet(dune);
+    config.periodicEntityList = !likeDune;
     sim::SimulatedVehicle vehicle(*schema, config);
     vehicle.setFaults(faults);
     const msg::Codec codec(*schema);
@@ -113,34 +132,97 @@ int main(int argc, char *argv[])
         std::fprintf(stderr, "neptus-sim: cannot listen on 127.0.0.1:%u: %s\n", portValue, qPrintable(socket.errorString()));
         return 1;
     }
+    // Like DUNE: listen for announcements on the first free IMC discovery
+    // port and announce to all of them.
+    QUdpSocket discovery;
+    if (likeDune) {
+        for (const auto &[address, to] : imcDiscoveryPorts()) {
+            if (discovery.bind(address, to))
+                break;
+            discovery.close();
+        }
+        if (discovery.state() != QAbstractSocket::BoundState) {
+            std::fprintf(stderr, "neptus-sim: no IMC discovery port (30100-30104) is free on 127.0.0.1\n");
+            return 1;
+        }
+        announceTo = imcDiscoveryPorts();
+    }
     std::printf("neptus-sim: %s (id 0x%04x) on 127.0.0.1:%u\n", qPrintable(config.name), config.id, portValue);
     std::fflush(stdout);
 
-    // Consoles heard from, and when: a vehicle streams to them for 5 s after each Heartbeat.
-    QHash<QPair<QString, quint16>, qint64> consoles;
     QElapsedTimer clock;
     clock.start();
-    QObject::connect(&socket, &QUdpSocket::readyRead, [&] {
-        while (socket.hasPendingDatagrams()) {
-            const QNetworkDatagram datagram = socket.receiveDatagram();
-            auto message = codec.decode(datagram.data());
-            if (!message)
-                continue;
-            if (message->abbrev() == u"Heartbeat") {
-                const QPair<QString, quint16> from{datagram.senderAddress().toString(), static_cast<quint16>(datagram.senderPort())};
-                if (!consoles.contains(from)) { // a new console: say who we are at once
-                    QByteArray packet;
-                    for (const msg::Message &m : vehicle.introduction(QDateTime::currentMSecsSinceEpoch() / 1000.0)) {
-                        if (codec.encode(m, packet))
-                            socket.writeDatagram(packet, datagram.senderAddress(), datagram.senderPort());
-                    }
+    const auto wallTime = [] { return QDateTime::currentMSecsSinceEpoch() / 1000.0; };
+    const auto sendTo = [&](const msg::Message &m, const QHostAddress &address, quint16 to) {
+        QByteArray packet;
+        if (codec.encode(m, packet))
+            socket.writeDatagram(packet, address, to);
+    };
+    // Plain mode: consoles heard from, and when: it streams to them for 5 s after each Heartbeat.
+    QHash<QPair<QString, quint16>, qint64> consoles;
+    // Like DUNE: systems that announced an imc+udp service, and when they were
+    // last heard; it streams to those heard in the last 30 s and ignores the rest.
+    struct Peer
+    {
+        QHostAddress address;
+        quint16 port = 0;
+        qint64 heardMs = -1;
+    };
+    QHash<quint16, Peer> peers;
+    QSet<quint16> ignored;
+    const auto handle = [&](const QNetworkDatagram &datagram) {
+        auto message = codec.decode(datagram.data());
+        if (!message)
+            return;
+        const quint16 from = message->header.src;
+        if (from == config.id)
+            return; // our own Announce on the discovery ports
+        if (likeDune) {
+            if (message->abbrev() == u"Announce") {
+                static const QRegularExpression service(QStringLiteral(R"(imc\+udp://([^:/;]+):(\d+))"));
+                const auto match = service.match(message->text(u"services"));
+                if (match.hasMatch()) {
+                    Peer &peer = peers[from];
+                    peer.address = QHostAddress(match.captured(1));
+                    peer.port = static_cast<quint16>(match.captured(2).toUInt());
                 }
-                consoles[from] = clock.elapsed();
-            } else if (message->header.dst == config.id && message->abbrev() != u"Announce") {
-                std::printf("neptus-sim: received %s from 0x%04x\n", qPrintable(message->abbrev()), message->header.src);
-                std::fflush(stdout);
+                return;
             }
+            if (!peers.contains(from)) {
+                if (!ignored.contains(from)) {
+                    ignored.insert(from);
+                    std::printf("neptus-sim: ignoring 0x%04x: it has not announced itself\n", from);
+                    std::fflush(stdout);
+                }
+                return;
+            }
+            peers[from].heardMs = clock.elapsed();
+        } else if (message->abbrev() == u"Heartbeat") {
+            const QPair<QString, quint16> console{datagram.senderAddress().toString(), static_cast<quint16>(datagram.senderPort())};
+            if (!consoles.contains(console)) { // a new console: say who we are at once
+                for (const msg::Message &m : vehicle.introduction(wallTime()))
+                    sendTo(m, datagram.senderAddress(), static_cast<quint16>(datagram.senderPort()));
+            }
+            consoles[console] = clock.elapsed();
         }
+        if (message->header.dst == config.id && message->abbrev() != u"Announce" && message->abbrev() != u"Heartbeat") {
+            std::printf("neptus-sim: received %s from 0x%04x\n", qPrintable(message->abbrev()), from);
+            std::fflush(stdout);
+        }
+        for (const msg::Message &reply : vehicle.answer(*message, wallTime())) {
+            if (likeDune)
+                sendTo(reply, peers[from].address, peers[from].port);
+            else
+                sendTo(reply, datagram.senderAddress(), static_cast<quint16>(datagram.senderPort()));
+        }
+    };
+    QObject::connect(&socket, &QUdpSocket::readyRead, [&] {
+        while (socket.hasPendingDatagrams())
+            handle(socket.receiveDatagram());
+    });
+    QObject::connect(&discovery, &QUdpSocket::readyRead, [&] {
+        while (discovery.hasPendingDatagrams())
+            handle(discovery.receiveDatagram());
     });
     // Over DDS there is no heartbeat handshake: publish to whoever subscribes.
     std::unique_ptr<transport::DdsTransport> ddsLink;
@@ -156,6 +238,8 @@ int main(int argc, char *argv[])
                 std::printf("neptus-sim: received %s from 0x%04x over DDS\n", qPrintable(m.abbrev()), m.header.src);
                 std::fflush(stdout);
             }
+            for (const msg::Message &reply : vehicle.answer(m, wallTime()))
+                ddsLink->publish(m.header.src, reply);
         });
     }
     double previous = -1;
@@ -176,6 +260,10 @@ int main(int argc, char *argv[])
             for (auto it = consoles.cbegin(); it != consoles.cend(); ++it) {
                 if (clock.elapsed() - it.value() < 5000)
                     socket.writeDatagram(buffer, QHostAddress(it.key().first), it.key().second);
+            }
+            for (const Peer &peer : std::as_const(peers)) {
+                if (peer.heardMs >= 0 && clock.elapsed() - peer.heardMs < 30000)
+                    socket.writeDatagram(buffer, peer.address, peer.port);
             }
             if (m.abbrev() == u"Announce") {
                 for (const auto &[address, to] : announceTo)

@@ -58,31 +58,60 @@ void HealthMonitor::observe(const msg::Message &message)
         m_graph.clear(system.node);
     }
     if (message.def() && message.def()->abbrev == u"EntityState") {
-        const QString entity = m_tree.entityLabel(message.header.src, message.header.srcEnt);
-        const AlarmGraph::NodeId node = m_graph.ensure(QStringLiteral("systems/%1/%2").arg(system.name, entity));
-        m_graph.raise(node, levelOfEntityState(message.integer(u"state")), message.text(u"description"));
+        Entity &entity = entityLocked(system, message.header.src, message.header.srcEnt);
+        m_graph.raise(entity.node, levelOfEntityState(message.integer(u"state")), message.text(u"description"));
     }
+}
+
+HealthMonitor::Entity &HealthMonitor::entityLocked(System &system, quint16 id, quint8 number)
+{
+    Entity &entity = system.entities[number];
+    const QString label = m_tree.entityLabel(id, number);
+    if (entity.node == AlarmGraph::noNode) {
+        entity.node = m_graph.ensure(QStringLiteral("systems/%1/%2").arg(system.name, label));
+        entity.label = label;
+    } else if (entity.label != label) {
+        // Named by a late EntityList or EntityInfo: the alarm keeps its place and level.
+        entity.label = label;
+        m_graph.rename(entity.node, label);
+    }
+    return entity;
+}
+
+QString HealthMonitor::silenceText(double ms)
+{
+    const qint64 seconds = static_cast<qint64>(ms / 1000.0);
+    if (seconds < 60)
+        return QStringLiteral("%1 s").arg(seconds);
+    if (seconds < 3600)
+        return QStringLiteral("%1 min %2 s").arg(seconds / 60).arg(seconds % 60, 2, 10, QLatin1Char('0'));
+    return QStringLiteral("%1 h %2 min").arg(seconds / 3600).arg((seconds % 3600) / 60, 2, 10, QLatin1Char('0'));
 }
 
 void HealthMonitor::check()
 {
     const qint64 now = m_clock->now().toMSecsSinceEpoch();
     QMutexLocker lock(&m_mutex);
-    for (System &system : m_systems) {
+    for (auto it = m_systems.begin(); it != m_systems.end(); ++it) {
+        System &system = *it;
         if (system.lastMs == 0)
             continue;
+        systemLocked(it.key()); // follows a rename
+        for (auto entity = system.entities.begin(); entity != system.entities.end(); ++entity)
+            entityLocked(system, it.key(), entity.key());
         const double silent = static_cast<double>(now - system.lastMs);
         // A system heard once has no interval yet: assume IMC's 1 s heartbeat.
         const double limit = (system.intervalMs < 0 ? 1000.0 : system.intervalMs) + m_timeoutMs;
         const Level level = silent > 3 * limit ? Error : silent > limit ? Warning : Normal;
-        if (level == system.lost)
+        if (level == Normal) {
+            if (system.lost != Normal)
+                m_graph.clear(system.node);
+            system.lost = Normal;
             continue;
+        }
+        // The text follows the silence as it grows (once a second at most).
         system.lost = level;
-        if (level == Normal)
-            m_graph.clear(system.node);
-        else
-            m_graph.raise(system.node, level,
-                          QStringLiteral("communications lost: nothing heard for %1 s").arg(silent / 1000.0, 0, 'f', 1));
+        m_graph.raise(system.node, level, QStringLiteral("communications lost: nothing heard for ") + silenceText(silent));
     }
 }
 

@@ -15,7 +15,9 @@ namespace neptus::alarms {
 //    FAILURE → Failure) with the entity's description as the message;
 //  - a system silent for longer than its usual interval plus the comms
 //    timeout (default 2 s) gets Warning "communications lost" on its node,
-//    Error after three times that; both clear when traffic returns.
+//    Error after three times that, with the silence so far in the text
+//    (updated as it grows); both clear when traffic returns.
+//  - entity alarms are renamed in place when the entity's label is learned.
 // Names come from the variable tree (Announce, EntityList, configuration).
 class HealthMonitor
 {
@@ -31,6 +33,11 @@ public:
     static Level levelOfEntityState(qint64 state);
 
 private:
+    struct Entity
+    {
+        AlarmGraph::NodeId node = AlarmGraph::noNode;
+        QString label;
+    };
     struct System
     {
         AlarmGraph::NodeId node = AlarmGraph::noNode;
@@ -38,9 +45,13 @@ private:
         qint64 lastMs = 0;
         double intervalMs = -1;   // running average between messages; -1 until two were heard
         Level lost = Normal;
+        QHash<quint8, Entity> entities; // those that reported an EntityState
     };
 
     System &systemLocked(quint16 id);
+    Entity &entityLocked(System &system, quint16 id, quint8 entity);
+    // "12 s", "3 min 05 s", "2 h 10 min": how long a system has been silent.
+    static QString silenceText(double ms);
 
     AlarmGraph &m_graph;
     const tree::VariableTree &m_tree;

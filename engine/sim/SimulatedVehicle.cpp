@@ -100,10 +100,55 @@ std::vector<msg::Message> SimulatedVehicle::step(double previous, double t, doub
         }
     }
     if (due(previous, t, 10.0)) {
-        for (msg::Message &m : introduction(wallTime))
-            out.push_back(std::move(m));
+        for (msg::Message &m : introduction(wallTime)) {
+            if (m_config.periodicEntityList || m.abbrev() != u"EntityList")
+                out.push_back(std::move(m));
+        }
     }
     return out;
+}
+
+std::vector<msg::Message> SimulatedVehicle::answer(const msg::Message &request, double wallTime) const
+{
+    std::vector<msg::Message> out;
+    if (!request.def() || request.header.dst != m_config.id)
+        return out;
+    const auto reply = [&](msg::Message m) {
+        m.header.dst = request.header.src;
+        m.header.dstEnt = request.header.srcEnt;
+        out.push_back(std::move(m));
+    };
+    if (request.def()->abbrev == u"EntityList" && request.integer(u"op") == 1) { // QUERY
+        msg::Message list = make("EntityList", wallTime);
+        list.setInteger(list.def()->indexOf(u"op"), 0); // REPORT
+        list.setBytes(list.def()->indexOf(u"list"), entityList());
+        reply(std::move(list));
+    } else if (request.def()->abbrev == u"QueryEntityInfo") {
+        const qint64 id = request.integer(u"id");
+        for (const auto &[number, label] : entities()) {
+            if (number != id)
+                continue;
+            msg::Message info = make("EntityInfo", wallTime);
+            info.setInteger(info.def()->indexOf(u"id"), number);
+            info.setBytes(info.def()->indexOf(u"label"), label);
+            info.setBytes(info.def()->indexOf(u"component"), QByteArrayLiteral("Simulators.") + label);
+            reply(std::move(info));
+        }
+    }
+    return out;
+}
+
+std::vector<std::pair<quint8, QByteArray>> SimulatedVehicle::entities()
+{
+    return {{navigationEntity, "Navigation"}, {motorEntity, "Motor"}, {batteryEntity, "Batteries"}};
+}
+
+QByteArray SimulatedVehicle::entityList()
+{
+    QByteArrayList pairs;
+    for (const auto &[number, label] : entities())
+        pairs.append(label + '=' + QByteArray::number(number));
+    return pairs.join(';');
 }
 
 std::vector<msg::Message> SimulatedVehicle::introduction(double wallTime) const
@@ -122,7 +167,7 @@ std::vector<msg::Message> SimulatedVehicle::introduction(double wallTime) const
         out.push_back(std::move(announce));
         msg::Message list = make("EntityList", wallTime);
         list.setInteger(list.def()->indexOf(u"op"), 0); // REPORT
-        list.setBytes(list.def()->indexOf(u"list"), "Navigation=1;Motor=2;Batteries=3");
+        list.setBytes(list.def()->indexOf(u"list"), entityList());
         out.push_back(std::move(list));
     }
     return out;

@@ -31,6 +31,9 @@ public:
         double speedMps = 1.5;
         double phase = 0;         // where on the circle it starts, radians
         QString services;         // e.g. "imc+udp://127.0.0.1:6002/"
+        // Send the EntityList every 10 s with the Announce (a DUNE vehicle
+        // sends it only when asked: answer() does that).
+        bool periodicEntityList = true;
     };
     enum Fault { None = 0, BatteryLow = 1, MotorJammed = 2 };
 
@@ -49,11 +52,19 @@ public:
     // once to a console that appears.
     std::vector<msg::Message> introduction(double wallTime) const;
 
+    // The replies a DUNE vehicle gives to a request addressed to it: an
+    // EntityList for an EntityList query, an EntityInfo for a
+    // QueryEntityInfo; none for anything else.
+    std::vector<msg::Message> answer(const msg::Message &request, double wallTime) const;
+
     // Position on the track at time t: north and east offsets (m) and heading (rad).
     struct Pose { double x, y, z, psi; };
     Pose pose(double t) const;
 
 private:
+    // The entities it has, by number and label.
+    static std::vector<std::pair<quint8, QByteArray>> entities();
+    static QByteArray entityList(); // "Navigation=1;Motor=2;Batteries=3"
     msg::Message make(const char *abbrev, double wallTime, quint8 entity = 0) const;
 
     std::shared_ptr<const msg::Schema> m_schema;

@@ -32,12 +32,20 @@ struct VariableTree::Binding
 {
     quint16 system = 0xFFFF;
     quint8 entity = 0xFF;
-    const MessageDef *def = nullptr;
-    quint16 opaqueId = 0;
+    bool perEntity = false;
+    quint16 id = 0;                  // the message id, also for a type the definitions lack
+    const MessageDef *def = nullptr; // null for such a type: the message is kept opaque
     NodeId branch = noNode;
     Message latest;
     bool present = false;
     qint64 receivedMs = 0;
+    quint64 count = 0;
+    // Messages per second, measured over windows of at least a second.
+    double rate = 0;
+    qint64 windowStartMs = 0;
+    quint32 windowCount = 0;
+    // For a system-wide branch: the entities it was heard from, in order.
+    std::vector<quint8> entities;
     std::vector<NodeId> nodes; // the branch and everything under it
     quint32 dirty = 0;         // one bit per consumer that has not seen the last change
 };
@@ -55,6 +63,17 @@ struct VariableTree::SystemInfo
 };
 
 namespace {
+
+// A name a peer gives (a system's, an entity's) as a path element: '/'
+// separates paths and control characters are not for display.
+QString pathSafe(QString name)
+{
+    for (QChar &c : name) {
+        if (c == u'/' || c.category() == QChar::Other_Control)
+            c = u'_';
+    }
+    return name;
+}
 
 QString defaultSystemName(quint16 id)
 {
@@ -135,6 +154,28 @@ NodeId VariableTree::childNamed(NodeId parent, QStringView name) const
     return noNode;
 }
 
+NodeId VariableTree::resolveChildLocked(NodeId parent, QStringView name) const
+{
+    const NodeId found = childNamed(parent, name);
+    const Node &p = m_nodes[static_cast<size_t>(parent)];
+    if (found != noNode || p.kind != Kind::System)
+        return found;
+    const qsizetype at = name.indexOf(u'@'); // an abbrev has none; a label may
+    if (at <= 0)
+        return noNode;
+    const NodeId whole = childNamed(parent, name.left(at));
+    if (whole == noNode || m_nodes[static_cast<size_t>(whole)].binding < 0)
+        return noNode;
+    const Binding &b = *m_bindings[static_cast<size_t>(m_nodes[static_cast<size_t>(whole)].binding)];
+    if (b.perEntity || b.entities.size() != 1)
+        return noNode;
+    const auto system = m_systemIndex.constFind(b.system);
+    if (system == m_systemIndex.cend())
+        return noNode;
+    return entityName(*m_systems[static_cast<size_t>(*system)], b.entities.front()) == name.mid(at + 1) ? whole
+                                                                                                       : noNode;
+}
+
 void VariableTree::renameLocked(NodeId node, const QString &name)
 {
     Node &n = m_nodes[static_cast<size_t>(node)];
@@ -167,34 +208,35 @@ QString VariableTree::entityName(const SystemInfo &system, quint8 entity) const
     return label.isEmpty() ? QString::number(entity) : label;
 }
 
-VariableTree::Binding &VariableTree::bindingLocked(quint16 system, quint8 entity, const MessageDef *def, bool perEntity)
+int VariableTree::bindingLocked(quint16 system, quint8 entity, const Message &message, bool perEntity)
 {
-    const quint16 id = def ? def->id : 0;
-    const quint64 key = bindingKey(system, entity, id, perEntity);
+    const quint64 key = bindingKey(system, entity, message.id(), perEntity);
     const auto it = m_bindingIndex.constFind(key);
     if (it != m_bindingIndex.cend())
-        return *m_bindings[static_cast<size_t>(*it)];
+        return *it;
 
     SystemInfo &info = systemLocked(system);
+    const MessageDef *def = message.def();
     const int index = static_cast<int>(m_bindings.size());
     auto binding = std::make_unique<Binding>();
     binding->system = system;
     binding->entity = entity;
+    binding->perEntity = perEntity;
+    binding->id = message.id();
     binding->def = def;
     m_bindings.push_back(std::move(binding));
     m_bindingIndex.insert(key, index);
     Binding &b = *m_bindings.back();
 
-    const QString abbrev = def ? def->abbrev : QStringLiteral("Unknown");
+    const QString abbrev = message.abbrev();
     const QString name = perEntity ? abbrev + u'@' + entityName(info, entity) : abbrev;
     b.branch = addNode(info.node, name, Kind::Message, index, {});
     m_nodes[static_cast<size_t>(b.branch)].ownerDef = def;
     if (perEntity)
         info.entityBindings[entity].push_back(index);
-    if (def) {
+    if (def)
         addFieldNodesLocked(b.branch, *def, index);
-    }
-    return b;
+    return index;
 }
 
 // Makes the nodes of nested messages and list items present in `message`.
@@ -284,7 +326,7 @@ void VariableTree::learnNamesLocked(const Message &message, SystemInfo &system)
         return;
     const QString &abbrev = def->abbrev;
     if (abbrev == u"Announce") {
-        const QString name = message.text(u"sys_name");
+        const QString name = pathSafe(message.text(u"sys_name"));
         if (!name.isEmpty() && !m_configuredNames.contains(system.id)) {
             system.named = true;
             renameLocked(system.node, name);
@@ -299,13 +341,13 @@ void VariableTree::learnNamesLocked(const Message &message, SystemInfo &system)
             bool ok = false;
             const int id = pair.mid(equals + 1).toInt(&ok);
             if (equals > 0 && ok && id >= 0 && id < 256) {
-                system.entityLabels.insert(static_cast<quint8>(id), pair.left(equals));
+                system.entityLabels.insert(static_cast<quint8>(id), pathSafe(pair.left(equals)));
                 learned = true;
             }
         }
     } else if (abbrev == u"EntityInfo") {
         const qint64 id = message.integer(u"id");
-        const QString label = message.text(u"label");
+        const QString label = pathSafe(message.text(u"label"));
         if (id >= 0 && id < 256 && !label.isEmpty()) {
             system.entityLabels.insert(static_cast<quint8>(id), label);
             learned = true;
@@ -316,10 +358,29 @@ void VariableTree::learnNamesLocked(const Message &message, SystemInfo &system)
     for (auto it = system.entityBindings.cbegin(); it != system.entityBindings.cend(); ++it) {
         for (int index : it.value()) {
             const Binding &b = *m_bindings[static_cast<size_t>(index)];
-            const QString abbrevOf = b.def ? b.def->abbrev : QStringLiteral("Unknown");
-            renameLocked(b.branch, abbrevOf + u'@' + entityName(system, it.key()));
+            renameLocked(b.branch, b.latest.abbrev() + u'@' + entityName(system, it.key()));
         }
     }
+}
+
+void VariableTree::commitLocked(int index, const Message &message, qint64 now)
+{
+    Binding &b = *m_bindings[static_cast<size_t>(index)];
+    b.latest = message;
+    b.present = true;
+    b.receivedMs = now;
+    ++b.count;
+    ++b.windowCount;
+    if (b.windowStartMs == 0) {
+        b.windowStartMs = now;
+    } else if (now - b.windowStartMs >= 1000) {
+        b.rate = b.windowCount * 1000.0 / static_cast<double>(now - b.windowStartMs);
+        b.windowStartMs = now;
+        b.windowCount = 0;
+    }
+    if (b.def && b.def->messageListCount > 0)
+        ensureStructureLocked(b.branch, b.latest);
+    markChangedLocked(index);
 }
 
 void VariableTree::ingest(const Message &message)
@@ -332,29 +393,29 @@ void VariableTree::ingest(const Message &message)
     system.lastReceivedMs = now;
     learnNamesLocked(message, system);
 
-    const MessageDef *def = message.def();
-    const auto commit = [&](int index) {
-        Binding &b = *m_bindings[static_cast<size_t>(index)];
-        b.latest = message;
-        b.present = true;
-        b.receivedMs = now;
-        if (def && def->messageListCount > 0)
-            ensureStructureLocked(b.branch, b.latest);
-        markChangedLocked(index);
-    };
-    const quint16 id = def ? def->id : message.id();
-    auto indexOf = [&](quint8 ent, bool perEntity) {
-        const quint64 key = bindingKey(source, ent, id, perEntity);
-        auto it = m_bindingIndex.constFind(key);
-        if (it == m_bindingIndex.cend()) {
-            bindingLocked(source, ent, def, perEntity);
-            it = m_bindingIndex.constFind(key);
+    // A type heard from one entity has one branch, "Message", which a path
+    // "Message@Entity" also finds. Once a second entity sends it, each entity
+    // gets a branch of its own and "Message" is the latest from any of them.
+    const int any = bindingLocked(source, 0xFF, message, false);
+    std::vector<quint8> &entities = m_bindings[static_cast<size_t>(any)]->entities;
+    if (std::find(entities.begin(), entities.end(), entity) == entities.end()) {
+        entities.push_back(entity);
+        if (entities.size() == 2) {
+            const Binding &whole = *m_bindings[static_cast<size_t>(any)];
+            const quint8 first = entities.front();
+            if (first != 0 && first != 0xFF) {
+                const Message earlier = whole.latest;
+                const qint64 earlierMs = whole.receivedMs;
+                const int own = bindingLocked(source, first, earlier, true);
+                commitLocked(own, earlier, earlierMs);
+            }
+            for (Consumer &consumer : m_consumers)
+                consumer.structure.relinked = true;
         }
-        return *it;
-    };
-    commit(indexOf(0xFF, false));
-    if (entity != 0 && entity != 0xFF)
-        commit(indexOf(entity, true));
+    }
+    commitLocked(any, message, now);
+    if (entities.size() > 1 && entity != 0 && entity != 0xFF)
+        commitLocked(bindingLocked(source, entity, message, true), message, now);
 }
 
 // --- Output ------------------------------------------------------------------------
@@ -367,36 +428,51 @@ void VariableTree::setOutputSink(OutputSink *sink)
 
 bool VariableTree::write(const QString &system, Message message)
 {
-    QMutexLocker lock(&m_mutex);
-    if (!m_sink || !message.def())
-        return false;
     quint16 id = 0xFFFF;
-    for (const auto &info : m_systems) {
-        if (m_nodes[static_cast<size_t>(info->node)].name == system)
-            id = info->id;
-    }
-    if (id == 0xFFFF) {
-        for (auto it = m_configuredNames.cbegin(); it != m_configuredNames.cend(); ++it) {
-            if (it.value() == system)
-                id = it.key();
+    {
+        QMutexLocker lock(&m_mutex);
+        for (const auto &info : m_systems) {
+            if (m_nodes[static_cast<size_t>(info->node)].name == system)
+                id = info->id;
+        }
+        if (id == 0xFFFF) {
+            for (auto it = m_configuredNames.cbegin(); it != m_configuredNames.cend(); ++it) {
+                if (it.value() == system)
+                    id = it.key();
+            }
         }
     }
-    if (id == 0xFFFF)
+    return id != 0xFFFF && write(id, std::move(message));
+}
+
+bool VariableTree::write(quint16 id, Message message)
+{
+    OutputSink *sink = nullptr;
+    {
+        QMutexLocker lock(&m_mutex);
+        sink = m_sink;
+    }
+    if (!sink || !message.def() || id == 0xFFFF)
         return false;
     message.header.dst = id;
-    OutputSink *sink = m_sink;
+    // Sent first, recorded after: the output branch shows only what went out.
+    if (!sink->publish(id, message))
+        return false;
+    QMutexLocker lock(&m_mutex);
     SystemInfo &info = systemLocked(id);
     if (info.out == noNode)
         info.out = addNode(info.node, QStringLiteral("out"), Kind::Inline, -1, {});
-    // Record what was commanded under system/out/Message.
+    // Recorded under system/out/Message, as the tree holds what it received.
     const quint64 key = bindingKey(id, 0xFE, message.id(), false);
-    auto it = m_bindingIndex.constFind(key);
     int index;
-    if (it == m_bindingIndex.cend()) {
+    if (const auto it = m_bindingIndex.constFind(key); it != m_bindingIndex.cend()) {
+        index = *it;
+    } else {
         index = static_cast<int>(m_bindings.size());
         auto binding = std::make_unique<Binding>();
         binding->system = id;
         binding->entity = 0xFE;
+        binding->id = message.id();
         binding->def = message.def();
         m_bindings.push_back(std::move(binding));
         m_bindingIndex.insert(key, index);
@@ -404,16 +480,9 @@ bool VariableTree::write(const QString &system, Message message)
         b.branch = addNode(info.out, message.abbrev(), Kind::Message, index, {});
         m_nodes[static_cast<size_t>(b.branch)].ownerDef = message.def();
         addFieldNodesLocked(b.branch, *message.def(), index);
-    } else {
-        index = *it;
     }
-    Binding &b = *m_bindings[static_cast<size_t>(index)];
-    b.latest = message;
-    b.present = true;
-    b.receivedMs = m_clock->now().toMSecsSinceEpoch();
-    markChangedLocked(index);
-    lock.unlock();
-    return sink->publish(id, message);
+    commitLocked(index, message, m_clock->now().toMSecsSinceEpoch());
+    return true;
 }
 
 // --- Reading -----------------------------------------------------------------------
@@ -423,7 +492,7 @@ NodeId VariableTree::find(QStringView path) const
     QMutexLocker lock(&m_mutex);
     NodeId node = root();
     for (QStringView part : path.split(u'/', Qt::SkipEmptyParts)) {
-        node = childNamed(node, part);
+        node = resolveChildLocked(node, part);
         if (node == noNode)
             return noNode;
     }
@@ -475,7 +544,7 @@ NodeId VariableTree::childByName(NodeId node, QStringView name) const
     QMutexLocker lock(&m_mutex);
     if (node < 0 || node >= static_cast<NodeId>(m_nodes.size()))
         return noNode;
-    return childNamed(node, name);
+    return resolveChildLocked(node, name);
 }
 
 int VariableTree::row(NodeId node) const
@@ -525,6 +594,20 @@ QString VariableTree::entityLabel(quint16 system, quint8 entity) const
     if (it == m_systemIndex.cend())
         return QString::number(entity);
     return entityName(*m_systems[static_cast<size_t>(*it)], entity);
+}
+
+std::vector<std::pair<quint8, QString>> VariableTree::entityLabels(quint16 system) const
+{
+    QMutexLocker lock(&m_mutex);
+    std::vector<std::pair<quint8, QString>> labels;
+    const auto it = m_systemIndex.constFind(system);
+    if (it == m_systemIndex.cend())
+        return labels;
+    const auto &known = m_systems[static_cast<size_t>(*it)]->entityLabels;
+    for (auto label = known.cbegin(); label != known.cend(); ++label)
+        labels.emplace_back(label.key(), label.value());
+    std::sort(labels.begin(), labels.end());
+    return labels;
 }
 
 quint16 VariableTree::systemOf(NodeId node) const
@@ -642,7 +725,7 @@ VariableTree::Snapshot VariableTree::snapshot(NodeId id) const
     s.present = true;
     if (field < 0) {
         s.value = message->abbrev();
-        s.text = message->abbrev();
+        s.text = node.kind == Kind::Message ? describeLocked(b) : message->abbrev();
         return s;
     }
     const FieldDef &def = message->field(field);
@@ -678,6 +761,28 @@ VariableTree::Snapshot VariableTree::snapshot(NodeId id) const
     if (displaysUnit(def))
         s.unit = def.unit;
     return s;
+}
+
+// What a message branch shows beside its name: where it comes from and how
+// often; for a type the definitions lack, that it is one and how big.
+QString VariableTree::describeLocked(const Binding &b) const
+{
+    QStringList parts;
+    if (!b.def) {
+        parts << QStringLiteral("unknown type %1, %2 bytes").arg(b.id).arg(b.latest.opaquePayload().size())
+              << QStringLiteral("%1 received").arg(b.count);
+    } else if (b.entity == 0xFE) {
+        parts << QStringLiteral("%1 sent").arg(b.count);
+    } else if (!b.perEntity && b.entities.size() > 1) {
+        parts << QStringLiteral("latest of %1 entities").arg(b.entities.size());
+    } else if (!b.perEntity && !b.entities.empty() && b.entities.front() != 0xFF && b.entities.front() != 0) {
+        const auto system = m_systemIndex.constFind(b.system);
+        if (system != m_systemIndex.cend())
+            parts << QStringLiteral("from ") + entityName(*m_systems[static_cast<size_t>(*system)], b.entities.front());
+    }
+    if (b.rate > 0 && b.entity != 0xFE)
+        parts << QStringLiteral("%1/s").arg(b.rate, 0, 'f', b.rate < 10 ? 1 : 0);
+    return parts.join(QStringLiteral(" · "));
 }
 
 // --- Changes -----------------------------------------------------------------------

@@ -20,7 +20,10 @@ constexpr NodeId noNode = -1;
 
 // Every message a console receives, per system, as a tree of variables:
 //   system / Message / field             the latest message of that type, from any entity
-//   system / Message@Entity / field      the latest from that entity (not for entity 0 or 255)
+//   system / Message@Entity / field      the latest from that entity, once two or more
+//                                        entities send the type (not for entity 0 or 255);
+//                                        while one entity does, the path finds "Message"
+//   system / Unknown(281)                a type the definitions lack, kept opaque
 //   system / Message / inline / field    an inline message is a branch
 //   system / Message / list / 3 / field  a message-list has indexed children
 // System names come from Announce (sys_name) or a configured id map, else
@@ -57,7 +60,13 @@ public:
         std::vector<NodeId> newNodes;     // in creation order: parents before children
         std::vector<NodeId> renamedNodes;
         std::vector<NodeId> changedNodes; // nodes whose values changed (leaves and their branches)
-        bool isEmpty() const { return newNodes.empty() && renamedNodes.empty() && changedNodes.empty(); }
+        // A path may now lead to another node: a second entity sent a type,
+        // so "Message@Entity" left the shared branch for one of its own.
+        bool relinked = false;
+        bool isEmpty() const
+        {
+            return newNodes.empty() && renamedNodes.empty() && changedNodes.empty() && !relinked;
+        }
     };
 
     // Writes of the output branch go here (a transport, or a test double).
@@ -89,6 +98,7 @@ public:
     // false without a sink, for an unknown system, or when the sink cannot
     // reach it.
     bool write(const QString &system, msg::Message message);
+    bool write(quint16 system, msg::Message message);
 
     // --- Structure (any thread) --------------------------------------------------
     NodeId root() const { return 0; }
@@ -110,6 +120,8 @@ public:
     QString systemName(quint16 id) const;
     // An entity's label ("Navigation"), or its number until known.
     QString entityLabel(quint16 system, quint8 entity) const;
+    // The entities a system named (EntityList, EntityInfo), by number.
+    std::vector<std::pair<quint8, QString>> entityLabels(quint16 system) const;
     // System id of the system branch above `node`, or 0xFFFF.
     quint16 systemOf(NodeId node) const;
     qint64 lastReceivedMs(quint16 system) const;
@@ -130,12 +142,17 @@ private:
     void addFieldNodesLocked(NodeId branch, const msg::MessageDef &def, int binding);
     NodeId childNamed(NodeId parent, QStringView name) const;
     SystemInfo &systemLocked(quint16 id);
-    Binding &bindingLocked(quint16 system, quint8 entity, const msg::MessageDef *def, bool perEntity);
+    // The binding of `message`'s type from (system, entity), made with its nodes if new.
+    int bindingLocked(quint16 system, quint8 entity, const msg::Message &message, bool perEntity);
+    void commitLocked(int binding, const msg::Message &message, qint64 receivedMs);
+    // childNamed, and "Message@Entity" for a type only that entity sends.
+    NodeId resolveChildLocked(NodeId parent, QStringView name) const;
     void ensureStructureLocked(NodeId branch, const msg::Message &message);
     void markChangedLocked(int binding);
     void renameLocked(NodeId node, const QString &name);
     void learnNamesLocked(const msg::Message &message, SystemInfo &system);
     QString entityName(const SystemInfo &system, quint8 entity) const;
+    QString describeLocked(const Binding &binding) const;
     const msg::Message *resolveLocked(const Node &node, const msg::Message *&owner, int &field) const;
 
     mutable QMutex m_mutex;

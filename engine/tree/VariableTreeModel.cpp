@@ -72,14 +72,18 @@ void VariableTreeModel::detach(Variable *variable)
     std::erase_if(m_variables, [variable](const QPointer<Variable> &v) { return v.isNull() || v == variable; });
 }
 
-void VariableTreeModel::resolvePending()
+void VariableTreeModel::resolvePending(bool relinked)
 {
+    // After a relink, paths naming an entity ("Rpm@Motor") may lead elsewhere.
+    const auto pending = [relinked](NodeId node, const QString &path) {
+        return node == noNode || (relinked && path.contains(u'@'));
+    };
     for (Listener &listener : m_listeners) {
-        if (listener.node == noNode)
+        if (pending(listener.node, listener.path))
             listener.node = m_tree->find(listener.path);
     }
     for (const QPointer<Variable> &variable : m_variables) {
-        if (variable && variable->node() == noNode)
+        if (variable && pending(variable->node(), variable->path()))
             variable->resolve();
     }
 }
@@ -125,8 +129,8 @@ void VariableTreeModel::sync()
         i = j;
     }
 
-    if (!changes.newNodes.empty() || !changes.renamedNodes.empty())
-        resolvePending();
+    if (!changes.newNodes.empty() || !changes.renamedNodes.empty() || changes.relinked)
+        resolvePending(changes.relinked);
 
     // Listeners of a node or of any branch above a changed node.
     if (!m_listeners.empty() || !m_variables.empty()) {

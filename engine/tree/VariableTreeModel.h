@@ -91,7 +91,7 @@ private:
     NodeId nodeOf(const QModelIndex &index) const;
     QModelIndex indexOfNode(NodeId node, int column = 0) const;
     bool isStale(const VariableTree::Snapshot &snapshot) const;
-    void resolvePending();
+    void resolvePending(bool relinked);
 
     VariableTree *m_tree;
     int m_consumer;

@@ -1,5 +1,7 @@
 #include "XmlDocument.h"
 
+#include "Gzip.h"
+
 #include <QFile>
 
 #include <libxml/parser.h>
@@ -106,12 +108,15 @@ std::expected<XmlDocument, XmlError> XmlDocument::parse(QByteArrayView data, con
 
 std::expected<XmlDocument, XmlError> XmlDocument::load(const QString &path)
 {
-    QFile file(path);
-    if (!file.open(QIODevice::ReadOnly))
-        return std::unexpected(XmlError{path, 0, 0, QStringLiteral("cannot open: %1").arg(file.errorString())});
-    if (file.size() > maxBytes)
-        return parse(QByteArray(maxBytes + 1, ' '), path); // reports the size error
-    return parse(file.readAll(), path);
+    auto data = readFileMaybeGzip(path, maxBytes);
+    if (!data) {
+        // The reason without the file name, which XmlError carries.
+        QString reason = data.error();
+        if (reason.startsWith(path + QStringLiteral(": ")))
+            reason = reason.mid(path.size() + 2);
+        return std::unexpected(XmlError{path, 0, 0, reason});
+    }
+    return parse(*data, path);
 }
 
 XmlError XmlDocument::errorAt(const xmlNode *node, const QString &message) const

@@ -33,6 +33,7 @@ public:
 
     // `fileName` names the input in errors; it is never opened.
     static std::expected<XmlDocument, XmlError> parse(QByteArrayView data, const QString &fileName);
+    // A file, gzip-compressed or not (IMC.xml.gz beside a vehicle's logs).
     static std::expected<XmlDocument, XmlError> load(const QString &path);
 
     const xmlNode *root() const { return xmlDocGetRootElement(m_doc.get()); }

@@ -12,6 +12,8 @@ QtObject {
     readonly property var scripts: session && session.scripts ? session.scripts : null
     // Where each system has been (trails for the map and the 3D scene).
     readonly property var tracks: session && session.tracks ? session.tracks : null
+    // What each system's link carries (rates, types, decode errors, entities).
+    readonly property var links: session && session.links ? session.links : null
     // Names of the systems heard so far, kept current as the tree grows.
     readonly property var systems: tree ? (tree.nodeCount, tree.children("")) : []
 

@@ -1,8 +1,9 @@
 import QtQuick
 import Neptus.Components
 
-// The inspector: every system the console hears, its health and alarms, and
-// the tree of its messages and values, as large as the screen allows.
+// The inspector: every system the console hears, what its link carries, its
+// health and alarms, and the tree of its messages and values, as large as the
+// screen allows.
 Console {
     id: layout
     formatVersion: 1
@@ -13,15 +14,23 @@ Console {
         x: 12
         y: 12
         width: 400
-        height: 300
+        height: 196
+    }
+
+    LinkStatistics {
+        id: linkStatistics1
+        x: 12
+        y: 220
+        width: 400
+        height: 340
     }
 
     AlarmList {
         id: alarmList1
         x: 12
-        y: 324
+        y: 572
         width: 400
-        height: 416
+        height: 168
     }
 
     HealthStrip {

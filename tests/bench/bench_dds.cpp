@@ -114,7 +114,7 @@ struct Windows
 int pong()
 {
     transport::DdsTransport dds(test::shippedSchema(), configFor(ponger));
-    dds.setDirectReceiver([&dds](const msg::Message &m) {
+    dds.setDirectReceiver([&dds](const msg::Message &m, qsizetype) {
         if (m.header.src == pinger)
             dds.broadcast(m);
     });
@@ -420,7 +420,7 @@ int main(int argc, char **argv)
     Receiver receiver;
     receiver.tree = &tree;
     receiver.dds = &dds;
-    dds.setDirectReceiver([&receiver](const msg::Message &m) { receiver(m); });
+    dds.setDirectReceiver([&receiver](const msg::Message &m, qsizetype) { receiver(m); });
     if (!dds.start())
         return 1;
 

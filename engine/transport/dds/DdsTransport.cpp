@@ -12,10 +12,15 @@
 
 namespace neptus::transport {
 
-DdsTransport::DdsTransport(std::shared_ptr<const msg::Schema> schema, DdsConfig config, QObject *parent)
+DdsTransport::DdsTransport(std::shared_ptr<msg::SchemaSet> schemas, DdsConfig config, QObject *parent)
     : QObject(parent)
-    , m_codec(std::move(schema))
+    , m_schemas(std::move(schemas))
     , m_config(std::move(config))
+{
+}
+
+DdsTransport::DdsTransport(std::shared_ptr<const msg::Schema> schema, DdsConfig config, QObject *parent)
+    : DdsTransport(std::make_shared<msg::SchemaSet>(std::move(schema)), std::move(config), parent)
 {
 }
 
@@ -43,7 +48,7 @@ std::expected<void, QString> DdsTransport::start()
                                    .arg(m_config.domain).arg(QString::fromUtf8(dds_strretcode(m_participant))));
     dds_listener_t *listener = dds_create_listener(this);
     dds_lset_data_available(listener, &DdsTransport::onData);
-    for (const auto &def : m_codec.schema().messages()) {
+    for (const auto &def : m_schemas->defaultSchema().messages()) {
         const dds_entity_t topic = topicFor(def->abbrev);
         if (topic < 0)
             continue;
@@ -74,7 +79,7 @@ std::expected<void, QString> DdsTransport::start()
     if (topic < 0 || peerReader < 0 || m_participantWriter < 0)
         return std::unexpected(QStringLiteral("DDS: cannot set up the participant topic"));
     QByteArray name = m_config.systemName.toUtf8(), type = m_config.systemType.toUtf8();
-    QByteArray digest = m_codec.schema().digest();
+    QByteArray digest = m_schemas->defaultSchema().digest();
     neptus_Participant self{};
     self.system = m_config.systemId;
     self.name = name.data();
@@ -98,7 +103,7 @@ void DdsTransport::onParticipant(dds_entity_t reader, void *self)
             if (!infos[i].valid_data || peer->system == transport->m_config.systemId)
                 continue;
             const QString theirs = QString::fromUtf8(peer->digest);
-            const QString ours = QString::fromLatin1(transport->m_codec.schema().digest());
+            const QString ours = QString::fromLatin1(transport->m_schemas->defaultSchema().digest());
             QMutexLocker lock(&transport->m_mutex);
             if (theirs == ours || transport->m_peerDigests.value(peer->system) == theirs)
                 continue;
@@ -182,16 +187,22 @@ void DdsTransport::onData(dds_entity_t reader, void *self)
             const neptus_Envelope &envelope = buffers.envelopes[i];
             if (!buffers.infos[i].valid_data || envelope.src == transport->m_config.systemId)
                 continue; // a disposal, or our own
-            auto message = transport->m_codec.decode(
-                QByteArrayView(envelope.packet._buffer, static_cast<qsizetype>(envelope.packet._length)));
-            if (!message)
-                continue;
-            if (transport->m_direct) {
-                transport->m_direct(*message);
+            const auto bytes = static_cast<qsizetype>(envelope.packet._length);
+            auto message = transport->m_schemas->codecFor(envelope.src)->decode(QByteArrayView(envelope.packet._buffer, bytes));
+            if (!message) {
+                const quint16 system = envelope.src;
+                QMetaObject::invokeMethod(transport, [transport, system, why = message.error().toString()] {
+                    emit transport->decodeFailed(system, QStringLiteral("DDS"), why);
+                }, Qt::QueuedConnection);
                 continue;
             }
-            QMetaObject::invokeMethod(transport, [transport, m = std::move(*message)] { emit transport->received(m); },
-                                      Qt::QueuedConnection);
+            if (transport->m_direct) {
+                transport->m_direct(*message, bytes);
+                continue;
+            }
+            QMetaObject::invokeMethod(transport, [transport, bytes, m = std::move(*message)] {
+                emit transport->received(m, bytes);
+            }, Qt::QueuedConnection);
         }
     }
 }
@@ -202,12 +213,12 @@ dds_entity_t DdsTransport::writerFor(const msg::MessageDef &def)
         return 0;
     {
         QMutexLocker lock(&m_mutex);
-        if (const dds_entity_t writer = m_writers.value(def.id, 0))
+        if (const dds_entity_t writer = m_writers.value(&def, 0))
             return writer;
     }
     const dds_entity_t topic = topicFor(def.abbrev);
     QMutexLocker lock(&m_mutex);
-    dds_entity_t writer = m_writers.value(def.id, 0);
+    dds_entity_t writer = m_writers.value(&def, 0);
     if (writer == 0) {
         dds_qos_t *qos = qosFor(def.abbrev);
         // Samples of a burst share datagrams; every send ends with a flush.
@@ -216,7 +227,7 @@ dds_entity_t DdsTransport::writerFor(const msg::MessageDef &def)
         dds_delete_qos(qos);
         if (writer < 0)
             return 0;
-        m_writers.insert(def.id, writer);
+        m_writers.insert(&def, writer);
     }
     return writer;
 }
@@ -225,7 +236,7 @@ bool DdsTransport::write(dds_entity_t writer, const msg::Message &message, const
 {
     // Encoded into a buffer each thread keeps: sending allocates nothing.
     thread_local QByteArray packet;
-    if (!m_codec.encode(message, header, packet))
+    if (!m_schemas->codecFor(header.dst)->encode(message, header, packet))
         return false;
     neptus_Envelope envelope{};
     envelope.src = header.src;
@@ -273,14 +284,17 @@ bool DdsTransport::broadcast(std::span<const msg::Message> messages)
 
 bool DdsTransport::publish(quint16 system, const msg::Message &message)
 {
-    const dds_entity_t writer = message.def() ? writerFor(*message.def()) : 0;
+    const auto addressed = m_schemas->forSystem(system, message);
+    if (!addressed)
+        return false;
+    const dds_entity_t writer = addressed->def() ? writerFor(*addressed->def()) : 0;
     if (writer <= 0)
         return false;
-    msg::Message::Header header = message.header;
+    msg::Message::Header header = addressed->header;
     header.src = m_config.systemId;
     header.dst = system;
     header.timestamp = QDateTime::currentMSecsSinceEpoch() / 1000.0;
-    const bool sent = write(writer, message, header);
+    const bool sent = write(writer, *addressed, header);
     dds_write_flush(writer);
     return sent;
 }

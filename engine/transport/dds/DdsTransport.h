@@ -1,6 +1,6 @@
 #pragma once
 
-#include "Codec.h"
+#include "SchemaSet.h"
 #include "VariableTree.h"
 
 #include <QHash>
@@ -37,11 +37,14 @@ struct DdsConfig
 // its own topic ("neptus/<abbrev>"), carried as an IMC packet in a fixed
 // envelope (Envelope.idl), reliable, keyed by the sender. Samples arrive on
 // Cyclone's threads and are handed to this object's thread as `received`.
+// Packets are decoded with the sender's definitions (SchemaSet, by the
+// envelope's src) and encoded with the receiver's.
 class DdsTransport : public QObject, public tree::VariableTree::OutputSink
 {
     Q_OBJECT
 
 public:
+    DdsTransport(std::shared_ptr<msg::SchemaSet> schemas, DdsConfig config, QObject *parent = nullptr);
     DdsTransport(std::shared_ptr<const msg::Schema> schema, DdsConfig config, QObject *parent = nullptr);
     ~DdsTransport() override;
 
@@ -51,7 +54,10 @@ public:
     // threads instead of `received` on this object's thread: for thread-safe
     // consumers (the variable tree, the console session), it saves the hop
     // through the event loop. Set before start().
-    void setDirectReceiver(std::function<void(const msg::Message &)> receiver) { m_direct = std::move(receiver); }
+    void setDirectReceiver(std::function<void(const msg::Message &, qsizetype bytes)> receiver)
+    {
+        m_direct = std::move(receiver);
+    }
 
     // Sends a message of this node to everyone (vehicles, simulators).
     bool broadcast(const msg::Message &message);
@@ -63,7 +69,11 @@ public:
     bool publish(quint16 system, const msg::Message &message) override;
 
 signals:
-    void received(const neptus::msg::Message &message);
+    // A decoded message and the size of its packet.
+    void received(const neptus::msg::Message &message, qsizetype bytes);
+    // A sample whose packet could not be decoded: the sender's system id (from
+    // the envelope), the peer ("DDS"), and why.
+    void decodeFailed(quint16 system, const QString &peer, const QString &reason);
     // A peer speaks other message definitions than ours: values it sends may
     // be decoded wrongly. Said once per peer and digest.
     void definitionsDiffer(quint16 system, const QString &name, const QString &theirDigest, const QString &ourDigest);
@@ -80,15 +90,15 @@ private:
     // writer's batch until flushed.
     bool write(dds_entity_t writer, const msg::Message &message, const msg::Message::Header &header);
 
-    msg::Codec m_codec;
+    std::shared_ptr<msg::SchemaSet> m_schemas;
     DdsConfig m_config;
     dds_entity_t m_participant = 0;
     QMutex m_mutex;
     QHash<QString, dds_entity_t> m_topics;
-    QHash<quint16, dds_entity_t> m_writers; // by message id
+    QHash<const msg::MessageDef *, dds_entity_t> m_writers;
     dds_entity_t m_participantWriter = 0;
     QHash<quint16, QString> m_peerDigests;
-    std::function<void(const msg::Message &)> m_direct;
+    std::function<void(const msg::Message &, qsizetype)> m_direct;
 };
 
 } // namespace neptus::transport

@@ -2,13 +2,38 @@
 
 #include <QDateTime>
 #include <QNetworkDatagram>
+#include <QNetworkInterface>
 #include <QRegularExpression>
 
 namespace neptus::transport {
 
-ImcUdpTransport::ImcUdpTransport(std::shared_ptr<const msg::Schema> schema, ImcUdpConfig config, QObject *parent)
+namespace {
+
+// IMC's discovery multicast group (DUNE and the Java Neptus use it).
+const QHostAddress discoveryGroup(QStringLiteral("224.0.75.69"));
+
+QString peerName(const QHostAddress &address, quint16 port)
+{
+    return QStringLiteral("%1:%2").arg(address.toString()).arg(port);
+}
+
+// The interface that holds `address`, if any.
+std::optional<std::pair<QNetworkInterface, QNetworkAddressEntry>> interfaceOf(const QHostAddress &address)
+{
+    for (const QNetworkInterface &interface : QNetworkInterface::allInterfaces()) {
+        for (const QNetworkAddressEntry &entry : interface.addressEntries()) {
+            if (entry.ip() == address)
+                return std::pair{interface, entry};
+        }
+    }
+    return std::nullopt;
+}
+
+} // namespace
+
+ImcUdpTransport::ImcUdpTransport(std::shared_ptr<msg::SchemaSet> schemas, ImcUdpConfig config, QObject *parent)
     : QObject(parent)
-    , m_codec(std::move(schema))
+    , m_schemas(std::move(schemas))
     , m_config(std::move(config))
 {
     connect(&m_socket, &QUdpSocket::readyRead, this, [this] { readDatagrams(m_socket); });
@@ -17,89 +42,193 @@ ImcUdpTransport::ImcUdpTransport(std::shared_ptr<const msg::Schema> schema, ImcU
     connect(&m_timer, &QTimer::timeout, this, &ImcUdpTransport::heartbeat);
 }
 
+ImcUdpTransport::ImcUdpTransport(std::shared_ptr<const msg::Schema> schema, ImcUdpConfig config, QObject *parent)
+    : ImcUdpTransport(std::make_shared<msg::SchemaSet>(std::move(schema)), std::move(config), parent)
+{
+}
+
 std::expected<void, QString> ImcUdpTransport::start()
 {
     if (!m_socket.bind(m_config.bindAddress, m_config.port))
         return std::unexpected(QStringLiteral("IMC/UDP: cannot listen on %1:%2: %3")
                                    .arg(m_config.bindAddress.toString()).arg(m_config.port).arg(m_socket.errorString()));
-    if (m_config.discovery && !m_discovery.bind(m_config.bindAddress, m_config.discoveryPort))
-        return std::unexpected(QStringLiteral("IMC/UDP: cannot listen for announcements on %1:%2: %3")
-                                   .arg(m_config.bindAddress.toString()).arg(m_config.discoveryPort)
-                                   .arg(m_discovery.errorString()));
+    if (auto bound = bindDiscovery(); !bound)
+        return bound;
     m_timer.start();
     heartbeat();
     return {};
+}
+
+std::expected<void, QString> ImcUdpTransport::bindDiscovery()
+{
+    if (!m_config.discovery)
+        return {};
+    const bool loopback = m_config.bindAddress.isLoopback();
+    if (m_config.discoveryPort == 0) {
+        if (!m_discovery.bind(m_config.bindAddress, 0))
+            return std::unexpected(QStringLiteral("IMC/UDP: cannot listen for announcements on %1: %2")
+                                       .arg(m_config.bindAddress.toString(), m_discovery.errorString()));
+        return {};
+    }
+    if (!loopback) {
+        // A field network: announcements come by broadcast and multicast, which
+        // every program on the port receives, so the port is shared.
+        const auto interface = interfaceOf(m_config.bindAddress);
+        if (!interface)
+            return std::unexpected(QStringLiteral("IMC/UDP: no network interface has the address %1")
+                                       .arg(m_config.bindAddress.toString()));
+        if (!m_discovery.bind(QHostAddress::AnyIPv4, m_config.discoveryPort,
+                              QUdpSocket::ShareAddress | QUdpSocket::ReuseAddressHint))
+            return std::unexpected(QStringLiteral("IMC/UDP: cannot listen for announcements on port %1: %2")
+                                       .arg(m_config.discoveryPort).arg(m_discovery.errorString()));
+        m_discovery.joinMulticastGroup(discoveryGroup, interface->first);
+        m_socket.setMulticastInterface(interface->first);
+        return {};
+    }
+    // Loopback: each program takes the first free port of the range and
+    // announces to all of them, as DUNE does.
+    QString why;
+    for (int i = 0; i < m_config.discoveryPortCount; ++i) {
+        const auto port = static_cast<quint16>(m_config.discoveryPort + i);
+        if (m_discovery.bind(m_config.bindAddress, port))
+            return {};
+        why = m_discovery.errorString();
+        m_discovery.close();
+    }
+    return std::unexpected(QStringLiteral("IMC/UDP: cannot listen for announcements on %1, ports %2-%3: %4")
+                               .arg(m_config.bindAddress.toString())
+                               .arg(m_config.discoveryPort)
+                               .arg(m_config.discoveryPort + m_config.discoveryPortCount - 1)
+                               .arg(why));
+}
+
+QList<ImcUdpTransport::Endpoint> ImcUdpTransport::discoveryTargets() const
+{
+    QList<Endpoint> targets;
+    if (!m_config.discovery || m_config.discoveryPort == 0)
+        return targets;
+    QList<QHostAddress> addresses;
+    if (m_config.bindAddress.isLoopback()) {
+        addresses.append(m_config.bindAddress);
+    } else if (const auto interface = interfaceOf(m_config.bindAddress)) {
+        if (!interface->second.broadcast().isNull())
+            addresses.append(interface->second.broadcast());
+        addresses.append(discoveryGroup);
+    }
+    for (const QHostAddress &address : addresses) {
+        for (int i = 0; i < m_config.discoveryPortCount; ++i)
+            targets.append({address, static_cast<quint16>(m_config.discoveryPort + i)});
+    }
+    return targets;
 }
 
 void ImcUdpTransport::readDatagrams(QUdpSocket &socket)
 {
     while (socket.hasPendingDatagrams()) {
         const QNetworkDatagram datagram = socket.receiveDatagram();
-        handle(datagram.data(), datagram.senderAddress(), static_cast<quint16>(datagram.senderPort()));
+        receive(datagram.data(), datagram.senderAddress(), static_cast<quint16>(datagram.senderPort()));
     }
 }
 
-void ImcUdpTransport::handle(const QByteArray &datagram, const QHostAddress &from, quint16 fromPort)
+void ImcUdpTransport::receive(QByteArrayView datagram, const QHostAddress &from, quint16 fromPort)
 {
-    auto message = m_codec.decode(datagram);
+    auto message = m_schemas->decode(datagram);
     if (!message) {
         ++m_decodeErrors;
+        const auto sender = m_schemas->senderOf(datagram);
+        emit decodeFailed(sender ? *sender : quint16(0xFFFF), peerName(from, fromPort), message.error().toString());
         return;
     }
     const quint16 source = message->header.src;
     if (source == m_config.systemId)
-        return; // our own, relayed back
+        return; // our own, relayed back (or our own Announce on the discovery ports)
     if (message->def() && message->def()->abbrev == u"Announce") {
-        learnFromAnnounce(*message);
+        learnFromAnnounce(*message, from);
     } else if (!m_endpoints.contains(source) && fromPort != 0) {
         // A vehicle that talks to us is reachable where it talks from.
         m_endpoints.insert(source, {from, fromPort});
     }
-    emit received(*message);
+    emit received(*message, datagram.size());
 }
 
-void ImcUdpTransport::learnFromAnnounce(const msg::Message &announce)
+void ImcUdpTransport::learnFromAnnounce(const msg::Message &announce, const QHostAddress &from)
 {
-    // services: "dune://0.0.0.0/uid/...;imc+udp://127.0.0.1:6002/;..."
-    static const QRegularExpression service(QStringLiteral(R"(imc\+udp://([^:/;]+):(\d+))"));
-    const QString services = announce.text(u"services");
-    auto match = service.match(services);
-    if (!match.hasMatch())
-        return;
-    const QHostAddress address(match.captured(1));
-    const quint16 port = static_cast<quint16>(match.captured(2).toUInt());
     const quint16 source = announce.header.src;
+    const QString name = announce.text(u"sys_name");
+    m_schemas->learnName(source, name);
+    // services: "dune://0.0.0.0/uid/...;imc+info://0.0.0.0/version/5.4.31;imc+udp://127.0.0.1:6002/;..."
+    const QString services = announce.text(u"services");
+    static const QRegularExpression version(QStringLiteral(R"(imc\+info://[^;]*/version/([^/;]+))"));
+    if (const auto match = version.match(services); match.hasMatch() && m_versions.value(source) != match.captured(1)) {
+        m_versions.insert(source, match.captured(1));
+        emit versionAnnounced(source, match.captured(1));
+    }
+    // A vehicle lists one imc+udp service per interface: take the one it
+    // sent from, else one on loopback when we are there, else the first.
+    static const QRegularExpression service(QStringLiteral(R"(imc\+udp://([^:/;]+):(\d+))"));
+    std::optional<Endpoint> chosen;
+    for (auto it = service.globalMatch(services); it.hasNext();) {
+        const auto match = it.next();
+        const Endpoint candidate{QHostAddress(match.captured(1)), static_cast<quint16>(match.captured(2).toUInt())};
+        if (candidate.address.isNull() || candidate.port == 0)
+            continue;
+        if (candidate.address.isEqual(from, QHostAddress::TolerantConversion)) {
+            chosen = candidate;
+            break;
+        }
+        if (!chosen || (m_config.bindAddress.isLoopback() && candidate.address.isLoopback()
+                        && !chosen->address.isLoopback()))
+            chosen = candidate;
+    }
+    if (!chosen)
+        return;
     const bool known = m_endpoints.contains(source);
-    m_endpoints.insert(source, {address, port});
-    if (!known)
-        emit systemDiscovered(source, announce.text(u"sys_name"));
+    m_endpoints.insert(source, *chosen);
+    if (known)
+        return;
+    // Say hello at once: a vehicle streams only once it hears from us, and
+    // knows us only from our Announce.
+    for (msg::Message hello : {announcement(), msg::Message(m_schemas->defaultSchema().byAbbrev(u"Heartbeat"))}) {
+        if (!hello.def())
+            continue;
+        hello.header.timestamp = QDateTime::currentMSecsSinceEpoch() / 1000.0;
+        hello.header.src = m_config.systemId;
+        hello.header.dst = source;
+        send(hello, *chosen);
+    }
+    emit systemDiscovered(source, name);
 }
 
-void ImcUdpTransport::send(const msg::Message &message, const Endpoint &to)
+bool ImcUdpTransport::send(const msg::Message &message, const Endpoint &to)
 {
-    if (!m_codec.encode(message, m_buffer))
-        return;
-    m_socket.writeDatagram(m_buffer, to.address, to.port);
+    if (!m_schemas->codecFor(message.header.dst)->encode(message, m_buffer))
+        return false;
+    return m_socket.writeDatagram(m_buffer, to.address, to.port) == m_buffer.size();
 }
 
 msg::Message ImcUdpTransport::announcement() const
 {
-    const msg::MessageDef *def = m_codec.schema().byAbbrev(u"Announce");
+    const msg::Schema &schema = m_schemas->defaultSchema();
+    const msg::MessageDef *def = schema.byAbbrev(u"Announce");
     msg::Message announce(def);
     announce.setBytes(def->indexOf(u"sys_name"), m_config.systemName.toUtf8());
     announce.setInteger(def->indexOf(u"sys_type"), 0); // CCU
     announce.setInteger(def->indexOf(u"owner"), 0xFFFF);
-    announce.setBytes(def->indexOf(u"services"), QStringLiteral("imc+udp://%1:%2/")
-                                                     .arg(m_config.bindAddress.toString()).arg(port()).toUtf8());
+    announce.setBytes(def->indexOf(u"services"), QStringLiteral("imc+info://0.0.0.0/version/%1;imc+udp://%2:%3/")
+                                                     .arg(schema.version(), m_config.bindAddress.toString())
+                                                     .arg(port())
+                                                     .toUtf8());
     return announce;
 }
 
 void ImcUdpTransport::heartbeat()
 {
-    const msg::MessageDef *beatDef = m_codec.schema().byAbbrev(u"Heartbeat");
+    const msg::Schema &schema = m_schemas->defaultSchema();
+    const msg::MessageDef *beatDef = schema.byAbbrev(u"Heartbeat");
+    const bool canAnnounce = schema.byAbbrev(u"Announce") != nullptr;
     if (!beatDef)
         return;
-    const bool announceToo = m_ticks++ % 5 == 0;
+    const bool announceToo = canAnnounce && m_ticks++ % std::max(1, m_config.announceEvery) == 0;
     const double now = QDateTime::currentMSecsSinceEpoch() / 1000.0;
     auto stamp = [&](msg::Message &m, quint16 dst) {
         m.header.timestamp = now;
@@ -122,11 +251,17 @@ void ImcUdpTransport::heartbeat()
         msg::Message beat(beatDef);
         stamp(beat, system);
         send(beat, endpoint);
-        if (announceToo && m_codec.schema().byAbbrev(u"Announce")) {
+        if (announceToo) {
             msg::Message announce = announcement();
             stamp(announce, system);
             send(announce, endpoint);
         }
+    }
+    if (announceToo) {
+        msg::Message announce = announcement();
+        stamp(announce, 0xFFFF);
+        for (const Endpoint &target : discoveryTargets())
+            send(announce, target);
     }
 }
 
@@ -135,13 +270,14 @@ bool ImcUdpTransport::publish(quint16 system, const msg::Message &message)
     const auto it = m_endpoints.constFind(system);
     if (it == m_endpoints.cend())
         return false;
-    msg::Message addressed = message;
-    addressed.header.src = m_config.systemId;
-    addressed.header.srcEnt = 0xFF;
-    addressed.header.dst = system;
-    addressed.header.timestamp = QDateTime::currentMSecsSinceEpoch() / 1000.0;
-    send(addressed, *it);
-    return true;
+    auto addressed = m_schemas->forSystem(system, message);
+    if (!addressed)
+        return false;
+    addressed->header.src = m_config.systemId;
+    addressed->header.srcEnt = 0xFF;
+    addressed->header.dst = system;
+    addressed->header.timestamp = QDateTime::currentMSecsSinceEpoch() / 1000.0;
+    return send(*addressed, *it);
 }
 
 } // namespace neptus::transport

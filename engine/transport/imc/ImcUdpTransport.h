@@ -1,6 +1,6 @@
 #pragma once
 
-#include "Codec.h"
+#include "SchemaSet.h"
 #include "VariableTree.h"
 
 #include <QHash>
@@ -24,25 +24,38 @@ struct ImcUdpConfig
     // Vehicles known in advance, as host and port; their ids are learned
     // from what they send.
     QList<std::pair<QHostAddress, quint16>> destinations;
-    // Listen for vehicles' Announce messages (IMC uses 30100-30104).
-    bool discovery = false;
-    quint16 discoveryPort = 30100;       // 0: any free port (tests)
+    // IMC discovery: listen on the first free port of discoveryPort ..
+    // discoveryPort + discoveryPortCount - 1 (IMC: 30100-30104), and send our
+    // Announce to all of them, so that vehicles (which only talk to consoles
+    // they know) learn of us, and we of them.
+    bool discovery = true;
+    quint16 discoveryPort = 30100;       // 0: listen on any free port and announce to none (tests)
+    int discoveryPortCount = 5;
     quint16 systemId = 0x4001;           // a CCU id (0x4000-0x5FFF)
     QString systemName = QStringLiteral("neptus-qt");
     int heartbeatMs = 1000;
+    int announceEvery = 5;               // heartbeats between two Announces
 };
 
 // IMC over UDP, one packet per datagram. The console announces itself (an
-// imc+udp:// service, system type CCU) and sends a Heartbeat every second to
-// every vehicle it knows, since IMC vehicles only stream to consoles they
-// hear from. Vehicles are known from the static destinations and, with
-// discovery on, from their Announce. Commands go to the vehicle's own id (IMC
-// vehicles ignore 0xFFFF). Our own messages relayed back are dropped.
+// imc+udp:// service, system type CCU) to the IMC discovery ports and to
+// every vehicle it knows, and sends a Heartbeat every second to those
+// vehicles, since IMC vehicles only stream to consoles they know and hear
+// from. Vehicles are known from the static destinations, from their Announce
+// (on the discovery port or ours), and from what they send. Packets are
+// decoded with each sender's own definitions (SchemaSet). Commands go to the
+// vehicle's own id (IMC vehicles ignore 0xFFFF). Our own messages relayed
+// back are dropped; packets that do not decode are reported, never passed on.
+//
+// On a field interface (bindAddress not loopback) discovery also sends to the
+// interface's broadcast address and IMC's multicast group 224.0.75.69, and
+// listens there; on loopback it stays on 127.0.0.1.
 class ImcUdpTransport : public QObject, public tree::VariableTree::OutputSink
 {
     Q_OBJECT
 
 public:
+    ImcUdpTransport(std::shared_ptr<msg::SchemaSet> schemas, ImcUdpConfig config, QObject *parent = nullptr);
     ImcUdpTransport(std::shared_ptr<const msg::Schema> schema, ImcUdpConfig config, QObject *parent = nullptr);
 
     // Binds the sockets; an error names the address and port and why.
@@ -51,16 +64,32 @@ public:
     quint16 discoveryPort() const { return m_discovery.localPort(); }
     QList<quint16> knownSystems() const { return m_endpoints.keys(); }
     int decodeErrors() const { return m_decodeErrors; }
+    const msg::SchemaSet &schemas() const { return *m_schemas; }
 
-    // OutputSink: sends `message` to `system`, addressed to it.
+    // One datagram as it arrived from `from`:`fromPort` (the sockets call
+    // it; tests and the fuzz target call it without any socket).
+    void receive(QByteArrayView datagram, const QHostAddress &from, quint16 fromPort);
+
+    // OutputSink: sends `message` to `system`, addressed to it, in its definitions.
     bool publish(quint16 system, const msg::Message &message) override;
 
-    // Sends a Heartbeat (and every fifth time an Announce) to every vehicle now.
+    // Sends a Heartbeat to every vehicle now, and an Announce to them and to
+    // the discovery ports every `announceEvery`-th time.
     void heartbeat();
 
+    // The IMC version a system announces ("5.4.31"), empty until known.
+    QString announcedVersion(quint16 system) const { return m_versions.value(system); }
+
 signals:
-    void received(const neptus::msg::Message &message);
+    // A decoded message and the size of its packet.
+    void received(const neptus::msg::Message &message, qsizetype bytes);
     void systemDiscovered(quint16 system, const QString &name);
+    // A packet that could not be decoded: the sender's id when the header
+    // gave one (else 0xFFFF), the address it came from, and why.
+    void decodeFailed(quint16 system, const QString &peer, const QString &reason);
+    // A system's Announce names the IMC version it was built with (its
+    // "imc+info://…/version/X" service), the first time and when it changes.
+    void versionAnnounced(quint16 system, const QString &version);
 
 private:
     struct Endpoint
@@ -70,17 +99,20 @@ private:
     };
 
     void readDatagrams(QUdpSocket &socket);
-    void handle(const QByteArray &datagram, const QHostAddress &from, quint16 fromPort);
-    void learnFromAnnounce(const msg::Message &announce);
-    void send(const msg::Message &message, const Endpoint &to);
+    void learnFromAnnounce(const msg::Message &announce, const QHostAddress &from);
+    bool send(const msg::Message &message, const Endpoint &to);
     msg::Message announcement() const;
+    std::expected<void, QString> bindDiscovery();
+    // Where our Announce goes besides the vehicles we know: the discovery ports.
+    QList<Endpoint> discoveryTargets() const;
 
-    msg::Codec m_codec;
+    std::shared_ptr<msg::SchemaSet> m_schemas;
     ImcUdpConfig m_config;
     QUdpSocket m_socket;
     QUdpSocket m_discovery;
     QTimer m_timer;
     QHash<quint16, Endpoint> m_endpoints; // known vehicles
+    QHash<quint16, QString> m_versions;
     int m_ticks = 0;
     int m_decodeErrors = 0;
     QByteArray m_buffer;

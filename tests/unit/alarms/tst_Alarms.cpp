@@ -149,12 +149,43 @@ TEST(HealthMonitor, CommunicationsLossIsRaisedAndCleared)
     health.check();
     EXPECT_EQ(graph.ownLevel(lauv), Warning);
     EXPECT_TRUE(graph.message(lauv).startsWith(QStringLiteral("communications lost"))) << graph.message(lauv).toStdString();
+    EXPECT_EQ(graph.message(lauv), QStringLiteral("communications lost: nothing heard for 3 s"));
     clock.advance(7000); // 10.5 s: more than three times the limit
     health.check();
     EXPECT_EQ(graph.ownLevel(lauv), Error);
+    EXPECT_EQ(graph.message(lauv), QStringLiteral("communications lost: nothing heard for 10 s"))
+        << "the text follows the silence";
+    clock.advance(125000);
+    health.check();
+    EXPECT_EQ(graph.message(lauv), QStringLiteral("communications lost: nothing heard for 2 min 15 s"));
     health.observe(beat);
     EXPECT_EQ(graph.ownLevel(lauv), Normal) << "cleared when traffic returns";
     EXPECT_LT(graph.rootLevel(), Warning);
+}
+
+TEST(HealthMonitor, EntityAlarmsAreRenamedWhenTheirLabelIsLearned)
+{
+    tree::VariableTree tree;
+    tree.setSystemName(0x1f, QStringLiteral("lauv"));
+    AlarmGraph graph;
+    HealthMonitor health(graph, tree);
+    const auto feed = [&](const msg::Message &m) {
+        tree.ingest(m);
+        health.observe(m);
+    };
+    feed(entityState(0x1f, 61, 3, "no fix"));
+    const auto node = graph.find(QStringLiteral("systems/lauv/61"));
+    ASSERT_NE(node, AlarmGraph::noNode);
+    msg::Message list(neptus::test::shippedSchema()->byAbbrev(u"EntityList"));
+    list.header.src = 0x1f;
+    list.setBytes(list.def()->indexOf(u"list"), "Daemon=0;Navigation=61");
+    feed(list);
+    health.check(); // renames without waiting for the next EntityState
+    EXPECT_EQ(graph.find(QStringLiteral("systems/lauv/Navigation")), node) << "renamed in place";
+    EXPECT_EQ(graph.find(QStringLiteral("systems/lauv/61")), AlarmGraph::noNode);
+    EXPECT_EQ(graph.ownLevel(node), Error) << "the level stays";
+    feed(entityState(0x1f, 61, 1, "active"));
+    EXPECT_EQ(graph.ownLevel(node), Normal);
 }
 
 TEST(AlarmListModel, ListsAlarmsAndTheRootLevel)

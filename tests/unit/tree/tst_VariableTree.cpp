@@ -86,6 +86,80 @@ TEST(VariableTree, SystemsAreNamedByAnnounceOrConfiguration)
     EXPECT_EQ(tree.systemOf(before), 0x1f);
 }
 
+TEST(VariableTree, ATypeTheDefinitionsLackIsShownAndKept)
+{
+    // The packet that once crashed the console: ServoPosition (281) from a
+    // DUNE vehicle whose type the loaded definitions do not have.
+    ManualClock clock(QDateTime::fromMSecsSinceEpoch(1000, QTimeZone::UTC));
+    VariableTree tree(&clock);
+    const int consumer = tree.addConsumer();
+    Message servo = Message::opaque(281, QByteArray("\x01\x00\x00\x80\x3f", 5));
+    servo.header.src = 0x00D1;
+    servo.header.srcEnt = 37;
+    servo.header.timestamp = 1700000000.0;
+    for (int i = 0; i < 30; ++i) {
+        tree.ingest(servo);
+        clock.advance(100);
+    }
+    const NodeId node = tree.find(u"0x00d1/Unknown(281)");
+    ASSERT_NE(node, noNode);
+    EXPECT_EQ(tree.kind(node), VariableTree::Kind::Message);
+    EXPECT_EQ(tree.childCount(node), 0);
+    const auto s = tree.snapshot(node);
+    EXPECT_TRUE(s.present);
+    EXPECT_EQ(s.text, QStringLiteral("unknown type 281, 5 bytes · 30 received · 10/s")) << s.text.toStdString();
+    EXPECT_EQ(s.sourceEntity, 37);
+    EXPECT_EQ(tree.find(u"0x00d1/Unknown(281)@37"), node) << "one entity, one row";
+    EXPECT_FALSE(tree.takeChanges(consumer).isEmpty());
+}
+
+TEST(VariableTree, ATypeFromOneEntityHasOneRow)
+{
+    VariableTree tree;
+    tree.setSystemName(0x1f, QStringLiteral("lauv"));
+    Message rpm = make("Rpm", 0x1f, 2);
+    rpm.setInteger(rpm.def()->indexOf(u"value"), 1200);
+    tree.ingest(rpm);
+    EXPECT_EQ(tree.childNames(u"lauv"), QStringList{QStringLiteral("Rpm")}) << "no second, identical row";
+    const NodeId value = tree.find(u"lauv/Rpm/value");
+    EXPECT_EQ(tree.find(u"lauv/Rpm@2/value"), value) << "the entity's path finds the one row";
+    EXPECT_EQ(tree.snapshot(tree.find(u"lauv/Rpm")).text, QStringLiteral("from 2"));
+
+    Message list = make("EntityList", 0x1f);
+    list.setBytes(list.def()->indexOf(u"list"), "Motor=2;Propeller=3");
+    tree.ingest(list);
+    EXPECT_EQ(tree.find(u"lauv/Rpm@Motor/value"), value);
+    EXPECT_EQ(tree.find(u"lauv/Rpm@2/value"), noNode) << "by its label once known";
+    EXPECT_EQ(tree.find(u"lauv/Rpm@Propeller/value"), noNode);
+    EXPECT_TRUE(tree.snapshot(tree.find(u"lauv/Rpm")).text.startsWith(QStringLiteral("from Motor")));
+}
+
+TEST(VariableTree, ASecondEntityGivesEachEntityItsOwnRow)
+{
+    VariableTree tree;
+    tree.setSystemName(0x1f, QStringLiteral("lauv"));
+    Message list = make("EntityList", 0x1f);
+    list.setBytes(list.def()->indexOf(u"list"), "Motor=2;Propeller=3");
+    tree.ingest(list);
+    const int consumer = tree.addConsumer();
+    Message rpm = make("Rpm", 0x1f, 2);
+    rpm.setInteger(rpm.def()->indexOf(u"value"), 1200);
+    tree.ingest(rpm);
+    const NodeId shared = tree.find(u"lauv/Rpm@Motor/value");
+    EXPECT_FALSE(tree.takeChanges(consumer).relinked);
+
+    rpm.header.srcEnt = 3;
+    rpm.setInteger(rpm.def()->indexOf(u"value"), 800);
+    tree.ingest(rpm);
+    EXPECT_TRUE(tree.takeChanges(consumer).relinked) << "paths with an entity must be looked up again";
+    const NodeId motor = tree.find(u"lauv/Rpm@Motor/value");
+    EXPECT_NE(motor, shared);
+    EXPECT_EQ(tree.snapshot(motor).value.toInt(), 1200) << "the first entity keeps what it said";
+    EXPECT_EQ(tree.snapshot(tree.find(u"lauv/Rpm@Propeller/value")).value.toInt(), 800);
+    EXPECT_EQ(tree.snapshot(shared).value.toInt(), 800) << "Rpm is the latest from any";
+    EXPECT_EQ(tree.snapshot(tree.find(u"lauv/Rpm")).text, QStringLiteral("latest of 2 entities"));
+}
+
 TEST(VariableTree, EntitiesGetTheirOwnBranchNamedByLabel)
 {
     VariableTree tree;
@@ -190,6 +264,20 @@ TEST(VariableTree, WritingTheOutputBranchPublishes)
     EXPECT_EQ(sink.sent[0].first, 0x1f);
     EXPECT_EQ(sink.sent[0].second.header.dst, 0x1f);
     EXPECT_TRUE(tree.snapshot(tree.find(u"lauv/out/Abort")).present);
+    EXPECT_EQ(tree.snapshot(tree.find(u"lauv/out/Abort")).text, QStringLiteral("1 sent"));
+
+    // What a link refuses is not recorded as sent.
+    class RefusingSink : public VariableTree::OutputSink
+    {
+    public:
+        bool publish(quint16, const Message &) override { return false; }
+    } refusing;
+    tree.setOutputSink(&refusing);
+    Message goTo(neptus::test::shippedSchema()->byAbbrev(u"Goto"));
+    EXPECT_FALSE(tree.write(QStringLiteral("lauv"), goTo));
+    EXPECT_EQ(tree.find(u"lauv/out/Goto"), noNode);
+    EXPECT_FALSE(tree.write(QStringLiteral("lauv"), abort));
+    EXPECT_EQ(tree.snapshot(tree.find(u"lauv/out/Abort")).text, QStringLiteral("1 sent"));
 }
 
 TEST(VariableTree, IngestFromManyThreads)

@@ -105,6 +105,26 @@ TEST_F(Fixture, ValuesGoStaleWithoutUpdates)
     EXPECT_FALSE(model.data(depth, VariableTreeModel::StaleRole).toBool());
 }
 
+TEST_F(Fixture, AVariableOfAnEntityFollowsItWhenASecondEntityAppears)
+{
+    tree.setSystemName(0x1f, QStringLiteral("lauv"));
+    Variable motor;
+    motor.setTree(&model);
+    motor.setPath(QStringLiteral("lauv/EstimatedState@2/depth"));
+    Message m = state(0x1f, 4);
+    m.header.srcEnt = 2;
+    tree.ingest(m);
+    model.sync();
+    EXPECT_DOUBLE_EQ(motor.value().toDouble(), 4) << "one entity: its path finds the shared row";
+
+    m.header.srcEnt = 3;
+    m.setNumber(m.def()->indexOf(u"depth"), 9);
+    tree.ingest(m); // entity 3 joins: rows of their own, the shared row is the latest of any
+    model.sync();
+    EXPECT_DOUBLE_EQ(motor.value().toDouble(), 4) << "still entity 2's value, not the latest of any";
+    EXPECT_EQ(motor.node(), tree.find(u"lauv/EstimatedState@2/depth"));
+}
+
 TEST_F(Fixture, VariablesFollowPathsBeforeTheyExistAndAcrossRenames)
 {
     Variable depth;

@@ -1,0 +1,226 @@
+#include "ConsoleSession.h"
+
+#include "MessageJson.h"
+
+#include <QJsonObject>
+
+using namespace neptus;
+
+namespace {
+
+// Decode errors older than this no longer keep a system's link alarm up.
+constexpr qint64 decodeErrorAlarmMs = 10000;
+
+QString systemLabel(quint16 id)
+{
+    return QStringLiteral("0x%1").arg(id, 4, 16, QLatin1Char('0'));
+}
+
+} // namespace
+
+ConsoleSession::ConsoleSession(std::shared_ptr<const msg::Schema> schema, QObject *parent)
+    : QObject(parent)
+    , m_schema(schema)
+    , m_schemas(std::make_shared<msg::SchemaSet>(schema))
+    , m_naming(m_tree, schema)
+    , m_scripts(std::make_unique<scripting::ScriptHost>(m_tree, m_graph))
+{
+    m_tree.setOutputSink(&m_router);
+    m_healthCheck.setInterval(250);
+    connect(&m_healthCheck, &QTimer::timeout, this, [this] {
+        m_health.check();
+        m_naming.check();
+    });
+    m_healthCheck.start();
+    m_second.setInterval(1000);
+    connect(&m_second, &QTimer::timeout, this, &ConsoleSession::tick);
+    m_second.start();
+}
+
+ConsoleSession::~ConsoleSession()
+{
+    // The links stop first: nothing may arrive while the rest goes.
+    m_dds.reset();
+    m_imc.reset();
+}
+
+std::expected<void, QString> ConsoleSession::setDefinitionsFor(const QString &system, const QString &file)
+{
+    auto schema = msg::Schema::load({file});
+    if (!schema)
+        return std::unexpected(QStringLiteral("definitions for %1: %2").arg(system, schema.error().toString()));
+    bool isId = false;
+    const uint id = system.toUInt(&isId, 0);
+    if (isId && id < 0xFFFF)
+        m_schemas->setFor(static_cast<quint16>(id), *schema);
+    else
+        m_schemas->setFor(system, *schema);
+    return {};
+}
+
+std::expected<void, QString> ConsoleSession::startImc(const transport::ImcUdpConfig &config)
+{
+    auto imc = std::make_unique<transport::ImcUdpTransport>(m_schemas, config);
+    if (auto started = imc->start(); !started)
+        return started;
+    attachImc(std::move(imc));
+    return {};
+}
+
+transport::ImcUdpTransport *ConsoleSession::attachImc(std::unique_ptr<transport::ImcUdpTransport> imc)
+{
+    const QString link = QStringLiteral("IMC/UDP");
+    connect(imc.get(), &transport::ImcUdpTransport::received, this,
+            [this, link](const msg::Message &m, qsizetype bytes) { ingest(m, link, bytes); });
+    connect(imc.get(), &transport::ImcUdpTransport::decodeFailed, this,
+            [this, link](quint16 system, const QString &peer, const QString &reason) {
+                decodeFailed(system, link, peer, reason);
+            });
+    connect(imc.get(), &transport::ImcUdpTransport::versionAnnounced, this,
+            [this](quint16 system, const QString &version) {
+                m_announcedVersions.insert(system, version);
+                updateDefinitionsAlarm(system, m_linkStatistics.system(system));
+            });
+    m_imc = std::move(imc);
+    addLink(link, m_imc.get());
+    return m_imc.get();
+}
+
+std::expected<void, QString> ConsoleSession::startDds(const transport::DdsConfig &config)
+{
+    auto dds = std::make_unique<transport::DdsTransport>(m_schemas, config);
+    const QString link = QStringLiteral("DDS");
+    // Straight into the session from Cyclone's threads: the tree, alarms and statistics are thread-safe.
+    dds->setDirectReceiver([this, link](const msg::Message &m, qsizetype bytes) { ingest(m, link, bytes); });
+    if (auto started = dds->start(); !started)
+        return started;
+    connect(dds.get(), &transport::DdsTransport::decodeFailed, this,
+            [this, link](quint16 system, const QString &peer, const QString &reason) {
+                decodeFailed(system, link, peer, reason);
+            });
+    connect(dds.get(), &transport::DdsTransport::definitionsDiffer, this,
+            [this](quint16 system, const QString &, const QString &theirs, const QString &ours) {
+                definitionsDiffer(system, theirs, ours);
+            });
+    m_dds = std::move(dds);
+    addLink(link, m_dds.get());
+    return {};
+}
+
+QString ConsoleSession::send(const QString &system, const QVariantMap &json)
+{
+    auto message = msg::fromJson(*m_schema, QJsonObject::fromVariantMap(json));
+    if (!message)
+        return message.error();
+    if (!m_tree.write(system, std::move(*message)))
+        return tr("not sent: no link to '%1'").arg(system);
+    return {};
+}
+
+void ConsoleSession::addLink(const QString &name, tree::VariableTree::OutputSink *sink)
+{
+    m_router.addLink(name, sink);
+}
+
+void ConsoleSession::definitionsDiffer(quint16 system, const QString &theirDigest, const QString &ourDigest)
+{
+    m_digestNotes.insert(system, tr("speaks other message definitions (digest %1, ours %2): its values may be misread")
+                                     .arg(theirDigest.left(8), ourDigest.left(8)));
+    updateDefinitionsAlarm(system, m_linkStatistics.system(system));
+}
+
+void ConsoleSession::ingest(const msg::Message &message, const QString &link, qsizetype bytes)
+{
+    const quint16 source = message.header.src;
+    if (!link.isEmpty() && m_router.linkOf(source) != link) {
+        m_router.heard(source, link);
+        m_tree.setSystemLink(source, link);
+    }
+    if (message.def() && message.def()->id == 151 && message.def()->abbrev == u"Announce")
+        m_schemas->learnName(source, message.text(u"sys_name"));
+    m_tree.ingest(message);
+    m_health.observe(message);
+    m_naming.observe(message);
+    m_linkStatistics.received(source, link, message.id(), message.abbrev(), !message.isOpaque(), bytes);
+}
+
+void ConsoleSession::decodeFailed(quint16 system, const QString &link, const QString &peer, const QString &reason)
+{
+    m_linkStatistics.decodeFailed(system, link, peer, reason);
+}
+
+void ConsoleSession::tick()
+{
+    m_linkStatistics.tick();
+    updateLinkAlarms();
+}
+
+void ConsoleSession::updateLinkAlarms()
+{
+    const qint64 now = m_tree.clock().now().toMSecsSinceEpoch();
+    for (const transport::LinkStatistics::System &system : m_linkStatistics.systems()) {
+        const bool known = system.id != transport::LinkStatistics::unknownSystem;
+        const QString name = known ? m_tree.systemName(system.id) : QString();
+
+        // Packets that did not decode, while they keep coming.
+        QString link;
+        if (system.decodeErrors > 0 && now - system.lastErrorMs < decodeErrorAlarmMs)
+            link = tr("%n packet(s) could not be decoded; the last, from %1: %2", nullptr,
+                      static_cast<int>(std::min<quint64>(system.decodeErrors, INT_MAX)))
+                       .arg(system.peer, system.lastError);
+        if (link != m_linkAlarmText.value(system.id)) {
+            m_linkAlarmText.insert(system.id, link);
+            const auto node = m_graph.ensure(known ? QStringLiteral("systems/%1/link").arg(name)
+                                                   : QStringLiteral("links/unknown senders"));
+            m_graph.raise(node, link.isEmpty() ? alarms::Normal : alarms::Warning, link);
+        }
+        if (!known)
+            continue;
+
+        updateDefinitionsAlarm(system.id, system);
+    }
+}
+
+void ConsoleSession::updateDefinitionsAlarm(quint16 id, const transport::LinkStatistics::System &system)
+{
+    // Definitions that may not be the vehicle's: another digest or IMC version, types we lack.
+    QStringList notes;
+    if (m_digestNotes.contains(id))
+        notes << m_digestNotes.value(id);
+    const QString version = m_announcedVersions.value(id);
+    if (!version.isEmpty() && version != m_schema->version() && !m_schemas->hasOwn(id))
+        notes << tr("announces IMC %1, ours is %2").arg(version, m_schema->version());
+    QStringList unknown;
+    for (const auto &type : system.types) {
+        if (!type.known)
+            unknown << QString::number(type.id);
+    }
+    if (!unknown.isEmpty())
+        notes << tr("sends %n message type(s) our definitions lack (id %1)", nullptr, static_cast<int>(unknown.size()))
+                     .arg(unknown.join(QStringLiteral(", ")));
+    QString text;
+    if (!notes.isEmpty())
+        text = notes.join(QStringLiteral("; ")) + tr(" (decode it with --defs-for %1 FILE)").arg(systemLabel(id));
+    if (text == m_definitionsAlarmText.value(id))
+        return;
+    m_definitionsAlarmText.insert(id, text);
+    const auto node = m_graph.ensure(QStringLiteral("systems/%1/definitions").arg(m_tree.systemName(id)));
+    m_graph.raise(node, text.isEmpty() ? alarms::Normal : alarms::Warning, text);
+}
+
+QString ConsoleSession::dumpTree() const
+{
+    QString out;
+    std::vector<tree::NodeId> stack{m_tree.root()};
+    while (!stack.empty()) {
+        const tree::NodeId node = stack.back();
+        stack.pop_back();
+        if (node != m_tree.root()) {
+            const auto snapshot = m_tree.snapshot(node);
+            out += m_tree.path(node) + u'\t' + snapshot.text + u'\t' + snapshot.unit + u'\n';
+        }
+        for (int row = m_tree.childCount(node) - 1; row >= 0; --row)
+            stack.push_back(m_tree.child(node, row));
+    }
+    return out;
+}

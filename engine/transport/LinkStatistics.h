@@ -1,0 +1,87 @@
+#pragma once
+
+#include "Clock.h"
+
+#include <QHash>
+#include <QMutex>
+#include <QString>
+
+#include <vector>
+
+namespace neptus::transport {
+
+// What each system's link carries, for the operator and for alarms:
+// messages and bytes (totals and per second), each message type with its
+// count and rate, types our definitions lack, and packets that could not be
+// decoded with the last reason. Transports report every packet (any
+// thread); tick() turns counts into rates once a second.
+class LinkStatistics
+{
+public:
+    static constexpr quint16 unknownSystem = 0xFFFF;
+
+    struct Type
+    {
+        quint16 id = 0;
+        QString abbrev;          // "Unknown(281)" for a type the definitions lack
+        bool known = true;
+        quint64 count = 0;
+        double rate = 0;         // per second, over the last tick
+    };
+    struct System
+    {
+        quint16 id = unknownSystem;
+        QString link;            // "IMC/UDP", "DDS"
+        QString peer;            // where its last undecodable packet came from
+        quint64 messages = 0;
+        quint64 bytes = 0;
+        double messageRate = 0;
+        double byteRate = 0;
+        quint64 decodeErrors = 0;
+        QString lastError;
+        qint64 lastErrorMs = 0;  // the clock's time of the last decode error
+        std::vector<Type> types; // by id
+        int unknownTypes() const;
+    };
+
+    explicit LinkStatistics(const Clock *clock = &Clock::system());
+
+    // A decoded packet of `bytes` bytes from `system` over `link`.
+    void received(quint16 system, const QString &link, quint16 messageId, const QString &abbrev, bool known,
+                  qsizetype bytes);
+    // A packet that could not be decoded; `system` is unknownSystem when not
+    // even its header said who sent it.
+    void decodeFailed(quint16 system, const QString &link, const QString &peer, const QString &reason);
+    // Computes rates over the time since the last tick.
+    void tick();
+
+    // Every system, by id; undecodable packets of unknown senders under unknownSystem.
+    std::vector<System> systems() const;
+    System system(quint16 id) const;
+    // Bumps with every tick and every new system or type: views compare it.
+    quint64 version() const;
+
+private:
+    struct TypeCounter
+    {
+        Type type;
+        quint64 countAtTick = 0;
+    };
+    struct Counter
+    {
+        System system;
+        quint64 messagesAtTick = 0;
+        quint64 bytesAtTick = 0;
+        QHash<quint16, TypeCounter> types;
+    };
+    Counter &counterLocked(quint16 system);
+    System snapshotLocked(const Counter &counter) const;
+
+    const Clock *m_clock;
+    mutable QMutex m_mutex;
+    QHash<quint16, Counter> m_counters;
+    qint64 m_lastTickMs = 0;
+    quint64 m_version = 0;
+};
+
+} // namespace neptus::transport

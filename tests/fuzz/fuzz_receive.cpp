@@ -1,0 +1,143 @@
+// libFuzzer target: the console's whole receive path, as a peer on the
+// network drives it. Each input is a burst of datagrams handed to the IMC/UDP
+// transport's receive() (no socket), which decodes them with the sender's
+// definitions and feeds the console session: variable tree, health monitor,
+// entity naming, link statistics; then the tree's QML model syncs and every
+// row the model shows is read, as a view would, and the link alarms update.
+//
+// Input: byte 0 picks the definitions (even: the shipped msgdefs/, odd:
+// tests/data/tiny-imc.xml, where most types are unknown); then datagrams as
+// [2-byte big-endian length][bytes], repeated.
+//
+// Beyond "no crash, no sanitizer report", it checks on every input that each
+// datagram is accounted for: a packet that decodes lands in the tree under
+// its system and type, one that does not is counted as a decode error.
+#include "ConsoleSession.h"
+
+#include <QCoreApplication>
+#include <QModelIndex>
+
+#include <cstdio>
+#include <cstdlib>
+#include <memory>
+
+using namespace neptus;
+
+namespace {
+
+std::shared_ptr<const msg::Schema> load(const QStringList &files)
+{
+    auto schema = msg::Schema::load(files);
+    if (!schema) {
+        std::fprintf(stderr, "fuzz_receive: %s\n", qPrintable(schema.error().toString()));
+        std::abort();
+    }
+    return *schema;
+}
+
+struct Console
+{
+    explicit Console(std::shared_ptr<const msg::Schema> schema)
+        : session(std::move(schema))
+        , imc(*session.attachImc(std::make_unique<transport::ImcUdpTransport>(session.schemaSet(), config())))
+    {
+    }
+    static transport::ImcUdpConfig config()
+    {
+        transport::ImcUdpConfig c;
+        c.port = 0;
+        c.discovery = false;
+        return c;
+    }
+    ConsoleSession session;
+    transport::ImcUdpTransport &imc; // never started: receive() is called directly
+    int inputs = 0;
+};
+
+// Reads every row the model shows, as a tree view would.
+int readModel(const QAbstractItemModel &model, const QModelIndex &parent, int budget)
+{
+    for (int row = 0; row < model.rowCount(parent) && budget > 0; ++row) {
+        for (int column = 0; column < model.columnCount(parent); ++column)
+            model.data(model.index(row, column, parent), Qt::DisplayRole);
+        --budget;
+        budget = readModel(model, model.index(row, 0, parent), budget);
+    }
+    return budget;
+}
+
+std::unique_ptr<Console> &console(bool tiny)
+{
+    static int argc = 1;
+    static char name[] = "fuzz_receive";
+    static char *argv[] = {name, nullptr};
+    static QCoreApplication app(argc, argv);
+    static const auto shipped = load(msg::Schema::filesIn(QStringLiteral(NEPTUS_MSGDEFS_DIR)));
+    static const auto small = load({QStringLiteral(NEPTUS_SOURCE_DIR "/tests/data/tiny-imc.xml")});
+    static std::unique_ptr<Console> consoles[2];
+    std::unique_ptr<Console> &c = consoles[tiny ? 1 : 0];
+    // A console lives for many inputs (state builds up as on a real link),
+    // then starts afresh so memory stays bounded over millions of runs.
+    if (!c || ++c->inputs > 2000)
+        c = std::make_unique<Console>(tiny ? small : shipped);
+    return c;
+}
+
+} // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
+{
+    if (size < 1)
+        return 0;
+    Console &c = *console(data[0] & 1);
+    const msg::Codec &codec = c.imc.schemas().defaults();
+    const quint64 errorsBefore = [&] {
+        quint64 n = 0;
+        for (const auto &s : c.session.linkStatistics().systems())
+            n += s.decodeErrors;
+        return n;
+    }();
+    quint64 failed = 0;
+    struct Landed
+    {
+        quint16 system;
+        QString abbrev;
+    };
+    std::vector<Landed> landed;
+    size_t at = 1;
+    while (at + 2 <= size) {
+        const size_t length = std::min<size_t>((size_t(data[at]) << 8) | data[at + 1], size - at - 2);
+        const QByteArrayView datagram(data + at + 2, static_cast<qsizetype>(length));
+        at += 2 + length;
+        c.imc.receive(datagram, QHostAddress::LocalHost, 6002);
+        const auto message = codec.decode(datagram);
+        if (!message)
+            ++failed;
+        else if (message->header.src != Console::config().systemId)
+            landed.push_back({message->header.src, message->abbrev()});
+    }
+    c.session.treeModel()->sync();
+    c.session.treeModel()->refreshAges();
+    readModel(*c.session.treeModel(), {}, 300);
+    c.session.tick();
+    c.session.linksModel()->refresh();
+
+    quint64 errorsAfter = 0;
+    for (const auto &s : c.session.linkStatistics().systems())
+        errorsAfter += s.decodeErrors;
+    if (errorsAfter - errorsBefore != failed) {
+        std::fprintf(stderr, "fuzz_receive: %llu packets failed to decode, %llu decode errors were counted\n",
+                     static_cast<unsigned long long>(failed),
+                     static_cast<unsigned long long>(errorsAfter - errorsBefore));
+        std::abort();
+    }
+    tree::VariableTree &tree = c.session.variableTree();
+    for (const Landed &l : landed) {
+        if (tree.find(tree.systemName(l.system) + u'/' + l.abbrev) == tree::noNode) {
+            std::fprintf(stderr, "fuzz_receive: %s from 0x%04x decoded but is not in the tree\n", qPrintable(l.abbrev),
+                         l.system);
+            std::abort();
+        }
+    }
+    return 0;
+}
