@@ -142,13 +142,23 @@ void ImcUdpTransport::receive(QByteArrayView datagram, const QHostAddress &from,
     const quint16 source = message->header.src;
     if (source == m_config.systemId)
         return; // our own, relayed back (or our own Announce on the discovery ports)
-    if (message->def() && message->def()->abbrev == u"Announce") {
+    const bool announce = message->def() && message->def()->abbrev == u"Announce";
+    if (announce) {
         learnFromAnnounce(*message, from);
     } else if (!m_endpoints.contains(source) && fromPort != 0) {
         // A vehicle that talks to us is reachable where it talks from.
         m_endpoints.insert(source, {from, fromPort});
     }
     emit received(*message, datagram.size());
+    if (!announce)
+        return;
+    // After `received`, so that the system already has its name.
+    static const QRegularExpression version(QStringLiteral(R"(imc\+info://[^;]*/version/([^/;]+))"));
+    const auto match = version.match(message->text(u"services"));
+    if (match.hasMatch() && m_versions.value(source) != match.captured(1)) {
+        m_versions.insert(source, match.captured(1));
+        emit versionAnnounced(source, match.captured(1));
+    }
 }
 
 void ImcUdpTransport::learnFromAnnounce(const msg::Message &announce, const QHostAddress &from)
@@ -158,11 +168,6 @@ void ImcUdpTransport::learnFromAnnounce(const msg::Message &announce, const QHos
     m_schemas->learnName(source, name);
     // services: "dune://0.0.0.0/uid/...;imc+info://0.0.0.0/version/5.4.31;imc+udp://127.0.0.1:6002/;..."
     const QString services = announce.text(u"services");
-    static const QRegularExpression version(QStringLiteral(R"(imc\+info://[^;]*/version/([^/;]+))"));
-    if (const auto match = version.match(services); match.hasMatch() && m_versions.value(source) != match.captured(1)) {
-        m_versions.insert(source, match.captured(1));
-        emit versionAnnounced(source, match.captured(1));
-    }
     // A vehicle lists one imc+udp service per interface: take the one it
     // sent from, else one on loopback when we are there, else the first.
     static const QRegularExpression service(QStringLiteral(R"(imc\+udp://([^:/;]+):(\d+))"));

@@ -88,3 +88,34 @@ TEST(CommandLine, NamesWhatIsWrong)
     ASSERT_FALSE(line);
     EXPECT_TRUE(line.error().contains(QStringLiteral("stray")));
 }
+
+TEST(CommandLine, DefinitionsPerSystemInBothSpellings)
+{
+    QTemporaryDir dir;
+    const QString defs = dir.filePath(QStringLiteral("IMC.xml.gz"));
+    QFile file(defs);
+    ASSERT_TRUE(file.open(QIODevice::WriteOnly));
+    file.close();
+    const auto line = parse({QStringLiteral("--defs-for"), QStringLiteral("0x00d1"), defs, QStringLiteral("--defs-for"),
+                             QStringLiteral("lauv-xplore-1=") + defs, QStringLiteral("--defs"), defs,
+                             QStringLiteral("--imc-discovery"), QStringLiteral("off"), QStringLiteral("--dump-tree"),
+                             QStringLiteral("tree.txt"), QStringLiteral("--quit-after"), QStringLiteral("5000")});
+    ASSERT_TRUE(line) << line.error().toStdString();
+    ASSERT_EQ(line->definitionsFor.size(), 2);
+    EXPECT_EQ(line->definitionsFor[0], std::pair(QStringLiteral("0x00d1"), defs));
+    EXPECT_EQ(line->definitionsFor[1], std::pair(QStringLiteral("lauv-xplore-1"), defs));
+    EXPECT_EQ(line->definitionFiles, QStringList{defs});
+    EXPECT_FALSE(line->imcDiscovery);
+    EXPECT_EQ(line->dumpTreeFile, QStringLiteral("tree.txt"));
+    EXPECT_EQ(line->quitAfterMs, 5000);
+    EXPECT_TRUE(parse({})->imcDiscovery) << "on by default";
+
+    const auto missing = parse({QStringLiteral("--defs-for"), QStringLiteral("0x00d1"), dir.filePath(QStringLiteral("no.xml"))});
+    ASSERT_FALSE(missing);
+    EXPECT_TRUE(missing.error().contains(QStringLiteral("no.xml"))) << missing.error().toStdString();
+    const auto shapeless = parse({QStringLiteral("--defs-for"), QStringLiteral("0x00d1")});
+    ASSERT_FALSE(shapeless);
+    EXPECT_TRUE(shapeless.error().contains(QStringLiteral("--defs-for"))) << shapeless.error().toStdString();
+    EXPECT_FALSE(parse({QStringLiteral("--imc-discovery"), QStringLiteral("maybe")}));
+    EXPECT_FALSE(parse({QStringLiteral("--quit-after"), QStringLiteral("-1")}));
+}

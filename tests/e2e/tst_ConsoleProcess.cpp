@@ -1,0 +1,63 @@
+// The console program itself, started as an operator starts it, sent what a
+// real vehicle sends: it must live through it and show it.
+#include "Schemas.h"
+
+#include <QHostAddress>
+#include <QProcess>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QUdpSocket>
+
+#include <gtest/gtest.h>
+
+namespace {
+
+quint16 freeUdpPort()
+{
+    QUdpSocket probe;
+    probe.bind(QHostAddress::LocalHost, 0);
+    return probe.localPort();
+}
+
+} // namespace
+
+TEST(ConsoleProcess, APacketOfATypeItsDefinitionsLackNeitherKillsItNorIsHidden)
+{
+    // Before the fix, one such packet ended the console with a segfault (exit 139).
+    QTemporaryDir dir;
+    const QString dump = dir.filePath(QStringLiteral("tree.txt"));
+    const quint16 port = freeUdpPort();
+    QProcess console;
+    console.setProcessChannelMode(QProcess::MergedChannels);
+    console.start(QStringLiteral(NEPTUS_CONSOLE_PATH),
+                  {QStringLiteral("--console"), QStringLiteral(NEPTUS_SOURCE_DIR "/qml/consoles/Inspector.qml"),
+                   QStringLiteral("--defs"), QStringLiteral(NEPTUS_SOURCE_DIR "/tests/data/tiny-imc.xml"),
+                   QStringLiteral("--imc-port"), QString::number(port), QStringLiteral("--imc-discovery"),
+                   QStringLiteral("off"), QStringLiteral("--dds-domain"), QStringLiteral("-1"),
+                   QStringLiteral("--quit-after"), QStringLiteral("6000"), QStringLiteral("--dump-tree"), dump});
+    ASSERT_TRUE(console.waitForStarted(5000));
+    // Listening once the port is taken.
+    ASSERT_TRUE(QTest::qWaitFor([&] {
+        QUdpSocket probe;
+        return !probe.bind(QHostAddress::LocalHost, port);
+    }, 10000)) << console.readAll().constData();
+
+    // ServoPosition (281) from a DUNE vehicle (0x00D1, entity 37), as the crash report had it.
+    const QByteArray servo = QByteArray::fromHex("54fe1901050000000040fc54d941d10025ffffff030000003f8463");
+    QUdpSocket vehicle;
+    for (int i = 0; i < 3; ++i) {
+        vehicle.writeDatagram(servo, QHostAddress::LocalHost, port);
+        QTest::qWait(50);
+    }
+    vehicle.writeDatagram(QByteArray("garbage, not a packet"), QHostAddress::LocalHost, port);
+
+    ASSERT_TRUE(console.waitForFinished(30000));
+    const QByteArray output = console.readAll();
+    EXPECT_EQ(console.exitStatus(), QProcess::NormalExit) << output.constData();
+    EXPECT_EQ(console.exitCode(), 0) << output.constData();
+    QFile tree(dump);
+    ASSERT_TRUE(tree.open(QIODevice::ReadOnly)) << output.constData();
+    const QString text = QString::fromUtf8(tree.readAll());
+    EXPECT_TRUE(text.contains(QStringLiteral("0x00d1/Unknown(281)\tunknown type 281, 5 bytes · 3 received")))
+        << text.toStdString();
+}

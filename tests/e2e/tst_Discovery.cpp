@@ -1,0 +1,60 @@
+// IMC discovery the standard way, against a simulated vehicle as strict as a
+// stock DUNE vehicle: it announces only to the IMC discovery ports
+// (127.0.0.1:30100-30104), streams only to systems that announced themselves
+// and ignores everyone else. The console side is the real session with its
+// IMC/UDP link on the default discovery ports.
+#include "ConsoleSession.h"
+
+#include "Schemas.h"
+#include "SimProcess.h"
+
+#include <QElapsedTimer>
+#include <QTest>
+#include <QUdpSocket>
+
+#include <gtest/gtest.h>
+
+using namespace neptus;
+
+TEST(Discovery, AStockImcVehicleIsFoundOnTheDiscoveryPortsAndItsEntitiesNamed)
+{
+    ConsoleSession session(test::shippedSchema());
+    transport::ImcUdpConfig config;
+    config.port = 0; // discovery on its standard ports, the link on any
+    ASSERT_TRUE(session.startImc(config));
+    ASSERT_GE(session.imc()->discoveryPort(), 30100);
+    ASSERT_LE(session.imc()->discoveryPort(), 30104);
+
+    QElapsedTimer clock;
+    clock.start();
+    test::SimProcess vehicle;
+    vehicle.start({QStringLiteral("--id"), QStringLiteral("0xd1"), QStringLiteral("--name"),
+                   QStringLiteral("lauv-simulator-1"), QStringLiteral("--port"), QStringLiteral("16020"),
+                   QStringLiteral("--like-dune")});
+    const tree::VariableTree &tree = session.variableTree();
+    const bool found = QTest::qWaitFor([&] {
+        const auto depth = tree.find(u"lauv-simulator-1/EstimatedState/depth");
+        return depth != tree::noNode && tree.snapshot(depth).present
+               && tree.find(u"lauv-simulator-1/EntityState@Navigation/state") != tree::noNode
+               && tree.entityLabel(0xd1, 3) == QStringLiteral("Batteries");
+    }, 10000);
+    const qint64 elapsed = clock.elapsed();
+    ASSERT_TRUE(found) << "not discovered and named within 10 s; tree:\n"
+                       << session.dumpTree().left(2000).toStdString() << "\nvehicle:\n" << vehicle.output.constData();
+    std::printf("discovered, streaming and entities named %lld ms after the vehicle started\n",
+                static_cast<long long>(elapsed));
+    EXPECT_TRUE(vehicle.output.contains("received EntityList from 0x4001")) << "the console asked for the names";
+    EXPECT_EQ(tree.snapshot(tree.find(u"lauv-simulator-1/out/EntityList/op")).text, QStringLiteral("QUERY"));
+    // The entities' alarms carry their labels too.
+    EXPECT_TRUE(QTest::qWaitFor([&] {
+        return session.alarmGraph().find(QStringLiteral("systems/lauv-simulator-1/Navigation")) != alarms::AlarmGraph::noNode;
+    }, 3000));
+
+    // Someone who never announced itself is ignored by such a vehicle: the
+    // reason the console must announce on the discovery ports.
+    msg::Message beat(test::shippedSchema()->byAbbrev(u"Heartbeat"));
+    beat.header.src = 0x4444;
+    QUdpSocket stranger;
+    stranger.writeDatagram(*msg::Codec(test::shippedSchema()).encode(beat), QHostAddress::LocalHost, 16020);
+    EXPECT_TRUE(QTest::qWaitFor([&] { return vehicle.output.contains("ignoring 0x4444"); }, 3000)) << vehicle.output.constData();
+}
