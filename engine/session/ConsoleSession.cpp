@@ -23,7 +23,6 @@ ConsoleSession::ConsoleSession(std::shared_ptr<const msg::Schema> schema, QObjec
     , m_schema(schema)
     , m_schemas(std::make_shared<msg::SchemaSet>(schema))
     , m_naming(m_tree, schema)
-    , m_scripts(std::make_unique<scripting::ScriptHost>(m_tree, m_graph))
 {
     m_tree.setOutputSink(&m_router);
     m_healthCheck.setInterval(250);
@@ -42,6 +41,13 @@ ConsoleSession::~ConsoleSession()
     // The links stop first: nothing may arrive while the rest goes.
     m_dds.reset();
     m_imc.reset();
+}
+
+scripting::ScriptHost *ConsoleSession::scripts()
+{
+    if (!m_scripts)
+        m_scripts = std::make_unique<scripting::ScriptHost>(m_tree, m_graph);
+    return m_scripts.get();
 }
 
 std::expected<void, QString> ConsoleSession::setDefinitionsFor(const QString &system, const QString &file)

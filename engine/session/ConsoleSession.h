@@ -51,7 +51,9 @@ public:
     neptus::tree::VariableTreeModel *treeModel() { return &m_treeModel; }
     neptus::alarms::AlarmListModel *alarmModel() { return &m_alarmModel; }
     neptus::transport::LinkStatisticsModel *linksModel() { return &m_linksModel; }
-    neptus::scripting::ScriptHost *scripts() { return m_scripts.get(); }
+    // Made on first use: a session that runs no alarm scripts (a headless
+    // recorder, the receive-path fuzz target) starts no script engine.
+    neptus::scripting::ScriptHost *scripts();
     neptus::geo::Tracks *tracks() { return &m_tracks; }
     neptus::transport::ImcUdpTransport *imc() { return m_imc.get(); }
     neptus::transport::DdsTransport *dds() { return m_dds.get(); }
