@@ -252,21 +252,22 @@ void ImcUdpTransport::heartbeat()
         if (!covered)
             targets.append({quint16(0xFFFF), Endpoint{address, port}});
     }
-    for (const auto &[system, endpoint] : targets) {
-        msg::Message beat(beatDef);
-        stamp(beat, system);
-        send(beat, endpoint);
-        if (announceToo) {
-            msg::Message announce = announcement();
-            stamp(announce, system);
-            send(announce, endpoint);
-        }
-    }
+    // Announce first: a vehicle takes a heartbeat only from a system it knows.
     if (announceToo) {
         msg::Message announce = announcement();
         stamp(announce, 0xFFFF);
         for (const Endpoint &target : discoveryTargets())
             send(announce, target);
+    }
+    for (const auto &[system, endpoint] : targets) {
+        if (announceToo) {
+            msg::Message announce = announcement();
+            stamp(announce, system);
+            send(announce, endpoint);
+        }
+        msg::Message beat(beatDef);
+        stamp(beat, system);
+        send(beat, endpoint);
     }
 }
 
