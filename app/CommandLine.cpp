@@ -1,3 +1,4 @@
+#include "core/DataFiles.h"
 #include "CommandLine.h"
 
 #include <QCommandLineParser>
@@ -14,7 +15,7 @@ std::expected<CommandLine, QString> CommandLine::parse(const QStringList &argume
     parser.addVersionOption();
     const QCommandLineOption console(QStringLiteral("console"),
         QStringLiteral("Console layout (QML file) to open. Default: %1/Default.qml")
-            .arg(QStringLiteral(NEPTUS_CONSOLES_DIR)),
+            .arg(neptus::dataPath(QStringLiteral("consoles"))),
         QStringLiteral("file"));
     const QCommandLineOption screenshot(QStringLiteral("screenshot"),
         QStringLiteral("Render the console, write it to a PNG file and exit."), QStringLiteral("file"));
@@ -82,7 +83,7 @@ std::expected<CommandLine, QString> CommandLine::parse(const QStringList &argume
     CommandLine result;
     result.consoleFile = parser.isSet(console)
         ? QFileInfo(parser.value(console)).absoluteFilePath()
-        : QDir(QStringLiteral(NEPTUS_CONSOLES_DIR)).filePath(QStringLiteral("Default.qml"));
+        : QDir(neptus::dataPath(QStringLiteral("consoles"))).filePath(QStringLiteral("Default.qml"));
     if (!QFileInfo(result.consoleFile).isFile())
         return std::unexpected(QStringLiteral("console file '%1' does not exist").arg(result.consoleFile));
     result.screenshotFile = parser.value(screenshot);

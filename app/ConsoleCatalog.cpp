@@ -1,3 +1,4 @@
+#include "core/DataFiles.h"
 #include "ConsoleCatalog.h"
 
 #include "LayoutDocument.h"
@@ -8,7 +9,7 @@
 
 QStringList ConsoleCatalog::standardDirectories()
 {
-    return {QStringLiteral(NEPTUS_CONSOLES_DIR),
+    return {neptus::dataPath(QStringLiteral("consoles")),
             QDir(QStandardPaths::writableLocation(QStandardPaths::GenericDataLocation)).filePath(QStringLiteral("neptus-qt/consoles"))};
 }
 

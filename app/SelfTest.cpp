@@ -1,7 +1,8 @@
+#include "core/DataFiles.h"
 #include "SelfTest.h"
 
 #include "CommandLine.h"
-#include "ConsoleSession.h"
+#include "qmlmodels/ConsoleSession.h"
 
 #include <QDir>
 #include <QFile>
@@ -91,7 +92,7 @@ int checkModuleTypes(QQmlEngine &engine, const QString &uri, const QStringList &
 
 int checkConsoles(const CommandLine &commandLine)
 {
-    const QDir dir(QStringLiteral(NEPTUS_CONSOLES_DIR));
+    const QDir dir(neptus::dataPath(QStringLiteral("consoles")));
     QStringList consoles;
     for (const QString &name : dir.entryList({QStringLiteral("*.qml")}, QDir::Files, QDir::Name))
         consoles.append(dir.filePath(name));
@@ -100,7 +101,7 @@ int checkConsoles(const CommandLine &commandLine)
     // `--self-test --console FILE` checks the user's own layout too.
     if (!consoles.contains(commandLine.consoleFile))
         consoles.append(commandLine.consoleFile);
-    auto schema = neptus::msg::Schema::load(neptus::msg::Schema::filesIn(QStringLiteral(NEPTUS_MSGDEFS_DIR)));
+    auto schema = neptus::msg::Schema::load(neptus::msg::Schema::filesIn(neptus::dataPath(QStringLiteral("msgdefs"))));
     if (!schema) {
         g_problems.append(schema.error().toString());
         return 0;

@@ -1,9 +1,10 @@
 // neptus: the console. Parses the command line, then shows a console layout,
 // renders it to a PNG (--screenshot) or checks every QML file (--self-test).
+#include "core/DataFiles.h"
 #include "CommandLine.h"
 #include "ComponentPalette.h"
 #include "ConsoleCatalog.h"
-#include "ConsoleSession.h"
+#include "qmlmodels/ConsoleSession.h"
 #include "SelfTest.h"
 
 #include <QDir>
@@ -58,7 +59,7 @@ int main(int argc, char *argv[])
         return runSelfTest(*commandLine);
 
     const QStringList definitionFiles = commandLine->definitionFiles.isEmpty()
-        ? neptus::msg::Schema::filesIn(QStringLiteral(NEPTUS_MSGDEFS_DIR))
+        ? neptus::msg::Schema::filesIn(neptus::dataPath(QStringLiteral("msgdefs")))
         : commandLine->definitionFiles;
     auto schema = neptus::msg::Schema::load(definitionFiles);
     if (!schema) {
@@ -67,7 +68,7 @@ int main(int argc, char *argv[])
     }
     ConsoleSession session(*schema);
     for (const auto &[system, file] : commandLine->definitionsFor) {
-        if (auto set = session.setDefinitionsFor(system, file); !set) {
+        if (auto set = session.console().setDefinitionsFor(system, file); !set) {
             std::fprintf(stderr, "neptus: %s\n", qPrintable(set.error()));
             return 1;
         }
@@ -82,14 +83,14 @@ int main(int argc, char *argv[])
             const qsizetype colon = peer.lastIndexOf(u':');
             config.destinations.append({QHostAddress(peer.left(colon)), static_cast<quint16>(peer.mid(colon + 1).toUInt())});
         }
-        if (auto started = session.startImc(config); !started)
+        if (auto started = session.console().startImc(config); !started)
             std::fprintf(stderr, "neptus: %s; carrying on without IMC\n", qPrintable(started.error()));
     }
 
     // Cyclone DDS on the loopback configuration unless told otherwise.
     if (commandLine->ddsDomain >= 0) {
         const neptus::transport::DdsConfig config{static_cast<dds_domainid_t>(commandLine->ddsDomain), commandLine->ddsConfig};
-        if (auto started = session.startDds(config); !started)
+        if (auto started = session.console().startDds(config); !started)
             std::fprintf(stderr, "neptus: %s; carrying on without DDS\n", qPrintable(started.error()));
     }
 
@@ -134,7 +135,7 @@ int main(int argc, char *argv[])
     const int status = QCoreApplication::exec();
     if (!commandLine->dumpTreeFile.isEmpty()) {
         QFile dump(commandLine->dumpTreeFile);
-        if (!dump.open(QIODevice::WriteOnly | QIODevice::Truncate) || dump.write(session.dumpTree().toUtf8()) < 0) {
+        if (!dump.open(QIODevice::WriteOnly | QIODevice::Truncate) || dump.write(session.console().dumpTree().toUtf8()) < 0) {
             std::fprintf(stderr, "neptus: could not write the tree to '%s': %s\n",
                          qPrintable(commandLine->dumpTreeFile), qPrintable(dump.errorString()));
             return status == 0 ? 1 : status;

@@ -3,8 +3,8 @@
 // (engine/models/MeshFile.h). The console runs it as a separate process so
 // that a reader crashing on a damaged file cannot take the console with it.
 // Exit 0 with the mesh; 1 with the reason on standard error.
-#include "MeshFile.h"
-#include "ModelLoader.h"
+#include "models/MeshFile.h"
+#include "models/ModelLoader.h"
 
 #include <QCoreApplication>
 #include <QFile>

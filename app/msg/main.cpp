@@ -1,8 +1,9 @@
 // neptus-msg: the first tool to reach for when a link misbehaves. Lists the
 // message definitions, decodes IMC packets (hex) to JSON and encodes JSON back
 // to packets, with the same schema and codec the console uses.
-#include "Codec.h"
-#include "MessageJson.h"
+#include "core/DataFiles.h"
+#include "messages/Codec.h"
+#include "messages/MessageJson.h"
 
 #include <QCommandLineParser>
 #include <QCoreApplication>
@@ -190,7 +191,7 @@ int main(int argc, char *argv[])
 
     QStringList files = parser.values(defs);
     if (files.isEmpty())
-        files = Schema::filesIn(QStringLiteral(NEPTUS_MSGDEFS_DIR));
+        files = Schema::filesIn(neptus::dataPath(QStringLiteral("msgdefs")));
     auto schema = Schema::load(files);
     if (!schema)
         return fail(schema.error().toString());

@@ -4,9 +4,10 @@
 // every command addressed to it. With --like-dune it is as strict as a stock
 // DUNE vehicle (IMC discovery only, unknown senders ignored). Faults and a
 // communications drop can be switched on from the command line.
-#include "Codec.h"
-#include "DdsTransport.h"
-#include "SimulatedVehicle.h"
+#include "core/DataFiles.h"
+#include "messages/Codec.h"
+#include "transport/dds/DdsTransport.h"
+#include "sim/SimulatedVehicle.h"
 
 #include <QCommandLineParser>
 #include <QCoreApplication>
@@ -76,7 +77,7 @@ int main(int argc, char *argv[])
         parser.showVersion();
 
     auto schema = msg::Schema::load(parser.isSet(defs) ? parser.values(defs)
-                                                       : msg::Schema::filesIn(QStringLiteral(NEPTUS_MSGDEFS_DIR)));
+                                                       : msg::Schema::filesIn(dataPath(QStringLiteral("msgdefs"))));
     if (!schema) {
         std::fprintf(stderr, "neptus-sim: %s\n", qPrintable(schema.error().toString()));
         return 1;

@@ -1,4 +1,4 @@
-#include "AlarmGraph.h"
+#include "alarms/AlarmGraph.h"
 
 #include <QMutexLocker>
 

@@ -1,7 +1,7 @@
 #pragma once
 
-#include "AlarmLevel.h"
-#include "Clock.h"
+#include "alarms/AlarmLevel.h"
+#include "core/Clock.h"
 
 #include <QMutex>
 #include <QString>

@@ -1,4 +1,4 @@
-#include "AlarmLevel.h"
+#include "alarms/AlarmLevel.h"
 
 #include <algorithm>
 

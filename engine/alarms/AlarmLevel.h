@@ -2,11 +2,9 @@
 
 #include <QObject>
 #include <QString>
-#include <QtQml/qqmlregistration.h>
 
 namespace neptus::alarms {
 Q_NAMESPACE
-QML_NAMED_ELEMENT(AlarmLevel)
 
 // Alarm levels, ordered: a node shows the highest of its own and its
 // children's. From IMC EntityState.state: BOOT → Info, NORMAL → Normal,

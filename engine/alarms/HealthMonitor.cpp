@@ -1,4 +1,4 @@
-#include "HealthMonitor.h"
+#include "alarms/HealthMonitor.h"
 
 #include <QMutexLocker>
 

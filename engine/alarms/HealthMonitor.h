@@ -1,8 +1,8 @@
 #pragma once
 
-#include "AlarmGraph.h"
-#include "Message.h"
-#include "VariableTree.h"
+#include "alarms/AlarmGraph.h"
+#include "messages/Message.h"
+#include "tree/VariableTree.h"
 
 #include <QHash>
 #include <QMutex>

@@ -1,4 +1,4 @@
-#include "Gzip.h"
+#include "core/Gzip.h"
 
 #include <QFile>
 

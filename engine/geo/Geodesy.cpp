@@ -1,4 +1,4 @@
-#include "Geodesy.h"
+#include "geo/Geodesy.h"
 
 #include <Eigen/Geometry>
 

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "Geodesy.h"
+#include "geo/Geodesy.h"
 
 #include <QPointF>
 #include <QSizeF>

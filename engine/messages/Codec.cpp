@@ -1,6 +1,6 @@
-#include "Codec.h"
+#include "messages/Codec.h"
 
-#include "Crc16.h"
+#include "messages/Crc16.h"
 
 #include <QtEndian>
 

@@ -1,4 +1,4 @@
-#include "Crc16.h"
+#include "messages/Crc16.h"
 
 #include <QtEndian>
 

@@ -1,4 +1,4 @@
-#include "Message.h"
+#include "messages/Message.h"
 
 #include <bit>
 #include <cmath>

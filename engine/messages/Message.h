@@ -1,6 +1,6 @@
 #pragma once
 
-#include "Schema.h"
+#include "messages/Schema.h"
 
 #include <QByteArray>
 #include <QVarLengthArray>

@@ -1,4 +1,4 @@
-#include "MessageJson.h"
+#include "messages/MessageJson.h"
 
 #include <QJsonArray>
 #include <QJsonValue>

@@ -1,4 +1,4 @@
-#include "Schema.h"
+#include "messages/Schema.h"
 
 #include <QCryptographicHash>
 #include <QDir>

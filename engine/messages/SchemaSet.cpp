@@ -1,6 +1,6 @@
-#include "SchemaSet.h"
+#include "messages/SchemaSet.h"
 
-#include "MessageJson.h"
+#include "messages/MessageJson.h"
 
 #include <QReadLocker>
 #include <QWriteLocker>

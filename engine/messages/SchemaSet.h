@@ -1,6 +1,6 @@
 #pragma once
 
-#include "Codec.h"
+#include "messages/Codec.h"
 
 #include <QByteArrayView>
 #include <QHash>

@@ -1,4 +1,4 @@
-#include "MeshFile.h"
+#include "models/MeshFile.h"
 
 #include <QtEndian>
 

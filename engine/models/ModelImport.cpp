@@ -1,6 +1,6 @@
-#include "ModelImport.h"
+#include "models/ModelImport.h"
 
-#include "MeshFile.h"
+#include "models/MeshFile.h"
 
 #include <QCoreApplication>
 #include <QDir>

@@ -1,4 +1,4 @@
-#include "ModelLoader.h"
+#include "models/ModelLoader.h"
 
 #include <QFileInfo>
 

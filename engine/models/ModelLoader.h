@@ -1,6 +1,6 @@
 #pragma once
 
-#include "Mesh.h"
+#include "models/Mesh.h"
 
 #include <QString>
 

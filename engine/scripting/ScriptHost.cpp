@@ -1,4 +1,4 @@
-#include "ScriptHost.h"
+#include "scripting/ScriptHost.h"
 
 #include <QMetaObject>
 #include <QTimer>

@@ -1,13 +1,12 @@
 #pragma once
 
-#include "AlarmGraph.h"
-#include "ScriptRunner.h"
-#include "VariableTree.h"
+#include "alarms/AlarmGraph.h"
+#include "scripting/ScriptRunner.h"
+#include "tree/VariableTree.h"
 
 #include <QObject>
 #include <QThread>
 #include <QVariantMap>
-#include <QtQml/qqmlregistration.h>
 
 #include <atomic>
 #include <expected>
@@ -27,8 +26,6 @@ class ScriptWorker;
 class ScriptHost : public QObject
 {
     Q_OBJECT
-    QML_ELEMENT
-    QML_UNCREATABLE("made by the console, which owns the tree and the alarms")
 
 public:
     ScriptHost(tree::VariableTree &tree, alarms::AlarmGraph &graph, QObject *parent = nullptr);

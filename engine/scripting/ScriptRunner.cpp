@@ -1,4 +1,4 @@
-#include "ScriptRunner.h"
+#include "scripting/ScriptRunner.h"
 
 #include <QQmlComponent>
 #include <QQmlEngine>

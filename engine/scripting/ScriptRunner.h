@@ -1,7 +1,7 @@
 #pragma once
 
-#include "AlarmLevel.h"
-#include "VariableTree.h"
+#include "alarms/AlarmLevel.h"
+#include "tree/VariableTree.h"
 
 #include <QJSEngine>
 #include <QJSValue>

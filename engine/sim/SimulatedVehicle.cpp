@@ -1,4 +1,4 @@
-#include "SimulatedVehicle.h"
+#include "sim/SimulatedVehicle.h"
 
 #include <cmath>
 #include <numbers>

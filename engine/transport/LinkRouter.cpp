@@ -1,10 +1,10 @@
-#include "LinkRouter.h"
+#include "transport/LinkRouter.h"
 
 #include <QMutexLocker>
 
 namespace neptus::transport {
 
-void LinkRouter::addLink(const QString &name, tree::VariableTree::OutputSink *sink)
+void LinkRouter::addLink(const QString &name, OutputSink *sink)
 {
     QMutexLocker lock(&m_mutex);
     m_links.emplace_back(name, sink);
@@ -22,18 +22,23 @@ QString LinkRouter::linkOf(quint16 system) const
     return m_systems.value(system);
 }
 
-bool LinkRouter::publish(quint16 system, const msg::Message &message)
+std::expected<void, QString> LinkRouter::publish(quint16 system, const msg::Message &message)
 {
-    tree::VariableTree::OutputSink *sink = nullptr;
+    OutputSink *sink = nullptr;
+    QString link;
     {
         QMutexLocker lock(&m_mutex);
-        const QString link = m_systems.value(system);
+        link = m_systems.value(system);
         for (const auto &[name, candidate] : m_links) {
             if (name == link)
                 sink = candidate;
         }
     }
-    return sink && sink->publish(system, message);
+    if (link.isEmpty())
+        return std::unexpected(QStringLiteral("no link to 0x%1: it was never heard").arg(system, 4, 16, QLatin1Char('0')));
+    if (!sink)
+        return std::unexpected(QStringLiteral("no link to 0x%1: %2 is not open").arg(system, 4, 16, QLatin1Char('0')).arg(link));
+    return sink->publish(system, message);
 }
 
 } // namespace neptus::transport

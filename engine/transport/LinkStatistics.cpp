@@ -1,4 +1,4 @@
-#include "LinkStatistics.h"
+#include "transport/LinkStatistics.h"
 
 #include <QMutexLocker>
 

@@ -1,4 +1,4 @@
-#include "VariableTree.h"
+#include "tree/VariableTree.h"
 
 #include <QMutexLocker>
 
@@ -420,44 +420,25 @@ void VariableTree::ingest(const Message &message)
 
 // --- Output ------------------------------------------------------------------------
 
-void VariableTree::setOutputSink(OutputSink *sink)
+std::optional<quint16> VariableTree::systemId(QStringView name) const
 {
     QMutexLocker lock(&m_mutex);
-    m_sink = sink;
+    for (const auto &info : m_systems) {
+        if (m_nodes[static_cast<size_t>(info->node)].name == name)
+            return info->id;
+    }
+    for (auto it = m_configuredNames.cbegin(); it != m_configuredNames.cend(); ++it) {
+        if (it.value() == name)
+            return it.key();
+    }
+    return std::nullopt;
 }
 
-bool VariableTree::write(const QString &system, Message message)
+void VariableTree::recordSent(quint16 id, Message message)
 {
-    quint16 id = 0xFFFF;
-    {
-        QMutexLocker lock(&m_mutex);
-        for (const auto &info : m_systems) {
-            if (m_nodes[static_cast<size_t>(info->node)].name == system)
-                id = info->id;
-        }
-        if (id == 0xFFFF) {
-            for (auto it = m_configuredNames.cbegin(); it != m_configuredNames.cend(); ++it) {
-                if (it.value() == system)
-                    id = it.key();
-            }
-        }
-    }
-    return id != 0xFFFF && write(id, std::move(message));
-}
-
-bool VariableTree::write(quint16 id, Message message)
-{
-    OutputSink *sink = nullptr;
-    {
-        QMutexLocker lock(&m_mutex);
-        sink = m_sink;
-    }
-    if (!sink || !message.def() || id == 0xFFFF)
-        return false;
+    if (!message.def() || id == 0xFFFF)
+        return;
     message.header.dst = id;
-    // Sent first, recorded after: the output branch shows only what went out.
-    if (!sink->publish(id, message))
-        return false;
     QMutexLocker lock(&m_mutex);
     SystemInfo &info = systemLocked(id);
     if (info.out == noNode)
@@ -482,7 +463,6 @@ bool VariableTree::write(quint16 id, Message message)
         addFieldNodesLocked(b.branch, *message.def(), index);
     }
     commitLocked(index, message, m_clock->now().toMSecsSinceEpoch());
-    return true;
 }
 
 // --- Reading -----------------------------------------------------------------------

@@ -1,7 +1,7 @@
 #pragma once
 
-#include "Clock.h"
-#include "Message.h"
+#include "core/Clock.h"
+#include "messages/Message.h"
 
 #include <QHash>
 #include <QMutex>
@@ -11,6 +11,7 @@
 
 #include <functional>
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace neptus::tree {
@@ -69,15 +70,6 @@ public:
         }
     };
 
-    // Writes of the output branch go here (a transport, or a test double).
-    class OutputSink
-    {
-    public:
-        virtual ~OutputSink() = default;
-        // False when `system` cannot be reached this way.
-        virtual bool publish(quint16 system, const msg::Message &message) = 0;
-    };
-
     explicit VariableTree(const Clock *clock = &Clock::system());
     ~VariableTree();
     VariableTree(const VariableTree &) = delete;
@@ -92,13 +84,12 @@ public:
     void setSystemLink(quint16 id, const QString &link);
 
     // --- Output ----------------------------------------------------------------
-    void setOutputSink(OutputSink *sink);
-    // Sends `message` to `system` through the sink and records it under
-    // "system/out/Message/..." so consoles show what was commanded. Returns
-    // false without a sink, for an unknown system, or when the sink cannot
-    // reach it.
-    bool write(const QString &system, msg::Message message);
-    bool write(quint16 system, msg::Message message);
+    // Records `message`, sent to `system`, under "system/out/Message/..." so
+    // consoles show what was commanded. The sender calls it once the link
+    // took the message.
+    void recordSent(quint16 system, msg::Message message);
+    // The id of the system shown as `name` (or configured with that name).
+    std::optional<quint16> systemId(QStringView name) const;
 
     // --- Structure (any thread) --------------------------------------------------
     NodeId root() const { return 0; }
@@ -157,7 +148,6 @@ private:
 
     mutable QMutex m_mutex;
     const Clock *m_clock;
-    OutputSink *m_sink = nullptr;
     std::vector<Node> m_nodes;
     std::vector<std::unique_ptr<Binding>> m_bindings;
     QHash<quint64, int> m_bindingIndex;     // (system, entity, id, perEntity) → binding

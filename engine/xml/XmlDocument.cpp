@@ -1,6 +1,6 @@
-#include "XmlDocument.h"
+#include "xml/XmlDocument.h"
 
-#include "Gzip.h"
+#include "core/Gzip.h"
 
 #include <QFile>
 

@@ -2,10 +2,11 @@
 // decode (with CRC check) and encode of an EstimatedState packet (110 bytes)
 // and of a PlanSpecification carrying 100 Goto maneuvers.
 // Run: tools/bench codec   (figures and reference rates in BENCHMARKS.md)
-#include "Codec.h"
+#include "Paths.h"
+#include "messages/Codec.h"
 #include "BenchMain.h"
 #include "Schemas.h"
-#include "Crc16.h"
+#include "messages/Crc16.h"
 
 #include <QCoreApplication>
 #include <QFile>
@@ -18,7 +19,7 @@ using namespace neptus::msg;
 
 namespace {
 
-const QString fixtures = QStringLiteral(NEPTUS_SHARED_DIR "/fixtures/imc/");
+const QString fixtures = neptus::test::sharedPath(QStringLiteral("fixtures/imc")) + u'/';
 
 std::shared_ptr<const Schema> schema()
 {

@@ -16,10 +16,11 @@
 // Both sides receive as the console does: on Cyclone's threads, straight
 // into a thread-safe consumer (DdsTransport::setDirectReceiver).
 // Run: tools/bench dds [--only roundtrip|throughput|qml]
-#include "DdsTransport.h"
+#include "core/DataFiles.h"
+#include "transport/dds/DdsTransport.h"
 #include "Schemas.h"
-#include "Variable.h"
-#include "VariableTreeModel.h"
+#include "qmlmodels/Variable.h"
+#include "qmlmodels/VariableTreeModel.h"
 
 #include <QCoreApplication>
 #include <QElapsedTimer>
@@ -308,7 +309,7 @@ double throughput(Receiver &receiver, int packetBytes)
 void startDdsperf(QProcess &process, const QStringList &arguments)
 {
     QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
-    env.insert(QStringLiteral("CYCLONEDDS_URI"), QStringLiteral("file://" NEPTUS_DDS_CONFIG));
+    env.insert(QStringLiteral("CYCLONEDDS_URI"), QStringLiteral("file://") + dataPath(QStringLiteral("dds/loopback.xml")));
     process.setProcessEnvironment(env);
     process.start(QStringLiteral("ddsperf"), QStringList{QStringLiteral("-i"), QStringLiteral("8")} + arguments);
 }

@@ -5,9 +5,9 @@
 // frame-to-frame time, and the same window with the trails hidden.
 // Run: tools/bench map
 #include "FrameTimes.h"
-#include "Geodesy.h"
-#include "Tracks.h"
-#include "VariableTreeModel.h"
+#include "geo/Geodesy.h"
+#include "qmlmodels/Tracks.h"
+#include "qmlmodels/VariableTreeModel.h"
 
 #include <QGuiApplication>
 #include <QQmlComponent>

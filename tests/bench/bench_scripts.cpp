@@ -3,9 +3,9 @@
 // Run: tools/bench scripts
 #include "BenchMain.h"
 #include "Schemas.h"
-#include "ScriptRunner.h"
+#include "scripting/ScriptRunner.h"
 
-#include "Schema.h"
+#include "messages/Schema.h"
 
 #include <QCoreApplication>
 #include <QDir>

@@ -8,10 +8,10 @@
 // Run: tools/bench tree
 #include "BenchMain.h"
 #include "Schemas.h"
-#include "Variable.h"
-#include "VariableTreeModel.h"
+#include "qmlmodels/Variable.h"
+#include "qmlmodels/VariableTreeModel.h"
 
-#include "Schema.h"
+#include "messages/Schema.h"
 
 #include <QCoreApplication>
 #include <QDir>

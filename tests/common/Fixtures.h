@@ -4,6 +4,7 @@
 // checkout, never copied into it). Where that folder is absent a test that
 // needs it is reported as skipped, with the reason.
 
+#include "Paths.h"
 #include <QFile>
 #include <QFileInfo>
 #include <QString>
@@ -14,7 +15,7 @@ namespace neptus::test {
 
 inline QString fixturePath(const char *relative)
 {
-    return QStringLiteral(NEPTUS_SHARED_DIR "/fixtures/") + QString::fromUtf8(relative);
+    return sharedPath(QStringLiteral("fixtures/") + QString::fromUtf8(relative));
 }
 
 // One line of a vectors file: "name length hex".

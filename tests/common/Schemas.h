@@ -2,7 +2,8 @@
 
 // The message definitions tests and benchmarks use, loaded once per process.
 
-#include "Schema.h"
+#include "Paths.h"
+#include "messages/Schema.h"
 
 namespace neptus::test {
 
@@ -10,7 +11,7 @@ namespace neptus::test {
 inline std::shared_ptr<const msg::Schema> shippedSchema()
 {
     static const std::shared_ptr<const msg::Schema> schema = [] {
-        auto loaded = msg::Schema::load(msg::Schema::filesIn(QStringLiteral(NEPTUS_MSGDEFS_DIR)));
+        auto loaded = msg::Schema::load(msg::Schema::filesIn(msgdefsDirectory()));
         return loaded ? *loaded : nullptr;
     }();
     return schema;
@@ -20,7 +21,7 @@ inline std::shared_ptr<const msg::Schema> shippedSchema()
 inline std::shared_ptr<const msg::Schema> imcSchema()
 {
     static const std::shared_ptr<const msg::Schema> schema = [] {
-        auto loaded = msg::Schema::load({QStringLiteral(NEPTUS_SHARED_DIR "/fixtures/imc/IMC.xml")});
+        auto loaded = msg::Schema::load({sharedPath(QStringLiteral("fixtures/imc/IMC.xml"))});
         return loaded ? *loaded : nullptr;
     }();
     return schema;

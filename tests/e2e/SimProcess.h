@@ -3,6 +3,7 @@
 // A neptus-sim process for end-to-end tests: started with arguments, its
 // output collected, killed (by its own handle) when the test is done.
 
+#include "Paths.h"
 #include <QProcess>
 #include <QTest>
 
@@ -22,7 +23,7 @@ struct SimProcess
     {
         process->setProcessChannelMode(QProcess::MergedChannels);
         QObject::connect(process.get(), &QProcess::readyRead, [this] { output += process->readAll(); });
-        process->start(QStringLiteral(NEPTUS_SIM_PATH), arguments);
+        process->start(programPath(QStringLiteral("neptus-sim")), arguments);
         ASSERT_TRUE(process->waitForStarted(5000));
         ASSERT_TRUE(QTest::qWaitFor([this] { return output.contains("on 127.0.0.1"); }, 5000)) << output.constData();
     }

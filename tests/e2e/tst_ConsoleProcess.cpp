@@ -1,5 +1,6 @@
 // The console program itself, started as an operator starts it, sent what a
 // real vehicle sends: it must live through it and show it.
+#include "Paths.h"
 #include "Schemas.h"
 
 #include <QHostAddress>
@@ -29,9 +30,9 @@ TEST(ConsoleProcess, APacketOfATypeItsDefinitionsLackNeitherKillsItNorIsHidden)
     const quint16 port = freeUdpPort();
     QProcess console;
     console.setProcessChannelMode(QProcess::MergedChannels);
-    console.start(QStringLiteral(NEPTUS_CONSOLE_PATH),
-                  {QStringLiteral("--console"), QStringLiteral(NEPTUS_SOURCE_DIR "/qml/consoles/Inspector.qml"),
-                   QStringLiteral("--defs"), QStringLiteral(NEPTUS_SOURCE_DIR "/tests/data/tiny-imc.xml"),
+    console.start(neptus::test::programPath(QStringLiteral("neptus")),
+                  {QStringLiteral("--console"), neptus::test::sourcePath(QStringLiteral("qml/consoles/Inspector.qml")),
+                   QStringLiteral("--defs"), neptus::test::sourcePath(QStringLiteral("tests/data/tiny-imc.xml")),
                    QStringLiteral("--imc-port"), QString::number(port), QStringLiteral("--imc-discovery"),
                    QStringLiteral("off"), QStringLiteral("--dds-domain"), QStringLiteral("-1"),
                    QStringLiteral("--quit-after"), QStringLiteral("6000"), QStringLiteral("--dump-tree"), dump});

@@ -1,9 +1,6 @@
 // Simulated vehicles as separate processes over Cyclone DDS on loopback
 // (inside the test sandbox's private network namespace), seen by a console.
-#include "AlarmGraph.h"
-#include "DdsTransport.h"
-#include "HealthMonitor.h"
-#include "VariableTree.h"
+#include "session/Console.h"
 
 #include "Schemas.h"
 #include "SimProcess.h"
@@ -26,31 +23,13 @@ bool hasDepth(const tree::VariableTree &tree, const char *system)
     return node != tree::noNode && tree.snapshot(node).present;
 }
 
-// A console's receiving side: its own DDS participant, tree and alarms.
-struct ConsoleSide
-{
-    explicit ConsoleSide(quint16 id)
-        : dds(test::shippedSchema(), transport::DdsConfig{7, {}, id})
-    {
-        QObject::connect(&dds, &transport::DdsTransport::received, [this](const msg::Message &m) {
-            tree.ingest(m);
-            health.observe(m);
-        });
-        tree.setOutputSink(&dds);
-    }
-    tree::VariableTree tree;
-    alarms::AlarmGraph graph;
-    alarms::HealthMonitor health{graph, tree};
-    transport::DdsTransport dds;
-};
-
 } // namespace
 
 TEST(DdsSimulator, TwoConsolesAndTwoVehiclesManyToMany)
 {
-    ConsoleSide first(0x4001), second(0x4002);
-    ASSERT_TRUE(first.dds.start());
-    ASSERT_TRUE(second.dds.start());
+    session::Console first(test::shippedSchema()), second(test::shippedSchema());
+    ASSERT_TRUE(first.startDds({7, {}, 0x4001}));
+    ASSERT_TRUE(second.startDds({7, {}, 0x4002}));
     Vehicle a, b;
     a.start({QStringLiteral("--dds"), QStringLiteral("--dds-domain"), QStringLiteral("7"), QStringLiteral("--id"),
              QStringLiteral("0x41"), QStringLiteral("--name"), QStringLiteral("dds-x"), QStringLiteral("--port"),
@@ -58,13 +37,13 @@ TEST(DdsSimulator, TwoConsolesAndTwoVehiclesManyToMany)
     b.start({QStringLiteral("--dds"), QStringLiteral("--dds-domain"), QStringLiteral("7"), QStringLiteral("--id"),
              QStringLiteral("0x42"), QStringLiteral("--name"), QStringLiteral("dds-y"), QStringLiteral("--port"),
              QStringLiteral("16113"), QStringLiteral("--kind"), QStringLiteral("uav")});
-    for (ConsoleSide *console : {&first, &second}) {
-        ASSERT_TRUE(QTest::qWaitFor([&] { return hasDepth(console->tree, "dds-x") && hasDepth(console->tree, "dds-y"); }, 20000))
-            << "systems: " << console->tree.childNames(u"").join(u',').toStdString();
+    for (session::Console *console : {&first, &second}) {
+        ASSERT_TRUE(QTest::qWaitFor([&] { return hasDepth(console->tree(), "dds-x") && hasDepth(console->tree(), "dds-y"); }, 20000))
+            << "systems: " << console->tree().childNames(u"").join(u',').toStdString();
     }
     // Each console's commands reach only their target, whichever console sent them.
-    ASSERT_TRUE(first.tree.write(QStringLiteral("dds-x"), msg::Message(test::shippedSchema()->byAbbrev(u"Abort"))));
-    ASSERT_TRUE(second.tree.write(QStringLiteral("dds-y"), msg::Message(test::shippedSchema()->byAbbrev(u"PlanControl"))));
+    ASSERT_TRUE(first.send(QStringLiteral("dds-x"), msg::Message(test::shippedSchema()->byAbbrev(u"Abort"))));
+    ASSERT_TRUE(second.send(QStringLiteral("dds-y"), msg::Message(test::shippedSchema()->byAbbrev(u"PlanControl"))));
     ASSERT_TRUE(QTest::qWaitFor([&] {
         return a.output.contains("received Abort from 0x4001") && b.output.contains("received PlanControl from 0x4002");
     }, 5000)) << a.output.constData() << b.output.constData();
@@ -75,12 +54,12 @@ TEST(DdsSimulator, TwoConsolesAndTwoVehiclesManyToMany)
 
 TEST(DdsSimulator, VehiclesAreSeenCommandedAndMissed)
 {
-    ConsoleSide side(0x4001);
-    ASSERT_TRUE(side.dds.start());
-    tree::VariableTree &tree = side.tree;
-    alarms::AlarmGraph &graph = side.graph;
-    alarms::HealthMonitor &health = side.health;
-    transport::DdsTransport &console = side.dds;
+    session::Console side(test::shippedSchema());
+    ASSERT_TRUE(side.startDds({7, {}, 0x4001}));
+    tree::VariableTree &tree = side.tree();
+    alarms::AlarmGraph &graph = side.alarmGraph();
+    alarms::HealthMonitor &health = side.health();
+    transport::DdsTransport &console = *side.dds();
 
     auto a = std::make_unique<Vehicle>();
     Vehicle b;

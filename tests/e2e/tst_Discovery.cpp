@@ -3,7 +3,7 @@
 // (127.0.0.1:30100-30104), streams only to systems that announced themselves
 // and ignores everyone else. The console side is the real session with its
 // IMC/UDP link on the default discovery ports.
-#include "ConsoleSession.h"
+#include "session/Console.h"
 
 #include "Schemas.h"
 #include "SimProcess.h"
@@ -18,7 +18,7 @@ using namespace neptus;
 
 TEST(Discovery, AStockImcVehicleIsFoundOnTheDiscoveryPortsAndItsEntitiesNamed)
 {
-    ConsoleSession session(test::shippedSchema());
+    session::Console session(test::shippedSchema());
     transport::ImcUdpConfig config;
     config.port = 0; // discovery on its standard ports, the link on any
     ASSERT_TRUE(session.startImc(config));
@@ -31,7 +31,7 @@ TEST(Discovery, AStockImcVehicleIsFoundOnTheDiscoveryPortsAndItsEntitiesNamed)
     vehicle.start({QStringLiteral("--id"), QStringLiteral("0xd1"), QStringLiteral("--name"),
                    QStringLiteral("lauv-simulator-1"), QStringLiteral("--port"), QStringLiteral("16020"),
                    QStringLiteral("--like-dune")});
-    const tree::VariableTree &tree = session.variableTree();
+    const tree::VariableTree &tree = session.tree();
     const bool found = QTest::qWaitFor([&] {
         const auto depth = tree.find(u"lauv-simulator-1/EstimatedState/depth");
         return depth != tree::noNode && tree.snapshot(depth).present

@@ -1,9 +1,7 @@
-// The console side (IMC/UDP transport, variable tree, health monitor) against
+// The console (session::Console with its IMC/UDP link) against
 // real neptus-sim processes on loopback, inside the test sandbox's private
 // network namespace.
-#include "HealthMonitor.h"
-#include "ImcUdpTransport.h"
-#include "VariableTree.h"
+#include "session/Console.h"
 
 #include "Schemas.h"
 #include "SimProcess.h"
@@ -21,23 +19,6 @@ using namespace neptus;
 namespace {
 
 using Vehicle = test::SimProcess;
-
-struct Console
-{
-    explicit Console(transport::ImcUdpConfig config)
-        : imc(test::shippedSchema(), config)
-    {
-        QObject::connect(&imc, &transport::ImcUdpTransport::received, [this](const msg::Message &m) {
-            tree.ingest(m);
-            health.observe(m);
-        });
-        tree.setOutputSink(&imc);
-    }
-    tree::VariableTree tree;
-    alarms::AlarmGraph graph;
-    alarms::HealthMonitor health{graph, tree};
-    transport::ImcUdpTransport imc;
-};
 
 transport::ImcUdpConfig consoleConfig()
 {
@@ -65,19 +46,19 @@ TEST(ImcSimulator, StaticDestinationStreamsAndCommandsReachOnlyTheirTarget)
              QStringLiteral("--port"), QStringLiteral("16003"), QStringLiteral("--kind"), QStringLiteral("asv")});
     transport::ImcUdpConfig config = consoleConfig();
     config.destinations = {{QHostAddress::LocalHost, 16002}, {QHostAddress::LocalHost, 16003}};
-    Console console(config);
-    ASSERT_TRUE(console.imc.start());
+    session::Console console(test::shippedSchema());
+    ASSERT_TRUE(console.startImc(config));
     // Streams start after the console's heartbeat; names come with the vehicles' Announce (every 10 s, first at once).
-    ASSERT_TRUE(QTest::qWaitFor([&] { return hasDepth(console.tree, "lauv-a") && hasDepth(console.tree, "lauv-b"); }, 15000))
-        << "systems: " << console.tree.childNames(u"").join(u',').toStdString();
+    ASSERT_TRUE(QTest::qWaitFor([&] { return hasDepth(console.tree(), "lauv-a") && hasDepth(console.tree(), "lauv-b"); }, 15000))
+        << "systems: " << console.tree().childNames(u"").join(u',').toStdString();
     // Entities by their labels, and the paper's Motor message, within a second or two.
     EXPECT_TRUE(QTest::qWaitFor([&] {
-        return console.tree.find(u"lauv-a/EntityState@Batteries/state") != tree::noNode
-               && console.tree.find(u"lauv-a/Motor/speed") != tree::noNode;
+        return console.tree().find(u"lauv-a/EntityState@Batteries/state") != tree::noNode
+               && console.tree().find(u"lauv-a/Motor/speed") != tree::noNode;
     }, 5000));
 
     msg::Message abort(test::shippedSchema()->byAbbrev(u"Abort"));
-    ASSERT_TRUE(console.tree.write(QStringLiteral("lauv-a"), abort));
+    ASSERT_TRUE(console.send(QStringLiteral("lauv-a"), abort));
     ASSERT_TRUE(QTest::qWaitFor([&] { return a.output.contains("received Abort"); }, 5000)) << a.output.constData();
     QTest::qWait(300);
     EXPECT_FALSE(b.output.contains("received Abort")) << "only its target gets a command";
@@ -87,30 +68,30 @@ TEST(ImcSimulator, DiscoveredThroughAnnounceAndCommsLossIsRaisedAndCleared)
 {
     transport::ImcUdpConfig config = consoleConfig();
     config.discovery = true;
-    Console console(config);
-    ASSERT_TRUE(console.imc.start());
+    session::Console console(test::shippedSchema());
+    ASSERT_TRUE(console.startImc(config));
     const QStringList arguments{QStringLiteral("--id"), QStringLiteral("0x21"), QStringLiteral("--name"),
                                 QStringLiteral("lauv-c"), QStringLiteral("--port"), QStringLiteral("16004"),
-                                QStringLiteral("--announce-port"), QString::number(console.imc.discoveryPort())};
+                                QStringLiteral("--announce-port"), QString::number(console.imc()->discoveryPort())};
     auto vehicle = std::make_unique<Vehicle>();
     vehicle->start(arguments);
-    ASSERT_TRUE(QTest::qWaitFor([&] { return hasDepth(console.tree, "lauv-c"); }, 15000));
+    ASSERT_TRUE(QTest::qWaitFor([&] { return hasDepth(console.tree(), "lauv-c"); }, 15000));
 
     // Killed: "communications lost" within 2 s plus its message interval.
-    const auto node = [&] { return console.graph.find(QStringLiteral("systems/lauv-c")); };
+    const auto node = [&] { return console.alarmGraph().find(QStringLiteral("systems/lauv-c")); };
     vehicle.reset();
     QElapsedTimer silence;
     silence.start();
     ASSERT_TRUE(QTest::qWaitFor([&] {
-        console.health.check();
-        return node() != alarms::AlarmGraph::noNode && console.graph.ownLevel(node()) == alarms::Warning;
+        console.health().check();
+        return node() != alarms::AlarmGraph::noNode && console.alarmGraph().ownLevel(node()) == alarms::Warning;
     }, 10000));
     std::printf("communications lost raised %lld ms after the vehicle was killed\n", static_cast<long long>(silence.elapsed()));
     EXPECT_LT(silence.elapsed(), 3000) << "2 s + the heartbeat period";
-    EXPECT_TRUE(console.graph.message(node()).startsWith(QStringLiteral("communications lost")));
+    EXPECT_TRUE(console.alarmGraph().message(node()).startsWith(QStringLiteral("communications lost")));
 
     // Restarted: cleared as soon as it is heard again.
     vehicle = std::make_unique<Vehicle>();
     vehicle->start(arguments);
-    ASSERT_TRUE(QTest::qWaitFor([&] { return console.graph.ownLevel(node()) == alarms::Normal; }, 15000));
+    ASSERT_TRUE(QTest::qWaitFor([&] { return console.alarmGraph().ownLevel(node()) == alarms::Normal; }, 15000));
 }

@@ -5,8 +5,9 @@
 //  - its JSON form reads back into a message (what inspectors and neptus-msg
 //    show can always be sent again).
 // Schema: the full IMC.xml from ../shared when present, else the project's msgdefs/.
-#include "Codec.h"
-#include "MessageJson.h"
+#include "Paths.h"
+#include "messages/Codec.h"
+#include "messages/MessageJson.h"
 
 #include <QDir>
 #include <QFileInfo>
@@ -20,12 +21,12 @@ namespace {
 
 std::shared_ptr<const Schema> loadSchema()
 {
-    const QString imc = QStringLiteral(NEPTUS_SHARED_DIR "/fixtures/imc/IMC.xml");
+    const QString imc = neptus::test::sharedPath(QStringLiteral("fixtures/imc/IMC.xml"));
     QStringList files;
     if (QFileInfo::exists(imc)) {
         files.append(imc);
     } else {
-        files = Schema::filesIn(QStringLiteral(NEPTUS_MSGDEFS_DIR));
+        files = Schema::filesIn(neptus::test::msgdefsDirectory());
     }
     auto schema = Schema::load(files);
     if (!schema) {

@@ -3,7 +3,7 @@
 // here: they crash on damaged files (tests/fuzz/regressions/model/), which
 // is why they run in a separate process at all. Whatever bytes arrive, the
 // console must refuse them cleanly or get a mesh whose indices are valid.
-#include "MeshFile.h"
+#include "models/MeshFile.h"
 
 #include <cstdint>
 #include <cstdlib>

@@ -12,7 +12,10 @@
 // Beyond "no crash, no sanitizer report", it checks on every input that each
 // datagram is accounted for: a packet that decodes lands in the tree under
 // its system and type, one that does not is counted as a decode error.
-#include "ConsoleSession.h"
+#include "Paths.h"
+#include "qmlmodels/LinkStatisticsModel.h"
+#include "qmlmodels/VariableTreeModel.h"
+#include "session/Console.h"
 
 #include <QCoreApplication>
 #include <QModelIndex>
@@ -49,8 +52,10 @@ struct Console
         c.discovery = false;
         return c;
     }
-    ConsoleSession session;
+    session::Console session;
     transport::ImcUdpTransport &imc; // never started: receive() is called directly
+    tree::VariableTreeModel model{&session.tree()};
+    transport::LinkStatisticsModel links{&session.linkStatistics(), &session.tree()};
     int inputs = 0;
 };
 
@@ -71,9 +76,12 @@ std::unique_ptr<Console> &console(bool tiny)
     static int argc = 1;
     static char name[] = "fuzz_receive";
     static char *argv[] = {name, nullptr};
-    static QCoreApplication app(argc, argv);
-    static const auto shipped = load(msg::Schema::filesIn(QStringLiteral(NEPTUS_MSGDEFS_DIR)));
-    static const auto small = load({QStringLiteral(NEPTUS_SOURCE_DIR "/tests/data/tiny-imc.xml")});
+    // Never destroyed: the consoles below, zero-initialised before it, are
+    // destroyed after it at exit and still need it.
+    static auto *app = new QCoreApplication(argc, argv);
+    Q_UNUSED(app);
+    static const auto shipped = load(msg::Schema::filesIn(test::msgdefsDirectory()));
+    static const auto small = load({test::sourcePath(QStringLiteral("tests/data/tiny-imc.xml"))});
     static std::unique_ptr<Console> consoles[2];
     std::unique_ptr<Console> &c = consoles[tiny ? 1 : 0];
     // A console lives for many inputs (state builds up as on a real link),
@@ -118,12 +126,13 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     }
     // What the console does once a frame, then what it does once a second
     // (here every 16th input: it looks at everything, and costs as much).
-    c.session.treeModel()->sync();
-    readModel(*c.session.treeModel(), {}, 8);
+    c.model.sync();
+    readModel(c.model, {}, 8);
     if (c.inputs % 16 == 0) {
-        c.session.treeModel()->refreshAges();
+        c.model.refreshAges();
+        c.session.check();
         c.session.tick();
-        c.session.linksModel()->refresh();
+        c.links.refresh();
     }
 
     quint64 errorsAfter = 0;
@@ -135,7 +144,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
                      static_cast<unsigned long long>(errorsAfter - errorsBefore));
         std::abort();
     }
-    tree::VariableTree &tree = c.session.variableTree();
+    tree::VariableTree &tree = c.session.tree();
     for (const Landed &l : landed) {
         if (tree.find(tree.systemName(l.system) + u'/' + l.abbrev) == tree::noNode) {
             std::fprintf(stderr, "fuzz_receive: %s from 0x%04x decoded but is not in the tree\n", qPrintable(l.abbrev),

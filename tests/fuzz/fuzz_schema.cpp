@@ -1,7 +1,7 @@
 // libFuzzer target: loading message definitions (the hardened XML reader and
 // the schema loader). For every definition file that loads, an empty message
 // of each of its types must encode and decode back to an equal message.
-#include "Codec.h"
+#include "messages/Codec.h"
 
 #include <cstdio>
 #include <cstdlib>

@@ -2,12 +2,13 @@
 // QML modules (Neptus.Engine, Neptus.Components, Neptus.Shell) built in, and
 // a `Fixtures` singleton (module Neptus.Testing) that feeds a real variable
 // tree and alarm graph, so tests drive the real models.
-#include "AlarmGraph.h"
-#include "AlarmListModel.h"
-#include "ScriptHost.h"
-#include "Schema.h"
-#include "Tracks.h"
-#include "VariableTreeModel.h"
+#include "Paths.h"
+#include "alarms/AlarmGraph.h"
+#include "qmlmodels/AlarmListModel.h"
+#include "scripting/ScriptHost.h"
+#include "messages/Schema.h"
+#include "qmlmodels/Tracks.h"
+#include "qmlmodels/VariableTreeModel.h"
 
 #include <QDir>
 #include <QFile>
@@ -45,7 +46,7 @@ class Fixtures : public QObject
 public:
     Fixtures()
     {
-        m_schema = *msg::Schema::load(msg::Schema::filesIn(QStringLiteral(NEPTUS_MSGDEFS_DIR)));
+        m_schema = *msg::Schema::load(msg::Schema::filesIn(test::msgdefsDirectory()));
     }
 
     tree::VariableTreeModel *treeModel() { return &m_treeModel; }
@@ -151,7 +152,7 @@ public:
         tile.fill(color);
         return QDir().mkpath(QFileInfo(path).path()) && tile.save(path, "PNG");
     }
-    Q_INVOKABLE QString sourceDir() const { return QStringLiteral(NEPTUS_SOURCE_DIR); }
+    Q_INVOKABLE QString sourceDir() const { return test::sourcePath({}); }
 
 private:
     std::shared_ptr<const msg::Schema> m_schema;

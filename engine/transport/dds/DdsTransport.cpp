@@ -1,8 +1,8 @@
-#include "DdsTransport.h"
+#include "core/DataFiles.h"
+#include "transport/dds/DdsTransport.h"
 
 #include "Envelope.h"
 
-#include <QDateTime>
 #include <QFile>
 #include <QMetaObject>
 #include <QMutexLocker>
@@ -32,7 +32,7 @@ DdsTransport::~DdsTransport()
 
 std::expected<void, QString> DdsTransport::start()
 {
-    QString file = m_config.configFile.isEmpty() ? QStringLiteral(NEPTUS_DDS_CONFIG) : m_config.configFile;
+    QString file = m_config.configFile.isEmpty() ? dataPath(QStringLiteral("dds/loopback.xml")) : m_config.configFile;
     QFile xml(file);
     if (!xml.open(QIODevice::ReadOnly))
         return std::unexpected(QStringLiteral("DDS: cannot read the configuration %1: %2").arg(file, xml.errorString()));
@@ -232,12 +232,13 @@ dds_entity_t DdsTransport::writerFor(const msg::MessageDef &def)
     return writer;
 }
 
-bool DdsTransport::write(dds_entity_t writer, const msg::Message &message, const msg::Message::Header &header)
+std::expected<void, QString> DdsTransport::write(dds_entity_t writer, const msg::Message &message,
+                                                 const msg::Message::Header &header)
 {
     // Encoded into a buffer each thread keeps: sending allocates nothing.
     thread_local QByteArray packet;
-    if (!m_schemas->codecFor(header.dst)->encode(message, header, packet))
-        return false;
+    if (auto encoded = m_schemas->codecFor(header.dst)->encode(message, header, packet); !encoded)
+        return std::unexpected(QStringLiteral("%1 does not encode: %2").arg(message.abbrev(), encoded.error().toString()));
     neptus_Envelope envelope{};
     envelope.src = header.src;
     envelope.src_ent = header.srcEnt;
@@ -249,7 +250,10 @@ bool DdsTransport::write(dds_entity_t writer, const msg::Message &message, const
     envelope.packet._length = static_cast<uint32_t>(packet.size());
     envelope.packet._maximum = static_cast<uint32_t>(packet.size());
     envelope.packet._release = false;
-    return dds_write(writer, &envelope) == DDS_RETCODE_OK;
+    if (const dds_return_t written = dds_write(writer, &envelope); written != DDS_RETCODE_OK)
+        return std::unexpected(QStringLiteral("DDS: cannot write %1: %2")
+                                   .arg(message.abbrev(), QString::fromUtf8(dds_strretcode(written))));
+    return {};
 }
 
 bool DdsTransport::broadcast(const msg::Message &message)
@@ -259,7 +263,7 @@ bool DdsTransport::broadcast(const msg::Message &message)
 
 bool DdsTransport::broadcast(std::span<const msg::Message> messages)
 {
-    const double now = QDateTime::currentMSecsSinceEpoch() / 1000.0;
+    const double now = m_config.clock->now().toMSecsSinceEpoch() / 1000.0;
     bool sent = true;
     QVarLengthArray<dds_entity_t, 8> used;
     const msg::MessageDef *def = nullptr;
@@ -275,26 +279,26 @@ bool DdsTransport::broadcast(std::span<const msg::Message> messages)
         header.src = m_config.systemId;
         if (header.timestamp == 0)
             header.timestamp = now;
-        sent = writer > 0 && write(writer, message, header) && sent;
+        sent = writer > 0 && write(writer, message, header).has_value() && sent;
     }
     for (dds_entity_t w : used)
         dds_write_flush(w);
     return sent;
 }
 
-bool DdsTransport::publish(quint16 system, const msg::Message &message)
+std::expected<void, QString> DdsTransport::publish(quint16 system, const msg::Message &message)
 {
     const auto addressed = m_schemas->forSystem(system, message);
     if (!addressed)
-        return false;
+        return std::unexpected(addressed.error());
     const dds_entity_t writer = addressed->def() ? writerFor(*addressed->def()) : 0;
     if (writer <= 0)
-        return false;
+        return std::unexpected(QStringLiteral("DDS: no writer for %1 (not started?)").arg(addressed->abbrev()));
     msg::Message::Header header = addressed->header;
     header.src = m_config.systemId;
     header.dst = system;
-    header.timestamp = QDateTime::currentMSecsSinceEpoch() / 1000.0;
-    const bool sent = write(writer, *addressed, header);
+    header.timestamp = m_config.clock->now().toMSecsSinceEpoch() / 1000.0;
+    auto sent = write(writer, *addressed, header);
     dds_write_flush(writer);
     return sent;
 }

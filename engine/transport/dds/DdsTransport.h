@@ -1,7 +1,8 @@
 #pragma once
 
-#include "SchemaSet.h"
-#include "VariableTree.h"
+#include "core/Clock.h"
+#include "messages/SchemaSet.h"
+#include "transport/OutputSink.h"
 
 #include <QHash>
 #include <QMutex>
@@ -31,6 +32,7 @@ struct DdsConfig
     // Who a participant is: kept for late joiners (transient-local, the
     // latest per sender), so a console started later still learns names.
     QStringList lasting{QStringLiteral("Announce"), QStringLiteral("EntityList"), QStringLiteral("EntityInfo")};
+    const Clock *clock = &Clock::system(); // stamps what it sends
 };
 
 // Cyclone DDS between consoles and vehicles: every message of the schema on
@@ -39,7 +41,7 @@ struct DdsConfig
 // Cyclone's threads and are handed to this object's thread as `received`.
 // Packets are decoded with the sender's definitions (SchemaSet, by the
 // envelope's src) and encoded with the receiver's.
-class DdsTransport : public QObject, public tree::VariableTree::OutputSink
+class DdsTransport : public QObject, public OutputSink
 {
     Q_OBJECT
 
@@ -65,8 +67,8 @@ public:
     // of the same kind share datagrams, sent when all are written. False if
     // any could not be sent.
     bool broadcast(std::span<const msg::Message> messages);
-    // OutputSink: to one system.
-    bool publish(quint16 system, const msg::Message &message) override;
+    // OutputSink: to one system, in its definitions; an error says why not.
+    std::expected<void, QString> publish(quint16 system, const msg::Message &message) override;
 
 signals:
     // A decoded message and the size of its packet.
@@ -88,7 +90,8 @@ private:
     dds_entity_t writerFor(const msg::MessageDef &def);
     // Writes `message` with `header` without sending: samples wait in the
     // writer's batch until flushed.
-    bool write(dds_entity_t writer, const msg::Message &message, const msg::Message::Header &header);
+    std::expected<void, QString> write(dds_entity_t writer, const msg::Message &message,
+                                       const msg::Message::Header &header);
 
     std::shared_ptr<msg::SchemaSet> m_schemas;
     DdsConfig m_config;

@@ -1,6 +1,5 @@
-#include "ImcUdpTransport.h"
+#include "transport/imc/ImcUdpTransport.h"
 
-#include <QDateTime>
 #include <QNetworkDatagram>
 #include <QNetworkInterface>
 #include <QRegularExpression>
@@ -196,7 +195,7 @@ void ImcUdpTransport::learnFromAnnounce(const msg::Message &announce, const QHos
     for (msg::Message hello : {announcement(), msg::Message(m_schemas->defaultSchema().byAbbrev(u"Heartbeat"))}) {
         if (!hello.def())
             continue;
-        hello.header.timestamp = QDateTime::currentMSecsSinceEpoch() / 1000.0;
+        hello.header.timestamp = now();
         hello.header.src = m_config.systemId;
         hello.header.dst = source;
         send(hello, *chosen);
@@ -204,11 +203,13 @@ void ImcUdpTransport::learnFromAnnounce(const msg::Message &announce, const QHos
     emit systemDiscovered(source, name);
 }
 
-bool ImcUdpTransport::send(const msg::Message &message, const Endpoint &to)
+std::expected<void, QString> ImcUdpTransport::send(const msg::Message &message, const Endpoint &to)
 {
-    if (!m_schemas->codecFor(message.header.dst)->encode(message, m_buffer))
-        return false;
-    return m_socket.writeDatagram(m_buffer, to.address, to.port) == m_buffer.size();
+    if (auto encoded = m_schemas->codecFor(message.header.dst)->encode(message, m_buffer); !encoded)
+        return std::unexpected(QStringLiteral("%1 does not encode: %2").arg(message.abbrev(), encoded.error().toString()));
+    if (m_socket.writeDatagram(m_buffer, to.address, to.port) != m_buffer.size())
+        return std::unexpected(QStringLiteral("cannot send to %1: %2").arg(peerName(to.address, to.port), m_socket.errorString()));
+    return {};
 }
 
 msg::Message ImcUdpTransport::announcement() const
@@ -234,9 +235,9 @@ void ImcUdpTransport::heartbeat()
     if (!beatDef)
         return;
     const bool announceToo = canAnnounce && m_ticks++ % std::max(1, m_config.announceEvery) == 0;
-    const double now = QDateTime::currentMSecsSinceEpoch() / 1000.0;
+    const double time = now();
     auto stamp = [&](msg::Message &m, quint16 dst) {
-        m.header.timestamp = now;
+        m.header.timestamp = time;
         m.header.src = m_config.systemId;
         m.header.srcEnt = 0xFF;
         m.header.dst = dst;
@@ -271,18 +272,18 @@ void ImcUdpTransport::heartbeat()
     }
 }
 
-bool ImcUdpTransport::publish(quint16 system, const msg::Message &message)
+std::expected<void, QString> ImcUdpTransport::publish(quint16 system, const msg::Message &message)
 {
     const auto it = m_endpoints.constFind(system);
     if (it == m_endpoints.cend())
-        return false;
+        return std::unexpected(QStringLiteral("IMC/UDP: 0x%1 was never heard or announced").arg(system, 4, 16, QLatin1Char('0')));
     auto addressed = m_schemas->forSystem(system, message);
     if (!addressed)
-        return false;
+        return std::unexpected(addressed.error());
     addressed->header.src = m_config.systemId;
     addressed->header.srcEnt = 0xFF;
     addressed->header.dst = system;
-    addressed->header.timestamp = QDateTime::currentMSecsSinceEpoch() / 1000.0;
+    addressed->header.timestamp = now();
     return send(*addressed, *it);
 }
 

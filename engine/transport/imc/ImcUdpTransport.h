@@ -1,7 +1,8 @@
 #pragma once
 
-#include "SchemaSet.h"
-#include "VariableTree.h"
+#include "core/Clock.h"
+#include "messages/SchemaSet.h"
+#include "transport/OutputSink.h"
 
 #include <QHash>
 #include <QHostAddress>
@@ -35,6 +36,7 @@ struct ImcUdpConfig
     QString systemName = QStringLiteral("neptus-qt");
     int heartbeatMs = 1000;
     int announceEvery = 5;               // heartbeats between two Announces
+    const Clock *clock = &Clock::system(); // stamps what it sends
 };
 
 // IMC over UDP, one packet per datagram. The console announces itself (an
@@ -50,7 +52,7 @@ struct ImcUdpConfig
 // On a field interface (bindAddress not loopback) discovery also sends to the
 // interface's broadcast address and IMC's multicast group 224.0.75.69, and
 // listens there; on loopback it stays on 127.0.0.1.
-class ImcUdpTransport : public QObject, public tree::VariableTree::OutputSink
+class ImcUdpTransport : public QObject, public OutputSink
 {
     Q_OBJECT
 
@@ -70,8 +72,10 @@ public:
     // it; tests and the fuzz target call it without any socket).
     void receive(QByteArrayView datagram, const QHostAddress &from, quint16 fromPort);
 
-    // OutputSink: sends `message` to `system`, addressed to it, in its definitions.
-    bool publish(quint16 system, const msg::Message &message) override;
+    // OutputSink: sends `message` to `system`, addressed to it, in its
+    // definitions; an error says why not (never heard of, not in its
+    // definitions, the socket's reason).
+    std::expected<void, QString> publish(quint16 system, const msg::Message &message) override;
 
     // Sends a Heartbeat to every vehicle now, and an Announce to them and to
     // the discovery ports every `announceEvery`-th time.
@@ -100,7 +104,8 @@ private:
 
     void readDatagrams(QUdpSocket &socket);
     void learnFromAnnounce(const msg::Message &announce, const QHostAddress &from);
-    bool send(const msg::Message &message, const Endpoint &to);
+    std::expected<void, QString> send(const msg::Message &message, const Endpoint &to);
+    double now() const { return m_config.clock->now().toMSecsSinceEpoch() / 1000.0; }
     msg::Message announcement() const;
     std::expected<void, QString> bindDiscovery();
     // Where our Announce goes besides the vehicles we know: the discovery ports.

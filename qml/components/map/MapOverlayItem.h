@@ -1,6 +1,6 @@
 #pragma once
 
-#include "MapProjection.h"
+#include "geo/MapProjection.h"
 
 #include <QQuickItem>
 #include <QtQml/qqmlregistration.h>

@@ -1,6 +1,6 @@
 #include "TrailItem.h"
 
-#include "MapProjection.h"
+#include "geo/MapProjection.h"
 
 #include <QSGFlatColorMaterial>
 #include <QSGGeometryNode>

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "ModelImport.h"
+#include "models/ModelImport.h"
 
 #include <QQuick3DGeometry>
 #include <QUrl>

@@ -1,6 +1,6 @@
 #include "TrailGeometry.h"
 
-#include "Geodesy.h"
+#include "geo/Geodesy.h"
 
 #include <QVector3D>
 

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "Tracks.h"
+#include "qmlmodels/Tracks.h"
 
 #include <QPointer>
 #include <QTimer>

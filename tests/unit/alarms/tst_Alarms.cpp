@@ -1,9 +1,9 @@
 #include "Schemas.h"
-#include "AlarmGraph.h"
-#include "AlarmListModel.h"
-#include "HealthMonitor.h"
+#include "alarms/AlarmGraph.h"
+#include "qmlmodels/AlarmListModel.h"
+#include "alarms/HealthMonitor.h"
 
-#include "Schema.h"
+#include "messages/Schema.h"
 
 #include <QAbstractItemModelTester>
 #include <QDir>

@@ -1,5 +1,5 @@
 #include "core/Clock.h"
-#include "core/UtcClock.h"
+#include "qmlmodels/UtcClock.h"
 
 #include <QSignalSpy>
 #include <QTest>

@@ -1,6 +1,6 @@
 // Geodesy against published reference values (each test names its source),
 // plus round trips that must hold everywhere.
-#include "Geodesy.h"
+#include "geo/Geodesy.h"
 
 #include <gtest/gtest.h>
 

@@ -1,8 +1,8 @@
 // Tracks: the console's record of where each system has been, fed by the tree.
-#include "Geodesy.h"
+#include "geo/Geodesy.h"
 #include "Schemas.h"
-#include "Tracks.h"
-#include "VariableTreeModel.h"
+#include "qmlmodels/Tracks.h"
+#include "qmlmodels/VariableTreeModel.h"
 
 #include <QSignalSpy>
 

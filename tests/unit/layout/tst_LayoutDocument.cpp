@@ -1,4 +1,5 @@
 // Console layout files as the designer reads, edits and writes them.
+#include "Paths.h"
 #include "LayoutDocument.h"
 
 #include <QDir>
@@ -84,7 +85,7 @@ void writeFile(const QString &path, const QString &text)
 
 TEST(LayoutDocument, ShippedConsolesAreInTheDesignersDialect)
 {
-    const QDir consoles(QStringLiteral(NEPTUS_SOURCE_DIR "/qml/consoles"));
+    const QDir consoles(neptus::test::sourcePath(QStringLiteral("qml/consoles")));
     const QStringList files = consoles.entryList({u"*.qml"_s}, QDir::Files);
     ASSERT_FALSE(files.isEmpty());
     for (const QString &name : files) {

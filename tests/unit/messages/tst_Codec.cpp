@@ -1,8 +1,8 @@
 #include "Schemas.h"
-#include "Codec.h"
-#include "Crc16.h"
+#include "messages/Codec.h"
+#include "messages/Crc16.h"
 #include "Fixtures.h"
-#include "MessageJson.h"
+#include "messages/MessageJson.h"
 
 #include <QJsonDocument>
 

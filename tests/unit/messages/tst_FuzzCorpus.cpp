@@ -2,9 +2,10 @@
 // every build with the targets' checks) do not cover: decoding the seeds with
 // the project's shipped definitions (fuzz_decode uses the full IMC.xml when
 // ../shared has it), and what the seeds are meant to be.
+#include "Paths.h"
 #include "Schemas.h"
-#include "Codec.h"
-#include "MessageJson.h"
+#include "messages/Codec.h"
+#include "messages/MessageJson.h"
 
 #include <QDir>
 #include <QDirIterator>
@@ -16,7 +17,7 @@ using namespace neptus::msg;
 
 namespace {
 
-const QString fuzzDir = QStringLiteral(NEPTUS_SOURCE_DIR "/tests/fuzz");
+const QString fuzzDir = neptus::test::sourcePath(QStringLiteral("tests/fuzz"));
 
 QStringList inputs(const char *target)
 {

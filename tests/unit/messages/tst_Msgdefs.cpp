@@ -1,8 +1,9 @@
 // The definitions the project ships (msgdefs/) load on their own and agree
 // with the real IMC.xml field by field, so that the console speaks to IMC
 // vehicles byte for byte.
+#include "Paths.h"
 #include "Fixtures.h"
-#include "Schema.h"
+#include "messages/Schema.h"
 
 #include <QDir>
 
@@ -14,7 +15,7 @@ namespace {
 
 QStringList shippedFiles()
 {
-    return Schema::filesIn(QStringLiteral(NEPTUS_MSGDEFS_DIR));
+    return Schema::filesIn(neptus::test::msgdefsDirectory());
 }
 
 } // namespace
@@ -46,7 +47,7 @@ TEST(Msgdefs, ImcXmlIsTheWholeOfImcAsTheReferenceFileSpeaksIt)
     NEPTUS_REQUIRE_FIXTURE(path, "imc/IMC.xml");
     const auto reference = Schema::load({path});
     ASSERT_TRUE(reference) << reference.error().toString().toStdString();
-    const auto ours = Schema::load({QStringLiteral(NEPTUS_MSGDEFS_DIR "/imc.xml")});
+    const auto ours = Schema::load({neptus::test::msgdefsDirectory() + QStringLiteral("/imc.xml")});
     ASSERT_TRUE(ours) << ours.error().toString().toStdString();
     EXPECT_EQ((*ours)->messages().size(), 349u);
     EXPECT_EQ((*ours)->fieldCount(), 1552);

@@ -1,6 +1,6 @@
 #include "Schemas.h"
 #include "Fixtures.h"
-#include "Schema.h"
+#include "messages/Schema.h"
 
 #include <gtest/gtest.h>
 

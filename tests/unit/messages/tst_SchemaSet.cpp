@@ -1,7 +1,7 @@
-#include "SchemaSet.h"
+#include "messages/SchemaSet.h"
 
 #include "Fixtures.h"
-#include "Gzip.h"
+#include "core/Gzip.h"
 #include "Schemas.h"
 
 #include <QTemporaryDir>

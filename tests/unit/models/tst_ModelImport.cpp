@@ -1,9 +1,10 @@
 // Model files read in the helper process: a reader that crashes or hangs on
 // a damaged file gives an error naming the file, and the console lives on.
 // And the mesh format between the two, which the console checks byte by byte.
-#include "MeshFile.h"
-#include "ModelImport.h"
-#include "ModelLoader.h"
+#include "Paths.h"
+#include "models/MeshFile.h"
+#include "models/ModelImport.h"
+#include "models/ModelLoader.h"
 
 #include <QFile>
 #include <QTemporaryDir>
@@ -47,7 +48,7 @@ TEST(ModelImport, AGoodFileComesBackAsTheSameMesh)
 // Found by the model fuzz target in OpenSceneGraph's .ply reader (SEGV).
 TEST(ModelImport, AReaderCrashingOnADamagedFileIsAnErrorNotACrash)
 {
-    const QString crasher = QStringLiteral(NEPTUS_SOURCE_DIR "/tests/fuzz/regressions/model/ply-reader-crash");
+    const QString crasher = neptus::test::sourcePath(QStringLiteral("tests/fuzz/regressions/model/ply-reader-crash"));
     QFile in(crasher);
     ASSERT_TRUE(in.open(QIODevice::ReadOnly));
     QTemporaryDir dir;

@@ -1,7 +1,7 @@
 // Models and terrain through OpenSceneGraph's readers: a scene is written by
 // OSG's own writers in each format the console promises, then read back
 // through loadModel(), which must give the same triangles where they were.
-#include "ModelLoader.h"
+#include "models/ModelLoader.h"
 
 #include <QDir>
 #include <QFile>

@@ -1,7 +1,7 @@
 #include "Schemas.h"
-#include "ScriptHost.h"
+#include "scripting/ScriptHost.h"
 
-#include "Schema.h"
+#include "messages/Schema.h"
 
 #include <QDir>
 #include <QElapsedTimer>

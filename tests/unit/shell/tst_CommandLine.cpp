@@ -16,7 +16,8 @@ TEST(CommandLine, DefaultsToTheShippedDefaultConsole)
 {
     const auto line = parse({});
     ASSERT_TRUE(line) << line.error().toStdString();
-    EXPECT_TRUE(line->consoleFile.endsWith(QStringLiteral("qml/consoles/Default.qml")));
+    EXPECT_TRUE(line->consoleFile.endsWith(QStringLiteral("share/neptus-qt/consoles/Default.qml")))
+        << line->consoleFile.toStdString() << ": the shipped consoles, found beside the program";
     EXPECT_EQ(line->windowSize, QSize(1280, 800));
     EXPECT_FALSE(line->selfTest);
     EXPECT_TRUE(line->screenshotFile.isEmpty());

@@ -1,6 +1,7 @@
 // Two DDS participants on the loopback configuration exchange messages
 // through the envelope topics.
-#include "DdsTransport.h"
+#include "Paths.h"
+#include "transport/dds/DdsTransport.h"
 
 #include "Schemas.h"
 
@@ -57,7 +58,7 @@ TEST(DdsTransport, PeersWithOtherDefinitionsAreReported)
     const QByteArray extra = "<messages><message id=\"1500\" name=\"Extra\" abbrev=\"Extra\">"
                              "<field abbrev=\"x\" type=\"uint8_t\"/></message></messages>";
     QList<std::pair<QString, QByteArray>> documents;
-    for (const QString &file : msg::Schema::filesIn(QStringLiteral(NEPTUS_MSGDEFS_DIR))) {
+    for (const QString &file : msg::Schema::filesIn(test::msgdefsDirectory())) {
         QFile f(file);
         ASSERT_TRUE(f.open(QIODevice::ReadOnly));
         documents.append({file, f.readAll()});

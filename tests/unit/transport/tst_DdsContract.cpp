@@ -4,7 +4,8 @@
 // the page, and IMC packets made by another implementation (the shared
 // fixtures), never DdsTransport or the codec. If the contract drifts from
 // the code, it fails.
-#include "DdsTransport.h"
+#include "Paths.h"
+#include "transport/dds/DdsTransport.h"
 #include "Envelope.h"
 
 #include "Fixtures.h"
@@ -100,7 +101,7 @@ TEST(DdsContract, AVehicleMadeFromThePageAloneIsShownAndCommanded)
     const quint16 vehicle = qFromLittleEndian<quint16>(announce.constData() + 14); // lauv-xplore-1, 0x00d1
 
     // 1. The domain from the project's loopback file, a participant.
-    QFile xml(QStringLiteral(NEPTUS_DDS_CONFIG));
+    QFile xml(test::sourcePath(QStringLiteral("dds/loopback.xml")));
     ASSERT_TRUE(xml.open(QIODevice::ReadOnly));
     const dds_entity_t created = dds_create_domain(domain, xml.readAll().constData());
     ASSERT_GT(created, 0) << dds_strretcode(created);

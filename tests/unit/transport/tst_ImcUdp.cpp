@@ -1,7 +1,7 @@
 // The IMC/UDP transport against a vehicle that behaves like a DUNE vehicle:
 // it streams only to consoles it has heard a Heartbeat from, and obeys
 // commands addressed to its own id. All on loopback, ephemeral ports.
-#include "ImcUdpTransport.h"
+#include "transport/imc/ImcUdpTransport.h"
 
 #include "Schemas.h"
 

@@ -1,5 +1,5 @@
-#include "LinkStatistics.h"
-#include "LinkStatisticsModel.h"
+#include "transport/LinkStatistics.h"
+#include "qmlmodels/LinkStatisticsModel.h"
 
 #include <QAbstractItemModelTester>
 

@@ -2,8 +2,9 @@
 // sender → session: tree, health, statistics, alarms), fed without sockets:
 // a real DUNE vehicle's log, packets that do not decode, types the
 // definitions lack, and a vehicle built from another IMC revision.
-#include "ConsoleSession.h"
-#include "Gzip.h"
+#include "Paths.h"
+#include "core/Gzip.h"
+#include "session/Console.h"
 
 #include "Fixtures.h"
 #include "Schemas.h"
@@ -76,7 +77,7 @@ TEST(ReceivePath, EveryPacketOfARealDuneLogIsDecodedIntoTheTree)
     // The console as it would be with the vehicle's and the recording
     // console's definitions given (--defs-for 0x00d1 IMC.xml.gz, and 0x4001);
     // our own id is another, so the recording console's packets are not "ours".
-    ConsoleSession session(test::shippedSchema());
+    session::Console session(test::shippedSchema());
     ASSERT_TRUE(session.setDefinitionsFor(QStringLiteral("0x00d1"), definitions));
     ASSERT_TRUE(session.setDefinitionsFor(QStringLiteral("0x4001"), definitions));
     auto *imc = session.attachImc(
@@ -117,7 +118,7 @@ TEST(ReceivePath, EveryPacketOfARealDuneLogIsDecodedIntoTheTree)
         EXPECT_EQ(counts[abbrev], count) << abbrev.toStdString();
 
     // In the tree, named as the vehicle announces itself, entities by their labels.
-    tree::VariableTree &tree = session.variableTree();
+    tree::VariableTree &tree = session.tree();
     EXPECT_EQ(tree.systemName(0x00D1), QStringLiteral("lauv-simulator-1"));
     EXPECT_TRUE(tree.snapshot(tree.find(u"lauv-simulator-1/EstimatedState/depth")).present);
     EXPECT_TRUE(tree.snapshot(tree.find(u"lauv-simulator-1/PlanControlState/plan_id")).present);
@@ -127,10 +128,10 @@ TEST(ReceivePath, EveryPacketOfARealDuneLogIsDecodedIntoTheTree)
 
 TEST(ReceivePath, UndecodablePacketsAreCountedPerSystemAndRaiseALinkWarning)
 {
-    ConsoleSession session(test::shippedSchema());
+    session::Console session(test::shippedSchema());
     auto *imc = session.attachImc(std::make_unique<transport::ImcUdpTransport>(session.schemaSet(), unboundConfig()));
     imc->receive(encode(make("Announce", 0x1f)), QHostAddress::LocalHost, 6002);
-    session.variableTree().setSystemName(0x1f, QStringLiteral("lauv"));
+    session.tree().setSystemName(0x1f, QStringLiteral("lauv"));
     QByteArray damaged = encode(make("EstimatedState", 0x1f));
     damaged[30] = static_cast<char>(damaged[30] ^ 0x40); // the CRC no longer matches
     imc->receive(damaged, QHostAddress::LocalHost, 6002);
@@ -158,16 +159,16 @@ TEST(ReceivePath, UndecodablePacketsAreCountedPerSystemAndRaiseALinkWarning)
 
 TEST(ReceivePath, ATypeTheDefinitionsLackIsShownCountedAndWarnedAbout)
 {
-    auto tiny = msg::Schema::load({QStringLiteral(NEPTUS_SOURCE_DIR "/tests/data/tiny-imc.xml")});
+    auto tiny = msg::Schema::load({test::sourcePath(QStringLiteral("tests/data/tiny-imc.xml"))});
     ASSERT_TRUE(tiny) << tiny.error().toString().toStdString();
-    ConsoleSession session(*tiny);
+    session::Console session(*tiny);
     auto *imc = session.attachImc(std::make_unique<transport::ImcUdpTransport>(session.schemaSet(), unboundConfig()));
     // ServoPosition (281) from a DUNE vehicle: the packet that crashed the console.
     const QByteArray servo = QByteArray::fromHex("54fe1901050000000040fc54d941d10025ffffff030000003f8463");
     for (int i = 0; i < 5; ++i)
         imc->receive(servo, QHostAddress::LocalHost, 6002);
     EXPECT_EQ(imc->decodeErrors(), 0);
-    const tree::VariableTree &tree = session.variableTree();
+    const tree::VariableTree &tree = session.tree();
     const auto node = tree.find(u"0x00d1/Unknown(281)");
     ASSERT_NE(node, tree::noNode);
     EXPECT_TRUE(tree.snapshot(node).text.startsWith(QStringLiteral("unknown type 281, 5 bytes · 5 received")))
@@ -222,7 +223,7 @@ TEST(ReceivePath, AVehicleOfAnotherImcRevisionIsDecodedAndCommandedInItsOwn)
     auto other = msg::Schema::load({file});
     ASSERT_TRUE(other) << other.error().toString().toStdString();
 
-    ConsoleSession session(test::shippedSchema());
+    session::Console session(test::shippedSchema());
     ASSERT_TRUE(session.setDefinitionsFor(QStringLiteral("lauv-old"), file)) << "by the name it announces";
     EXPECT_FALSE(session.setDefinitionsFor(QStringLiteral("0x22"), dir.filePath(QStringLiteral("missing.xml"))));
     auto *imc = session.attachImc(std::make_unique<transport::ImcUdpTransport>(session.schemaSet(), unboundConfig()));
@@ -239,7 +240,7 @@ TEST(ReceivePath, AVehicleOfAnotherImcRevisionIsDecodedAndCommandedInItsOwn)
 
     EXPECT_EQ(imc->decodeErrors(), 0);
     EXPECT_EQ(imc->announcedVersion(0x22), QStringLiteral("5.4.30"));
-    const tree::VariableTree &tree = session.variableTree();
+    const tree::VariableTree &tree = session.tree();
     EXPECT_DOUBLE_EQ(tree.snapshot(tree.find(u"lauv-old/Thing/value")).value.toDouble(), 2.5)
         << "decoded with its own definitions, not as an unknown 9001";
 
@@ -254,7 +255,7 @@ TEST(ReceivePath, AVehicleOfAnotherImcRevisionIsDecodedAndCommandedInItsOwn)
 
 TEST(ReceivePath, AnAnnouncedImcVersionOtherThanOursIsAWarning)
 {
-    ConsoleSession session(test::shippedSchema());
+    session::Console session(test::shippedSchema());
     auto *imc = session.attachImc(std::make_unique<transport::ImcUdpTransport>(session.schemaSet(), unboundConfig()));
     msg::Message announce = make("Announce", 0x30);
     announce.setBytes(announce.def()->indexOf(u"sys_name"), "old-asv");

@@ -1,4 +1,4 @@
-#include "EntityNaming.h"
+#include "session/EntityNaming.h"
 
 #include "Schemas.h"
 
@@ -10,15 +10,14 @@ using msg::Message;
 
 namespace {
 
-class Sink : public VariableTree::OutputSink
+struct Sink
 {
-public:
-    bool publish(quint16 system, const Message &message) override
+    std::expected<void, QString> operator()(quint16 system, Message message)
     {
         if (!reachable)
-            return false;
-        sent.push_back({system, message});
-        return true;
+            return std::unexpected(QStringLiteral("no link"));
+        sent.push_back({system, std::move(message)});
+        return {};
     }
     bool reachable = true;
     std::vector<std::pair<quint16, Message>> sent;
@@ -39,8 +38,7 @@ TEST(EntityNaming, AsksANewSystemForItsEntitiesUntilItAnswers)
     ManualClock clock(QDateTime::fromMSecsSinceEpoch(1'000'000, QTimeZone::UTC));
     VariableTree tree(&clock);
     Sink sink;
-    tree.setOutputSink(&sink);
-    EntityNaming naming(tree, test::shippedSchema(), &clock);
+    session::EntityNaming naming(tree, test::shippedSchema(), std::ref(sink), &clock);
     const auto feed = [&](const Message &m) {
         tree.ingest(m);
         naming.observe(m);
@@ -58,7 +56,7 @@ TEST(EntityNaming, AsksANewSystemForItsEntitiesUntilItAnswers)
     EXPECT_EQ(sink.sent[0].second.enumText(sink.sent[0].second.def()->indexOf(u"op")), QStringLiteral("QUERY"));
     naming.check();
     EXPECT_EQ(sink.sent.size(), 1u) << "not before the retry interval";
-    clock.advance(EntityNaming::retryMs);
+    clock.advance(session::EntityNaming::retryMs);
     naming.check();
     EXPECT_EQ(sink.sent.size(), 2u) << "asked again";
 
@@ -66,7 +64,7 @@ TEST(EntityNaming, AsksANewSystemForItsEntitiesUntilItAnswers)
     list.setBytes(list.def()->indexOf(u"list"), "Navigation=61");
     feed(list);
     feed(make("EntityState", 0x1f, 70)); // not in the list
-    clock.advance(EntityNaming::retryMs);
+    clock.advance(session::EntityNaming::retryMs);
     naming.check();
     ASSERT_EQ(sink.sent.size(), 3u);
     EXPECT_EQ(sink.sent[2].second.abbrev(), QStringLiteral("QueryEntityInfo")) << "only the one the list left out";
@@ -76,7 +74,7 @@ TEST(EntityNaming, AsksANewSystemForItsEntitiesUntilItAnswers)
     info.setInteger(info.def()->indexOf(u"id"), 70);
     info.setBytes(info.def()->indexOf(u"label"), "Sidescan");
     feed(info);
-    clock.advance(EntityNaming::retryMs);
+    clock.advance(session::EntityNaming::retryMs);
     naming.check();
     EXPECT_EQ(sink.sent.size(), 3u) << "all named: nothing more to ask";
     EXPECT_EQ(tree.entityLabel(0x1f, 70), QStringLiteral("Sidescan"));
@@ -87,12 +85,11 @@ TEST(EntityNaming, GivesUpOnASystemThatNeverAnswers)
     ManualClock clock(QDateTime::fromMSecsSinceEpoch(1'000'000, QTimeZone::UTC));
     VariableTree tree(&clock);
     Sink sink;
-    tree.setOutputSink(&sink);
-    EntityNaming naming(tree, test::shippedSchema(), &clock);
+    session::EntityNaming naming(tree, test::shippedSchema(), std::ref(sink), &clock);
     naming.observe(make("Heartbeat", 0x4002));
     for (int i = 0; i < 20; ++i) {
         naming.check();
-        clock.advance(EntityNaming::retryMs);
+        clock.advance(session::EntityNaming::retryMs);
     }
-    EXPECT_EQ(sink.sent.size(), static_cast<size_t>(EntityNaming::maxAttempts));
+    EXPECT_EQ(sink.sent.size(), static_cast<size_t>(session::EntityNaming::maxAttempts));
 }

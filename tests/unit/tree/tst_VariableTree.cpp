@@ -1,7 +1,7 @@
 #include "Schemas.h"
-#include "VariableTree.h"
+#include "tree/VariableTree.h"
 
-#include "Schema.h"
+#include "messages/Schema.h"
 
 #include <QDir>
 
@@ -30,17 +30,6 @@ Message state(quint16 src, double depth, quint8 ent = 0xFF)
     m.setNumber(m.def()->indexOf(u"depth"), depth);
     return m;
 }
-
-class RecordingSink : public VariableTree::OutputSink
-{
-public:
-    bool publish(quint16 system, const Message &message) override
-    {
-        sent.push_back({system, message});
-        return true;
-    }
-    std::vector<std::pair<quint16, Message>> sent;
-};
 
 } // namespace
 
@@ -250,34 +239,20 @@ TEST(VariableTree, ConsumersGetCoalescedChanges)
     EXPECT_FALSE(other.newNodes.empty());
 }
 
-TEST(VariableTree, WritingTheOutputBranchPublishes)
+TEST(VariableTree, WhatWasSentIsRecordedUnderTheOutputBranch)
 {
     VariableTree tree;
     tree.setSystemName(0x1f, QStringLiteral("lauv"));
+    EXPECT_EQ(tree.systemId(u"lauv"), 0x1f) << "configured names count";
+    EXPECT_FALSE(tree.systemId(u"nobody"));
     Message abort(neptus::test::shippedSchema()->byAbbrev(u"Abort"));
-    EXPECT_FALSE(tree.write(QStringLiteral("lauv"), abort)) << "no sink, nothing sent";
-    RecordingSink sink;
-    tree.setOutputSink(&sink);
-    EXPECT_FALSE(tree.write(QStringLiteral("nobody"), abort));
-    EXPECT_TRUE(tree.write(QStringLiteral("lauv"), abort));
-    ASSERT_EQ(sink.sent.size(), 1u);
-    EXPECT_EQ(sink.sent[0].first, 0x1f);
-    EXPECT_EQ(sink.sent[0].second.header.dst, 0x1f);
-    EXPECT_TRUE(tree.snapshot(tree.find(u"lauv/out/Abort")).present);
-    EXPECT_EQ(tree.snapshot(tree.find(u"lauv/out/Abort")).text, QStringLiteral("1 sent"));
-
-    // What a link refuses is not recorded as sent.
-    class RefusingSink : public VariableTree::OutputSink
-    {
-    public:
-        bool publish(quint16, const Message &) override { return false; }
-    } refusing;
-    tree.setOutputSink(&refusing);
-    Message goTo(neptus::test::shippedSchema()->byAbbrev(u"Goto"));
-    EXPECT_FALSE(tree.write(QStringLiteral("lauv"), goTo));
-    EXPECT_EQ(tree.find(u"lauv/out/Goto"), noNode);
-    EXPECT_FALSE(tree.write(QStringLiteral("lauv"), abort));
-    EXPECT_EQ(tree.snapshot(tree.find(u"lauv/out/Abort")).text, QStringLiteral("1 sent"));
+    tree.recordSent(0x1f, abort);
+    tree.recordSent(0x1f, abort);
+    const NodeId node = tree.find(u"lauv/out/Abort");
+    ASSERT_NE(node, noNode);
+    EXPECT_TRUE(tree.snapshot(node).present);
+    EXPECT_EQ(tree.snapshot(node).text, QStringLiteral("2 sent"));
+    EXPECT_EQ(tree.kind(tree.find(u"lauv/out")), VariableTree::Kind::Inline);
 }
 
 TEST(VariableTree, IngestFromManyThreads)

@@ -1,8 +1,8 @@
 #include "Schemas.h"
-#include "Variable.h"
-#include "VariableTreeModel.h"
+#include "qmlmodels/Variable.h"
+#include "qmlmodels/VariableTreeModel.h"
 
-#include "Schema.h"
+#include "messages/Schema.h"
 
 #include <QAbstractItemModelTester>
 #include <QDir>

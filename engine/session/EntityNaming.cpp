@@ -1,12 +1,14 @@
-#include "EntityNaming.h"
+#include "session/EntityNaming.h"
 
 #include <QMutexLocker>
 
-namespace neptus::tree {
+namespace neptus::session {
 
-EntityNaming::EntityNaming(VariableTree &tree, std::shared_ptr<const msg::Schema> schema, const Clock *clock)
+EntityNaming::EntityNaming(const tree::VariableTree &tree, std::shared_ptr<const msg::Schema> schema, Send send,
+                           const Clock *clock)
     : m_tree(tree)
     , m_schema(std::move(schema))
+    , m_send(std::move(send))
     , m_clock(clock)
 {
 }
@@ -65,7 +67,7 @@ void EntityNaming::check()
             request.setInteger(def->indexOf(u"id"), query.entity);
         }
         // Unreachable (no link yet): not counted, asked again at the next check.
-        if (!m_tree.write(query.system, std::move(request)))
+        if (!m_send(query.system, std::move(request)))
             continue;
         QMutexLocker lock(&m_mutex);
         System &system = m_systems[query.system];
@@ -80,4 +82,4 @@ void EntityNaming::check()
     }
 }
 
-} // namespace neptus::tree
+} // namespace neptus::session

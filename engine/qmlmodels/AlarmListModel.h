@@ -1,6 +1,6 @@
 #pragma once
 
-#include "AlarmGraph.h"
+#include "alarms/AlarmGraph.h"
 
 #include <QAbstractListModel>
 #include <QTimer>

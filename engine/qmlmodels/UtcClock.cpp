@@ -1,4 +1,4 @@
-#include "core/UtcClock.h"
+#include "qmlmodels/UtcClock.h"
 
 namespace neptus {
 

@@ -1,4 +1,4 @@
-#include "Variable.h"
+#include "qmlmodels/Variable.h"
 
 namespace neptus::tree {
 

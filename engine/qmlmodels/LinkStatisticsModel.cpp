@@ -1,4 +1,4 @@
-#include "LinkStatisticsModel.h"
+#include "qmlmodels/LinkStatisticsModel.h"
 
 #include <QStringList>
 

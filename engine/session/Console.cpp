@@ -1,10 +1,6 @@
-#include "ConsoleSession.h"
+#include "session/Console.h"
 
-#include "MessageJson.h"
-
-#include <QJsonObject>
-
-using namespace neptus;
+namespace neptus::session {
 
 namespace {
 
@@ -18,39 +14,40 @@ QString systemLabel(quint16 id)
 
 } // namespace
 
-ConsoleSession::ConsoleSession(std::shared_ptr<const msg::Schema> schema, QObject *parent)
+Console::Console(std::shared_ptr<const msg::Schema> schema, const Clock *clock, QObject *parent)
     : QObject(parent)
+    , m_clock(clock)
     , m_schema(schema)
     , m_schemas(std::make_shared<msg::SchemaSet>(schema))
-    , m_naming(m_tree, schema)
+    , m_tree(clock)
+    , m_graph(clock)
+    , m_health(m_graph, m_tree, clock)
+    , m_naming(m_tree, schema, [this](quint16 system, msg::Message m) { return send(system, std::move(m)); }, clock)
+    , m_linkStatistics(clock)
 {
-    m_tree.setOutputSink(&m_router);
-    m_healthCheck.setInterval(250);
-    connect(&m_healthCheck, &QTimer::timeout, this, [this] {
-        m_health.check();
-        m_naming.check();
-    });
-    m_healthCheck.start();
-    m_second.setInterval(1000);
-    connect(&m_second, &QTimer::timeout, this, &ConsoleSession::tick);
-    m_second.start();
+    m_checkTimer.setInterval(250);
+    connect(&m_checkTimer, &QTimer::timeout, this, &Console::check);
+    m_checkTimer.start();
+    m_tickTimer.setInterval(1000);
+    connect(&m_tickTimer, &QTimer::timeout, this, &Console::tick);
+    m_tickTimer.start();
 }
 
-ConsoleSession::~ConsoleSession()
+Console::~Console()
 {
     // The links stop first: nothing may arrive while the rest goes.
     m_dds.reset();
     m_imc.reset();
 }
 
-scripting::ScriptHost *ConsoleSession::scripts()
+scripting::ScriptHost *Console::scripts()
 {
     if (!m_scripts)
         m_scripts = std::make_unique<scripting::ScriptHost>(m_tree, m_graph);
     return m_scripts.get();
 }
 
-std::expected<void, QString> ConsoleSession::setDefinitionsFor(const QString &system, const QString &file)
+std::expected<void, QString> Console::setDefinitionsFor(const QString &system, const QString &file)
 {
     auto schema = msg::Schema::load({file});
     if (!schema)
@@ -64,8 +61,9 @@ std::expected<void, QString> ConsoleSession::setDefinitionsFor(const QString &sy
     return {};
 }
 
-std::expected<void, QString> ConsoleSession::startImc(const transport::ImcUdpConfig &config)
+std::expected<void, QString> Console::startImc(transport::ImcUdpConfig config)
 {
+    config.clock = m_clock;
     auto imc = std::make_unique<transport::ImcUdpTransport>(m_schemas, config);
     if (auto started = imc->start(); !started)
         return started;
@@ -73,7 +71,7 @@ std::expected<void, QString> ConsoleSession::startImc(const transport::ImcUdpCon
     return {};
 }
 
-transport::ImcUdpTransport *ConsoleSession::attachImc(std::unique_ptr<transport::ImcUdpTransport> imc)
+transport::ImcUdpTransport *Console::attachImc(std::unique_ptr<transport::ImcUdpTransport> imc)
 {
     const QString link = QStringLiteral("IMC/UDP");
     connect(imc.get(), &transport::ImcUdpTransport::received, this,
@@ -92,8 +90,9 @@ transport::ImcUdpTransport *ConsoleSession::attachImc(std::unique_ptr<transport:
     return m_imc.get();
 }
 
-std::expected<void, QString> ConsoleSession::startDds(const transport::DdsConfig &config)
+std::expected<void, QString> Console::startDds(transport::DdsConfig config)
 {
+    config.clock = m_clock;
     auto dds = std::make_unique<transport::DdsTransport>(m_schemas, config);
     const QString link = QStringLiteral("DDS");
     // Straight into the session from Cyclone's threads: the tree, alarms and statistics are thread-safe.
@@ -113,29 +112,35 @@ std::expected<void, QString> ConsoleSession::startDds(const transport::DdsConfig
     return {};
 }
 
-QString ConsoleSession::send(const QString &system, const QVariantMap &json)
+std::expected<void, QString> Console::send(quint16 system, msg::Message message)
 {
-    auto message = msg::fromJson(*m_schema, QJsonObject::fromVariantMap(json));
-    if (!message)
-        return message.error();
-    if (!m_tree.write(system, std::move(*message)))
-        return tr("not sent: no link to '%1'").arg(system);
+    if (auto sent = m_router.publish(system, message); !sent)
+        return sent;
+    m_tree.recordSent(system, std::move(message));
     return {};
 }
 
-void ConsoleSession::addLink(const QString &name, tree::VariableTree::OutputSink *sink)
+std::expected<void, QString> Console::send(const QString &system, msg::Message message)
+{
+    const auto id = m_tree.systemId(system);
+    if (!id)
+        return std::unexpected(tr("no system is called '%1'").arg(system));
+    return send(*id, std::move(message));
+}
+
+void Console::addLink(const QString &name, transport::OutputSink *sink)
 {
     m_router.addLink(name, sink);
 }
 
-void ConsoleSession::definitionsDiffer(quint16 system, const QString &theirDigest, const QString &ourDigest)
+void Console::definitionsDiffer(quint16 system, const QString &theirDigest, const QString &ourDigest)
 {
     m_digestNotes.insert(system, tr("speaks other message definitions (digest %1, ours %2): its values may be misread")
                                      .arg(theirDigest.left(8), ourDigest.left(8)));
     updateDefinitionsAlarm(system, m_linkStatistics.system(system));
 }
 
-void ConsoleSession::ingest(const msg::Message &message, const QString &link, qsizetype bytes)
+void Console::ingest(const msg::Message &message, const QString &link, qsizetype bytes)
 {
     const quint16 source = message.header.src;
     if (!link.isEmpty() && m_router.linkOf(source) != link) {
@@ -150,18 +155,24 @@ void ConsoleSession::ingest(const msg::Message &message, const QString &link, qs
     m_linkStatistics.received(source, link, message.id(), message.abbrev(), !message.isOpaque(), bytes);
 }
 
-void ConsoleSession::decodeFailed(quint16 system, const QString &link, const QString &peer, const QString &reason)
+void Console::decodeFailed(quint16 system, const QString &link, const QString &peer, const QString &reason)
 {
     m_linkStatistics.decodeFailed(system, link, peer, reason);
 }
 
-void ConsoleSession::tick()
+void Console::check()
+{
+    m_health.check();
+    m_naming.check();
+}
+
+void Console::tick()
 {
     m_linkStatistics.tick();
     updateLinkAlarms();
 }
 
-void ConsoleSession::updateLinkAlarms()
+void Console::updateLinkAlarms()
 {
     const qint64 now = m_tree.clock().now().toMSecsSinceEpoch();
     for (const transport::LinkStatistics::System &system : m_linkStatistics.systems()) {
@@ -187,7 +198,7 @@ void ConsoleSession::updateLinkAlarms()
     }
 }
 
-void ConsoleSession::updateDefinitionsAlarm(quint16 id, const transport::LinkStatistics::System &system)
+void Console::updateDefinitionsAlarm(quint16 id, const transport::LinkStatistics::System &system)
 {
     // Definitions that may not be the vehicle's: another digest or IMC version, types we lack.
     QStringList notes;
@@ -214,7 +225,7 @@ void ConsoleSession::updateDefinitionsAlarm(quint16 id, const transport::LinkSta
     m_graph.raise(node, text.isEmpty() ? alarms::Normal : alarms::Warning, text);
 }
 
-QString ConsoleSession::dumpTree() const
+QString Console::dumpTree() const
 {
     QString out;
     std::vector<tree::NodeId> stack{m_tree.root()};
@@ -230,3 +241,5 @@ QString ConsoleSession::dumpTree() const
     }
     return out;
 }
+
+} // namespace neptus::session

@@ -1,4 +1,4 @@
-#include "AlarmListModel.h"
+#include "qmlmodels/AlarmListModel.h"
 
 #include <QDateTime>
 #include <QPointer>

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "VariableTreeModel.h"
+#include "qmlmodels/VariableTreeModel.h"
 
 #include <QObject>
 #include <QPointer>

@@ -1,6 +1,6 @@
-#include "VariableTreeModel.h"
+#include "qmlmodels/VariableTreeModel.h"
 
-#include "Variable.h"
+#include "qmlmodels/Variable.h"
 
 #include <QSet>
 

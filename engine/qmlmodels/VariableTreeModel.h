@@ -1,6 +1,6 @@
 #pragma once
 
-#include "VariableTree.h"
+#include "tree/VariableTree.h"
 
 #include <QAbstractItemModel>
 #include <QElapsedTimer>

@@ -1,7 +1,7 @@
 #pragma once
 
-#include "LinkStatistics.h"
-#include "VariableTree.h"
+#include "transport/LinkStatistics.h"
+#include "tree/VariableTree.h"
 
 #include <QAbstractListModel>
 #include <QTimer>

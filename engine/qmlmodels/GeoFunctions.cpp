@@ -1,7 +1,7 @@
-#include "GeoFunctions.h"
+#include "qmlmodels/GeoFunctions.h"
 
-#include "Geodesy.h"
-#include "MapProjection.h"
+#include "geo/Geodesy.h"
+#include "geo/MapProjection.h"
 
 namespace neptus::geo {
 

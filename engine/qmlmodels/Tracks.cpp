@@ -1,6 +1,6 @@
-#include "Tracks.h"
+#include "qmlmodels/Tracks.h"
 
-#include "Geodesy.h"
+#include "geo/Geodesy.h"
 
 #include <cmath>
 

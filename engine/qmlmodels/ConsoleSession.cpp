@@ -1,0 +1,25 @@
+#include "qmlmodels/ConsoleSession.h"
+
+#include "messages/MessageJson.h"
+
+#include <QJsonObject>
+
+using namespace neptus;
+
+ConsoleSession::ConsoleSession(std::shared_ptr<const msg::Schema> schema, QObject *parent)
+    : QObject(parent)
+    , m_console(std::move(schema))
+{
+}
+
+ConsoleSession::~ConsoleSession() = default;
+
+QString ConsoleSession::send(const QString &system, const QVariantMap &json)
+{
+    auto message = msg::fromJson(m_console.schema(), QJsonObject::fromVariantMap(json));
+    if (!message)
+        return message.error();
+    if (auto sent = m_console.send(system, std::move(*message)); !sent)
+        return tr("not sent: %1").arg(sent.error());
+    return {};
+}

@@ -1,0 +1,49 @@
+#pragma once
+
+#include "qmlmodels/AlarmListModel.h"
+#include "qmlmodels/LinkStatisticsModel.h"
+#include "qmlmodels/Tracks.h"
+#include "qmlmodels/VariableTreeModel.h"
+#include "session/Console.h"
+
+#include <QObject>
+#include <QVariantMap>
+#include <QtQml/qqmlregistration.h>
+
+// A running console as QML sees it: the console itself (session::Console:
+// definitions, tree, alarms, scripts, links) and the models its components
+// bind to. The shell hands it to QML as a typed property.
+class ConsoleSession : public QObject
+{
+    Q_OBJECT
+    QML_ELEMENT
+    QML_UNCREATABLE("made by the program")
+    Q_PROPERTY(neptus::tree::VariableTreeModel *tree READ treeModel CONSTANT)
+    Q_PROPERTY(neptus::alarms::AlarmListModel *alarms READ alarmModel CONSTANT)
+    Q_PROPERTY(neptus::scripting::ScriptHost *scripts READ scripts CONSTANT)
+    Q_PROPERTY(neptus::geo::Tracks *tracks READ tracks CONSTANT)
+    Q_PROPERTY(neptus::transport::LinkStatisticsModel *links READ linksModel CONSTANT)
+
+public:
+    explicit ConsoleSession(std::shared_ptr<const neptus::msg::Schema> schema, QObject *parent = nullptr);
+    ~ConsoleSession() override;
+
+    neptus::session::Console &console() { return m_console; }
+    neptus::tree::VariableTreeModel *treeModel() { return &m_treeModel; }
+    neptus::alarms::AlarmListModel *alarmModel() { return &m_alarmModel; }
+    neptus::transport::LinkStatisticsModel *linksModel() { return &m_linksModel; }
+    neptus::scripting::ScriptHost *scripts() { return m_console.scripts(); }
+    neptus::geo::Tracks *tracks() { return &m_tracks; }
+
+    // For components (a joystick, a command button): sends a message, given
+    // as JSON ({"abbrev": "Abort", "fields": {...}}), to a system. Returns ""
+    // when sent, else why not.
+    Q_INVOKABLE QString send(const QString &system, const QVariantMap &message);
+
+private:
+    neptus::session::Console m_console;
+    neptus::tree::VariableTreeModel m_treeModel{&m_console.tree()};
+    neptus::geo::Tracks m_tracks{&m_treeModel};
+    neptus::alarms::AlarmListModel m_alarmModel{&m_console.alarmGraph()};
+    neptus::transport::LinkStatisticsModel m_linksModel{&m_console.linkStatistics(), &m_console.tree()};
+};

@@ -1,0 +1,121 @@
+#pragma once
+
+#include "alarms/AlarmGraph.h"
+#include "alarms/HealthMonitor.h"
+#include "core/Clock.h"
+#include "messages/SchemaSet.h"
+#include "scripting/ScriptHost.h"
+#include "session/EntityNaming.h"
+#include "transport/LinkRouter.h"
+#include "transport/LinkStatistics.h"
+#include "transport/dds/DdsTransport.h"
+#include "transport/imc/ImcUdpTransport.h"
+#include "tree/VariableTree.h"
+
+#include <QObject>
+#include <QTimer>
+
+#include <memory>
+
+namespace neptus::session {
+
+// Everything one running console is made of, without any QML: the message
+// definitions (the console's own, and others per system), the variable tree,
+// the alarm graph, the health monitor, the alarm scripts (started on first
+// use), the links to vehicles (IMC/UDP, DDS) with their statistics and
+// router, and the queries a console makes on first contact. The console
+// program hands it to QML through ConsoleSession; tests, fuzz targets and
+// headless tools use it directly.
+class Console : public QObject
+{
+    Q_OBJECT
+
+public:
+    explicit Console(std::shared_ptr<const msg::Schema> schema, const Clock *clock = &Clock::system(),
+                     QObject *parent = nullptr);
+    ~Console() override;
+
+    const msg::Schema &schema() const { return *m_schema; }
+    std::shared_ptr<const msg::Schema> sharedSchema() const { return m_schema; }
+    msg::SchemaSet &schemas() { return *m_schemas; }
+    std::shared_ptr<msg::SchemaSet> schemaSet() const { return m_schemas; }
+    tree::VariableTree &tree() { return m_tree; }
+    alarms::AlarmGraph &alarmGraph() { return m_graph; }
+    alarms::HealthMonitor &health() { return m_health; }
+    transport::LinkStatistics &linkStatistics() { return m_linkStatistics; }
+    transport::ImcUdpTransport *imc() { return m_imc.get(); }
+    transport::DdsTransport *dds() { return m_dds.get(); }
+    // Made on first use: a console that runs no alarm scripts (a headless
+    // recorder, the receive-path fuzz target) starts no script engine.
+    scripting::ScriptHost *scripts();
+
+    // Decodes what `system` (an IMC id such as "0x00d1", or the name it
+    // announces) sends with the definitions in `file` (IMC.xml or IMC.xml.gz),
+    // and encodes what goes to it with them. Call before starting the links.
+    std::expected<void, QString> setDefinitionsFor(const QString &system, const QString &file);
+
+    // Opens the links; an error says why (a busy port, a bad configuration),
+    // and the console carries on without that link.
+    std::expected<void, QString> startImc(transport::ImcUdpConfig config);
+    std::expected<void, QString> startDds(transport::DdsConfig config);
+    // Takes an IMC/UDP link made with schemaSet(), started or not (the fuzz
+    // target feeds an unstarted one through receive()).
+    transport::ImcUdpTransport *attachImc(std::unique_ptr<transport::ImcUdpTransport> imc);
+
+    // A transport, by name ("IMC/UDP", "DDS"): commands to a system go over
+    // the link it was last heard on. startImc/startDds add theirs.
+    void addLink(const QString &name, transport::OutputSink *sink);
+    // A peer speaks other message definitions: a Warning on
+    // "systems/<system>/definitions" says so, so values are not silently misread.
+    void definitionsDiffer(quint16 system, const QString &theirDigest, const QString &ourDigest);
+
+    // A decoded message from any transport (any thread), the link it came on
+    // and the size of its packet.
+    void ingest(const msg::Message &message, const QString &link = {}, qsizetype bytes = 0);
+    // A packet from `peer` over `link` that could not be decoded (any thread);
+    // `system` is 0xFFFF when even its header did not say who sent it.
+    void decodeFailed(quint16 system, const QString &link, const QString &peer, const QString &reason);
+
+    // Sends `message` to a system (by id or by the name it is shown by) over
+    // the link it was heard on, and records it under "system/out" once sent;
+    // an error says why it was not sent.
+    std::expected<void, QString> send(quint16 system, msg::Message message);
+    std::expected<void, QString> send(const QString &system, msg::Message message);
+
+    // A few times a second: silence, entity queries. Once a second: rates and
+    // link alarms. Timers call them; tests call them after moving their clock.
+    void check();
+    void tick();
+
+    // Every node of the tree as "path<TAB>value text<TAB>unit", one a line,
+    // in tree order: what the console knows, for tests and bug reports.
+    QString dumpTree() const;
+
+private:
+    // Link health: decode errors in the last few seconds, and message types
+    // the definitions lack, as alarms on "systems/<system>/link" and ".../definitions".
+    void updateLinkAlarms();
+    void updateDefinitionsAlarm(quint16 id, const transport::LinkStatistics::System &system);
+
+    const Clock *m_clock;
+    std::shared_ptr<const msg::Schema> m_schema;
+    std::shared_ptr<msg::SchemaSet> m_schemas;
+    tree::VariableTree m_tree;
+    alarms::AlarmGraph m_graph;
+    alarms::HealthMonitor m_health;
+    EntityNaming m_naming;
+    transport::LinkStatistics m_linkStatistics;
+    transport::LinkRouter m_router;
+    std::unique_ptr<scripting::ScriptHost> m_scripts;
+    std::unique_ptr<transport::ImcUdpTransport> m_imc;
+    std::unique_ptr<transport::DdsTransport> m_dds;
+    QTimer m_checkTimer;
+    QTimer m_tickTimer;
+    // What the link alarms last said, per system, so they change only when it does.
+    QHash<quint16, QString> m_linkAlarmText;
+    QHash<quint16, QString> m_definitionsAlarmText;
+    QHash<quint16, QString> m_announcedVersions;
+    QHash<quint16, QString> m_digestNotes;
+};
+
+} // namespace neptus::session
