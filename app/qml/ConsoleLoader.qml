@@ -1,4 +1,5 @@
 import QtQuick
+import Neptus.Engine
 import Neptus.Components
 import Neptus.Shell
 
@@ -8,7 +9,7 @@ Item {
     id: loader
 
     property url source
-    property QtObject session: null
+    property ConsoleSession session: null
     property Console item: null
     // Why no console is shown ("" when one is).
     property string errorString: ""

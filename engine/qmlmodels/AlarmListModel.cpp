@@ -34,6 +34,12 @@ int AlarmListModel::levelOf(const QString &path) const
     return node == AlarmGraph::noNode ? Unknown : static_cast<int>(m_graph->level(node));
 }
 
+QString AlarmListModel::messageOf(const QString &path) const
+{
+    const AlarmGraph::NodeId node = m_graph->find(path);
+    return node == AlarmGraph::noNode ? QString() : m_graph->message(node);
+}
+
 void AlarmListModel::refresh()
 {
     const quint64 version = m_graph->version();

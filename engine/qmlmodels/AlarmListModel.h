@@ -21,7 +21,7 @@ class AlarmListModel : public QAbstractListModel
     Q_PROPERTY(QString rootLevelName READ rootLevelName NOTIFY rootLevelChanged)
     Q_PROPERTY(int count READ count NOTIFY countChanged)
     Q_PROPERTY(int unacknowledged READ unacknowledged NOTIFY countChanged)
-    // Changes whenever anything in the graph did (bind levelOf() to it).
+    // Changes whenever anything in the graph did (AlarmState follows it).
     Q_PROPERTY(int revision READ revision NOTIFY revisionChanged)
 
 public:
@@ -37,6 +37,8 @@ public:
     int revision() const { return m_revision; }
     // The level of a node and everything under it ("systems/lauv"); Unknown if there is no such node.
     Q_INVOKABLE int levelOf(const QString &path) const;
+    // The node's own message ("" if there is no such node).
+    Q_INVOKABLE QString messageOf(const QString &path) const;
 
     Q_INVOKABLE void acknowledge(int row);
     Q_INVOKABLE void acknowledgeAll();

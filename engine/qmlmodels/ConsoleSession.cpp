@@ -6,9 +6,9 @@
 
 using namespace neptus;
 
-ConsoleSession::ConsoleSession(std::shared_ptr<const msg::Schema> schema, QObject *parent)
+ConsoleSession::ConsoleSession(std::shared_ptr<const msg::Schema> schema, const Clock *clock, QObject *parent)
     : QObject(parent)
-    , m_console(std::move(schema))
+    , m_console(std::move(schema), clock)
 {
 }
 

@@ -25,7 +25,8 @@ class ConsoleSession : public QObject
     Q_PROPERTY(neptus::transport::LinkStatisticsModel *links READ linksModel CONSTANT)
 
 public:
-    explicit ConsoleSession(std::shared_ptr<const neptus::msg::Schema> schema, QObject *parent = nullptr);
+    explicit ConsoleSession(std::shared_ptr<const neptus::msg::Schema> schema,
+                            const neptus::Clock *clock = &neptus::Clock::system(), QObject *parent = nullptr);
     ~ConsoleSession() override;
 
     neptus::session::Console &console() { return m_console; }

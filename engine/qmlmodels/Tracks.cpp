@@ -7,7 +7,7 @@
 namespace neptus::geo {
 
 Tracks::Tracks(tree::VariableTreeModel *model, QObject *parent)
-    : QObject(parent)
+    : QAbstractListModel(parent)
     , m_model(model)
     , m_consumer(model->tree()->addConsumer())
 {
@@ -22,6 +22,7 @@ QStringList Tracks::systems() const
     return names;
 }
 
+// By name: called by QML and tests, not per fix.
 const Tracks::Track *Tracks::track(const QString &system) const
 {
     for (const auto &t : m_tracks)
@@ -52,6 +53,8 @@ void Tracks::setHome(const QVariantMap &home)
     m_homeHeight = home.value(QStringLiteral("height")).toDouble();
     m_hasHome = true;
     emit homeChanged();
+    if (!m_tracks.empty()) // every row's position from home moved
+        emit dataChanged(index(0), index(rowCount() - 1), {NorthRole, EastRole, DownRole});
 }
 
 QVariantMap Tracks::latest(const QString &system) const
@@ -91,25 +94,102 @@ void Tracks::clear(const QString &system)
             t->fixes.clear();
             ++t->revision;
             ++m_revision;
+            notifyChanged();
             emit updated();
         }
 }
 
+int Tracks::rowOf(const Track &track) const
+{
+    return m_rowById.value(track.id, -1);
+}
+
 Tracks::Track &Tracks::trackFor(quint16 id, const QString &system)
 {
-    for (auto &t : m_tracks)
-        if (t->id == id) {
-            if (t->system != system) {
-                t->system = system; // named by its Announce
-                emit systemsChanged();
-            }
-            return *t;
+    if (const auto row = m_rowById.constFind(id); row != m_rowById.cend()) {
+        Track &t = *m_tracks[static_cast<size_t>(*row)];
+        if (t.system != system) {
+            t.system = system; // named by its Announce
+            emit dataChanged(index(*row), index(*row), {SystemRole});
+            emit systemsChanged();
         }
+        return t;
+    }
+    const int row = rowCount();
+    beginInsertRows({}, row, row);
     m_tracks.push_back(std::make_unique<Track>());
     m_tracks.back()->id = id;
     m_tracks.back()->system = system;
+    m_rowById.insert(id, row);
+    m_shownRevision.push_back(0);
+    endInsertRows();
     emit systemsChanged();
     return *m_tracks.back();
+}
+
+void Tracks::notifyChanged()
+{
+    // One dataChanged per run of neighbouring rows that moved.
+    const int rows = rowCount();
+    for (int row = 0; row < rows;) {
+        if (m_tracks[static_cast<size_t>(row)]->revision == m_shownRevision[static_cast<size_t>(row)]) {
+            ++row;
+            continue;
+        }
+        int last = row;
+        while (last + 1 < rows
+               && m_tracks[static_cast<size_t>(last + 1)]->revision != m_shownRevision[static_cast<size_t>(last + 1)])
+            ++last;
+        for (int r = row; r <= last; ++r)
+            m_shownRevision[static_cast<size_t>(r)] = m_tracks[static_cast<size_t>(r)]->revision;
+        emit dataChanged(index(row), index(last));
+        row = last + 1;
+    }
+}
+
+int Tracks::rowCount(const QModelIndex &parent) const
+{
+    return parent.isValid() ? 0 : static_cast<int>(m_tracks.size());
+}
+
+QVariant Tracks::data(const QModelIndex &index, int role) const
+{
+    if (!checkIndex(index, CheckIndexOption::IndexIsValid | CheckIndexOption::ParentIsInvalid))
+        return {};
+    const Track &t = *m_tracks[static_cast<size_t>(index.row())];
+    const Fix &f = t.latest;
+    const bool valid = t.revision > 0;
+    const auto fromHome = [&](int axis) {
+        if (!valid || !m_hasHome)
+            return 0.0;
+        return toNed({f.lat, f.lon, f.height}, {m_homeLat, m_homeLon, m_homeHeight})[axis];
+    };
+    switch (role) {
+    case Qt::DisplayRole:
+    case SystemRole: return t.system;
+    case ValidRole: return valid;
+    case LatitudeRole: return degrees(f.lat);
+    case LongitudeRole: return degrees(f.lon);
+    case HeightRole: return f.height;
+    case DepthRole: return f.depth;
+    case RollRole: return degrees(f.roll);
+    case PitchRole: return degrees(f.pitch);
+    case HeadingRole: return degrees(f.heading);
+    case NorthRole: return fromHome(0);
+    case EastRole: return fromHome(1);
+    case DownRole: return fromHome(2);
+    case TimeRole: return f.time;
+    case CountRole: return static_cast<int>(t.fixes.size());
+    default: return {};
+    }
+}
+
+QHash<int, QByteArray> Tracks::roleNames() const
+{
+    return {{SystemRole, "system"},   {ValidRole, "valid"},     {LatitudeRole, "lat"},     {LongitudeRole, "lon"},
+            {HeightRole, "height"},   {DepthRole, "depth"},     {RollRole, "roll"},        {PitchRole, "pitch"},
+            {HeadingRole, "heading"}, {NorthRole, "north"},     {EastRole, "east"},        {DownRole, "down"},
+            {TimeRole, "time"},       {CountRole, "count"}};
 }
 
 void Tracks::homeOnce(double lat, double lon, double height)
@@ -121,6 +201,8 @@ void Tracks::homeOnce(double lat, double lon, double height)
     m_homeHeight = height;
     m_hasHome = true;
     emit homeChanged();
+    if (!m_tracks.empty())
+        emit dataChanged(index(0), index(rowCount() - 1), {NorthRole, EastRole, DownRole});
 }
 
 void Tracks::append(const QString &system, const Fix &fix)
@@ -130,6 +212,7 @@ void Tracks::append(const QString &system, const Fix &fix)
     Track &t = trackFor(known ? known->id : quint16(0xF000 + m_tracks.size()), system);
     homeOnce(fix.lat, fix.lon, 0);
     add(t, fix);
+    notifyChanged();
 }
 
 void Tracks::add(Track &t, const Fix &fix)
@@ -187,8 +270,10 @@ void Tracks::update()
     for (const tree::NodeId node : changes.changedNodes)
         if (tree.kind(node) == tree::VariableTree::Kind::Message && tree.name(node) == QLatin1String("EstimatedState"))
             read(node);
-    if (m_revision != before)
-        emit updated();
+    if (m_revision == before)
+        return;
+    notifyChanged();
+    emit updated();
 }
 
 } // namespace neptus::geo

@@ -2,7 +2,8 @@
 
 #include "qmlmodels/VariableTreeModel.h"
 
-#include <QObject>
+#include <QAbstractListModel>
+#include <QHash>
 #include <QPointer>
 #include <QVariantMap>
 #include <QtQml/qqmlregistration.h>
@@ -18,7 +19,11 @@ namespace neptus::geo {
 // the system moved at least `minimumSpacing` metres, or every 10 s when it
 // stands still. Holds up to `capacity` fixes per system, then forgets the
 // oldest tenth.
-class Tracks : public QObject
+//
+// Also a list model, a row per system with its latest state, for the map's
+// and the 3D scene's Repeaters: a new system inserts its row, a move changes
+// only that row (no view rebuilds its other items).
+class Tracks : public QAbstractListModel
 {
     Q_OBJECT
     QML_ELEMENT
@@ -28,6 +33,24 @@ class Tracks : public QObject
     Q_PROPERTY(QVariantMap home READ home WRITE setHome NOTIFY homeChanged)
 
 public:
+    enum Role {
+        SystemRole = Qt::UserRole + 1, // the name it is shown by
+        ValidRole,                     // a position was heard
+        LatitudeRole,                  // degrees
+        LongitudeRole,
+        HeightRole,                    // m above the ellipsoid
+        DepthRole,                     // m
+        RollRole,                      // degrees
+        PitchRole,
+        HeadingRole,
+        NorthRole,                     // m from home (0 without one)
+        EastRole,
+        DownRole,
+        TimeRole,                      // s since 1970, the vehicle's stamp
+        CountRole,                     // fixes in the trail
+    };
+    Q_ENUM(Role)
+
     struct Fix
     {
         double time = 0; // s since 1970, the vehicle's stamp
@@ -82,6 +105,10 @@ public:
     // Takes the tree's changes; runs after every model sync.
     void update();
 
+    int rowCount(const QModelIndex &parent = {}) const override;
+    QVariant data(const QModelIndex &index, int role = Qt::DisplayRole) const override;
+    QHash<int, QByteArray> roleNames() const override;
+
 signals:
     void systemsChanged();
     void updated();
@@ -93,10 +120,15 @@ private:
     void homeOnce(double lat, double lon, double height);
     void add(Track &track, const Fix &fix);
     void read(tree::NodeId estimatedState);
+    int rowOf(const Track &track) const;
+    // Rows whose track changed since the views were last told.
+    void notifyChanged();
 
     QPointer<tree::VariableTreeModel> m_model;
     int m_consumer = -1;
-    std::vector<std::unique_ptr<Track>> m_tracks;
+    std::vector<std::unique_ptr<Track>> m_tracks; // in row order
+    QHash<quint16, int> m_rowById;
+    std::vector<quint64> m_shownRevision;          // per row: what views were told
     quint64 m_revision = 0;
     bool m_hasHome = false;
     double m_homeLat = 0, m_homeLon = 0, m_homeHeight = 0;

@@ -143,16 +143,22 @@ void Console::definitionsDiffer(quint16 system, const QString &theirDigest, cons
 void Console::ingest(const msg::Message &message, const QString &link, qsizetype bytes)
 {
     const quint16 source = message.header.src;
-    if (!link.isEmpty() && m_router.linkOf(source) != link) {
-        m_router.heard(source, link);
-        m_tree.setSystemLink(source, link);
-    }
+    if (!link.isEmpty())
+        heardOn(source, link);
     if (message.def() && message.def()->id == 151 && message.def()->abbrev == u"Announce")
         m_schemas->learnName(source, message.text(u"sys_name"));
     m_tree.ingest(message);
     m_health.observe(message);
     m_naming.observe(message);
     m_linkStatistics.received(source, link, message.id(), message.abbrev(), !message.isOpaque(), bytes);
+}
+
+void Console::heardOn(quint16 system, const QString &link)
+{
+    if (m_router.linkOf(system) == link)
+        return;
+    m_router.heard(system, link);
+    m_tree.setSystemLink(system, link);
 }
 
 void Console::decodeFailed(quint16 system, const QString &link, const QString &peer, const QString &reason)

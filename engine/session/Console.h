@@ -69,6 +69,8 @@ public:
     // "systems/<system>/definitions" says so, so values are not silently misread.
     void definitionsDiffer(quint16 system, const QString &theirDigest, const QString &ourDigest);
 
+    // `system` is (now) reached over `link`: commands go there (any thread).
+    void heardOn(quint16 system, const QString &link);
     // A decoded message from any transport (any thread), the link it came on
     // and the size of its packet.
     void ingest(const msg::Message &message, const QString &link = {}, qsizetype bytes = 0);

@@ -1,4 +1,5 @@
 import QtQuick
+import Neptus.Engine
 
 // The root of every console layout: what the designer saves and the shell
 // loads. Components are its children, placed by their own geometry.
@@ -13,5 +14,5 @@ Item {
     property list<string> vehicleKinds
     // The running console's tree, alarms and scripts (session.tree,
     // session.alarms, session.scripts); null when a layout is only previewed.
-    property QtObject session: null
+    property ConsoleSession session: null
 }

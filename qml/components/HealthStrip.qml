@@ -24,8 +24,8 @@ Rectangle {
             delegate: Row {
                 id: entry
                 required property string modelData
-                readonly property int level: Session.alarms
-                    ? (Session.alarms.revision, Session.alarms.levelOf("systems/" + modelData)) : AlarmLevel.Unknown
+                readonly property int level: health.level
+                AlarmState { id: health; alarms: Session.alarms; path: "systems/" + entry.modelData }
                 objectName: "health-" + modelData
                 height: Theme.touchTarget
                 spacing: Theme.spacing / 2

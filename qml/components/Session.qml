@@ -1,19 +1,20 @@
 pragma Singleton
 import QtQuick
+import Neptus.Engine
 
 // The running console's data, for every component: the variable tree, the
 // alarms and the scripts. The shell sets `session` when it opens a console;
 // in a preview (and in tests that do not set it) it is null and components
 // show no data.
 QtObject {
-    property QtObject session: null
-    readonly property var tree: session && session.tree ? session.tree : null
-    readonly property var alarms: session && session.alarms ? session.alarms : null
-    readonly property var scripts: session && session.scripts ? session.scripts : null
+    property ConsoleSession session: null
+    readonly property VariableTreeModel tree: session ? session.tree : null
+    readonly property AlarmListModel alarms: session ? session.alarms : null
+    readonly property ScriptHost scripts: session ? session.scripts : null
     // Where each system has been (trails for the map and the 3D scene).
-    readonly property var tracks: session && session.tracks ? session.tracks : null
+    readonly property Tracks tracks: session ? session.tracks : null
     // What each system's link carries (rates, types, decode errors, entities).
-    readonly property var links: session && session.links ? session.links : null
+    readonly property LinkStatisticsModel links: session ? session.links : null
     // Names of the systems heard so far, kept current as the tree grows.
     readonly property var systems: tree ? (tree.nodeCount, tree.children("")) : []
 

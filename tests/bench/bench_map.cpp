@@ -82,7 +82,7 @@ int main(int argc, char **argv)
         emit tracks.updated();
     };
     auto pan = [&] {
-        if (!QMetaObject::invokeMethod(map.get(), "pan", Q_ARG(QVariant, 1), Q_ARG(QVariant, 0)))
+        if (!QMetaObject::invokeMethod(map.get(), "pan", Q_ARG(double, 1), Q_ARG(double, 0)))
             qFatal("Map2D has no pan(dx, dy)");
         grow();
     };

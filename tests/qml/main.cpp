@@ -1,14 +1,12 @@
 // Qt Quick Test runner for the project's tst_*.qml files, with the project's
 // QML modules (Neptus.Engine, Neptus.Components, Neptus.Shell) built in, and
-// a `Fixtures` singleton (module Neptus.Testing) that feeds a real variable
-// tree and alarm graph, so tests drive the real models.
+// a `Fixtures` singleton (module Neptus.Testing) holding a real console
+// session on a manual clock, so tests drive the real models, and a link that
+// records what components send.
 #include "Paths.h"
-#include "alarms/AlarmGraph.h"
-#include "qmlmodels/AlarmListModel.h"
-#include "scripting/ScriptHost.h"
+#include "messages/MessageJson.h"
 #include "messages/Schema.h"
-#include "qmlmodels/Tracks.h"
-#include "qmlmodels/VariableTreeModel.h"
+#include "qmlmodels/ConsoleSession.h"
 
 #include <QDir>
 #include <QFile>
@@ -35,33 +33,90 @@ Q_IMPORT_QML_PLUGIN(Neptus_ShellPlugin)
 
 using namespace neptus;
 
+// What components send, as a link would take it: recorded, or refused with
+// the reason a test sets. The console's own first-contact queries (EntityList,
+// QueryEntityInfo) go out too; they are not what a component sent.
+class RecordingLink : public transport::OutputSink
+{
+public:
+    std::expected<void, QString> publish(quint16 system, const msg::Message &message) override
+    {
+        if (!failure.isEmpty())
+            return std::unexpected(failure);
+        if (message.abbrev() == u"EntityList" || message.abbrev() == u"QueryEntityInfo")
+            return {};
+        sent.append(QVariantMap{{QStringLiteral("system"), system},
+                                {QStringLiteral("abbrev"), message.abbrev()},
+                                {QStringLiteral("message"), msg::toJsonWithoutHeader(message).toVariantMap()}});
+        return {};
+    }
+    QVariantList sent;
+    QString failure;
+};
+
 class Fixtures : public QObject
 {
     Q_OBJECT
+    Q_PROPERTY(ConsoleSession *session READ session CONSTANT)
     Q_PROPERTY(neptus::tree::VariableTreeModel *treeModel READ treeModel CONSTANT)
     Q_PROPERTY(neptus::alarms::AlarmListModel *alarmModel READ alarmModel CONSTANT)
     Q_PROPERTY(neptus::scripting::ScriptHost *scripts READ scripts CONSTANT)
     Q_PROPERTY(neptus::geo::Tracks *tracks READ tracks CONSTANT)
+    // What components sent over the test link: [{system, abbrev, message}].
+    Q_PROPERTY(QVariantList sent READ sent NOTIFY sentChanged)
+    // When set, the test link refuses every send with this reason.
+    Q_PROPERTY(QString sendFailure READ sendFailure WRITE setSendFailure)
 
 public:
+    static inline const QString testLink = QStringLiteral("TEST");
+
     Fixtures()
+        : m_schema(*msg::Schema::load(msg::Schema::filesIn(test::msgdefsDirectory())))
+        , m_session(m_schema, &m_clock)
     {
-        m_schema = *msg::Schema::load(msg::Schema::filesIn(test::msgdefsDirectory()));
+        m_session.console().addLink(testLink, &m_link);
     }
 
-    tree::VariableTreeModel *treeModel() { return &m_treeModel; }
-    alarms::AlarmListModel *alarmModel() { return &m_alarmModel; }
-    scripting::ScriptHost *scripts() { return &m_scripts; }
-    geo::Tracks *tracks() { return &m_tracks; }
+    ConsoleSession *session() { return &m_session; }
+    tree::VariableTreeModel *treeModel() { return m_session.treeModel(); }
+    alarms::AlarmListModel *alarmModel() { return m_session.alarmModel(); }
+    scripting::ScriptHost *scripts() { return m_session.scripts(); }
+    geo::Tracks *tracks() { return m_session.tracks(); }
+    QVariantList sent()
+    {
+        // Systems by the name the console shows them, as components name them.
+        QVariantList named = m_link.sent;
+        for (QVariant &entry : named) {
+            QVariantMap map = entry.toMap();
+            map.insert(QStringLiteral("system"),
+                       m_session.console().tree().systemName(static_cast<quint16>(map.value(QStringLiteral("system")).toUInt())));
+            entry = map;
+        }
+        return named;
+    }
+    QString sendFailure() const { return m_link.failure; }
+    void setSendFailure(const QString &why) { m_link.failure = why; }
+    Q_INVOKABLE void clearSent()
+    {
+        m_link.sent.clear();
+        emit sentChanged();
+    }
+
     // Level and message of an alarm node, after running the scripts that are due.
     Q_INVOKABLE int alarmLevel(const QString &path)
     {
-        m_scripts.runPending();
-        const auto node = m_graph.find(path);
-        return node == alarms::AlarmGraph::noNode ? -1 : static_cast<int>(m_graph.level(node));
+        scripts()->runPending();
+        alarms::AlarmGraph &graph = m_session.console().alarmGraph();
+        const auto node = graph.find(path);
+        return node == alarms::AlarmGraph::noNode ? -1 : static_cast<int>(graph.level(node));
     }
 
-    Q_INVOKABLE void nameSystem(int id, const QString &name) { m_tree.setSystemName(static_cast<quint16>(id), name); }
+    // A system known by name and reachable over the test link.
+    Q_INVOKABLE void nameSystem(int id, const QString &name)
+    {
+        m_session.console().tree().setSystemName(static_cast<quint16>(id), name);
+        m_session.console().heardOn(static_cast<quint16>(id), testLink);
+    }
     Q_INVOKABLE void ingest(const QString &abbrev, int src, const QVariantMap &fields)
     {
         msg::Message m(m_schema->byAbbrev(abbrev));
@@ -74,11 +129,13 @@ public:
             else
                 m.setNumber(index, it.value().toDouble());
         }
-        m_tree.ingest(m);
+        m_session.console().tree().ingest(m);
+        m_session.console().heardOn(m.header.src, testLink);
     }
     Q_INVOKABLE void raise(const QString &path, int level, const QString &message)
     {
-        m_graph.raise(m_graph.ensure(path), static_cast<alarms::Level>(level), message);
+        alarms::AlarmGraph &graph = m_session.console().alarmGraph();
+        graph.raise(graph.ensure(path), static_cast<alarms::Level>(level), message);
     }
     Q_INVOKABLE void advanceClock(int milliseconds) { m_clock.advance(milliseconds); }
 
@@ -154,15 +211,14 @@ public:
     }
     Q_INVOKABLE QString sourceDir() const { return test::sourcePath({}); }
 
+signals:
+    void sentChanged();
+
 private:
-    std::shared_ptr<const msg::Schema> m_schema;
     ManualClock m_clock{QDateTime::fromMSecsSinceEpoch(1'700'000'000'000, QTimeZone::UTC)};
-    tree::VariableTree m_tree{&m_clock};
-    tree::VariableTreeModel m_treeModel{&m_tree};
-    geo::Tracks m_tracks{&m_treeModel};
-    alarms::AlarmGraph m_graph{&m_clock};
-    alarms::AlarmListModel m_alarmModel{&m_graph};
-    scripting::ScriptHost m_scripts{m_tree, m_graph};
+    std::shared_ptr<const msg::Schema> m_schema;
+    RecordingLink m_link;
+    ConsoleSession m_session;
     std::vector<std::unique_ptr<QTemporaryDir>> m_dirs;
 };
 

@@ -13,29 +13,21 @@ TestCase {
     width: 800
     height: 400
 
-    QtObject {
-        id: fakeSession
-        property var tree: Fixtures.treeModel
-        property var sent: []
-        property string answer: ""
-        function send(system, message) {
-            sent.push({ system: system, message: message })
-            return answer
-        }
-    }
-
     CommandButton { id: abort; x: 20; y: 20; width: 400; system: "lauv-1" }
     CommandButton { id: harmless; x: 20; y: 200; width: 400; system: "$main"; confirm: false; label: "Stop logging"
                     message: "{\"abbrev\": \"LogBookEntry\", \"fields\": {\"text\": \"stop\"}}" }
 
     function init() {
-        Session.session = fakeSession
-        fakeSession.sent = []
-        fakeSession.answer = ""
+        Session.session = Fixtures.session
+        Fixtures.nameSystem(0x51, "lauv-1")
+        Fixtures.nameSystem(0x52, "xplore")
+        Fixtures.clearSent()
+        Fixtures.sendFailure = ""
         abort.outcome = ""
         harmless.outcome = ""
     }
     function cleanupTestCase() {
+        Fixtures.sendFailure = ""
         Session.session = null
         Session.mainSystem = ""
     }
@@ -45,16 +37,16 @@ TestCase {
         verify(knob.width >= Theme.touchTarget, "the knob is a touch target")
         // (Dragged on the still track: the knob itself follows the finger.)
         mouseDrag(slide, knob.x + knob.width / 2, slide.height / 2, slide.width * 0.6, 0)
-        compare(fakeSession.sent.length, 0)
+        compare(Fixtures.sent.length, 0)
         tryCompare(knob, "x", knob.minX, 1000, "it springs back")
     }
 
     function test_theWholeSlideSendsTheCommandToItsSystem() {
         const slide = findChild(abort, "slide"), knob = findChild(abort, "knob")
         mouseDrag(slide, knob.x + knob.width / 2, slide.height / 2, slide.width, 0)
-        compare(fakeSession.sent.length, 1)
-        compare(fakeSession.sent[0].system, "lauv-1")
-        compare(fakeSession.sent[0].message.abbrev, "Abort")
+        compare(Fixtures.sent.length, 1)
+        compare(Fixtures.sent[0].system, "lauv-1")
+        compare(Fixtures.sent[0].message.abbrev, "Abort")
         compare(findChild(abort, "outcome").text, "Abort sent to lauv-1")
     }
 
@@ -62,28 +54,28 @@ TestCase {
         const slide = findChild(abort, "slide")
         slide.forceActiveFocus()
         keyClick(Qt.Key_Right); keyClick(Qt.Key_Right); keyClick(Qt.Key_Right)
-        compare(fakeSession.sent.length, 0)
+        compare(Fixtures.sent.length, 0)
         keyClick(Qt.Key_Escape)
         keyClick(Qt.Key_Right); keyClick(Qt.Key_Right); keyClick(Qt.Key_Right)
-        compare(fakeSession.sent.length, 0, "Escape started over")
+        compare(Fixtures.sent.length, 0, "Escape started over")
         keyClick(Qt.Key_Right)
-        compare(fakeSession.sent.length, 1)
+        compare(Fixtures.sent.length, 1)
     }
 
     function test_harmlessCommandsAreAButtonToTheMainSystem() {
         mouseClick(findChild(harmless, "button"))
-        compare(fakeSession.sent.length, 0)
+        compare(Fixtures.sent.length, 0)
         verify(findChild(harmless, "outcome").text.indexOf("no main system") >= 0)
         Session.mainSystem = "xplore"
         verify(findChild(harmless, "button").height >= Theme.touchTarget)
         mouseClick(findChild(harmless, "button"))
-        compare(fakeSession.sent.length, 1)
-        compare(fakeSession.sent[0].system, "xplore")
-        compare(fakeSession.sent[0].message.fields.text, "stop")
+        compare(Fixtures.sent.length, 1)
+        compare(Fixtures.sent[0].system, "xplore")
+        compare(Fixtures.sent[0].message.fields.text, "stop")
     }
 
     function test_saysWhyACommandWasNotSent() {
-        fakeSession.answer = "not sent: no link to 'lauv-1'"
+        Fixtures.sendFailure = "no link to 'lauv-1'"
         abort.send()
         compare(findChild(abort, "outcome").text, "not sent: no link to 'lauv-1'")
         compare(String(findChild(abort, "outcome").color), String(Theme.levelColor(4)))

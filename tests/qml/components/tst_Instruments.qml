@@ -14,11 +14,6 @@ TestCase {
     width: 1000
     height: 600
 
-    QtObject {
-        id: fakeSession
-        property var tree: Fixtures.treeModel
-    }
-
     Gauge { id: rpm; x: 0; y: 0; width: 200; height: 200; path: "inst/Rpm/value"; maximum: 2000; warningAbove: 1500; dangerAbove: 1800 }
     Compass { id: compass; x: 210; y: 0; width: 200; height: 200; path: "inst/EstimatedState/psi" }
     AttitudeIndicator { id: horizon; x: 420; y: 0; width: 200; height: 200
@@ -28,7 +23,7 @@ TestCase {
                        depthPath: "inst/EstimatedState/depth"; altitudePath: "inst/EstimatedState/alt" }
 
     function initTestCase() {
-        Session.session = fakeSession
+        Session.session = Fixtures.session
         Fixtures.nameSystem(61, "inst")
     }
     function cleanupTestCase() { Session.session = null }

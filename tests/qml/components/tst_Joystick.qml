@@ -13,22 +13,15 @@ TestCase {
     width: 600
     height: 600
 
-    QtObject {
-        id: fakeSession
-        property var tree: Fixtures.treeModel
-        property var sent: []
-        function send(system, message) {
-            sent.push({ system: system, message: message })
-            return ""
-        }
-    }
-
     VirtualJoystick { id: stick; x: 20; y: 20; width: 300; height: 420; system: "lauv-1" }
 
-    function initTestCase() { Session.session = fakeSession }
+    function initTestCase() {
+        Session.session = Fixtures.session
+        Fixtures.nameSystem(0x53, "lauv-1")
+    }
     function cleanupTestCase() { Session.session = null; Session.mainSystem = "" }
-    function init() { fakeSession.sent = [] }
-    function lastActions() { return fakeSession.sent[fakeSession.sent.length - 1].message.fields.actions }
+    function init() { Fixtures.clearSent() }
+    function lastActions() { return Fixtures.sent[Fixtures.sent.length - 1].message.fields.actions }
     function knob() { return findChild(stick, "knob") }
     function pad() { return findChild(stick, "pad") }
     function arm() {
@@ -41,7 +34,7 @@ TestCase {
         verify(!stick.armed)
         const k = knob(), p = pad()
         mouseDrag(p, p.width / 2, p.height / 2, 80, -80)
-        compare(fakeSession.sent.length, 0)
+        compare(Fixtures.sent.length, 0)
         compare(stick.stickX, 0)
         compare(stick.stickY, 0)
     }
@@ -54,21 +47,21 @@ TestCase {
         mouseMove(p, c + 60, c - 60)
         mouseMove(p, c + 80, c - 100)
         verify(stick.stickX > 0.3 && stick.stickY > 0.3, stick.stickX + ", " + stick.stickY)
-        const before = fakeSession.sent.length
+        const before = Fixtures.sent.length
         verify(before >= 1, "sent as soon as it moves")
-        compare(fakeSession.sent[0].system, "lauv-1")
-        compare(fakeSession.sent[0].message.abbrev, "RemoteActions")
+        compare(Fixtures.sent[0].system, "lauv-1")
+        compare(Fixtures.sent[0].message.abbrev, "RemoteActions")
         wait(650)
-        verify(fakeSession.sent.length >= before + 2, "about 5 a second while held: " + (fakeSession.sent.length - before))
+        verify(Fixtures.sent.length >= before + 2, "about 5 a second while held: " + (Fixtures.sent.length - before))
         const actions = lastActions()
         verify(/^Heading=0\.\d\d;Thrust=(0\.\d\d|1\.00)$/.test(actions), actions)
         mouseRelease(p, c + 80, c - 100)
         compare(lastActions(), "Heading=0.00;Thrust=0.00", "let go: stop")
         compare(stick.stickX, 0)
         compare(stick.stickY, 0)
-        const after = fakeSession.sent.length
+        const after = Fixtures.sent.length
         wait(450)
-        compare(fakeSession.sent.length, after, "nothing more once let go")
+        compare(Fixtures.sent.length, after, "nothing more once let go")
     }
 
     function test_3_keysMoveTheStickAQuarter() {
@@ -89,9 +82,9 @@ TestCase {
         mouseClick(findChild(stick, "disarm"))
         verify(!stick.armed)
         compare(lastActions(), "Heading=0.00;Thrust=0.00", "disarming a deflected stick stops the vehicle")
-        const count = fakeSession.sent.length
+        const count = Fixtures.sent.length
         keyClick(Qt.Key_Right)
-        compare(fakeSession.sent.length, count)
+        compare(Fixtures.sent.length, count)
     }
 
     function test_5_withoutAMainSystemItSaysSo() {
@@ -99,7 +92,7 @@ TestCase {
         arm()
         stick.forceActiveFocus()
         keyClick(Qt.Key_Right)
-        compare(fakeSession.sent.length, 0)
+        compare(Fixtures.sent.length, 0)
         compare(findChild(stick, "outcome").text, "not sent: no main system chosen")
         keyClick(Qt.Key_Space)
         stick.disarm()

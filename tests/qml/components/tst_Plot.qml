@@ -15,16 +15,11 @@ TestCase {
     width: 800
     height: 400
 
-    QtObject {
-        id: fakeSession
-        property var tree: Fixtures.treeModel
-    }
-
     Plot { id: plot; x: 0; y: 0; width: 600; height: 300; span: 60
            paths: ["plotter/EstimatedState/depth", "plotter/EstimatedState/alt"] }
 
     function initTestCase() {
-        Session.session = fakeSession
+        Session.session = Fixtures.session
         Fixtures.nameSystem(71, "plotter")
     }
     function cleanupTestCase() { Session.session = null }

@@ -13,13 +13,11 @@ TestCase {
     width: 600
     height: 300
 
-    QtObject { id: fakeSession; property var tree: Fixtures.treeModel }
-
     Readout { id: depth; x: 0; y: 0; width: 240; height: 110; path: "ro/EstimatedState/depth"; decimals: 2 }
     Readout { id: volts; x: 260; y: 0; width: 240; height: 110; path: "$main/Voltage/value"; label: "Battery"; unit: "volts" }
 
     function initTestCase() {
-        Session.session = fakeSession
+        Session.session = Fixtures.session
         Fixtures.nameSystem(71, "ro")
     }
     function cleanupTestCase() { Session.session = null; Session.mainSystem = "" }

@@ -13,12 +13,6 @@ TestCase {
     width: 1000
     height: 600
 
-    QtObject {
-        id: fakeSession
-        property var tree: Fixtures.treeModel
-        property var alarms: Fixtures.alarmModel
-    }
-
     SystemsList { id: systems; x: 0; y: 0; width: 480; height: 400 }
     AlarmList { id: alarms; x: 500; y: 0; width: 480; height: 400 }
     HealthStrip { id: health; x: 0; y: 420; width: 980; height: 60 }
@@ -26,7 +20,7 @@ TestCase {
     SignalSpy { id: openSpy; target: Session; signalName: "openConsoleRequested" }
 
     function initTestCase() {
-        Session.session = fakeSession
+        Session.session = Fixtures.session
         Session.consoles = [{ file: "file:///consoles/AUV.qml", title: "AUV console", kinds: ["UUV"] }]
     }
     function cleanupTestCase() {

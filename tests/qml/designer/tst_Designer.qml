@@ -35,11 +35,7 @@ TestCase {
             ConsoleLoader {
                 id: loader
                 anchors.fill: parent
-                session: QtObject {
-                    property var tree: Fixtures.treeModel
-                    property var alarms: Fixtures.alarmModel
-                    property var scripts: Fixtures.scripts
-                }
+                session: Fixtures.session
                 componentsRevision: palette.revision
             }
             DesignerOverlay {

@@ -16,12 +16,6 @@ TestCase {
     width: 900
     height: 640
 
-    QtObject {
-        id: fakeSession
-        property var tree: Fixtures.treeModel
-        property var tracks: Fixtures.tracks
-    }
-
     readonly property real homeLat: 41.18
     readonly property real homeLon: -8.70
     function rad(d) { return d * Math.PI / 180 }
@@ -34,7 +28,7 @@ TestCase {
     }
 
     function initTestCase() {
-        Session.session = fakeSession
+        Session.session = Fixtures.session
         Fixtures.nameSystem(71, "alpha")
         Fixtures.nameSystem(72, "bravo")
         // alpha drives 500 m north from home in 50 m steps; bravo sits 300 m east.

@@ -15,11 +15,6 @@ TestCase {
     width: 820
     height: 620
 
-    QtObject {
-        id: fakeSession
-        property var tree: Fixtures.treeModel
-        property var tracks: Fixtures.tracks
-    }
     function rad(d) { return d * Math.PI / 180 }
     readonly property real homeLat: 41.18
     readonly property real homeLon: -8.70
@@ -41,7 +36,7 @@ TestCase {
     }
 
     function initTestCase() {
-        Session.session = fakeSession
+        Session.session = Fixtures.session
         Fixtures.nameSystem(81, "alpha")
         Fixtures.nameSystem(82, "bravo")
         for (let i = 0; i <= 5; ++i)

@@ -14,12 +14,10 @@ TestCase {
     width: 900
     height: 600
 
-    QtObject { id: fakeSession; property var tree: Fixtures.treeModel }
-
     VariableTreeView { id: view; x: 0; y: 0; width: 800; height: 500 }
     Basic.TextField { id: pasteHere; x: 0; y: 520; width: 400 }
 
-    function initTestCase() { Session.session = fakeSession }
+    function initTestCase() { Session.session = Fixtures.session }
     function cleanupTestCase() { Session.session = null }
 
     function test_searchOpensTheWayAndCopiesThePath() {

@@ -1,0 +1,47 @@
+import QtQuick
+
+// A map's buttons, at its right edge for the thumb: zoom, follow, show every
+// system, measure, north up. They say what was asked; the map does it.
+Column {
+    id: controls
+    property string followName: ""   // whom "follow" follows, for its help
+    property bool canFollow: true
+    property bool following: false
+    property bool measuring: false
+    property bool northUp: true
+
+    signal zoomIn()
+    signal zoomOut()
+    signal followToggled()
+    signal showAll()
+    signal measureToggled()
+    signal turnNorthUp()
+
+    spacing: Theme.spacing
+
+    TouchButton { objectName: "zoomIn"; text: "+"; toolTip: qsTr("Zoom in"); onClicked: controls.zoomIn() }
+    TouchButton { objectName: "zoomOut"; text: "−"; toolTip: qsTr("Zoom out"); onClicked: controls.zoomOut() }
+    TouchButton {
+        objectName: "followButton"
+        text: "◎"
+        toolTip: qsTr("Follow %1").arg(controls.followName)
+        highlighted: controls.following
+        enabled: controls.canFollow
+        onClicked: controls.followToggled()
+    }
+    TouchButton { objectName: "fitAll"; text: "⊡"; toolTip: qsTr("Show every system"); onClicked: controls.showAll() }
+    TouchButton {
+        objectName: "measureButton"
+        text: "↔"
+        toolTip: qsTr("Measure distance and bearing")
+        highlighted: controls.measuring
+        onClicked: controls.measureToggled()
+    }
+    TouchButton {
+        objectName: "northUp"
+        text: "N"
+        toolTip: qsTr("North up")
+        highlighted: !controls.northUp
+        onClicked: controls.turnNorthUp()
+    }
+}

@@ -1,0 +1,70 @@
+import QtQuick
+import QtQuick.Shapes
+import Neptus.Engine
+
+// One system on a map: a mark for its kind along its heading, its name and
+// kind, greyed when its position is stale; tap to make it the main system.
+// A delegate of the map's Repeater over the console's tracks (one row per
+// system); the map places it (`at`) and shapes it (`shape`).
+Item {
+    id: marker
+    required property string system
+    required property bool valid
+    required property real heading
+    property point at: Qt.point(-1e6, -1e6)
+    property real mapBearing: 0
+    property color tint: Theme.accent
+    // The mark as points in a unit square, nose up.
+    property var shape: [[0.5, 0], [0.85, 1], [0.5, 0.75], [0.15, 1], [0.5, 0]]
+
+    readonly property string kind: kindVariable.present ? kindVariable.text : ""
+    readonly property bool selected: Session.mainSystem === system
+    readonly property bool stale: positionVariable.stale
+
+    objectName: "marker:" + system
+    visible: valid
+    opacity: stale ? 0.45 : 1
+    x: at.x - width / 2
+    y: at.y - height / 2
+    width: Theme.touchTarget
+    height: Theme.touchTarget
+
+    Variable { id: kindVariable; tree: Session.tree; path: marker.system + "/Announce/sys_type" }
+    Variable { id: positionVariable; tree: Session.tree; path: marker.system + "/EstimatedState/lat" }
+
+    Shape {
+        id: mark
+        objectName: "mark"
+        anchors.centerIn: parent
+        width: Theme.mm(6)
+        height: Theme.mm(6)
+        rotation: marker.heading - marker.mapBearing
+        preferredRendererType: Shape.CurveRenderer
+        ShapePath {
+            strokeColor: Theme.text
+            strokeWidth: marker.selected ? 3 : 1.5
+            fillColor: marker.tint
+            PathPolyline {
+                objectName: "markPath"
+                path: marker.shape.map(p => Qt.point(p[0] * mark.width, p[1] * mark.height))
+            }
+        }
+    }
+    Rectangle {
+        anchors { top: mark.bottom; horizontalCenter: parent.horizontalCenter; topMargin: Theme.mm(0.5) }
+        width: label.implicitWidth + Theme.spacing * 2
+        height: label.implicitHeight + 2
+        radius: Theme.radius
+        color: Qt.alpha(Theme.surface, 0.85)
+        border.color: marker.tint
+        Text {
+            id: label
+            anchors.centerIn: parent
+            text: marker.system + (marker.kind ? " · " + marker.kind : "") + (marker.stale ? qsTr(" (stale)") : "")
+            color: Theme.text
+            font.pixelSize: Theme.smallFontPixelSize
+            font.bold: marker.selected
+        }
+    }
+    TapHandler { onTapped: Session.mainSystem = marker.system }
+}
