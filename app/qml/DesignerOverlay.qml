@@ -1,5 +1,5 @@
+pragma ComponentBehavior: Bound
 import QtQuick
-import QtQuick.Controls.Basic as Basic
 import Neptus.Components
 import Neptus.Shell
 
@@ -12,7 +12,7 @@ import Neptus.Shell
 Item {
     id: designer
 
-    property Item loader: null             // the ConsoleLoader
+    property ConsoleLoader loader: null
     property ComponentPalette palette: fallbackPalette
     property bool editing: false
     readonly property LayoutEditor editor: loader ? loader.editor : fallbackEditor

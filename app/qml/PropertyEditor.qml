@@ -1,3 +1,4 @@
+pragma ComponentBehavior: Bound
 import QtQuick
 import QtQuick.Controls.Basic as Basic
 import Neptus.Components
@@ -14,6 +15,11 @@ Rectangle {
     property ComponentPalette palette: null
     property string componentId: ""
     property Item target: null
+    // Whether a component declares a text property of that name: components
+    // are any QML file, so which ones have an alarm script is known only at run time.
+    function declaresText(item: QtObject, name: string): bool {
+        return item !== null && typeof item[name] === "string"
+    }
 
     readonly property string type: editor ? (editor.text, editor.typeOf(componentId)) : ""
     readonly property var entry: palette && type !== "" ? palette.entry(type) : ({})
@@ -62,7 +68,7 @@ Rectangle {
                 width: column.width
                 editor: panel.editor
                 componentId: panel.componentId
-                visible: panel.target !== null && typeof panel.target.alarmScript === "string"
+                visible: panel.declaresText(panel.target, "alarmScript")
             }
             Repeater {
                 model: panel.componentId !== "" ? panel.geometry.concat(panel.entry.properties || []) : []

@@ -1,5 +1,4 @@
 import QtQuick
-import Neptus.Engine
 
 // The active alarms, worst first as the alarm model orders them: where from,
 // level, message and since when. Tap one to acknowledge it; "Acknowledge all"

@@ -1,3 +1,4 @@
+pragma ComponentBehavior: Bound
 import QtQuick
 import Neptus.Engine
 
@@ -44,22 +45,23 @@ Item {
         Repeater {
             model: 36
             delegate: Item {
+                id: tick
                 required property int index
                 anchors.fill: parent
-                rotation: index * 10
+                rotation: tick.index * 10
                 Rectangle {
                     x: parent.width / 2 - width / 2
                     y: 2
-                    width: Math.max(1, compass.radius * (index % 9 === 0 ? 0.03 : 0.015))
-                    height: compass.radius * (index % 3 === 0 ? 0.12 : 0.07)
-                    color: index === 0 ? Theme.levelColor(4) : Theme.text
+                    width: Math.max(1, compass.radius * (tick.index % 9 === 0 ? 0.03 : 0.015))
+                    height: compass.radius * (tick.index % 3 === 0 ? 0.12 : 0.07)
+                    color: tick.index === 0 ? Theme.levelColor(4) : Theme.text
                 }
                 Text {
-                    visible: index % 9 === 0
+                    visible: tick.index % 9 === 0
                     x: parent.width / 2 - width / 2
                     y: compass.radius * 0.14
-                    text: index % 9 === 0 ? ["N", "E", "S", "W"][index / 9] : ""
-                    color: index === 0 ? Theme.levelColor(4) : Theme.text
+                    text: tick.index % 9 === 0 ? ["N", "E", "S", "W"][tick.index / 9] : ""
+                    color: tick.index === 0 ? Theme.levelColor(4) : Theme.text
                     font.pixelSize: Math.max(Theme.smallFontPixelSize, compass.radius * 0.16)
                     font.bold: true
                 }

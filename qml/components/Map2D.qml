@@ -51,7 +51,7 @@ Rectangle {
     readonly property real maximumZoomLevel: 20
     property bool placed: false
     // The Qt Location map drawing the tiles (null without a tile source).
-    readonly property Item tileMap: tileLayer.item
+    readonly property QtObject tileMap: tileLayer.item
     readonly property var home: tracks ? tracks.home : ({ valid: false })
     readonly property real metresPerPixel: Geo.metresPerPixel(centerLatitude, zoomLevel)
 

@@ -1,3 +1,4 @@
+pragma ComponentBehavior: Bound
 import QtQuick
 import Neptus.Engine
 
@@ -16,7 +17,7 @@ Rectangle {
     readonly property bool stale: {
         let any = false
         for (let i = 0; i < sources.count; ++i) {
-            const v = sources.objectAt(i)
+            const v = sources.objectAt(i) as Variable
             if (v && v.present && !v.stale)
                 return false
             any = any || (v && v.present)
@@ -117,13 +118,15 @@ Rectangle {
         Repeater {
             model: sources.count
             delegate: Row {
+                id: legendEntry
                 required property int index
-                readonly property var source: sources.objectAt(index)
+                readonly property Variable source: sources.objectAt(index) as Variable
                 spacing: Theme.spacing / 2
                 Rectangle { width: Theme.mm(3); height: Theme.mm(1); anchors.verticalCenter: parent.verticalCenter
-                            color: plot.seriesColors[index % plot.seriesColors.length] }
+                            color: plot.seriesColors[legendEntry.index % plot.seriesColors.length] }
                 Text {
-                    text: (plot.paths[index] || "").split("/").slice(-2).join(" ") + "  "
+                    readonly property Variable source: legendEntry.source
+                    text: (plot.paths[legendEntry.index] || "").split("/").slice(-2).join(" ") + "  "
                           + (!source || !source.present ? "—"
                              : (typeof source.value === "number" ? source.value.toFixed(Math.abs(source.value) >= 100 ? 0 : 2) : source.text)
                                + (source.unit ? " " + source.unit : ""))

@@ -1,3 +1,4 @@
+pragma ComponentBehavior: Bound
 import QtQuick
 import QtQuick3D
 import Neptus.Engine
@@ -23,8 +24,8 @@ Rectangle {
     // Draws vehicles larger than life so they can be seen from afar.
     property real vehicleScale: 1
 
-    readonly property var tracks: Session.tracks
-    readonly property var systems: tracks ? tracks.systems : []
+    readonly property Tracks tracks: Session.tracks
+    readonly property list<string> systems: tracks ? tracks.systems : []
     property bool following: follow !== ""
     // The system followed now: "" when not following or "$main" is not chosen yet.
     readonly property string followed: following && !Session.resolve(follow).startsWith("$main") ? Session.resolve(follow) : ""
@@ -34,8 +35,6 @@ Rectangle {
     property real yaw: 30
     property real pitch: -25
     readonly property alias view: view
-    // The vehicles' 3D nodes by system name (for the labels over them).
-    property var nodes: ({})
 
     implicitWidth: Theme.mm(160)
     implicitHeight: Theme.mm(110)
@@ -43,21 +42,28 @@ Rectangle {
     clip: true
 
     // North, east, down (metres from home) to the scene: x east, y up, z south.
-    function scenePosition(ned) { return ned.north === undefined ? Qt.vector3d(0, 0, 0) : Qt.vector3d(ned.east, -ned.down, -ned.north) }
+    function scenePosition(north: real, east: real, down: real): vector3d { return Qt.vector3d(east, -down, -north) }
+    // Where a 3D node is drawn in this item, and how far ahead of the camera
+    // (z > 0 when in front). It moves with the node, the camera and the size
+    // of the view, which are its arguments so that bindings follow them.
+    function screenPositionOf(node: Node, nodeAt: vector3d, cameraAt: vector3d, cameraTurn: vector3d, w: real, h: real): vector3d {
+        return node ? view.mapFrom3DScene(node.scenePosition) : Qt.vector3d(-1e6, -1e6, -1)
+    }
     // Heading about the vertical, then pitch about the body's right, then roll
     // about its forward axis (a model's forward is -z, north at heading 0).
-    function attitude(rollDeg, pitchDeg, headingDeg) {
+    function attitude(rollDeg: real, pitchDeg: real, headingDeg: real): quaternion {
         return Quaternion.fromAxisAndAngle(Qt.vector3d(0, 1, 0), -headingDeg)
             .times(Quaternion.fromAxisAndAngle(Qt.vector3d(1, 0, 0), pitchDeg))
             .times(Quaternion.fromAxisAndAngle(Qt.vector3d(0, 0, 1), -rollDeg))
     }
-    function colorOf(system) { return Theme.traceColor(Math.max(0, systems.indexOf(system))) }
-    function zoomBy(factor) { distance = Math.max(2, Math.min(5000, distance * factor)) }
+    function colorOf(system: string): color { return Theme.traceColor(Math.max(0, systems.indexOf(system))) }
+    function zoomBy(factor: real) { distance = Math.max(2, Math.min(5000, distance * factor)) }
     function resetView() { yaw = 30; pitch = -25; distance = 25; if (followed === "") target = Qt.vector3d(0, 0, 0) }
 
     function keepFollowing() {
-        if (followed !== "" && systems.indexOf(followed) >= 0)
-            target = scenePosition(tracks.ned(followed))
+        const ned = followed !== "" ? tracks.ned(followed) : ({})
+        if (ned.north !== undefined)
+            target = scenePosition(ned.north, ned.east, ned.down)
     }
     Connections {
         target: root.tracks
@@ -125,14 +131,15 @@ Rectangle {
 
         // Trails.
         Repeater3D {
-            model: root.showTrails ? root.systems : []
+            model: root.showTrails ? root.tracks : null
             Model {
-                required property string modelData
-                objectName: "trail:" + modelData
-                geometry: TrailGeometry { tracks: root.tracks; system: modelData }
+                id: trail
+                required property string system
+                objectName: "trail:" + system
+                geometry: TrailGeometry { tracks: root.tracks; system: trail.system }
                 materials: PrincipledMaterial {
                     lighting: PrincipledMaterial.NoLighting
-                    baseColor: root.colorOf(modelData)
+                    baseColor: root.colorOf(trail.system)
                     lineWidth: 2
                 }
             }
@@ -141,22 +148,26 @@ Rectangle {
         // Vehicles.
         Repeater3D {
             id: vehicles
-            model: root.systems
-            onObjectAdded: (index, object) => root.nodes = Object.assign({}, root.nodes, { [object.modelData]: object })
+            model: root.tracks
             Node {
                 id: vehicle
-                required property string modelData
-                objectName: "vehicle:" + modelData
-                readonly property var state: (root.tracks.revision, root.tracks.latest(modelData))
-                position: (root.tracks.revision, root.scenePosition(root.tracks.ned(modelData)))
-                rotation: root.attitude(state.roll || 0, state.pitch || 0, state.heading || 0)
+                required property string system
+                required property real north
+                required property real east
+                required property real down
+                required property real roll
+                required property real pitch
+                required property real heading
+                objectName: "vehicle:" + system
+                position: root.scenePosition(north, east, down)
+                rotation: root.attitude(roll, pitch, heading)
                 scale: Qt.vector3d(root.vehicleScale, root.vehicleScale, root.vehicleScale)
 
                 // A file's model (Y forward, Z up: turned so -z is forward, y up)...
                 Model {
                     visible: root.vehicleModel !== ""
                     geometry: vehicleGeometry
-                    materials: PrincipledMaterial { vertexColorsEnabled: true; baseColor: root.colorOf(vehicle.modelData) }
+                    materials: PrincipledMaterial { vertexColorsEnabled: true; baseColor: root.colorOf(vehicle.system) }
                 }
                 // ...or a torpedo 2 m long: hull, nose, tail fins.
                 Node {
@@ -165,7 +176,7 @@ Rectangle {
                         source: "#Cylinder"
                         eulerRotation.x: 90
                         scale: Qt.vector3d(0.004, 0.018, 0.004)
-                        materials: PrincipledMaterial { baseColor: root.colorOf(vehicle.modelData); roughness: 0.4 }
+                        materials: PrincipledMaterial { baseColor: root.colorOf(vehicle.system); roughness: 0.4 }
                     }
                     Model {
                         source: "#Sphere"
@@ -192,15 +203,17 @@ Rectangle {
 
     // Names over the vehicles (a 2D overlay, so they stay readable).
     Repeater {
-        model: root.systems
+        model: root.tracks
         Rectangle {
             id: label
-            required property string modelData
+            required property string system
             required property int index
-            objectName: "label:" + modelData
-            readonly property var node: root.nodes[modelData] || null
-            readonly property vector3d at: (camera.scenePosition, orbit.eulerRotation, root.tracks.revision, root.width, root.height,
-                                            node ? view.mapFrom3DScene(node.scenePosition) : Qt.vector3d(-1e6, -1e6, -1))
+            required property real depth
+            objectName: "label:" + system
+            // The vehicle's node: the same row of the same model.
+            readonly property Node node: vehicles.count > index ? vehicles.objectAt(index) as Node : null
+            readonly property vector3d at: root.screenPositionOf(node, node ? node.position : Qt.vector3d(0, 0, 0),
+                                                                 camera.scenePosition, orbit.eulerRotation, root.width, root.height)
             readonly property bool stale: positionVariable.stale
             visible: at.z > 0
             x: at.x - width / 2
@@ -209,18 +222,16 @@ Rectangle {
             height: text.implicitHeight + 2
             radius: Theme.radius
             color: Qt.alpha(Theme.surface, 0.8)
-            border.color: root.colorOf(modelData)
+            border.color: root.colorOf(label.system)
             opacity: stale ? 0.45 : 1
-            Variable { id: positionVariable; tree: Session.tree; path: label.modelData + "/EstimatedState/lat" }
+            Variable { id: positionVariable; tree: Session.tree; path: label.system + "/EstimatedState/lat" }
             Text {
                 id: text
                 anchors.centerIn: parent
-                readonly property var s: (root.tracks.revision, root.tracks.latest(label.modelData))
-                text: label.modelData + (s.depth !== undefined ? "  " + s.depth.toFixed(1) + " m" : "")
-                      + (label.stale ? qsTr(" (stale)") : "")
+                text: label.system + "  " + label.depth.toFixed(1) + " m" + (label.stale ? qsTr(" (stale)") : "")
                 color: Theme.text
                 font.pixelSize: Theme.smallFontPixelSize
-                font.bold: Session.mainSystem === label.modelData
+                font.bold: Session.mainSystem === label.system
             }
         }
     }

@@ -14,7 +14,7 @@ QtObject {
     // Logical pixels per millimetre of the primary screen. Screens that report
     // nonsense (no EDID, 0 mm wide) fall back to 96 dpi.
     readonly property real reportedPixelsPerMm: {
-        const screens = Qt.application.screens
+        const screens = Application.screens
         if (!screens || screens.length === 0)
             return 0
         return screens[0].pixelDensity / Math.max(screens[0].devicePixelRatio, 1)

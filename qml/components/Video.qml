@@ -1,3 +1,4 @@
+pragma ComponentBehavior: Bound
 import QtQuick
 import QtMultimedia
 
@@ -17,6 +18,7 @@ Rectangle {
     property real staleAfter: 3
 
     readonly property bool useCamera: source === "camera:"
+    property bool cameraFound: false
     readonly property alias videoSink: output.videoSink
     // The player, made only when there is something to play (Qt Multimedia
     // wakes the audio system as it starts).
@@ -26,7 +28,7 @@ Rectangle {
     readonly property bool hasFrames: lastFrameMs > 0
     readonly property bool stale: hasFrames && nowMs - lastFrameMs > staleAfter * 1000
     readonly property string problem: source === "" ? qsTr("No video source")
-        : useCamera && !(cameraLoader.item && cameraLoader.item.found) ? qsTr("No camera on this console")
+        : useCamera && !cameraFound ? qsTr("No camera on this console")
         : player && player.error !== MediaPlayer.NoError ? qsTr("Video: %1").arg(player.errorString || qsTr("cannot play %1").arg(source))
         : ""
 
@@ -54,6 +56,8 @@ Rectangle {
         active: root.useCamera
         sourceComponent: Item {
             readonly property bool found: devices.videoInputs.length > 0
+            onFoundChanged: root.cameraFound = found
+            Component.onCompleted: root.cameraFound = found
             MediaDevices { id: devices }
             Loader {
                 active: parent.found
