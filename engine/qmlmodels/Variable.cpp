@@ -43,6 +43,11 @@ void Variable::resolve()
     refresh();
 }
 
+bool Variable::isField() const
+{
+    return m_tree && m_node != noNode && m_tree->tree()->kind(m_node) == VariableTree::Kind::Field;
+}
+
 void Variable::refresh()
 {
     m_snapshot = (m_tree && m_node != noNode) ? m_tree->tree()->snapshot(m_node) : VariableTree::Snapshot{};

@@ -24,6 +24,8 @@ class Variable : public QObject
     Q_PROPERTY(QString text READ text NOTIFY changed)
     Q_PROPERTY(QString unit READ unit NOTIFY changed)
     Q_PROPERTY(bool present READ present NOTIFY changed)
+    // The path leads to a value (a field), not to a branch or to nothing yet.
+    Q_PROPERTY(bool field READ isField NOTIFY changed)
     Q_PROPERTY(double timestamp READ timestamp NOTIFY changed)
     Q_PROPERTY(double age READ age NOTIFY ageChanged)
     Q_PROPERTY(bool stale READ stale NOTIFY ageChanged)
@@ -41,6 +43,7 @@ public:
     QString text() const { return m_snapshot.text; }
     QString unit() const { return m_snapshot.unit; }
     bool present() const { return m_snapshot.present; }
+    bool isField() const;
     double timestamp() const { return m_snapshot.timestamp; }
     double age() const;
     bool stale() const { return m_stale; }

@@ -110,8 +110,15 @@ void VariableTreeModel::sync()
         endInsertRows();
         i = j;
     }
-    for (NodeId node : changes.renamedNodes)
+    bool systems = false;
+    for (NodeId node : changes.newNodes)
+        systems = systems || m_tree->parent(node) == m_tree->root();
+    for (NodeId node : changes.renamedNodes) {
         emit dataChanged(indexOfNode(node, NameColumn), indexOfNode(node, NameColumn), {Qt::DisplayRole, NameRole, PathRole});
+        systems = systems || m_tree->parent(node) == m_tree->root();
+    }
+    if (systems)
+        emit systemsChanged();
 
     // Changed values: one dataChanged per run of sibling rows.
     std::vector<std::pair<NodeId, int>> rows; // (parent, row)

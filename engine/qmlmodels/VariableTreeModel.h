@@ -27,6 +27,8 @@ class VariableTreeModel : public QAbstractItemModel
     QML_UNCREATABLE("made by the console, which owns the tree")
     Q_PROPERTY(double staleAfter READ staleAfter WRITE setStaleAfter NOTIFY staleAfterChanged)
     Q_PROPERTY(int nodeCount READ nodeCount NOTIFY synced)
+    // The systems heard so far, by the names they are shown by.
+    Q_PROPERTY(QStringList systems READ systems NOTIFY systemsChanged)
 
 public:
     enum Column { NameColumn, ValueColumn, UnitColumn, AgeColumn, ColumnCount };
@@ -52,6 +54,7 @@ public:
     void setStaleAfter(double seconds);
 
     int nodeCount() const { return m_tree->nodeCount(); }
+    QStringList systems() const { return m_tree->childNames(u""); }
 
     // Children of a path, for the designer's path pickers ("" lists systems).
     Q_INVOKABLE QStringList children(const QString &path) const;
@@ -85,6 +88,7 @@ public:
 
 signals:
     void staleAfterChanged();
+    void systemsChanged();
     void synced();
 
 private:

@@ -16,7 +16,7 @@ QtObject {
     // What each system's link carries (rates, types, decode errors, entities).
     readonly property LinkStatisticsModel links: session ? session.links : null
     // Names of the systems heard so far, kept current as the tree grows.
-    readonly property var systems: tree ? (tree.nodeCount, tree.children("")) : []
+    readonly property list<string> systems: tree ? tree.systems : []
 
     // A Variable's number in degrees: the tree's angles are radians (unit "rad").
     function degrees(variable) {

@@ -16,8 +16,8 @@ Rectangle {
     // Tree path of the selected row ("" for none).
     property string selectedPath: ""
     // Whether the selected row is a value (a field), not a branch.
-    readonly property bool selectedIsLeaf: selectedPath !== "" && Session.tree !== null
-                                           && (Session.tree.nodeCount, Session.tree.children(selectedPath).length === 0)
+    readonly property bool selectedIsLeaf: selection.field
+    Variable { id: selection; tree: Session.tree; path: view.selectedPath }
     // In the designer: a value's row is dragged sideways onto the console
     // (to make a readout of it); the list still scrolls up and down.
     property bool dragLeaves: false

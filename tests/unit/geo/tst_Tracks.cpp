@@ -4,6 +4,7 @@
 #include "qmlmodels/Tracks.h"
 #include "qmlmodels/VariableTreeModel.h"
 
+#include <QAbstractItemModelTester>
 #include <QSignalSpy>
 
 #include <gtest/gtest.h>
@@ -124,4 +125,30 @@ TEST_F(TrackRecording, HomeIsSetAndBadHomesAreRefused)
     tree.ingest(state(0x1f, 40, -8, 0, 0, 0));
     model.sync();
     EXPECT_EQ(tracks.home().value(QStringLiteral("lat")).toDouble(), 41.5);
+}
+
+TEST_F(TrackRecording, AListModelOfSystemsWhereAMoveChangesOnlyItsRow)
+{
+    QAbstractItemModelTester tester(&tracks, QAbstractItemModelTester::FailureReportingMode::Fatal);
+    QSignalSpy inserted(&tracks, &QAbstractItemModel::rowsInserted);
+    QSignalSpy changed(&tracks, &QAbstractItemModel::dataChanged);
+    tree.ingest(state(0x1f, 41.14, -8.61, 0, 0, 2, 0.5));
+    tree.ingest(state(0x20, 41.14, -8.61, 100, 0, 0));
+    model.sync();
+    ASSERT_EQ(tracks.rowCount(), 2);
+    EXPECT_EQ(inserted.count(), 2) << "a row per new system, nothing rebuilt";
+    const QModelIndex first = tracks.index(0);
+    EXPECT_EQ(first.data(Tracks::SystemRole).toString(), QStringLiteral("0x001f"));
+    EXPECT_TRUE(first.data(Tracks::ValidRole).toBool());
+    EXPECT_NEAR(first.data(Tracks::DepthRole).toDouble(), 2, 1e-6);
+    EXPECT_NEAR(first.data(Tracks::HeadingRole).toDouble(), degrees(0.5), 1e-4);
+    EXPECT_NEAR(tracks.index(1).data(Tracks::NorthRole).toDouble(), 100, 0.01) << "metres from home (the first reference)";
+
+    changed.clear();
+    tree.ingest(state(0x20, 41.14, -8.61, 150, 0, 0));
+    model.sync();
+    ASSERT_EQ(changed.count(), 1);
+    EXPECT_EQ(changed[0][0].value<QModelIndex>().row(), 1) << "only the system that moved";
+    EXPECT_EQ(changed[0][1].value<QModelIndex>().row(), 1);
+    EXPECT_EQ(tracks.roleNames().value(Tracks::NorthRole), QByteArray("north"));
 }

@@ -105,6 +105,39 @@ TEST_F(Fixture, ValuesGoStaleWithoutUpdates)
     EXPECT_FALSE(model.data(depth, VariableTreeModel::StaleRole).toBool());
 }
 
+TEST_F(Fixture, SystemsAreAPropertyThatSaysWhenItChanges)
+{
+    QSignalSpy systems(&model, &VariableTreeModel::systemsChanged);
+    tree.ingest(state(0x1f, 1));
+    model.sync();
+    EXPECT_EQ(systems.count(), 1);
+    EXPECT_EQ(model.systems(), QStringList{QStringLiteral("0x001f")});
+    tree.ingest(state(0x1f, 2)); // values only
+    model.sync();
+    EXPECT_EQ(systems.count(), 1);
+    Message announce(neptus::test::shippedSchema()->byAbbrev(u"Announce"));
+    announce.header.src = 0x1f;
+    announce.setBytes(announce.def()->indexOf(u"sys_name"), "lauv-named");
+    tree.ingest(announce); // renamed by its Announce
+    model.sync();
+    EXPECT_EQ(systems.count(), 2);
+    EXPECT_EQ(model.systems(), QStringList{QStringLiteral("lauv-named")});
+}
+
+TEST_F(Fixture, AVariableSaysWhetherItsPathIsAValue)
+{
+    Variable value, branch;
+    value.setTree(&model);
+    branch.setTree(&model);
+    value.setPath(QStringLiteral("0x001f/EstimatedState/depth"));
+    branch.setPath(QStringLiteral("0x001f/EstimatedState"));
+    EXPECT_FALSE(value.isField()) << "nothing there yet";
+    tree.ingest(state(0x1f, 1));
+    model.sync();
+    EXPECT_TRUE(value.isField());
+    EXPECT_FALSE(branch.isField());
+}
+
 TEST_F(Fixture, AVariableOfAnEntityFollowsItWhenASecondEntityAppears)
 {
     tree.setSystemName(0x1f, QStringLiteral("lauv"));
