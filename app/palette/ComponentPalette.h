@@ -1,12 +1,12 @@
 #pragma once
 
+#include "DirectoryWatcher.h"
+#include "PaletteEntry.h"
+#include "UserModule.h"
+
 #include <QAbstractListModel>
-#include <QDateTime>
-#include <QFileSystemWatcher>
 #include <QHash>
 #include <QQmlParserStatus>
-#include <QTimer>
-#include <QUrl>
 #include <QtQml/qqmlregistration.h>
 
 class QQmlEngine;
@@ -19,7 +19,9 @@ class QQmlEngine;
 // The directories are watched: a component dropped in appears within a
 // second, an edited one is recompiled (and `revision` changes so the console
 // reloads it), a broken one is listed with its QML error and status "error".
-// Earlier directories win over later ones for the same name.
+// Earlier directories win over later ones for the same name. The parts:
+// ComponentManifest (palette.json, Name.json), UserModule (the Neptus.User
+// qmldir), ComponentCompiler, DirectoryWatcher.
 class ComponentPalette : public QAbstractListModel, public QQmlParserStatus
 {
     Q_OBJECT
@@ -47,7 +49,7 @@ public:
     };
     Q_ENUM(Role)
 
-    static constexpr auto userModule = "Neptus.User";
+    static constexpr auto userModule = UserModule::uri;
 
     explicit ComponentPalette(QObject *parent = nullptr);
 
@@ -82,32 +84,10 @@ signals:
     void componentChanged(const QString &name, bool ready);
 
 private:
-    struct Entry
-    {
-        QString name, module, displayName, category, description;
-        QUrl icon, source;
-        QVariantList properties;
-        double defaultWidth = 0, defaultHeight = 0; // as placed; 0: the designer's default
-        QString status = QStringLiteral("ready");
-        QString errorString;
-        bool builtIn = false;
-        QDateTime modified; // of the .qml and .json, the later
-        qint64 size = -1;
-    };
-
-    void loadBuiltIns();
-    void scheduleRescan();
-    void watch();
-    bool writeModule(const QList<Entry> &users);
-    void compile(Entry &entry);
-    static void readManifest(Entry &entry, const QString &jsonFile);
-
     QQmlEngine *m_engine = nullptr;
     QStringList m_directories;
-    QList<Entry> m_builtIns;
-    QList<Entry> m_entries;
-    QFileSystemWatcher m_watcher;
-    QTimer m_debounce;
-    QString m_moduleRoot; // import path holding Neptus/User/qmldir
+    QList<PaletteEntry> m_builtIns;
+    QList<PaletteEntry> m_entries;
+    DirectoryWatcher m_watcher;
     int m_revision = 0;
 };
