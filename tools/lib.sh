@@ -35,6 +35,18 @@ nq_root_dir() {
   echo "$NQ_CACHE/root-$hash"
 }
 
+# The clean Debian 13 root the install test installs the .deb into: the
+# run-time packages only (tools/runtime-packages.txt, tools/install-test-packages.txt).
+nq_install_root_packages() {
+  sed -e 's/#.*//' -e 's/[[:space:]]//g' "$NQ_CHECKOUT/tools/runtime-packages.txt" \
+    "$NQ_CHECKOUT/tools/install-test-packages.txt" | grep -v '^$' | sort -u
+}
+nq_install_root_dir() {
+  local hash
+  hash=$({ nq_install_root_packages; echo "$NQ_SUITE recipe $NQ_ROOT_RECIPE"; } | sha256sum | cut -c1-12)
+  echo "$NQ_CACHE/install-root-$hash"
+}
+
 # native or root; NEPTUS_ENV=native|root overrides the guess.
 nq_mode() {
   if [ -n "${NEPTUS_ENV:-}" ]; then echo "$NEPTUS_ENV"; return; fi
@@ -72,6 +84,7 @@ nq_as_root() {
 }
 
 nq_ready() {
+  [ -f "$(nq_install_root_dir)/.neptus-ready" ] || return 1
   if [ "$(nq_mode)" = native ]; then
     [ -f "$NQ_CACHE/native-ready" ] && [ "$(cat "$NQ_CACHE/native-ready")" = "$(nq_packages | sha256sum)" ] \
       && command -v bwrap >/dev/null
@@ -119,6 +132,11 @@ nq_enter() {
          --setenv NEPTUS_CHECKOUT "$NQ_CHECKOUT"
          --setenv NEPTUS_BUILD_DIR "$NQ_BUILD_DIR")
   [ -d "$NQ_SHARED" ] && args+=(--ro-bind "$NQ_SHARED" "$NQ_SHARED")
+  # The install test's clean root, read only (it installs into an overlay).
+  local install_root
+  install_root=$(nq_install_root_dir)
+  [ -f "$install_root/.neptus-ready" ] \
+    && args+=(--ro-bind "$install_root" "$install_root" --setenv NEPTUS_INSTALL_ROOT "$install_root")
   # Folders a caller needs inside, e.g. where a screenshot is to be written.
   local bind
   for bind in "${NQ_BINDS[@]}"; do args+=(--bind "$bind" "$bind"); done
@@ -157,6 +175,7 @@ nq_enter() {
 }
 
 # Configures (once) and builds incrementally, inside the environment.
+# nq_build [TARGET...]: everything, or only those targets.
 nq_build() {
-  (nq_enter -- "$NQ_CHECKOUT/tools/inner/build" "$NQ_BUILD_PRESET")
+  (nq_enter -- "$NQ_CHECKOUT/tools/inner/build" "$NQ_BUILD_PRESET" "$@")
 }
