@@ -165,11 +165,15 @@ std::optional<qint64> Enumeration::parse(QStringView text) const
 
 int MessageDef::indexOf(QStringView fieldAbbrev) const
 {
-    for (size_t i = 0; i < fields.size(); ++i) {
-        if (fields[i].abbrev == fieldAbbrev)
-            return static_cast<int>(i);
+    // A scan beats hashing for the few fields most messages have.
+    if (fields.size() <= 16) {
+        for (size_t i = 0; i < fields.size(); ++i) {
+            if (fields[i].abbrev == fieldAbbrev)
+                return static_cast<int>(i);
+        }
+        return -1;
     }
-    return -1;
+    return fieldIndex.value(fieldAbbrev.toString(), -1);
 }
 
 const FieldDef *MessageDef::field(QStringView fieldAbbrev) const
@@ -449,7 +453,7 @@ std::expected<void, XmlError> Schema::Loader::readField(const XmlDocument &doc, 
         return fail(QStringLiteral("a field needs an abbrev that is an identifier"));
     if (field.name.isEmpty())
         field.name = field.abbrev;
-    if (message.indexOf(field.abbrev) >= 0)
+    if (message.fieldIndex.contains(field.abbrev))
         return fail(QStringLiteral("the message has two fields named %1").arg(field.abbrev));
     const QString type = xml::attribute(element, "type");
     const auto parsed = typeFromName(type);
@@ -495,6 +499,7 @@ std::expected<void, XmlError> Schema::Loader::readField(const XmlDocument &doc, 
             message.inlineEnumerations.push_back(std::move(local));
         }
     }
+    message.fieldIndex.insert(field.abbrev, static_cast<int>(message.fields.size()));
     message.fields.push_back(std::move(field));
     if (!message.fields.back().messageType.isEmpty())
         m_messageTypes.push_back({&message, message.fields.size() - 1, doc.errorAt(element, {})});

@@ -104,6 +104,7 @@ struct MessageDef
     int messageListCount = 0;  // message and message-list fields
     int fixedPayloadSize = 0;  // bytes of the fixed-size fields
 
+    QHash<QString, int> fieldIndex; // abbrev → index, made while loading
     int indexOf(QStringView fieldAbbrev) const;
     const FieldDef *field(QStringView fieldAbbrev) const;
 };

@@ -26,6 +26,9 @@ struct VariableTree::Node
     int field = -1;
     int item = -1;
     const MessageDef *ownerDef = nullptr;
+    // For a branch of a nested message: the type whose fields it has nodes
+    // for, so an unchanged type costs no lookups on the next message.
+    const MessageDef *fieldsOf = nullptr;
 };
 
 struct VariableTree::Binding
@@ -259,21 +262,28 @@ void VariableTree::ensureStructureLocked(NodeId branch, const Message &message)
             const Message &entry = entries[k];
             NodeId holder = container;
             if (field.type == FieldType::MessageList) {
-                const QString itemName = QString::number(k);
-                holder = childNamed(container, itemName);
-                if (holder == noNode) {
-                    holder = addNode(container, itemName, Kind::ListItem, bindingIndex, {f, static_cast<int>(k)});
+                // A list's children are its items, made in order: item k is child k.
+                const auto &items = m_nodes[static_cast<size_t>(container)].children;
+                if (k < items.size()) {
+                    holder = items[k];
+                } else {
+                    holder = addNode(container, QString::number(k), Kind::ListItem, bindingIndex, {f, static_cast<int>(k)});
                     m_nodes[static_cast<size_t>(holder)].ownerDef = message.def();
                 }
             }
             if (!entry.def())
                 continue;
-            for (int g = 0; g < entry.fieldCount(); ++g) {
-                const FieldDef &inner = entry.field(g);
-                if (childNamed(holder, inner.abbrev) != noNode)
-                    continue;
-                const NodeId node = addNode(holder, inner.abbrev, kindOf(inner.type), bindingIndex, {g});
-                m_nodes[static_cast<size_t>(node)].ownerDef = entry.def();
+            // The fields of this type are there already: nothing to look up.
+            Node &holderNode = m_nodes[static_cast<size_t>(holder)];
+            if (holderNode.fieldsOf != entry.def()) {
+                holderNode.fieldsOf = entry.def();
+                for (int g = 0; g < entry.fieldCount(); ++g) {
+                    const FieldDef &inner = entry.field(g);
+                    if (childNamed(holder, inner.abbrev) != noNode)
+                        continue;
+                    const NodeId node = addNode(holder, inner.abbrev, kindOf(inner.type), bindingIndex, {g});
+                    m_nodes[static_cast<size_t>(node)].ownerDef = entry.def();
+                }
             }
             if (entry.def()->messageListCount > 0)
                 ensureStructureLocked(holder, entry);
