@@ -7,7 +7,7 @@ import Neptus.Engine
 Rectangle {
     id: strip
 
-    readonly property var names: Session.systems
+    readonly property int count: Session.systems.length
 
     implicitWidth: Theme.mm(120)
     implicitHeight: Theme.touchTarget + Theme.spacing * 2
@@ -20,13 +20,13 @@ Rectangle {
         anchors { left: parent.left; verticalCenter: parent.verticalCenter; leftMargin: Theme.spacing }
         spacing: Theme.spacing * 2
         Repeater {
-            model: strip.names
+            model: Session.tree
             delegate: Row {
                 id: entry
-                required property string modelData
+                required property string name
                 readonly property int level: health.level
-                AlarmState { id: health; alarms: Session.alarms; path: "systems/" + entry.modelData }
-                objectName: "health-" + modelData
+                AlarmState { id: health; alarms: Session.alarms; path: "systems/" + entry.name }
+                objectName: "health-" + entry.name
                 height: Theme.touchTarget
                 spacing: Theme.spacing / 2
                 StatusLed {
@@ -34,21 +34,21 @@ Rectangle {
                     level: entry.level
                     width: Theme.touchTarget
                     height: Theme.touchTarget
-                    onTapped: Session.mainSystem = entry.modelData
+                    onTapped: Session.mainSystem = entry.name
                 }
                 Text {
                     anchors.verticalCenter: parent.verticalCenter
-                    text: entry.modelData
+                    text: entry.name
                     color: Theme.text
                     font.pixelSize: Theme.fontPixelSize
-                    font.bold: Session.mainSystem === entry.modelData
+                    font.bold: Session.mainSystem === entry.name
                 }
             }
         }
     }
     Text {
         anchors.centerIn: parent
-        visible: strip.names.length === 0
+        visible: strip.count === 0
         text: qsTr("No systems heard yet.")
         color: Theme.textDim
         font.pixelSize: Theme.fontPixelSize

@@ -8,7 +8,9 @@ import Neptus.Engine
 Rectangle {
     id: list
 
-    readonly property var names: Session.systems
+    // A row per system: the tree's top level (a new system inserts its row,
+    // the others stay as they are).
+    readonly property int count: Session.systems.length
 
     implicitWidth: Theme.mm(90)
     implicitHeight: Theme.mm(60)
@@ -21,7 +23,7 @@ Rectangle {
     Text {
         id: heading
         anchors { left: parent.left; top: parent.top; margins: Theme.spacing * 1.5 }
-        text: qsTr("Systems (%1)").arg(list.names.length)
+        text: qsTr("Systems (%1)").arg(list.count)
         color: Theme.textDim
         font.pixelSize: Theme.smallFontPixelSize
     }
@@ -31,14 +33,14 @@ Rectangle {
         objectName: "systemsView"
         anchors { left: parent.left; right: parent.right; top: heading.bottom; bottom: parent.bottom; margins: Theme.spacing }
         spacing: Theme.spacing / 2
-        model: list.names
+        model: Session.tree
         delegate: Rectangle {
             id: row
-            required property string modelData
-            readonly property bool main: Session.mainSystem === modelData
+            required property string name
+            readonly property bool main: Session.mainSystem === row.name
             readonly property string kind: kindVariable.present ? kindVariable.text : ""
             readonly property var console: kind !== "" ? Session.consoleFor(kind) : null
-            objectName: "system-" + modelData
+            objectName: "system-" + row.name
             width: ListView.view.width
             height: Theme.touchTarget * 1.3
             radius: Theme.radius
@@ -46,8 +48,8 @@ Rectangle {
             border.color: main ? Theme.accent : Theme.border
             border.width: main ? Theme.mm(0.5) : 1
 
-            Variable { id: systemVariable; tree: Session.tree; path: row.modelData }
-            Variable { id: kindVariable; tree: Session.tree; path: row.modelData + "/Announce/sys_type" }
+            Variable { id: systemVariable; tree: Session.tree; path: row.name }
+            Variable { id: kindVariable; tree: Session.tree; path: row.name + "/Announce/sys_type" }
 
             StatusLed {
                 id: led
@@ -60,7 +62,7 @@ Rectangle {
                 anchors { left: led.right; right: openButton.left; verticalCenter: parent.verticalCenter; rightMargin: Theme.spacing }
                 Text {
                     width: parent.width
-                    text: row.modelData + (row.kind ? "  ·  " + row.kind : "")
+                    text: row.name + (row.kind ? "  ·  " + row.kind : "")
                     color: Theme.text
                     font.pixelSize: Theme.fontPixelSize
                     font.bold: row.main
@@ -76,7 +78,7 @@ Rectangle {
                     elide: Text.ElideRight
                 }
             }
-            TapHandler { onTapped: Session.mainSystem = row.modelData }
+            TapHandler { onTapped: Session.mainSystem = row.name }
             TouchButton {
                 id: openButton
                 objectName: "openConsole"
@@ -84,15 +86,15 @@ Rectangle {
                 visible: row.console !== null
                 width: visible ? implicitWidth : 0
                 text: qsTr("Open")
-                toolTip: row.console ? qsTr("Open %1 for %2").arg(row.console.title).arg(row.modelData) : ""
-                onClicked: Session.openConsoleRequested(row.console.file, row.modelData)
+                toolTip: row.console ? qsTr("Open %1 for %2").arg(row.console.title).arg(row.name) : ""
+                onClicked: Session.openConsoleRequested(row.console.file, row.name)
             }
         }
     }
 
     Text {
         anchors.centerIn: parent
-        visible: list.names.length === 0
+        visible: list.count === 0
         text: qsTr("No systems heard yet.")
         color: Theme.textDim
         font.pixelSize: Theme.fontPixelSize
