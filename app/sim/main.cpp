@@ -49,13 +49,14 @@ int main(int argc, char *argv[])
     QCoreApplication::setApplicationName(QStringLiteral("neptus-sim"));
     QCoreApplication::setApplicationVersion(QStringLiteral(NEPTUS_VERSION));
     QCommandLineParser parser;
-    parser.setApplicationDescription(QStringLiteral("A simulated vehicle speaking IMC over UDP on 127.0.0.1."));
+    parser.setApplicationDescription(QStringLiteral("A simulated vehicle speaking IMC over UDP on loopback."));
     parser.addHelpOption();
     parser.addVersionOption();
     const QCommandLineOption id(QStringLiteral("id"), QStringLiteral("IMC system id (default 0x1f)."), QStringLiteral("id"), QStringLiteral("0x1f"));
     const QCommandLineOption name(QStringLiteral("name"), QStringLiteral("System name (default lauv-sim-1)."), QStringLiteral("name"), QStringLiteral("lauv-sim-1"));
     const QCommandLineOption kind(QStringLiteral("kind"), QStringLiteral("auv, asv or uav (default auv)."), QStringLiteral("kind"), QStringLiteral("auv"));
-    const QCommandLineOption port(QStringLiteral("port"), QStringLiteral("UDP port on 127.0.0.1 (default 6002)."), QStringLiteral("port"), QStringLiteral("6002"));
+    const QCommandLineOption port(QStringLiteral("port"), QStringLiteral("UDP port (default 6002)."), QStringLiteral("port"), QStringLiteral("6002"));
+    const QCommandLineOption host(QStringLiteral("host"), QStringLiteral("Loopback address to send and listen on (default 127.0.0.1); another, such as 127.0.0.2, plays a second host (an impostor with the same --id)."), QStringLiteral("address"), QStringLiteral("127.0.0.1"));
     const QCommandLineOption console(QStringLiteral("console"), QStringLiteral("A console to announce to, host:port (repeatable)."), QStringLiteral("host:port"));
     const QCommandLineOption announcePort(QStringLiteral("announce-port"), QStringLiteral("Also announce to this port on 127.0.0.1 (IMC discovery uses 30100)."), QStringLiteral("port"));
     const QCommandLineOption phase(QStringLiteral("phase"), QStringLiteral("Start angle on the track, degrees."), QStringLiteral("degrees"), QStringLiteral("0"));
@@ -68,7 +69,7 @@ int main(int argc, char *argv[])
         QStringLiteral("Behave as a stock DUNE vehicle: announce only to the IMC discovery ports (127.0.0.1:30100-30104) "
                        "and listen there, take messages only from systems that announced themselves, stream to those "
                        "heard from in the last 30 s, send the EntityList only when asked."));
-    parser.addOptions({id, name, kind, port, console, announcePort, phase, fault, drop, defs, dds, domain, dune});
+    parser.addOptions({id, name, kind, port, host, console, announcePort, phase, fault, drop, defs, dds, domain, dune});
     if (!parser.parse(QCoreApplication::arguments()))
         return usage(parser.errorText());
     if (parser.isSet(QStringLiteral("help")))
@@ -97,8 +98,12 @@ int main(int argc, char *argv[])
     const uint portValue = parser.value(port).toUInt(&ok);
     if (!ok || portValue == 0 || portValue > 65535)
         return usage(QStringLiteral("--port must be a port number, not '%1'").arg(parser.value(port)));
+    const QHostAddress address(parser.value(host));
+    if (!address.isLoopback() || address.protocol() != QAbstractSocket::IPv4Protocol)
+        return usage(QStringLiteral("--host must be a 127.x.x.x address (the simulator stays on loopback), not '%1'")
+                         .arg(parser.value(host)));
     config.phase = parser.value(phase).toDouble() * 3.14159265358979 / 180;
-    config.services = QStringLiteral("imc+udp://127.0.0.1:%1/").arg(portValue);
+    config.services = QStringLiteral("imc+udp://%1:%2/").arg(address.toString()).arg(portValue);
     int faults = 0;
     for (const QString &f : parser.values(fault)) {
         if (f == u"battery-low") faults |= sim::SimulatedVehicle::BatteryLow;
@@ -129,8 +134,9 @@ int main(int argc, char *argv[])
     vehicle.setFaults(faults);
     const msg::Codec codec(*schema);
     QUdpSocket socket;
-    if (!socket.bind(QHostAddress::LocalHost, static_cast<quint16>(portValue))) {
-        std::fprintf(stderr, "neptus-sim: cannot listen on 127.0.0.1:%u: %s\n", portValue, qPrintable(socket.errorString()));
+    if (!socket.bind(address, static_cast<quint16>(portValue))) {
+        std::fprintf(stderr, "neptus-sim: cannot listen on %s:%u: %s\n", qPrintable(address.toString()), portValue,
+                     qPrintable(socket.errorString()));
         return 1;
     }
     // Like DUNE: listen for announcements on the first free IMC discovery
@@ -148,7 +154,8 @@ int main(int argc, char *argv[])
         }
         announceTo = imcDiscoveryPorts();
     }
-    std::printf("neptus-sim: %s (id 0x%04x) on 127.0.0.1:%u\n", qPrintable(config.name), config.id, portValue);
+    std::printf("neptus-sim: %s (id 0x%04x) on %s:%u\n", qPrintable(config.name), config.id,
+                qPrintable(address.toString()), portValue);
     std::fflush(stdout);
 
     QElapsedTimer clock;

@@ -23,3 +23,13 @@ QString ConsoleSession::send(const QString &system, const QVariantMap &json)
         return tr("not sent: %1").arg(sent.error());
     return {};
 }
+
+bool ConsoleSession::chooseSource(int systemId, const QString &host)
+{
+    if (systemId < 0 || systemId >= 0xFFFF)
+        return false;
+    const bool chosen = m_console.chooseSource(static_cast<quint16>(systemId), host);
+    if (chosen)
+        m_linksModel.refresh();
+    return chosen;
+}

@@ -40,6 +40,9 @@ public:
     // as JSON ({"abbrev": "Abort", "fields": {...}}), to a system. Returns ""
     // when sent, else why not.
     Q_INVOKABLE QString send(const QString &system, const QVariantMap &message);
+    // The operator trusts `host` as the system with IMC id `systemId` (when
+    // several hosts send as it): commands go there. "" goes back to automatic.
+    Q_INVOKABLE bool chooseSource(int systemId, const QString &host);
 
 private:
     neptus::session::Console m_console;

@@ -85,6 +85,8 @@ QVariant LinkStatisticsModel::data(const QModelIndex &index, int role) const
             entities.append(QStringLiteral("%1 (%2)").arg(label).arg(number));
         return entities.join(QStringLiteral(", "));
     }
+    case SourcesRole: return s.sources;
+    case DestinationRole: return s.destination;
     default: return {};
     }
 }
@@ -103,7 +105,9 @@ QHash<int, QByteArray> LinkStatisticsModel::roleNames() const
             {DecodeErrorsRole, "decodeErrors"},
             {LastErrorRole, "lastError"},
             {PeerRole, "peer"},
-            {EntitiesRole, "entities"}};
+            {EntitiesRole, "entities"},
+            {SourcesRole, "sources"},
+            {DestinationRole, "destination"}};
 }
 
 } // namespace neptus::transport

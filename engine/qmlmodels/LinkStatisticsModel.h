@@ -12,8 +12,8 @@ namespace neptus::transport {
 
 // The link statistics as a list of systems for an inspector: name, link,
 // messages and bytes per second, message types, types our definitions
-// lack, decode errors with the last reason, and the entities the system
-// named. Looks again once a second (after the session's tick); rows are
+// lack, decode errors with the last reason, the entities the system
+// named, and the hosts that send as it. Looks again once a second (after the session's tick); rows are
 // updated in place so a view keeps its place.
 class LinkStatisticsModel : public QAbstractListModel
 {
@@ -37,6 +37,8 @@ public:
         LastErrorRole,
         PeerRole,
         EntitiesRole,                  // "Navigation (1), Motor (2)"
+        SourcesRole,                   // hosts sending as it lately: ["127.0.0.1", "127.0.0.2"]
+        DestinationRole,               // where commands go, "" while held
     };
     Q_ENUM(Role)
 

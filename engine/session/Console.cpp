@@ -6,6 +6,8 @@ namespace {
 
 // Decode errors older than this no longer keep a system's link alarm up.
 constexpr qint64 decodeErrorAlarmMs = 10000;
+// Nor an ignored Announce its sources alarm.
+constexpr qint64 ignoredAnnounceAlarmMs = 30000;
 
 QString systemLabel(quint16 id)
 {
@@ -84,6 +86,33 @@ transport::ImcUdpTransport *Console::attachImc(std::unique_ptr<transport::ImcUdp
             [this](quint16 system, const QString &version) {
                 m_announcedVersions.insert(system, version);
                 updateDefinitionsAlarm(system, m_linkStatistics.system(system));
+            });
+    connect(imc.get(), &transport::ImcUdpTransport::sourcesChanged, this,
+            [this](quint16 system, const QStringList &hosts, const QString &destination) {
+                Sources &sources = m_sources[system];
+                sources.hosts = hosts;
+                sources.destination = destination;
+                m_linkStatistics.setSources(system, hosts, destination);
+                updateSourcesAlarm(system);
+            });
+    connect(imc.get(), &transport::ImcUdpTransport::announceIgnored, this,
+            [this](quint16 system, const QString &from, const QString &services) {
+                Sources &sources = m_sources[system];
+                sources.ignoredAnnounce = tr("an Announce from %1 names addresses on other hosts only (%2): "
+                                             "commands do not go there")
+                                              .arg(from, services.left(200));
+                sources.ignoredMs = m_clock->now().toMSecsSinceEpoch();
+                updateSourcesAlarm(system);
+            });
+    connect(imc.get(), &transport::ImcUdpTransport::overloaded, this,
+            [this, maximum = imc->maxDatagramsPerSecond()](const QString &host, int dropped) {
+                const auto node = m_graph.ensure(QStringLiteral("links/%1").arg(host));
+                if (dropped == 0)
+                    m_graph.raise(node, alarms::Normal);
+                else
+                    m_graph.raise(node, alarms::Warning,
+                                  tr("input overload: %1 sent over %2 datagrams a second; %3 dropped unread")
+                                      .arg(host).arg(maximum).arg(dropped));
             });
     m_imc = std::move(imc);
     addLink(link, m_imc.get());
@@ -166,6 +195,33 @@ void Console::decodeFailed(quint16 system, const QString &link, const QString &p
     m_linkStatistics.decodeFailed(system, link, peer, reason);
 }
 
+bool Console::chooseSource(quint16 system, const QString &host)
+{
+    return m_imc && m_imc->pick(system, host);
+}
+
+void Console::updateSourcesAlarm(quint16 id)
+{
+    Sources &sources = m_sources[id];
+    const qint64 now = m_clock->now().toMSecsSinceEpoch();
+    QString text;
+    if (sources.hosts.size() > 1 && sources.destination.isEmpty())
+        text = tr("%1 hosts send as this system (%2): commands to it are held until one is chosen in Links")
+                   .arg(sources.hosts.size())
+                   .arg(sources.hosts.join(QStringLiteral(", ")));
+    else if (sources.hosts.size() > 1)
+        text = tr("%1 hosts send as this system (%2); commands go to %3, as chosen")
+                   .arg(sources.hosts.size())
+                   .arg(sources.hosts.join(QStringLiteral(", ")), sources.destination);
+    else if (!sources.ignoredAnnounce.isEmpty() && now - sources.ignoredMs < ignoredAnnounceAlarmMs)
+        text = sources.ignoredAnnounce;
+    if (text == sources.alarmText)
+        return;
+    sources.alarmText = text;
+    const auto node = m_graph.ensure(QStringLiteral("systems/%1/sources").arg(m_tree.systemName(id)));
+    m_graph.raise(node, text.isEmpty() ? alarms::Normal : alarms::Warning, text);
+}
+
 void Console::check()
 {
     m_health.check();
@@ -176,6 +232,10 @@ void Console::tick()
 {
     m_linkStatistics.tick();
     updateLinkAlarms();
+    for (const quint16 system : m_sources.keys()) {
+        if (!m_sources.value(system).alarmText.isEmpty())
+            updateSourcesAlarm(system); // an ignored Announce ages out
+    }
 }
 
 void Console::updateLinkAlarms()

@@ -84,6 +84,11 @@ public:
     std::expected<void, QString> send(quint16 system, msg::Message message);
     std::expected<void, QString> send(const QString &system, msg::Message message);
 
+    // Several hosts send as `system` (an impostor, or a vehicle on two
+    // networks): commands go to `host` ("" lets the link choose again).
+    // False if the system was not heard from that host.
+    bool chooseSource(quint16 system, const QString &host);
+
     // A few times a second: silence, entity queries. Once a second: rates and
     // link alarms. Timers call them; tests call them after moving their clock.
     void check();
@@ -98,6 +103,9 @@ private:
     // the definitions lack, as alarms on "systems/<system>/link" and ".../definitions".
     void updateLinkAlarms();
     void updateDefinitionsAlarm(quint16 id, const transport::LinkStatistics::System &system);
+    // Who sends as a system: several hosts, or an Announce naming addresses
+    // elsewhere, raise a Warning on "systems/<system>/sources".
+    void updateSourcesAlarm(quint16 id);
 
     const Clock *m_clock;
     std::shared_ptr<const msg::Schema> m_schema;
@@ -118,6 +126,15 @@ private:
     QHash<quint16, QString> m_definitionsAlarmText;
     QHash<quint16, QString> m_announcedVersions;
     QHash<quint16, QString> m_digestNotes;
+    struct Sources
+    {
+        QStringList hosts;
+        QString destination;
+        QString ignoredAnnounce; // why the last Announce from elsewhere was ignored
+        qint64 ignoredMs = 0;
+        QString alarmText;
+    };
+    QHash<quint16, Sources> m_sources;
 };
 
 } // namespace neptus::session

@@ -60,6 +60,14 @@ void LinkStatistics::decodeFailed(quint16 system, const QString &link, const QSt
     counter.system.lastErrorMs = m_clock->now().toMSecsSinceEpoch();
 }
 
+void LinkStatistics::setSources(quint16 system, const QStringList &sources, const QString &destination)
+{
+    QMutexLocker lock(&m_mutex);
+    Counter &counter = counterLocked(system);
+    counter.system.sources = sources;
+    counter.system.destination = destination;
+}
+
 void LinkStatistics::tick()
 {
     const qint64 now = m_clock->now().toMSecsSinceEpoch();

@@ -5,6 +5,7 @@
 #include <QHash>
 #include <QMutex>
 #include <QString>
+#include <QStringList>
 
 #include <vector>
 
@@ -41,6 +42,10 @@ public:
         QString lastError;
         qint64 lastErrorMs = 0;  // the clock's time of the last decode error
         std::vector<Type> types; // by id
+        // The hosts that sent as this system lately (more than one: an
+        // impostor, or a vehicle on two networks) and where commands go ("" while held).
+        QStringList sources;
+        QString destination;
         int unknownTypes() const;
     };
 
@@ -52,6 +57,8 @@ public:
     // A packet that could not be decoded; `system` is unknownSystem when not
     // even its header said who sent it.
     void decodeFailed(quint16 system, const QString &link, const QString &peer, const QString &reason);
+    // Who sends as `system`, and where commands to it go (from the link).
+    void setSources(quint16 system, const QStringList &sources, const QString &destination);
     // Computes rates over the time since the last tick.
     void tick();
 

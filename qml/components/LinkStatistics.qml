@@ -5,7 +5,10 @@ import Neptus.Engine
 // What each system's link carries: messages and bytes per second, message
 // types (and those the console's definitions lack), packets that could not be
 // decoded with the last reason, and the entities the system named. Tap a
-// system to list its message types, busiest first, with their rates.
+// system to list its message types, busiest first, with their rates. When
+// several hosts send as one system (an impostor, or a vehicle on two
+// networks) its commands are held: a button per host lets the operator
+// choose the one to trust.
 Rectangle {
     id: panel
 
@@ -72,15 +75,18 @@ Rectangle {
             required property string lastError
             required property string peer
             required property string entities
+            required property list<string> sources
+            required property string destination
             readonly property bool shown: panel.shownId === systemId
+            readonly property bool contested: sources.length > 1
 
             objectName: "link-" + system
             width: ListView.view.width
             height: Math.max(Theme.touchTarget, details.implicitHeight + Theme.spacing * 2)
             radius: Theme.radius
             color: shown ? Qt.rgba(Theme.accent.r, Theme.accent.g, Theme.accent.b, 0.15) : Theme.surface
-            border.color: shown ? Theme.accent : Theme.border
-            border.width: shown ? Theme.mm(0.5) : 1
+            border.color: contested ? Theme.levelColor(AlarmLevel.Warning) : shown ? Theme.accent : Theme.border
+            border.width: shown || contested ? Theme.mm(0.5) : 1
 
             Binding {
                 target: panel
@@ -132,6 +138,41 @@ Rectangle {
                     wrapMode: Text.Wrap
                     maximumLineCount: 2
                     elide: Text.ElideRight
+                }
+                Text {
+                    objectName: "sources"
+                    width: parent.width
+                    visible: row.contested
+                    text: row.destination === ""
+                          ? qsTr("%1 hosts send as %2: commands are held. Trust one:").arg(row.sources.length).arg(row.system)
+                          : qsTr("%1 hosts send as %2; commands go to %3").arg(row.sources.length).arg(row.system).arg(row.destination)
+                    color: Theme.levelColor(AlarmLevel.Warning)
+                    font.pixelSize: Theme.smallFontPixelSize
+                    font.bold: row.destination === ""
+                    wrapMode: Text.Wrap
+                }
+                Flow {
+                    width: parent.width
+                    visible: row.contested
+                    spacing: Theme.spacing
+                    Repeater {
+                        model: row.contested ? row.sources : []
+                        delegate: TouchButton {
+                            required property string modelData
+                            objectName: "trust-" + modelData
+                            text: modelData
+                            highlighted: row.destination.startsWith(modelData + ":")
+                            toolTip: qsTr("Send %1's commands to %2 only").arg(row.system).arg(modelData)
+                            onClicked: Session.session.chooseSource(row.systemId, modelData)
+                        }
+                    }
+                    TouchButton {
+                        objectName: "trust-automatic"
+                        visible: row.destination !== ""
+                        text: qsTr("Hold again")
+                        toolTip: qsTr("Forget the choice: commands are held while several hosts send")
+                        onClicked: Session.session.chooseSource(row.systemId, "")
+                    }
                 }
             }
             TapHandler { onTapped: panel.selectedId = row.systemId }

@@ -5,13 +5,18 @@
 // entity naming, link statistics; then the tree's QML model syncs and every
 // row the model shows is read, as a view would, and the link alarms update.
 //
-// Input: byte 0 picks the definitions (even: the shipped msgdefs/, odd:
-// tests/data/tiny-imc.xml, where most types are unknown); then datagrams as
-// [2-byte big-endian length][bytes], repeated.
+// Input: byte 0 picks the definitions (bit 0 clear: the shipped msgdefs/,
+// set: tests/data/tiny-imc.xml, where most types are unknown) and the hosts
+// the datagrams come from (bits 1-2: 127.0.0.1 to .4; bit 3: each datagram
+// from the next host, so that hosts contest system ids); then datagrams as
+// [2-byte big-endian length][bytes], repeated. The session's clock moves
+// half a second per input, and each host may send 200 datagrams a second,
+// so budgets, conflicts and forgetting run too.
 //
 // Beyond "no crash, no sanitizer report", it checks on every input that each
-// datagram is accounted for: a packet that decodes lands in the tree under
-// its system and type, one that does not is counted as a decode error.
+// datagram is accounted for: one over its host's budget is counted as
+// dropped, a packet that decodes lands in the tree under its system and
+// type, one that does not is counted as a decode error.
 #include "Paths.h"
 #include "qmlmodels/LinkStatisticsModel.h"
 #include "qmlmodels/VariableTreeModel.h"
@@ -41,7 +46,7 @@ std::shared_ptr<const msg::Schema> load(const QStringList &files)
 struct Console
 {
     explicit Console(std::shared_ptr<const msg::Schema> schema)
-        : session(std::move(schema))
+        : session(std::move(schema), &clock)
         , imc(*session.attachImc(std::make_unique<transport::ImcUdpTransport>(session.schemaSet(), config())))
     {
     }
@@ -50,8 +55,11 @@ struct Console
         transport::ImcUdpConfig c;
         c.port = 0;
         c.discovery = false;
+        c.clock = &clock;
+        c.maxDatagramsPerSecond = 200;
         return c;
     }
+    static inline ManualClock clock{QDateTime::fromMSecsSinceEpoch(1'700'000'000'000, QTimeZone::UTC)};
     session::Console session;
     transport::ImcUdpTransport &imc; // never started: receive() is called directly
     tree::VariableTreeModel model{&session.tree()};
@@ -112,12 +120,22 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         QString abbrev;
     };
     std::vector<Landed> landed;
+    Console::clock.advance(500);
+    static const QHostAddress hosts[4] = {QHostAddress(QStringLiteral("127.0.0.1")), QHostAddress(QStringLiteral("127.0.0.2")),
+                                          QHostAddress(QStringLiteral("127.0.0.3")), QHostAddress(QStringLiteral("127.0.0.4"))};
+    int host = (data[0] >> 1) & 3;
+    const bool rotate = data[0] & 8;
     size_t at = 1;
     while (at + 2 <= size) {
         const size_t length = std::min<size_t>((size_t(data[at]) << 8) | data[at + 1], size - at - 2);
         const QByteArrayView datagram(data + at + 2, static_cast<qsizetype>(length));
         at += 2 + length;
-        c.imc.receive(datagram, QHostAddress::LocalHost, 6002);
+        const quint64 droppedBefore = c.imc.droppedDatagrams();
+        c.imc.receive(datagram, hosts[host], 6002);
+        if (rotate)
+            host = (host + 1) & 3;
+        if (c.imc.droppedDatagrams() != droppedBefore)
+            continue; // over budget: not decoded, not counted
         const auto message = codec.decode(datagram);
         if (!message)
             ++failed;
@@ -133,6 +151,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         c.session.check();
         c.session.tick();
         c.links.refresh();
+        c.imc.forgetSilent();
     }
 
     quint64 errorsAfter = 0;

@@ -4,6 +4,7 @@
 // session on a manual clock, so tests drive the real models, and a link that
 // records what components send.
 #include "Paths.h"
+#include "messages/Codec.h"
 #include "messages/MessageJson.h"
 #include "messages/Schema.h"
 #include "qmlmodels/ConsoleSession.h"
@@ -138,6 +139,22 @@ public:
         graph.raise(graph.ensure(path), static_cast<alarms::Level>(level), message);
     }
     Q_INVOKABLE void advanceClock(int milliseconds) { m_clock.advance(milliseconds); }
+    // A message `abbrev` from system `src`, as the IMC/UDP link receives it
+    // from `host` (the link is attached on first use, never bound).
+    Q_INVOKABLE void receiveFrom(const QString &host, const QString &abbrev, int src)
+    {
+        session::Console &console = m_session.console();
+        if (!console.imc()) {
+            transport::ImcUdpConfig config;
+            config.port = 0;
+            config.discovery = false;
+            config.clock = &m_clock;
+            console.attachImc(std::make_unique<transport::ImcUdpTransport>(console.schemaSet(), config));
+        }
+        msg::Message m(m_schema->byAbbrev(abbrev));
+        m.header.src = static_cast<quint16>(src);
+        console.imc()->receive(*msg::Codec(m_schema).encode(m), QHostAddress(host), 6002);
+    }
 
     // Files, for the designer's tests: a fresh directory per call, removed at exit.
     Q_INVOKABLE QString makeTempDir()

@@ -11,9 +11,27 @@ namespace {
 // IMC's discovery multicast group (DUNE and the Java Neptus use it).
 const QHostAddress discoveryGroup(QStringLiteral("224.0.75.69"));
 
+// Datagrams read in one go: a flood must not keep the event loop in here.
+constexpr int datagramsPerRead = 256;
+// Hosts remembered per system (an attacker can forge many source addresses).
+constexpr int sendersPerSystem = 16;
+
 QString peerName(const QHostAddress &address, quint16 port)
 {
     return QStringLiteral("%1:%2").arg(address.toString()).arg(port);
+}
+
+// "127.0.0.1" also for an IPv4 address in IPv6 form.
+QString hostName(const QHostAddress &address)
+{
+    bool isIpv4 = false;
+    const quint32 ipv4 = address.toIPv4Address(&isIpv4);
+    return isIpv4 ? QHostAddress(ipv4).toString() : address.toString();
+}
+
+QString systemLabel(quint16 id)
+{
+    return QStringLiteral("0x%1").arg(id, 4, 16, QLatin1Char('0'));
 }
 
 // The interface that holds `address`, if any.
@@ -121,9 +139,16 @@ QList<ImcUdpTransport::Endpoint> ImcUdpTransport::discoveryTargets() const
     return targets;
 }
 
+QString ImcUdpTransport::Endpoint::name() const
+{
+    return peerName(address, port);
+}
+
 void ImcUdpTransport::readDatagrams(QUdpSocket &socket)
 {
-    while (socket.hasPendingDatagrams()) {
+    // What is left is read on the next turn of the event loop (the socket
+    // stays readable).
+    for (int i = 0; i < datagramsPerRead && socket.hasPendingDatagrams(); ++i) {
         const QNetworkDatagram datagram = socket.receiveDatagram();
         receive(datagram.data(), datagram.senderAddress(), static_cast<quint16>(datagram.senderPort()));
     }
@@ -131,6 +156,9 @@ void ImcUdpTransport::readDatagrams(QUdpSocket &socket)
 
 void ImcUdpTransport::receive(QByteArrayView datagram, const QHostAddress &from, quint16 fromPort)
 {
+    const QString host = hostName(from);
+    if (!withinBudget(host))
+        return;
     auto message = m_schemas->decode(datagram);
     if (!message) {
         ++m_decodeErrors;
@@ -143,10 +171,12 @@ void ImcUdpTransport::receive(QByteArrayView datagram, const QHostAddress &from,
         return; // our own, relayed back (or our own Announce on the discovery ports)
     const bool announce = message->def() && message->def()->abbrev == u"Announce";
     if (announce) {
-        learnFromAnnounce(*message, from);
-    } else if (!m_endpoints.contains(source) && fromPort != 0) {
-        // A vehicle that talks to us is reachable where it talks from.
-        m_endpoints.insert(source, {from, fromPort});
+        learnFromAnnounce(*message, from, host);
+    } else if (Sender *sender = senderFor(source, host)) {
+        sender->lastMs = nowMs();
+        if (fromPort != 0)
+            sender->data = Endpoint{from, fromPort}; // reachable where it talks from
+        resolve(source);
     }
     emit received(*message, datagram.size());
     if (!announce)
@@ -160,35 +190,184 @@ void ImcUdpTransport::receive(QByteArrayView datagram, const QHostAddress &from,
     }
 }
 
-void ImcUdpTransport::learnFromAnnounce(const msg::Message &announce, const QHostAddress &from)
+bool ImcUdpTransport::withinBudget(const QString &host)
+{
+    if (m_config.maxDatagramsPerSecond <= 0)
+        return true;
+    Budget &budget = m_budgets[host];
+    rollBudget(host, budget, nowMs());
+    if (budget.count < m_config.maxDatagramsPerSecond) {
+        ++budget.count;
+        return true;
+    }
+    ++budget.dropped;
+    ++m_dropped;
+    return false;
+}
+
+void ImcUdpTransport::rollBudget(const QString &host, Budget &budget, qint64 now)
+{
+    if (now - budget.secondStartMs < 1000)
+        return;
+    const bool was = budget.overloaded;
+    budget.overloaded = budget.dropped > 0;
+    const int dropped = budget.dropped;
+    budget.secondStartMs = now;
+    budget.count = 0;
+    budget.dropped = 0;
+    if (dropped > 0 || was)
+        emit overloaded(host, dropped);
+}
+
+ImcUdpTransport::Sender *ImcUdpTransport::senderFor(quint16 system, const QString &host)
+{
+    auto peer = m_peers.find(system);
+    if (peer == m_peers.end()) {
+        if (m_peers.size() >= m_config.maxSystems)
+            return nullptr;
+        peer = m_peers.insert(system, {});
+    }
+    auto sender = peer->senders.find(host);
+    if (sender == peer->senders.end()) {
+        if (peer->senders.size() >= sendersPerSystem)
+            return nullptr;
+        sender = peer->senders.insert(host, {});
+    }
+    return &*sender;
+}
+
+void ImcUdpTransport::resolve(quint16 system)
+{
+    const auto it = m_peers.find(system);
+    if (it == m_peers.end())
+        return;
+    Peer &peer = *it;
+    const qint64 now = nowMs();
+    QStringList recent;
+    QString newest;
+    qint64 newestMs = std::numeric_limits<qint64>::min();
+    for (auto sender = peer.senders.cbegin(); sender != peer.senders.cend(); ++sender) {
+        if (now - sender->lastMs <= m_config.conflictWindowMs)
+            recent.append(sender.key());
+        if (sender->lastMs > newestMs) {
+            newestMs = sender->lastMs;
+            newest = sender.key();
+        }
+    }
+    recent.sort();
+    QString chosen;
+    if (!peer.picked.isEmpty() && peer.senders.contains(peer.picked))
+        chosen = peer.picked;
+    else if (recent.size() == 1)
+        chosen = recent.front();
+    else if (recent.isEmpty())
+        chosen = newest; // all silent: the last one heard
+    // else: a conflict, held until one is picked or falls silent
+    peer.target.reset();
+    if (!chosen.isEmpty()) {
+        const Sender &sender = peer.senders[chosen];
+        peer.target = sender.announced ? sender.announced : sender.data;
+    }
+    const QString destination = peer.target ? peer.target->name() : QString();
+    if (recent == peer.sources && destination == peer.destination)
+        return;
+    peer.sources = recent;
+    peer.destination = destination;
+    emit sourcesChanged(system, recent, destination);
+}
+
+QList<quint16> ImcUdpTransport::knownSystems() const
+{
+    QList<quint16> systems;
+    for (auto it = m_peers.cbegin(); it != m_peers.cend(); ++it) {
+        if (it->target)
+            systems.append(it.key());
+    }
+    return systems;
+}
+
+QStringList ImcUdpTransport::sources(quint16 system) const
+{
+    return m_peers.value(system).sources;
+}
+
+QString ImcUdpTransport::destination(quint16 system) const
+{
+    return m_peers.value(system).destination;
+}
+
+bool ImcUdpTransport::pick(quint16 system, const QString &host)
+{
+    const auto it = m_peers.find(system);
+    if (it == m_peers.end() || (!host.isEmpty() && !it->senders.contains(host)))
+        return false;
+    it->picked = host;
+    resolve(system);
+    return true;
+}
+
+void ImcUdpTransport::forgetSilent()
+{
+    const qint64 now = nowMs();
+    for (const quint16 system : m_peers.keys()) {
+        Peer &peer = m_peers[system];
+        peer.senders.removeIf([&](const auto &sender) { return now - sender.value().lastMs > m_config.forgetAfterMs; });
+        if (!peer.picked.isEmpty() && !peer.senders.contains(peer.picked))
+            peer.picked.clear();
+        if (!peer.senders.isEmpty()) {
+            resolve(system);
+            continue;
+        }
+        const bool reported = !peer.sources.isEmpty() || !peer.destination.isEmpty();
+        m_peers.remove(system);
+        m_versions.remove(system);
+        if (reported)
+            emit sourcesChanged(system, {}, {});
+    }
+    // Hosts that no longer send keep no budget.
+    m_budgets.removeIf([&](const auto &budget) {
+        return !budget.value().overloaded && now - budget.value().secondStartMs > 2000;
+    });
+    for (auto it = m_budgets.begin(); it != m_budgets.end(); ++it)
+        rollBudget(it.key(), it.value(), now);
+}
+
+void ImcUdpTransport::learnFromAnnounce(const msg::Message &announce, const QHostAddress &from, const QString &host)
 {
     const quint16 source = announce.header.src;
     const QString name = announce.text(u"sys_name");
     m_schemas->learnName(source, name);
     // services: "dune://0.0.0.0/uid/...;imc+info://0.0.0.0/version/5.4.31;imc+udp://127.0.0.1:6002/;..."
+    // A vehicle lists one imc+udp service per interface: only the one on
+    // the host it sent from counts, so that nobody can send a vehicle's
+    // commands elsewhere with a forged Announce.
     const QString services = announce.text(u"services");
-    // A vehicle lists one imc+udp service per interface: take the one it
-    // sent from, else one on loopback when we are there, else the first.
     static const QRegularExpression service(QStringLiteral(R"(imc\+udp://([^:/;]+):(\d+))"));
     std::optional<Endpoint> chosen;
+    bool listsUdp = false;
     for (auto it = service.globalMatch(services); it.hasNext();) {
         const auto match = it.next();
         const Endpoint candidate{QHostAddress(match.captured(1)), static_cast<quint16>(match.captured(2).toUInt())};
+        listsUdp = true;
         if (candidate.address.isNull() || candidate.port == 0)
             continue;
         if (candidate.address.isEqual(from, QHostAddress::TolerantConversion)) {
             chosen = candidate;
             break;
         }
-        if (!chosen || (m_config.bindAddress.isLoopback() && candidate.address.isLoopback()
-                        && !chosen->address.isLoopback()))
-            chosen = candidate;
     }
-    if (!chosen)
+    Sender *sender = senderFor(source, host);
+    if (!sender)
         return;
-    const bool known = m_endpoints.contains(source);
-    m_endpoints.insert(source, *chosen);
-    if (known)
+    sender->lastMs = nowMs();
+    if (chosen)
+        sender->announced = chosen;
+    else if (listsUdp)
+        emit announceIgnored(source, host, services);
+    const bool known = m_peers[source].target.has_value();
+    resolve(source);
+    const std::optional<Endpoint> target = m_peers[source].target;
+    if (known || !target)
         return;
     // Say hello at once: a vehicle streams only once it hears from us, and
     // knows us only from our Announce.
@@ -198,7 +377,7 @@ void ImcUdpTransport::learnFromAnnounce(const msg::Message &announce, const QHos
         hello.header.timestamp = now();
         hello.header.src = m_config.systemId;
         hello.header.dst = source;
-        send(hello, *chosen);
+        send(hello, *target);
     }
     emit systemDiscovered(source, name);
 }
@@ -243,9 +422,12 @@ void ImcUdpTransport::heartbeat()
         m.header.dst = dst;
         m.header.dstEnt = 0xFF;
     };
+    forgetSilent();
     QList<std::pair<quint16, Endpoint>> targets;
-    for (auto it = m_endpoints.cbegin(); it != m_endpoints.cend(); ++it)
-        targets.append({it.key(), it.value()});
+    for (auto it = m_peers.cbegin(); it != m_peers.cend(); ++it) {
+        if (it->target)
+            targets.append({it.key(), *it->target});
+    }
     for (const auto &[address, port] : m_config.destinations) {
         const bool covered = std::any_of(targets.begin(), targets.end(), [&](const auto &t) {
             return t.second.address == address && t.second.port == port;
@@ -274,9 +456,15 @@ void ImcUdpTransport::heartbeat()
 
 std::expected<void, QString> ImcUdpTransport::publish(quint16 system, const msg::Message &message)
 {
-    const auto it = m_endpoints.constFind(system);
-    if (it == m_endpoints.cend())
-        return std::unexpected(QStringLiteral("IMC/UDP: 0x%1 was never heard or announced").arg(system, 4, 16, QLatin1Char('0')));
+    const auto it = m_peers.constFind(system);
+    if (it == m_peers.cend())
+        return std::unexpected(QStringLiteral("IMC/UDP: %1 was never heard or announced").arg(systemLabel(system)));
+    if (!it->target && it->sources.size() > 1)
+        return std::unexpected(QStringLiteral("IMC/UDP: %1 hosts send as %2 (%3): commands are held until one is chosen")
+                                   .arg(it->sources.size()).arg(systemLabel(system), it->sources.join(QStringLiteral(", "))));
+    if (!it->target)
+        return std::unexpected(QStringLiteral("IMC/UDP: %1 named no address on the host it is heard from (%2)")
+                                   .arg(systemLabel(system), QStringList(it->senders.keys()).join(QStringLiteral(", "))));
     auto addressed = m_schemas->forSystem(system, message);
     if (!addressed)
         return std::unexpected(addressed.error());
@@ -284,7 +472,7 @@ std::expected<void, QString> ImcUdpTransport::publish(quint16 system, const msg:
     addressed->header.srcEnt = 0xFF;
     addressed->header.dst = system;
     addressed->header.timestamp = now();
-    return send(*addressed, *it);
+    return send(*addressed, *it->target);
 }
 
 } // namespace neptus::transport

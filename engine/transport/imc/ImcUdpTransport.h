@@ -37,6 +37,14 @@ struct ImcUdpConfig
     int heartbeatMs = 1000;
     int announceEvery = 5;               // heartbeats between two Announces
     const Clock *clock = &Clock::system(); // stamps what it sends
+    // What a peer may cost: datagrams a second from one address (the excess is
+    // dropped before decoding and reported), systems it keeps addresses of,
+    // how long an address it no longer hears from is kept (and heartbeated),
+    // and how long two senders of one system id must be apart to be one.
+    int maxDatagramsPerSecond = 5000;
+    int maxSystems = 256;
+    int forgetAfterMs = 60000;
+    int conflictWindowMs = 10000;
 };
 
 // IMC over UDP, one packet per datagram. The console announces itself (an
@@ -52,6 +60,16 @@ struct ImcUdpConfig
 // On a field interface (bindAddress not loopback) discovery also sends to the
 // interface's broadcast address and IMC's multicast group 224.0.75.69, and
 // listens there; on loopback it stays on 127.0.0.1.
+//
+// Against impostors and floods: commands go to a host a system's messages
+// come from, at the address its Announce names on that host (else where its
+// messages come from); an Announce that names addresses on other hosts
+// redirects nothing. Two hosts sending as one system id are a conflict:
+// commands to it are held until the operator picks one (pick()) or one
+// falls silent for conflictWindowMs. Hosts not heard from for forgetAfterMs
+// are forgotten (no more heartbeats to them), at most maxSystems systems are
+// kept, and each host may deliver at most maxDatagramsPerSecond (0: no limit,
+// for replaying logs); the excess is dropped before it is decoded.
 class ImcUdpTransport : public QObject, public OutputSink
 {
     Q_OBJECT
@@ -64,8 +82,12 @@ public:
     std::expected<void, QString> start();
     quint16 port() const { return m_socket.localPort(); }
     quint16 discoveryPort() const { return m_discovery.localPort(); }
-    QList<quint16> knownSystems() const { return m_endpoints.keys(); }
+    // Systems with an address commands can go to.
+    QList<quint16> knownSystems() const;
     int decodeErrors() const { return m_decodeErrors; }
+    int maxDatagramsPerSecond() const { return m_config.maxDatagramsPerSecond; }
+    // Datagrams dropped unread over their host's budget, since the start.
+    quint64 droppedDatagrams() const { return m_dropped; }
     const msg::SchemaSet &schemas() const { return *m_schemas; }
 
     // One datagram as it arrived from `from`:`fromPort` (the sockets call
@@ -84,6 +106,18 @@ public:
     // The IMC version a system announces ("5.4.31"), empty until known.
     QString announcedVersion(quint16 system) const { return m_versions.value(system); }
 
+    // The hosts a system was heard from within the conflict window
+    // ("127.0.0.2"), and where commands to it go ("127.0.0.2:6002"; "" while
+    // held or unknown).
+    QStringList sources(quint16 system) const;
+    QString destination(quint16 system) const;
+    // The operator trusts this host as `system`: commands go there while it
+    // is remembered; "" goes back to automatic. False if `system` was not
+    // heard from that host.
+    bool pick(quint16 system, const QString &host);
+    // Forgets systems not heard from for forgetAfterMs (the heartbeat does it too).
+    void forgetSilent();
+
 signals:
     // A decoded message and the size of its packet.
     void received(const neptus::msg::Message &message, qsizetype bytes);
@@ -94,16 +128,59 @@ signals:
     // A system's Announce names the IMC version it was built with (its
     // "imc+info://…/version/X" service), the first time and when it changes.
     void versionAnnounced(quint16 system, const QString &version);
+    // Who sends as `system` changed: its recent senders, where commands go
+    // ("" while two claim it and none was picked).
+    void sourcesChanged(quint16 system, const QStringList &senders, const QString &destination);
+    // An Announce for `system` from host `from` named no imc+udp address on
+    // that host: no command will go to the addresses it names.
+    void announceIgnored(quint16 system, const QString &from, const QString &services);
+    // Datagrams from `host` dropped over its rate in the last second; 0 once
+    // a second goes by without any dropped.
+    void overloaded(const QString &host, int dropped);
 
 private:
     struct Endpoint
     {
         QHostAddress address;
         quint16 port = 0;
+        QString name() const;
+    };
+    // A host that sends as some system: where its messages come from, the
+    // address it announces on that host, and when it was last heard.
+    struct Sender
+    {
+        std::optional<Endpoint> data;
+        std::optional<Endpoint> announced;
+        qint64 lastMs = 0;
+    };
+    // A system: the hosts it was heard from, and where commands go.
+    struct Peer
+    {
+        QHash<QString, Sender> senders; // by host address
+        QString picked;                 // the host the operator trusts
+        QStringList sources;            // as last reported by sourcesChanged
+        QString destination;            // as last reported ("" while held)
+        std::optional<Endpoint> target; // where commands and heartbeats go
+    };
+    // Datagrams from one host in the current second.
+    struct Budget
+    {
+        qint64 secondStartMs = 0;
+        int count = 0;
+        int dropped = 0;
+        bool overloaded = false; // the last second dropped some
     };
 
+    qint64 nowMs() const { return m_config.clock->now().toMSecsSinceEpoch(); }
+    // The sender record of `host` for `system`; null when maxSystems are kept already.
+    Sender *senderFor(quint16 system, const QString &host);
+    // Works out where commands to `system` go, and reports a change.
+    void resolve(quint16 system);
+    bool withinBudget(const QString &host);
+    void rollBudget(const QString &host, Budget &budget, qint64 now);
+
     void readDatagrams(QUdpSocket &socket);
-    void learnFromAnnounce(const msg::Message &announce, const QHostAddress &from);
+    void learnFromAnnounce(const msg::Message &announce, const QHostAddress &from, const QString &host);
     std::expected<void, QString> send(const msg::Message &message, const Endpoint &to);
     double now() const { return m_config.clock->now().toMSecsSinceEpoch() / 1000.0; }
     msg::Message announcement() const;
@@ -116,10 +193,12 @@ private:
     QUdpSocket m_socket;
     QUdpSocket m_discovery;
     QTimer m_timer;
-    QHash<quint16, Endpoint> m_endpoints; // known vehicles
+    QHash<quint16, Peer> m_peers; // known systems
+    QHash<QString, Budget> m_budgets; // by sending host
     QHash<quint16, QString> m_versions;
     int m_ticks = 0;
     int m_decodeErrors = 0;
+    quint64 m_dropped = 0;
     QByteArray m_buffer;
 };
 

@@ -5,9 +5,12 @@
 #include "messages/Schema.h"
 #include "session/Console.h"
 
+#include "FakeVehicle.h"
 #include "Schemas.h"
 
+#include <QSignalSpy>
 #include <QTemporaryDir>
+#include <QTest>
 
 #include <gtest/gtest.h>
 
@@ -21,6 +24,42 @@ transport::ImcUdpConfig unbound()
     config.port = 0;
     config.discovery = false;
     return config;
+}
+
+// A console on loopback, on an ephemeral port, that heartbeats only when told.
+transport::ImcUdpConfig loopback()
+{
+    transport::ImcUdpConfig config;
+    config.port = 0;
+    config.discoveryPort = 0;
+    config.heartbeatMs = 60'000;
+    return config;
+}
+
+QByteArray packet(const char *abbrev, quint16 src)
+{
+    msg::Message m(test::shippedSchema()->byAbbrev(QString::fromLatin1(abbrev)));
+    m.header.src = src;
+    return *msg::Codec(test::shippedSchema()).encode(m);
+}
+
+QByteArray announce(quint16 src, const char *name, const QString &services)
+{
+    msg::Message m(test::shippedSchema()->byAbbrev(u"Announce"));
+    m.header.src = src;
+    m.setBytes(m.def()->indexOf(u"sys_name"), name);
+    m.setBytes(m.def()->indexOf(u"services"), services.toUtf8());
+    return *msg::Codec(test::shippedSchema()).encode(m);
+}
+
+msg::Message abortCommand()
+{
+    return msg::Message(test::shippedSchema()->byAbbrev(u"Abort"));
+}
+
+alarms::Level levelOf(alarms::AlarmGraph &graph, const QString &path)
+{
+    return graph.ownLevel(graph.ensure(path));
 }
 
 } // namespace
@@ -81,4 +120,122 @@ TEST(Hostile, AnOversizedFileIsRefusedWithItsTrueSize)
     ASSERT_FALSE(schema);
     EXPECT_TRUE(schema.error().toString().contains(QStringLiteral("100 MiB"))) << schema.error().toString().toStdString();
     EXPECT_TRUE(schema.error().toString().contains(QStringLiteral("64 MiB"))) << "and the limit";
+}
+
+// An Announce names where a vehicle listens. A forged one (sent as the
+// vehicle, from its own address) that named another host took the
+// vehicle's commands there: now only an address on the sending host counts.
+TEST(Hostile, AForgedAnnounceCannotRedirectCommands)
+{
+    test::FakeVehicle vehicle(0x23);
+    transport::ImcUdpTransport console(test::shippedSchema(), loopback());
+    ASSERT_TRUE(console.start());
+    vehicle.announceTo(console.port());
+    ASSERT_TRUE(QTest::qWaitFor([&] { return !console.knownSystems().isEmpty(); }, 2000));
+    const QString where = QStringLiteral("127.0.0.1:%1").arg(vehicle.port());
+    EXPECT_EQ(console.destination(0x23), where);
+
+    QSignalSpy ignored(&console, &transport::ImcUdpTransport::announceIgnored);
+    console.receive(announce(0x23, "lauv-sim-1", QStringLiteral("imc+udp://127.0.0.66:6002/")),
+                    QHostAddress::LocalHost, 30100);
+    ASSERT_EQ(ignored.count(), 1);
+    EXPECT_EQ(ignored[0][1].toString(), QStringLiteral("127.0.0.1"));
+    EXPECT_EQ(console.destination(0x23), where) << "commands still go to the vehicle";
+    ASSERT_TRUE(console.publish(0x23, abortCommand()));
+    EXPECT_TRUE(QTest::qWaitFor([&] { return !vehicle.commands.empty(); }, 2000));
+}
+
+// A second host that sends (and announces) as a vehicle's id took its
+// commands. Now the console holds them and says so, until the operator
+// chooses a host or the impostor falls silent.
+TEST(Hostile, AnImpostorHoldsCommandsUntilOneHostIsChosen)
+{
+    ManualClock clock(QDateTime::currentDateTimeUtc());
+    session::Console session(test::shippedSchema(), &clock);
+    ASSERT_TRUE(session.startImc(loopback()));
+    transport::ImcUdpTransport &console = *session.imc();
+    test::FakeVehicle vehicle(0x23);
+    test::FakeVehicle impostor(0x23, QHostAddress(QStringLiteral("127.0.0.2")));
+    vehicle.announceTo(console.port());
+    ASSERT_TRUE(QTest::qWaitFor([&] { return vehicle.streaming(); }, 2000));
+    impostor.announceTo(console.port());
+    ASSERT_TRUE(QTest::qWaitFor([&] { return console.sources(0x23).size() == 2; }, 2000));
+
+    EXPECT_EQ(console.sources(0x23), (QStringList{QStringLiteral("127.0.0.1"), QStringLiteral("127.0.0.2")}));
+    EXPECT_EQ(console.destination(0x23), QString());
+    const auto held = session.send(0x23, abortCommand());
+    ASSERT_FALSE(held);
+    EXPECT_TRUE(held.error().contains(QStringLiteral("held"))) << held.error().toStdString();
+    EXPECT_EQ(levelOf(session.alarmGraph(), QStringLiteral("systems/lauv-sim-1/sources")), alarms::Warning);
+    EXPECT_FALSE(impostor.streaming()) << "no heartbeat went to the impostor";
+
+    // The operator trusts 127.0.0.1.
+    ASSERT_TRUE(session.chooseSource(0x23, QStringLiteral("127.0.0.1")));
+    ASSERT_TRUE(session.send(0x23, abortCommand()));
+    ASSERT_TRUE(QTest::qWaitFor([&] { return !vehicle.commands.empty(); }, 2000));
+    EXPECT_TRUE(impostor.commands.empty());
+    EXPECT_FALSE(session.chooseSource(0x23, QStringLiteral("127.0.0.9"))) << "a host never heard";
+
+    // Back to automatic: held again, until the impostor is silent for the
+    // conflict window while the vehicle goes on.
+    ASSERT_TRUE(session.chooseSource(0x23, QString()));
+    EXPECT_FALSE(session.send(0x23, abortCommand()));
+    clock.advance(11'000);
+    vehicle.send(msg::Message(test::shippedSchema()->byAbbrev(u"Heartbeat")), console.port());
+    ASSERT_TRUE(QTest::qWaitFor([&] { return console.sources(0x23).size() == 1; }, 2000));
+    EXPECT_EQ(console.destination(0x23), QStringLiteral("127.0.0.1:%1").arg(vehicle.port()));
+    session.tick();
+    EXPECT_EQ(levelOf(session.alarmGraph(), QStringLiteral("systems/lauv-sim-1/sources")), alarms::Normal);
+}
+
+// A flood from one host was decoded to the last datagram, and starved
+// everything else. Now each host gets its budget a second; the rest is
+// dropped unread and the operator sees which host overloads the link.
+TEST(Hostile, AFloodingHostIsCutToItsBudgetAndNamed)
+{
+    ManualClock clock(QDateTime::currentDateTimeUtc());
+    session::Console session(test::shippedSchema(), &clock);
+    transport::ImcUdpConfig config = unbound();
+    config.maxDatagramsPerSecond = 1000;
+    config.clock = &clock;
+    auto *imc = session.attachImc(std::make_unique<transport::ImcUdpTransport>(session.schemaSet(), config));
+    const QByteArray flood = packet("EstimatedState", 0x66);
+    const QHostAddress flooder(QStringLiteral("127.0.0.3"));
+    for (int i = 0; i < 50'000; ++i)
+        imc->receive(flood, flooder, 6002);
+    // Another vehicle, from another host, in the same second.
+    for (int i = 0; i < 10; ++i)
+        imc->receive(packet("EstimatedState", 0x23), QHostAddress::LocalHost, 6002);
+    EXPECT_EQ(session.linkStatistics().system(0x66).messages, 1000u);
+    EXPECT_EQ(session.linkStatistics().system(0x23).messages, 10u);
+
+    clock.advance(1000);
+    imc->forgetSilent(); // what the heartbeat does each second
+    const QString node = QStringLiteral("links/127.0.0.3");
+    EXPECT_EQ(levelOf(session.alarmGraph(), node), alarms::Warning);
+    const QString text = session.alarmGraph().message(session.alarmGraph().ensure(node));
+    EXPECT_TRUE(text.contains(QStringLiteral("49000 dropped"))) << text.toStdString();
+    clock.advance(1000);
+    imc->forgetSilent();
+    EXPECT_EQ(levelOf(session.alarmGraph(), node), alarms::Normal) << "quiet for a second";
+}
+
+// Every system id ever heard was kept and heartbeated forever: 65,000
+// forged ids made the console a reflector. Now at most maxSystems are kept,
+// and one not heard for forgetAfterMs is forgotten.
+TEST(Hostile, ForgedSystemIdsAreCappedAndForgotten)
+{
+    ManualClock clock(QDateTime::currentDateTimeUtc());
+    transport::ImcUdpConfig config = unbound();
+    config.clock = &clock;
+    config.maxDatagramsPerSecond = 0;
+    transport::ImcUdpTransport imc(test::shippedSchema(), config);
+    for (quint16 id = 1; id <= 5000; ++id)
+        imc.receive(packet("Heartbeat", id), QHostAddress::LocalHost, 6002);
+    EXPECT_EQ(imc.knownSystems().size(), config.maxSystems);
+    clock.advance(config.forgetAfterMs + 1);
+    imc.forgetSilent();
+    EXPECT_TRUE(imc.knownSystems().isEmpty());
+    imc.receive(packet("Heartbeat", 0x4000), QHostAddress::LocalHost, 6002);
+    EXPECT_EQ(imc.knownSystems(), QList<quint16>{0x4000}) << "room again";
 }

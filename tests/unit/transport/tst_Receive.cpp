@@ -45,6 +45,7 @@ transport::ImcUdpConfig unboundConfig(quint16 systemId = 0x4001)
     config.port = 0;
     config.discovery = false;
     config.systemId = systemId;
+    config.maxDatagramsPerSecond = 0; // a log replay, not a network
     return config;
 }
 
