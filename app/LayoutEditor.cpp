@@ -204,11 +204,12 @@ QString LayoutEditor::idOf(QObject *object)
 
 QObject *LayoutEditor::itemWithId(QObject *console, const QString &id)
 {
+    // By the layout file's ids (a hash), not by asking each child its id
+    // (a scan of the ids for every child): big layouts open in linear time.
     const auto *root = qobject_cast<QQuickItem *>(console);
-    if (!root || id.isEmpty())
+    const QQmlContext *context = root ? qmlContext(root) : nullptr;
+    if (!context || id.isEmpty())
         return nullptr;
-    for (QQuickItem *child : root->childItems())
-        if (idOf(child) == id)
-            return child;
-    return nullptr;
+    auto *item = qobject_cast<QQuickItem *>(context->objectForName(id));
+    return item && item->parentItem() == root ? item : nullptr;
 }

@@ -130,7 +130,8 @@ Item {
         }
 
         Repeater {
-            model: designer.editor.componentIds
+            // Frames only while editing: a console in use pays nothing for them.
+            model: designer.editing ? designer.editor.componentIds : []
             delegate: Item {
                 id: frame
                 required property string modelData
