@@ -4,6 +4,22 @@
 
 namespace neptus::alarms {
 
+namespace {
+
+// Heard for less than this and never named: short-lived (see the header).
+constexpr qint64 establishMs = 5000;
+// A short-lived system silent this long is forgotten.
+constexpr qint64 forgetShortLivedMs = 10 * 60 * 1000;
+// Systems a summary names before "and N more".
+constexpr int namedInSummary = 5;
+
+QString systemLabel(quint16 id)
+{
+    return QStringLiteral("0x%1").arg(id, 4, 16, QLatin1Char('0'));
+}
+
+} // namespace
+
 HealthMonitor::HealthMonitor(AlarmGraph &graph, const tree::VariableTree &tree, const Clock *clock)
     : m_graph(graph)
     , m_tree(tree)
@@ -52,6 +68,8 @@ void HealthMonitor::observe(const msg::Message &message)
         const double gap = static_cast<double>(now - system.lastMs);
         system.intervalMs = system.intervalMs < 0 ? gap : 0.9 * system.intervalMs + 0.1 * gap;
     }
+    if (system.firstMs == 0)
+        system.firstMs = now;
     system.lastMs = now;
     if (system.lost != Normal) {
         system.lost = Normal;
@@ -88,14 +106,45 @@ QString HealthMonitor::silenceText(double ms)
     return QStringLiteral("%1 h %2 min").arg(seconds / 3600).arg((seconds % 3600) / 60, 2, 10, QLatin1Char('0'));
 }
 
+bool HealthMonitor::establishedLocked(quint16 id, const System &system) const
+{
+    return system.lastMs - system.firstMs >= establishMs || system.name != systemLabel(id);
+}
+
+void HealthMonitor::updateShortLivedLocked(const QList<quint16> &silent)
+{
+    QString text;
+    if (!silent.isEmpty()) {
+        QStringList names;
+        for (qsizetype i = 0; i < std::min<qsizetype>(silent.size(), namedInSummary); ++i)
+            names << systemLabel(silent[i]);
+        if (silent.size() > namedInSummary)
+            names << QStringLiteral("%1 more").arg(silent.size() - namedInSummary);
+        text = QStringLiteral("%1 unnamed system(s) heard for under %2 s went silent: %3 (forged ids, or a vehicle "
+                              "lost at once)")
+                   .arg(silent.size())
+                   .arg(establishMs / 1000)
+                   .arg(names.join(QStringLiteral(", ")));
+    }
+    if (text == m_shortLivedText)
+        return;
+    m_shortLivedText = text;
+    if (m_shortLived == AlarmGraph::noNode)
+        m_shortLived = m_graph.ensure(QStringLiteral("links/short-lived systems"));
+    m_graph.raise(m_shortLived, text.isEmpty() ? Normal : Warning, text);
+}
+
 void HealthMonitor::check()
 {
     const qint64 now = m_clock->now().toMSecsSinceEpoch();
     QMutexLocker lock(&m_mutex);
-    for (auto it = m_systems.begin(); it != m_systems.end(); ++it) {
+    QList<quint16> shortLived;
+    for (auto it = m_systems.begin(); it != m_systems.end();) {
         System &system = *it;
-        if (system.lastMs == 0)
+        if (system.lastMs == 0) {
+            ++it;
             continue;
+        }
         systemLocked(it.key()); // follows a rename
         for (auto entity = system.entities.begin(); entity != system.entities.end(); ++entity)
             entityLocked(system, it.key(), entity.key());
@@ -107,12 +156,25 @@ void HealthMonitor::check()
             if (system.lost != Normal)
                 m_graph.clear(system.node);
             system.lost = Normal;
+            ++it;
+            continue;
+        }
+        if (!establishedLocked(it.key(), system)) {
+            if (silent > forgetShortLivedMs) {
+                it = m_systems.erase(it);
+                continue;
+            }
+            shortLived.append(it.key());
+            ++it;
             continue;
         }
         // The text follows the silence as it grows (once a second at most).
         system.lost = level;
         m_graph.raise(system.node, level, QStringLiteral("communications lost: nothing heard for ") + silenceText(silent));
+        ++it;
     }
+    std::sort(shortLived.begin(), shortLived.end());
+    updateShortLivedLocked(shortLived);
 }
 
 } // namespace neptus::alarms

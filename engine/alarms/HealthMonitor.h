@@ -17,6 +17,11 @@ namespace neptus::alarms {
 //    timeout (default 2 s) gets Warning "communications lost" on its node,
 //    Error after three times that, with the silence so far in the text
 //    (updated as it grows); both clear when traffic returns.
+//  - a system that was never named (no Announce, no configuration) and was
+//    heard for under 5 s gets no alarm of its own when it falls silent: one
+//    Warning on "links/short-lived systems" counts them all (a burst of
+//    forged ids must not bury the real vehicles' alarms), and they are
+//    forgotten after 10 min of silence;
 //  - entity alarms are renamed in place when the entity's label is learned.
 // Names come from the variable tree (Announce, EntityList, configuration).
 class HealthMonitor
@@ -42,6 +47,7 @@ private:
     {
         AlarmGraph::NodeId node = AlarmGraph::noNode;
         QString name;
+        qint64 firstMs = 0;
         qint64 lastMs = 0;
         double intervalMs = -1;   // running average between messages; -1 until two were heard
         Level lost = Normal;
@@ -49,6 +55,8 @@ private:
     };
 
     System &systemLocked(quint16 id);
+    bool establishedLocked(quint16 id, const System &system) const;
+    void updateShortLivedLocked(const QList<quint16> &silent);
     Entity &entityLocked(System &system, quint16 id, quint8 entity);
     // "12 s", "3 min 05 s", "2 h 10 min": how long a system has been silent.
     static QString silenceText(double ms);
@@ -59,6 +67,8 @@ private:
     QMutex m_mutex;
     double m_timeoutMs = 2000;
     QHash<quint16, System> m_systems;
+    AlarmGraph::NodeId m_shortLived = AlarmGraph::noNode;
+    QString m_shortLivedText;
 };
 
 } // namespace neptus::alarms

@@ -239,3 +239,45 @@ TEST(Hostile, ForgedSystemIdsAreCappedAndForgotten)
     imc.receive(packet("Heartbeat", 0x4000), QHostAddress::LocalHost, 6002);
     EXPECT_EQ(imc.knownSystems(), QList<quint16>{0x4000}) << "room again";
 }
+
+// Every forged id left a "communications lost" Error of its own: 1,000 of
+// them buried the real vehicle's alarm under 1,000 rows. Now systems never
+// named and heard for under 5 s share one Warning, and are forgotten.
+TEST(Hostile, ForgedIdsThatFallSilentShareOneAlarm)
+{
+    ManualClock clock(QDateTime::currentDateTimeUtc());
+    session::Console session(test::shippedSchema(), &clock);
+    transport::ImcUdpConfig config = unbound();
+    config.clock = &clock;
+    config.maxDatagramsPerSecond = 0;
+    auto *imc = session.attachImc(std::make_unique<transport::ImcUdpTransport>(session.schemaSet(), config));
+    // The real vehicle: named, talking at 1 Hz for 10 s.
+    imc->receive(announce(0x1f, "lauv-real", QStringLiteral("imc+udp://127.0.0.1:6002/")), QHostAddress::LocalHost, 6002);
+    for (int i = 0; i < 10; ++i) {
+        imc->receive(packet("Heartbeat", 0x1f), QHostAddress::LocalHost, 6002);
+        if (i == 5) { // a burst of forged ids, one datagram each
+            for (quint16 id = 0x3000; id < 0x3000 + 1000; ++id)
+                imc->receive(packet("EstimatedState", id), QHostAddress(QStringLiteral("127.0.0.5")), 6002);
+        }
+        clock.advance(1000);
+        session.check();
+    }
+    clock.advance(20'000); // all silent now
+    session.check();
+
+    const auto alarms = session.alarmGraph().activeAlarms();
+    EXPECT_EQ(alarms.size(), 2u) << "the real vehicle's, and one for the forged ids";
+    const alarms::AlarmGraph &graph = session.alarmGraph();
+    const auto real = graph.find(QStringLiteral("systems/lauv-real"));
+    EXPECT_EQ(graph.ownLevel(real), alarms::Error);
+    const auto summary = graph.find(QStringLiteral("links/short-lived systems"));
+    ASSERT_NE(summary, alarms::AlarmGraph::noNode);
+    EXPECT_EQ(graph.ownLevel(summary), alarms::Warning);
+    EXPECT_TRUE(graph.message(summary).startsWith(QStringLiteral("1000 unnamed system(s)"))) << graph.message(summary).toStdString();
+    EXPECT_TRUE(graph.message(summary).contains(QStringLiteral("0x3000, 0x3001"))) << graph.message(summary).toStdString();
+
+    clock.advance(10 * 60 * 1000); // forgotten after 10 min
+    session.check();
+    EXPECT_EQ(graph.ownLevel(summary), alarms::Normal);
+    EXPECT_EQ(graph.ownLevel(real), alarms::Error) << "the real vehicle is not forgotten";
+}
