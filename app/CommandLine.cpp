@@ -1,6 +1,8 @@
 #include "core/DataFiles.h"
 #include "CommandLine.h"
 
+#include <QNetworkInterface>
+
 #include <QCommandLineParser>
 #include <QDir>
 #include <QFileInfo>
@@ -39,6 +41,11 @@ std::expected<CommandLine, QString> CommandLine::parse(const QStringList &argume
                        "all load without errors or warnings."));
     const QCommandLineOption imcPort(QStringLiteral("imc-port"),
         QStringLiteral("Local UDP port for IMC, on 127.0.0.1 (default 6001; 0 turns IMC off)."), QStringLiteral("port"));
+    const QCommandLineOption imcBind(QStringLiteral("imc-bind"),
+        QStringLiteral("Address or network interface IMC listens and sends on (default 127.0.0.1, or the "
+                       "settings' imc/bind). On a field network discovery also uses its broadcast address "
+                       "and IMC's multicast group."),
+        QStringLiteral("address|interface"));
     const QCommandLineOption imcPeer(QStringLiteral("imc-peer"),
         QStringLiteral("An IMC vehicle to talk to, as host:port (repeat for several)."), QStringLiteral("host:port"));
     const QCommandLineOption ddsDomain(QStringLiteral("dds-domain"),
@@ -60,7 +67,7 @@ std::expected<CommandLine, QString> CommandLine::parse(const QStringList &argume
     const QCommandLineOption quitAfter(QStringLiteral("quit-after"),
         QStringLiteral("Exit after this many milliseconds."), QStringLiteral("ms"));
     parser.addOptions({console, screenshot, screenshotDelay, components, edit, select, system, palette, size, selfTest,
-                       imcPort, imcPeer, ddsDomain, ddsConfig, defs, defsFor, imcDiscovery, dumpTree, quitAfter});
+                       imcPort, imcBind, imcPeer, ddsDomain, ddsConfig, defs, defsFor, imcDiscovery, dumpTree, quitAfter});
     // "--defs-for SYSTEM FILE" (two words, as the documentation writes it) is
     // "--defs-for SYSTEM=FILE" to the parser, which takes one value per option.
     QStringList words = arguments;
@@ -166,6 +173,12 @@ std::expected<CommandLine, QString> CommandLine::parse(const QStringList &argume
             return std::unexpected(QStringLiteral("--quit-after must be a number of milliseconds, not '%1'")
                                        .arg(parser.value(quitAfter)));
     }
+    if (parser.isSet(imcBind)) {
+        auto address = localAddress(parser.value(imcBind));
+        if (!address)
+            return std::unexpected(QStringLiteral("--imc-bind: %1").arg(address.error()));
+        result.imcBind = *address;
+    }
     static const QRegularExpression peer(QStringLiteral("^[^:\\s]+:(\\d{1,5})$"));
     for (const QString &value : parser.values(imcPeer)) {
         const auto match = peer.match(value);
@@ -174,4 +187,21 @@ std::expected<CommandLine, QString> CommandLine::parse(const QStringList &argume
         result.imcPeers.append(value);
     }
     return result;
+}
+
+std::expected<QString, QString> CommandLine::localAddress(const QString &addressOrInterface)
+{
+    QStringList there;
+    const QHostAddress asAddress(addressOrInterface);
+    for (const QNetworkInterface &interface : QNetworkInterface::allInterfaces()) {
+        for (const QNetworkAddressEntry &entry : interface.addressEntries()) {
+            if (entry.ip().protocol() != QAbstractSocket::IPv4Protocol)
+                continue;
+            if (entry.ip() == asAddress || interface.name() == addressOrInterface)
+                return entry.ip().toString();
+            there << QStringLiteral("%1 (%2)").arg(entry.ip().toString(), interface.name());
+        }
+    }
+    return std::unexpected(QStringLiteral("'%1' is no IPv4 address or interface of this machine; there are: %2")
+                               .arg(addressOrInterface, there.join(QStringLiteral(", "))));
 }

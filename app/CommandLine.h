@@ -22,7 +22,8 @@ struct CommandLine
     QSize windowSize{1280, 800};
     QStringList definitionFiles;        // --defs: instead of msgdefs/
     QList<std::pair<QString, QString>> definitionsFor; // --defs-for SYSTEM=FILE
-    quint16 imcPort = 6001;             // IMC over UDP, on 127.0.0.1
+    quint16 imcPort = 6001;             // IMC over UDP
+    QString imcBind;                    // its address ("10.0.0.5"); empty: settings, else 127.0.0.1
     QStringList imcPeers;               // static IMC destinations, "host:port"
     bool imcDiscovery = true;           // announce to and listen on 30100-30104
     QString dumpTreeFile;               // write the variable tree there on exit
@@ -33,4 +34,7 @@ struct CommandLine
 
     // Parses arguments (argv[0] included). An error is a message for the user.
     static std::expected<CommandLine, QString> parse(const QStringList &arguments);
+    // An IPv4 address of this machine, given as itself or as the name of the
+    // interface that has it ("eth0"); an error says what there is instead.
+    static std::expected<QString, QString> localAddress(const QString &addressOrInterface);
 };

@@ -13,6 +13,7 @@
 #include <QQmlApplicationEngine>
 #include <QQuickStyle>
 #include <QQuickWindow>
+#include <QSettings>
 #include <QTimer>
 #include <QUrl>
 #include <QtQml/qqmlextensionplugin.h>
@@ -74,10 +75,22 @@ int main(int argc, char *argv[])
         }
     }
 
-    // IMC over UDP, on loopback unless a vehicle elsewhere is named.
+    // IMC over UDP, on loopback unless told another address (--imc-bind, or
+    // imc/bind in the settings file).
     if (commandLine->imcPort != 0) {
         neptus::transport::ImcUdpConfig config;
         config.port = commandLine->imcPort;
+        QString bind = commandLine->imcBind;
+        if (const QString saved = QSettings().value(QStringLiteral("imc/bind")).toString(); bind.isEmpty() && !saved.isEmpty()) {
+            auto address = CommandLine::localAddress(saved);
+            if (address)
+                bind = *address;
+            else
+                std::fprintf(stderr, "neptus: settings' imc/bind (%s): %s; IMC stays on 127.0.0.1\n",
+                             qPrintable(QSettings().fileName()), qPrintable(address.error()));
+        }
+        if (!bind.isEmpty())
+            config.bindAddress = QHostAddress(bind);
         config.discovery = commandLine->imcDiscovery;
         for (const QString &peer : commandLine->imcPeers) {
             const qsizetype colon = peer.lastIndexOf(u':');
@@ -85,6 +98,8 @@ int main(int argc, char *argv[])
         }
         if (auto started = session.console().startImc(config); !started)
             std::fprintf(stderr, "neptus: %s; carrying on without IMC\n", qPrintable(started.error()));
+        else
+            std::printf("neptus: IMC/UDP on %s:%u\n", qPrintable(config.bindAddress.toString()), session.console().imc()->port());
     }
 
     // Cyclone DDS on the loopback configuration unless told otherwise.

@@ -17,6 +17,7 @@
 #include <QNetworkDatagram>
 #include <QRegularExpression>
 #include <QSet>
+#include <QNetworkInterface>
 #include <QTimer>
 #include <QUdpSocket>
 
@@ -56,7 +57,7 @@ int main(int argc, char *argv[])
     const QCommandLineOption name(QStringLiteral("name"), QStringLiteral("System name (default lauv-sim-1)."), QStringLiteral("name"), QStringLiteral("lauv-sim-1"));
     const QCommandLineOption kind(QStringLiteral("kind"), QStringLiteral("auv, asv or uav (default auv)."), QStringLiteral("kind"), QStringLiteral("auv"));
     const QCommandLineOption port(QStringLiteral("port"), QStringLiteral("UDP port (default 6002)."), QStringLiteral("port"), QStringLiteral("6002"));
-    const QCommandLineOption host(QStringLiteral("host"), QStringLiteral("Loopback address to send and listen on (default 127.0.0.1); another, such as 127.0.0.2, plays a second host (an impostor with the same --id)."), QStringLiteral("address"), QStringLiteral("127.0.0.1"));
+    const QCommandLineOption host(QStringLiteral("host"), QStringLiteral("Address to send and listen on (default 127.0.0.1): another loopback one, such as 127.0.0.2, plays a second host (an impostor with the same --id); one of this machine's interfaces puts the vehicle on that network."), QStringLiteral("address"), QStringLiteral("127.0.0.1"));
     const QCommandLineOption console(QStringLiteral("console"), QStringLiteral("A console to announce to, host:port (repeatable)."), QStringLiteral("host:port"));
     const QCommandLineOption announcePort(QStringLiteral("announce-port"), QStringLiteral("Also announce to this port on 127.0.0.1 (IMC discovery uses 30100)."), QStringLiteral("port"));
     const QCommandLineOption phase(QStringLiteral("phase"), QStringLiteral("Start angle on the track, degrees."), QStringLiteral("degrees"), QStringLiteral("0"));
@@ -99,8 +100,9 @@ int main(int argc, char *argv[])
     if (!ok || portValue == 0 || portValue > 65535)
         return usage(QStringLiteral("--port must be a port number, not '%1'").arg(parser.value(port)));
     const QHostAddress address(parser.value(host));
-    if (!address.isLoopback() || address.protocol() != QAbstractSocket::IPv4Protocol)
-        return usage(QStringLiteral("--host must be a 127.x.x.x address (the simulator stays on loopback), not '%1'")
+    if (address.protocol() != QAbstractSocket::IPv4Protocol
+        || (!address.isLoopback() && !QNetworkInterface::allAddresses().contains(address)))
+        return usage(QStringLiteral("--host must be a 127.x.x.x address or an IPv4 address of this machine, not '%1'")
                          .arg(parser.value(host)));
     config.phase = parser.value(phase).toDouble() * 3.14159265358979 / 180;
     config.services = QStringLiteral("imc+udp://%1:%2/").arg(address.toString()).arg(portValue);

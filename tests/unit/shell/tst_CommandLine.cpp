@@ -120,3 +120,19 @@ TEST(CommandLine, DefinitionsPerSystemInBothSpellings)
     EXPECT_FALSE(parse({QStringLiteral("--imc-discovery"), QStringLiteral("maybe")}));
     EXPECT_FALSE(parse({QStringLiteral("--quit-after"), QStringLiteral("-1")}));
 }
+
+TEST(CommandLine, ImcBindTakesAnAddressOrAnInterfaceOfThisMachine)
+{
+    EXPECT_TRUE(parse({})->imcBind.isEmpty()) << "loopback unless told";
+    auto line = parse({QStringLiteral("--imc-bind"), QStringLiteral("lo")});
+    ASSERT_TRUE(line) << line.error().toStdString();
+    EXPECT_EQ(line->imcBind, QStringLiteral("127.0.0.1")) << "an interface by name";
+    line = parse({QStringLiteral("--imc-bind"), QStringLiteral("127.0.0.1")});
+    ASSERT_TRUE(line) << line.error().toStdString();
+    EXPECT_EQ(line->imcBind, QStringLiteral("127.0.0.1"));
+    line = parse({QStringLiteral("--imc-bind"), QStringLiteral("192.0.2.77")});
+    ASSERT_FALSE(line);
+    EXPECT_TRUE(line.error().contains(QStringLiteral("'192.0.2.77' is no IPv4 address or interface of this machine")))
+        << line.error().toStdString();
+    EXPECT_TRUE(line.error().contains(QStringLiteral("127.0.0.1 (lo)"))) << "and says what there is";
+}
