@@ -13,11 +13,6 @@ constexpr qint64 forgetShortLivedMs = 10 * 60 * 1000;
 // Systems a summary names before "and N more".
 constexpr int namedInSummary = 5;
 
-QString systemLabel(quint16 id)
-{
-    return QStringLiteral("0x%1").arg(id, 4, 16, QLatin1Char('0'));
-}
-
 } // namespace
 
 HealthMonitor::HealthMonitor(AlarmGraph &graph, const tree::VariableTree &tree, const Clock *clock)
@@ -108,7 +103,7 @@ QString HealthMonitor::silenceText(double ms)
 
 bool HealthMonitor::establishedLocked(quint16 id, const System &system) const
 {
-    return system.lastMs - system.firstMs >= establishMs || system.name != systemLabel(id);
+    return system.lastMs - system.firstMs >= establishMs || system.name != msg::systemLabel(id);
 }
 
 void HealthMonitor::updateShortLivedLocked(const QList<quint16> &silent)
@@ -117,7 +112,7 @@ void HealthMonitor::updateShortLivedLocked(const QList<quint16> &silent)
     if (!silent.isEmpty()) {
         QStringList names;
         for (qsizetype i = 0; i < std::min<qsizetype>(silent.size(), namedInSummary); ++i)
-            names << systemLabel(silent[i]);
+            names << msg::systemLabel(silent[i]);
         if (silent.size() > namedInSummary)
             names << QStringLiteral("%1 more").arg(silent.size() - namedInSummary);
         text = QStringLiteral("%1 unnamed system(s) heard for under %2 s went silent: %3 (forged ids, or a vehicle "

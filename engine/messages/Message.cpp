@@ -194,4 +194,9 @@ bool operator==(const Message &a, const Message &b)
            && a.m_byteStrings == b.m_byteStrings && a.m_lists == b.m_lists && a.m_opaque == b.m_opaque;
 }
 
+QString systemLabel(quint16 id)
+{
+    return QStringLiteral("0x%1").arg(id, 4, 16, QLatin1Char('0'));
+}
+
 } // namespace neptus::msg

@@ -100,6 +100,9 @@ private:
     QByteArray m_opaque;
 };
 
+// A system id as it is written where the system has no name: "0x001f".
+QString systemLabel(quint16 id);
+
 } // namespace neptus::msg
 
 Q_DECLARE_METATYPE(neptus::msg::Message)

@@ -84,10 +84,9 @@ std::expected<Message, QString> SchemaSet::forSystem(quint16 system, const Messa
     // The same message by name: JSON carries it by names, not ids or offsets.
     auto converted = fromJson(schema, toJson(message));
     if (!converted)
-        return std::unexpected(QStringLiteral("%1 does not fit the definitions of system 0x%2 (%3 %4): %5")
-                                   .arg(message.abbrev())
-                                   .arg(system, 4, 16, QLatin1Char('0'))
-                                   .arg(schema.name(), schema.version(), converted.error()));
+        return std::unexpected(QStringLiteral("%1 does not fit the definitions of system %2 (%3 %4): %5")
+                                   .arg(message.abbrev(), systemLabel(system), schema.name(), schema.version(),
+                                        converted.error()));
     converted->header = message.header;
     return converted;
 }

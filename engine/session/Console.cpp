@@ -9,11 +9,6 @@ constexpr qint64 decodeErrorAlarmMs = 10000;
 // Nor an ignored Announce its sources alarm.
 constexpr qint64 ignoredAnnounceAlarmMs = 30000;
 
-QString systemLabel(quint16 id)
-{
-    return QStringLiteral("0x%1").arg(id, 4, 16, QLatin1Char('0'));
-}
-
 } // namespace
 
 Console::Console(std::shared_ptr<const msg::Schema> schema, const Clock *clock, QObject *parent)
@@ -283,7 +278,7 @@ void Console::updateDefinitionsAlarm(quint16 id, const transport::LinkStatistics
                      .arg(unknown.join(QStringLiteral(", ")));
     QString text;
     if (!notes.isEmpty())
-        text = notes.join(QStringLiteral("; ")) + tr(" (decode it with --defs-for %1 FILE)").arg(systemLabel(id));
+        text = notes.join(QStringLiteral("; ")) + tr(" (decode it with --defs-for %1 FILE)").arg(msg::systemLabel(id));
     if (text == m_definitionsAlarmText.value(id))
         return;
     m_definitionsAlarmText.insert(id, text);

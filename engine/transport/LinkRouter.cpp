@@ -1,5 +1,7 @@
 #include "transport/LinkRouter.h"
 
+#include "messages/Message.h"
+
 #include <QMutexLocker>
 
 namespace neptus::transport {
@@ -35,9 +37,9 @@ std::expected<void, QString> LinkRouter::publish(quint16 system, const msg::Mess
         }
     }
     if (link.isEmpty())
-        return std::unexpected(QStringLiteral("no link to 0x%1: it was never heard").arg(system, 4, 16, QLatin1Char('0')));
+        return std::unexpected(QStringLiteral("no link to %1: it was never heard").arg(msg::systemLabel(system)));
     if (!sink)
-        return std::unexpected(QStringLiteral("no link to 0x%1: %2 is not open").arg(system, 4, 16, QLatin1Char('0')).arg(link));
+        return std::unexpected(QStringLiteral("no link to %1: %2 is not open").arg(msg::systemLabel(system), link));
     return sink->publish(system, message);
 }
 

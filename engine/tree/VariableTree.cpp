@@ -78,11 +78,6 @@ QString pathSafe(QString name)
     return name;
 }
 
-QString defaultSystemName(quint16 id)
-{
-    return QStringLiteral("0x%1").arg(id, 4, 16, QLatin1Char('0'));
-}
-
 quint64 bindingKey(quint16 system, quint8 entity, quint16 id, bool perEntity)
 {
     return (quint64(system) << 32) | (quint64(entity) << 24) | (quint64(id) << 8) | (perEntity ? 1 : 0);
@@ -199,7 +194,7 @@ VariableTree::SystemInfo &VariableTree::systemLocked(quint16 id)
     info->id = id;
     const QString configured = m_configuredNames.value(id);
     info->named = !configured.isEmpty();
-    info->node = addNode(root(), info->named ? configured : defaultSystemName(id), Kind::System, -1, {});
+    info->node = addNode(root(), info->named ? configured : msg::systemLabel(id), Kind::System, -1, {});
     m_systemIndex.insert(id, static_cast<int>(m_systems.size()));
     m_systems.push_back(std::move(info));
     return *m_systems.back();
@@ -574,7 +569,7 @@ QString VariableTree::systemName(quint16 id) const
     if (it != m_systemIndex.cend())
         return m_nodes[static_cast<size_t>(m_systems[static_cast<size_t>(*it)]->node)].name;
     const QString configured = m_configuredNames.value(id);
-    return configured.isEmpty() ? defaultSystemName(id) : configured;
+    return configured.isEmpty() ? msg::systemLabel(id) : configured;
 }
 
 QString VariableTree::entityLabel(quint16 system, quint8 entity) const
@@ -691,8 +686,8 @@ VariableTree::Snapshot VariableTree::snapshot(NodeId id) const
         for (const auto &info : m_systems) {
             if (info->node == id) {
                 s.value = info->id;
-                s.text = info->link.isEmpty() ? defaultSystemName(info->id)
-                                              : defaultSystemName(info->id) + QStringLiteral(" via ") + info->link;
+                s.text = info->link.isEmpty() ? msg::systemLabel(info->id)
+                                              : msg::systemLabel(info->id) + QStringLiteral(" via ") + info->link;
                 s.receivedMs = info->lastReceivedMs;
                 s.source = info->id;
                 s.present = info->lastReceivedMs > 0;

@@ -29,11 +29,6 @@ QString hostName(const QHostAddress &address)
     return isIpv4 ? QHostAddress(ipv4).toString() : address.toString();
 }
 
-QString systemLabel(quint16 id)
-{
-    return QStringLiteral("0x%1").arg(id, 4, 16, QLatin1Char('0'));
-}
-
 // The interface that holds `address`, if any.
 std::optional<std::pair<QNetworkInterface, QNetworkAddressEntry>> interfaceOf(const QHostAddress &address)
 {
@@ -458,13 +453,13 @@ std::expected<void, QString> ImcUdpTransport::publish(quint16 system, const msg:
 {
     const auto it = m_peers.constFind(system);
     if (it == m_peers.cend())
-        return std::unexpected(QStringLiteral("IMC/UDP: %1 was never heard or announced").arg(systemLabel(system)));
+        return std::unexpected(QStringLiteral("IMC/UDP: %1 was never heard or announced").arg(msg::systemLabel(system)));
     if (!it->target && it->sources.size() > 1)
         return std::unexpected(QStringLiteral("IMC/UDP: %1 hosts send as %2 (%3): commands are held until one is chosen")
-                                   .arg(it->sources.size()).arg(systemLabel(system), it->sources.join(QStringLiteral(", "))));
+                                   .arg(it->sources.size()).arg(msg::systemLabel(system), it->sources.join(QStringLiteral(", "))));
     if (!it->target)
         return std::unexpected(QStringLiteral("IMC/UDP: %1 named no address on the host it is heard from (%2)")
-                                   .arg(systemLabel(system), QStringList(it->senders.keys()).join(QStringLiteral(", "))));
+                                   .arg(msg::systemLabel(system), QStringList(it->senders.keys()).join(QStringLiteral(", "))));
     auto addressed = m_schemas->forSystem(system, message);
     if (!addressed)
         return std::unexpected(addressed.error());
