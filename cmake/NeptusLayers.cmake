@@ -25,6 +25,7 @@ set(NEPTUS_LAYERS
   "neptus-msg          -           neptus-messages"
   "neptus-sim          -           neptus-simulation neptus-transport"
   "neptus-model-import -           neptus-model-reader"
+  "neptus-script-host  -           neptus-scripting"
 )
 
 # neptus_layer(LIBRARY <folder-var> <uses-var> <allowed-var>): the table's

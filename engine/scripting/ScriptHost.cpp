@@ -1,66 +1,69 @@
 #include "scripting/ScriptHost.h"
 
+#include "scripting/ScriptProcess.h"
+
+#include <QElapsedTimer>
 #include <QMetaObject>
 #include <QTimer>
 
-#include <chrono>
 #include <map>
 
 namespace neptus::scripting {
 
 namespace {
-qint64 steadyNs()
-{
-    return std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now().time_since_epoch())
-        .count();
-}
+// A host that cannot start is tried again after this long, not every frame.
+constexpr qint64 restartBackoffMs = 5000;
 } // namespace
 
-// Lives on the host's thread: owns the JavaScript engine and decides what runs.
+// Lives on the host's thread: owns the script host process and decides what runs.
 class ScriptWorker : public QObject
 {
 public:
-    ScriptWorker(ScriptHost &host, tree::VariableTree &tree, alarms::AlarmGraph &graph)
+    ScriptWorker(ScriptHost &host, tree::VariableTree &tree, alarms::AlarmGraph &graph, QString helper)
         : m_host(host)
         , m_tree(tree)
         , m_graph(graph)
         , m_consumer(tree.addConsumer())
+        , m_helper(std::move(helper))
     {
     }
 
     void start()
     {
-        m_runner = std::make_unique<ScriptRunner>(m_tree);
-        m_host.m_engine.store(&m_runner->engine());
+        m_process = std::make_unique<ScriptProcess>(m_helper, m_tree);
         m_frame = new QTimer(this);
         m_frame->setInterval(16);
         connect(m_frame, &QTimer::timeout, this, [this] { tick(); });
         m_frame->start();
     }
 
-    void stop()
-    {
-        m_host.m_engine.store(nullptr);
-        m_runner.reset();
-    }
+    void stop() { m_process.reset(); }
 
-    std::expected<void, CompileError> set(const QString &name, const QString &source)
+    void set(const QString &name, const QString &source)
     {
         // Changes so far are for the scripts already here; the new one sees
         // the current values on its first run.
         tick();
         remove(name);
         const auto node = m_graph.ensure(QStringLiteral("scripts/") + name);
-        auto id = m_runner->compile(source);
-        if (!id) {
-            m_graph.raise(node, alarms::Error, QStringLiteral("script does not compile: ") + id.error().toString());
-            return std::unexpected(id.error());
-        }
+        const bool up = ready(); // before adding it: a new host compiles and runs those already here
         Script &script = m_scripts[name];
-        script.id = *id;
+        script.source = source;
         script.node = node;
-        run(script); // its first run also finds what it reads
-        return {};
+        if (!up) {
+            if (!m_startError.isEmpty())
+                m_graph.raise(node, alarms::Error, m_startError);
+            return; // compiled and run when a host starts
+        }
+        if (compile(script))
+            run(script); // its first run also finds what it reads
+    }
+
+    void refuse(const QString &name, const CompileError &error)
+    {
+        remove(name);
+        m_graph.raise(m_graph.ensure(QStringLiteral("scripts/") + name), alarms::Error,
+                      QStringLiteral("script does not compile: ") + error.toString());
     }
 
     void remove(const QString &name)
@@ -68,7 +71,8 @@ public:
         const auto it = m_scripts.find(name);
         if (it == m_scripts.end())
             return;
-        m_runner->remove(it->second.id);
+        if (it->second.id != 0)
+            m_process->remove(it->second.id);
         m_graph.raise(it->second.node, alarms::Unknown);
         m_scripts.erase(it);
     }
@@ -90,37 +94,38 @@ public:
     void tick()
     {
         const tree::VariableTree::Changes changes = m_tree.takeChanges(m_consumer);
-        if (changes.changedNodes.empty() || m_scripts.empty() || !m_runner)
+        if (changes.changedNodes.empty() || m_scripts.empty())
             return;
         QSet<tree::NodeId> touched;
         for (tree::NodeId node : changes.changedNodes) {
             for (tree::NodeId n = node; n != tree::noNode && !touched.contains(n); n = m_tree.parent(n))
                 touched.insert(n);
         }
+        if (!ready())
+            return;
         for (auto &[name, script] : m_scripts) {
-            if (script.reads.intersects(touched))
+            if (!script.stopped && script.reads.intersects(touched))
                 run(script);
         }
     }
 
-    RunResult runOnce(int id)
-    {
-        m_host.m_runStartedNs.store(steadyNs());
-        RunResult result = m_runner->run(id);
-        m_host.m_runStartedNs.store(0);
-        m_runner->engine().setInterrupted(false);
-        return result;
-    }
-
     QVariantMap testRun(const QString &source)
     {
-        auto id = m_runner->compile(source);
+        const auto failed = [](const QString &message) {
+            return QVariantMap{{QStringLiteral("ok"), false}, {QStringLiteral("level"), int(alarms::Error)},
+                               {QStringLiteral("levelName"), alarms::levelName(alarms::Error)},
+                               {QStringLiteral("message"), message}};
+        };
+        if (!ready())
+            return failed(m_startError.isEmpty() ? QStringLiteral("the script host is not running") : m_startError);
+        const auto id = m_process->compile(source);
         if (!id)
-            return {{QStringLiteral("ok"), false}, {QStringLiteral("level"), int(alarms::Error)},
-                    {QStringLiteral("levelName"), alarms::levelName(alarms::Error)},
-                    {QStringLiteral("message"), id.error().toString()}};
-        const RunResult result = runOnce(*id);
-        m_runner->remove(*id);
+            return failed(id.error().toString());
+        const RunResult result = m_process->run(*id);
+        if (m_process->lost())
+            forgetCompiled();
+        else
+            m_process->remove(*id);
         QStringList reads;
         for (tree::NodeId node : result.reads)
             reads.append(m_tree.path(node));
@@ -133,16 +138,80 @@ public:
 private:
     struct Script
     {
-        int id = 0;
+        QString source;
+        int id = 0; // in the running host; 0 when not compiled there
         alarms::AlarmGraph::NodeId node = alarms::AlarmGraph::noNode;
         QSet<tree::NodeId> reads;
         int runs = 0;
+        bool stopped = false; // ended its host: runs again only when set again
     };
+
+    // Starts the host when needed, and compiles and runs the scripts again
+    // in a new one. A script that ends the new host too is stopped, and the
+    // next host tried, until one holds them all.
+    bool ready()
+    {
+        const int limitMs = m_host.m_limitMs.load();
+        const int memoryMb = m_host.m_memoryMb.load();
+        if (m_process->isRunning())
+            return static_cast<bool>(m_process->ensureStarted(limitMs, memoryMb));
+        if (m_startFailedMs.isValid() && m_startFailedMs.elapsed() < restartBackoffMs)
+            return false;
+        for (;;) {
+            const auto started = m_process->ensureStarted(limitMs, memoryMb);
+            if (!started) {
+                m_startError = started.error();
+                m_startFailedMs.start();
+                for (auto &[name, script] : m_scripts)
+                    m_graph.raise(script.node, alarms::Error, m_startError);
+                return false;
+            }
+            m_startFailedMs.invalidate();
+            forgetCompiled();
+            bool held = true;
+            for (auto &[name, script] : m_scripts) {
+                if (!script.stopped && compile(script))
+                    run(script);
+                if (!m_process->isRunning()) {
+                    held = false; // run() stopped the script that ended it
+                    break;
+                }
+            }
+            if (held)
+                return true;
+        }
+    }
+
+    bool compile(Script &script)
+    {
+        auto id = m_process->compile(script.source);
+        if (!id) {
+            m_graph.raise(script.node, alarms::Error, QStringLiteral("script does not compile: ") + id.error().toString());
+            script.stopped = true;
+            return false;
+        }
+        script.id = *id;
+        return true;
+    }
+
+    void forgetCompiled()
+    {
+        for (auto &[name, script] : m_scripts)
+            script.id = 0;
+    }
 
     void run(Script &script)
     {
-        RunResult result = runOnce(script.id);
+        if (script.id == 0)
+            return;
+        RunResult result = m_process->run(script.id);
         ++script.runs;
+        if (m_process->lost()) {
+            // This script ended its host: it stays stopped; the others are
+            // compiled again in the next host.
+            script.stopped = true;
+            forgetCompiled();
+        }
         // A failed run keeps the dependencies it had, so it is retried when they change.
         if (!result.failed || !result.reads.isEmpty())
             script.reads = std::move(result.reads);
@@ -153,27 +222,26 @@ private:
     tree::VariableTree &m_tree;
     alarms::AlarmGraph &m_graph;
     int m_consumer;
-    std::unique_ptr<ScriptRunner> m_runner;
+    QString m_helper;
+    std::unique_ptr<ScriptProcess> m_process;
     QTimer *m_frame = nullptr;
     std::map<QString, Script> m_scripts;
+    QElapsedTimer m_startFailedMs;
+    QString m_startError;
 };
 
-ScriptHost::ScriptHost(tree::VariableTree &tree, alarms::AlarmGraph &graph, QObject *parent)
+ScriptHost::ScriptHost(tree::VariableTree &tree, alarms::AlarmGraph &graph, QObject *parent, QString helper)
     : QObject(parent)
-    , m_tree(tree)
-    , m_worker(new ScriptWorker(*this, tree, graph))
+    , m_worker(new ScriptWorker(*this, tree, graph, helper.isEmpty() ? ScriptProcess::defaultHelper() : helper))
 {
     m_thread.setObjectName(QStringLiteral("neptus-scripts"));
     m_worker->moveToThread(&m_thread);
     m_thread.start();
-    QMetaObject::invokeMethod(m_worker, [this] { m_worker->start(); }, Qt::BlockingQueuedConnection);
-    m_watchdog = std::thread([this] { watch(); });
+    QMetaObject::invokeMethod(m_worker, [this] { m_worker->start(); }, Qt::QueuedConnection);
 }
 
 ScriptHost::~ScriptHost()
 {
-    m_stop.store(true);
-    m_watchdog.join();
     QMetaObject::invokeMethod(m_worker, [this] {
         m_worker->stop();
         delete m_worker;
@@ -182,28 +250,19 @@ ScriptHost::~ScriptHost()
     m_thread.wait();
 }
 
-void ScriptHost::watch()
-{
-    while (!m_stop.load()) {
-        const qint64 started = m_runStartedNs.load();
-        if (started != 0 && steadyNs() - started > qint64(m_limitMs.load()) * 1'000'000) {
-            if (QJSEngine *engine = m_engine.load())
-                engine->setInterrupted(true);
-        }
-        std::this_thread::sleep_for(std::chrono::milliseconds(2));
-    }
-}
-
 std::expected<void, CompileError> ScriptHost::setScript(const QString &name, const QString &source)
 {
-    std::expected<void, CompileError> result;
-    QMetaObject::invokeMethod(m_worker, [&] { result = m_worker->set(name, source); }, Qt::BlockingQueuedConnection);
-    return result;
+    if (const auto error = ScriptRunner::check(source)) {
+        QMetaObject::invokeMethod(m_worker, [this, name, error = *error] { m_worker->refuse(name, error); });
+        return std::unexpected(*error);
+    }
+    QMetaObject::invokeMethod(m_worker, [this, name, source] { m_worker->set(name, source); });
+    return {};
 }
 
 void ScriptHost::removeScript(const QString &name)
 {
-    QMetaObject::invokeMethod(m_worker, [&] { m_worker->remove(name); }, Qt::BlockingQueuedConnection);
+    QMetaObject::invokeMethod(m_worker, [this, name] { m_worker->remove(name); });
 }
 
 void ScriptHost::setFrameInterval(int milliseconds)
@@ -214,6 +273,11 @@ void ScriptHost::setFrameInterval(int milliseconds)
 void ScriptHost::setTimeLimit(int milliseconds)
 {
     m_limitMs.store(milliseconds);
+}
+
+void ScriptHost::setMemoryLimit(int megabytes)
+{
+    m_memoryMb.store(megabytes);
 }
 
 int ScriptHost::runs(const QString &name) const
@@ -248,6 +312,9 @@ QVariantMap ScriptHost::check(const QString &source) const
 
 QVariantMap ScriptHost::testRun(const QString &source)
 {
+    if (const auto error = ScriptRunner::check(source))
+        return {{QStringLiteral("ok"), false}, {QStringLiteral("level"), int(alarms::Error)},
+                {QStringLiteral("levelName"), alarms::levelName(alarms::Error)}, {QStringLiteral("message"), error->toString()}};
     QVariantMap result;
     QMetaObject::invokeMethod(m_worker, [&] { result = m_worker->testRun(source); }, Qt::BlockingQueuedConnection);
     return result;

@@ -10,33 +10,44 @@
 
 #include <atomic>
 #include <expected>
-#include <thread>
 
 namespace neptus::scripting {
 
 class ScriptWorker;
 
-// Runs the console's alarm scripts on a thread of their own. Each script has
-// the alarm node "scripts/<name>", whose level and message its return value
-// sets. A script runs when added and again, at most once per frame, when a
-// variable it read on its last run changes (and not when others do). A
-// watchdog interrupts a run longer than the time limit (default 50 ms); a
-// script that throws or is stopped sets its node to Error with the message,
-// once, and the console carries on.
+// Runs the console's alarm scripts. Each script has the alarm node
+// "scripts/<name>", whose level and message its return value sets. A script
+// runs when added and again, at most once per frame, when a variable it read
+// on its last run changes (and not when others do).
+//
+// The scripts run in a process of their own (neptus-script-host, see
+// ScriptProcess), driven from a thread of their own: the GUI thread never
+// waits on a script, and a script that exhausts memory or crashes the
+// JavaScript engine costs only that process. A run longer than the time
+// limit (default 50 ms) is interrupted; one stuck inside a built-in is
+// stopped by killing the host at twice the limit plus a grace period; a host
+// over the memory cap (default 512 MB) ends itself. The culprit's node goes
+// to Error with why and stays there until the script is set again; the
+// other scripts carry on in a new host. A script that throws sets its node to
+// Error with the message, once.
 class ScriptHost : public QObject
 {
     Q_OBJECT
 
 public:
-    ScriptHost(tree::VariableTree &tree, alarms::AlarmGraph &graph, QObject *parent = nullptr);
+    // `helper`: the script host program, by default beside the running program.
+    ScriptHost(tree::VariableTree &tree, alarms::AlarmGraph &graph, QObject *parent = nullptr, QString helper = {});
     ~ScriptHost() override;
 
-    // Adds or replaces a script. A script that does not compile is refused
-    // (its node shows the error); the previous version, if any, is removed.
+    // Adds or replaces a script, to run on the script thread soon after.
+    // A script that does not compile is refused here (its node shows the
+    // error); the previous version, if any, is removed. Does not wait.
     std::expected<void, CompileError> setScript(const QString &name, const QString &source);
     void removeScript(const QString &name);
     void setTimeLimit(int milliseconds);
     int timeLimit() const { return m_limitMs.load(); }
+    void setMemoryLimit(int megabytes);
+    int memoryLimit() const { return m_memoryMb.load(); }
 
     // How often due scripts run by themselves (default 16 ms, one frame);
     // 0 stops that, and only runPending() runs them (tests).
@@ -44,7 +55,8 @@ public:
 
     // How many times a script has run (for tests and diagnostics).
     int runs(const QString &name) const;
-    // Runs what is due now and returns when done (tests; the host also does this every frame).
+    // Waits until what was set is installed and what is due has run (tests;
+    // the host also does this every frame).
     void runPending();
 
     // setScript()/removeScript() for QML (a console's components): {ok, line, column, message}.
@@ -53,21 +65,16 @@ public:
 
     // For a script editor: {ok, line, column, message}.
     Q_INVOKABLE QVariantMap check(const QString &source) const;
-    // Runs `source` once against the current tree without keeping it:
+    // Runs `source` once against the current tree without keeping it, and
+    // waits for it (at most twice the time limit and a grace period):
     // {ok, level, levelName, message, reads: [paths]}.
     Q_INVOKABLE QVariantMap testRun(const QString &source);
 
 private:
-    void watch();
-
-    tree::VariableTree &m_tree;
     QThread m_thread;
     ScriptWorker *m_worker;
     std::atomic<int> m_limitMs{50};
-    std::atomic<qint64> m_runStartedNs{0};
-    std::atomic<bool> m_stop{false};
-    std::atomic<QJSEngine *> m_engine{nullptr};
-    std::thread m_watchdog;
+    std::atomic<int> m_memoryMb{512};
     friend class ScriptWorker;
 };
 

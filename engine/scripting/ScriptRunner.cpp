@@ -7,7 +7,6 @@
 namespace neptus::scripting {
 
 using tree::NodeId;
-using tree::VariableTree;
 
 QString CompileError::toString() const
 {
@@ -21,21 +20,17 @@ class ScriptRunner::Bridge : public QObject
 {
     Q_OBJECT
 public:
-    explicit Bridge(VariableTree &tree)
+    explicit Bridge(TreeView &tree)
         : m_tree(tree)
     {
     }
 
-    Q_INVOKABLE int child(int node, const QString &name) const { return m_tree.childByName(node, name); }
-    Q_INVOKABLE bool isLeaf(int node) const
-    {
-        return m_tree.kind(node) == VariableTree::Kind::Field;
-    }
+    Q_INVOKABLE int child(int node, const QString &name) const { return m_tree.child(node, name); }
+    Q_INVOKABLE bool isLeaf(int node) const { return m_tree.isLeaf(node); }
     Q_INVOKABLE QVariant value(int node)
     {
         reads.insert(node);
-        const auto snapshot = m_tree.snapshot(node);
-        return snapshot.present ? snapshot.value : QVariant();
+        return m_tree.value(node);
     }
     Q_INVOKABLE void read(int node) { reads.insert(node); }
     Q_INVOKABLE double structureVersion() const { return static_cast<double>(m_tree.structureVersion()); }
@@ -43,7 +38,7 @@ public:
     QSet<NodeId> reads;
 
 private:
-    VariableTree &m_tree;
+    TreeView &m_tree;
 };
 
 namespace {
@@ -143,6 +138,31 @@ const char *const prelude = R"JS(
         set() { return false; }
     });
 
+    // Freeze what every script shares (the built-ins, the levels, the
+    // global object), so that no script can change what another one sees,
+    // e.g. give Object.prototype a __level that turns an Error into Normal.
+    const frozen = new Set();
+    function deepFreeze(value) {
+        if ((typeof value !== "object" && typeof value !== "function") || value === null || frozen.has(value))
+            return;
+        frozen.add(value);
+        Object.freeze(value);
+        for (const key of Reflect.ownKeys(value)) {
+            const d = Object.getOwnPropertyDescriptor(value, key);
+            if (d !== undefined) {
+                deepFreeze(d.value);
+                deepFreeze(d.get);
+                deepFreeze(d.set);
+            }
+        }
+        deepFreeze(Object.getPrototypeOf(value));
+    }
+    for (const key of Reflect.ownKeys(globals)) {
+        if (key !== "sys")
+            deepFreeze(Object.getOwnPropertyDescriptor(globals, key).value);
+    }
+    Object.freeze(globals);
+
     function compile(source) {
         return new Function("__scope", "with (__scope) { return (function () {\n" + source + "\n})(); }");
     }
@@ -192,9 +212,8 @@ CompileError errorFrom(const QJSValue &error, int lineOffset)
 
 } // namespace
 
-ScriptRunner::ScriptRunner(VariableTree &tree)
-    : m_tree(tree)
-    , m_bridge(std::make_unique<Bridge>(tree))
+ScriptRunner::ScriptRunner(TreeView &tree)
+    : m_bridge(std::make_unique<Bridge>(tree))
 {
     const QJSValue factory = m_engine.evaluate(QString::fromUtf8(prelude), QStringLiteral("prelude.js"));
     const QJSValue bridge = m_engine.newQObject(m_bridge.get());

@@ -31,6 +31,42 @@ struct RunResult
     bool failed = false;      // threw, timed out, or returned something that is not a level
 };
 
+// What a script sees of the variable tree: the console's own tree in one
+// process (TreeReader), or a bridge to it from the script host process.
+class TreeView
+{
+public:
+    virtual ~TreeView() = default;
+    // The child of `node` named `name`, or a negative number.
+    virtual int child(int node, const QString &name) = 0;
+    virtual bool isLeaf(int node) = 0;
+    // The node's value; null when nothing was received yet.
+    virtual QVariant value(int node) = 0;
+    // Changes whenever nodes are added or renamed.
+    virtual quint64 structureVersion() = 0;
+};
+
+// The variable tree itself, read in this process.
+class TreeReader : public TreeView
+{
+public:
+    explicit TreeReader(const tree::VariableTree &tree)
+        : m_tree(tree)
+    {
+    }
+    int child(int node, const QString &name) override { return m_tree.childByName(node, name); }
+    bool isLeaf(int node) override { return m_tree.kind(node) == tree::VariableTree::Kind::Field; }
+    QVariant value(int node) override
+    {
+        const auto snapshot = m_tree.snapshot(node);
+        return snapshot.present ? snapshot.value : QVariant();
+    }
+    quint64 structureVersion() override { return m_tree.structureVersion(); }
+
+private:
+    const tree::VariableTree &m_tree;
+};
+
 // One sandboxed JavaScript engine that runs alarm scripts against the
 // variable tree. A script is the body of a function:
 //
@@ -45,12 +81,13 @@ struct RunResult
 // Every value read is recorded, through a Proxy over the tree, so the host
 // knows what the script depends on without parsing it.
 // The sandbox has no Qt object, no console, no files, no network, no module
-// import; scripts that mention `import` are refused.
+// import; scripts that mention `import` are refused. The built-in objects
+// are frozen, so that no script can change what another one sees.
 // Not thread-safe: one runner belongs to one thread.
 class ScriptRunner
 {
 public:
-    explicit ScriptRunner(tree::VariableTree &tree);
+    explicit ScriptRunner(TreeView &tree);
     ~ScriptRunner();
 
     // Syntax and sandbox check, with the line and column of the first problem.
@@ -66,7 +103,6 @@ public:
 
 private:
     class Bridge;
-    tree::VariableTree &m_tree;
     QJSEngine m_engine;
     std::unique_ptr<Bridge> m_bridge;
     QJSValue m_call;   // prelude's runner: (compiledFunction) → {level, message}

@@ -14,7 +14,7 @@ check() { if [ "$2" = 0 ]; then echo "ok: $1"; else echo "FAIL: $1"; failures=$(
 cmake --install "$build" --prefix "$work/first" >"$work/install.log" 2>&1; check "cmake --install" $?
 mv "$work/first" "$work/moved"
 prefix=$work/moved
-for f in bin/neptus bin/neptus-msg bin/neptus-sim bin/neptus-model-import share/neptus-qt/msgdefs/imc.xml \
+for f in bin/neptus bin/neptus-msg bin/neptus-sim bin/neptus-model-import bin/neptus-script-host share/neptus-qt/msgdefs/imc.xml \
          share/neptus-qt/consoles/Default.qml share/neptus-qt/dds/loopback.xml share/applications/neptus-qt.desktop; do
   [ -e "$prefix/$f" ]; check "installed $f" $?
 done

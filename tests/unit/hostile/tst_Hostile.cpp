@@ -10,6 +10,7 @@
 
 #include <QSignalSpy>
 #include <QTemporaryDir>
+#include <QElapsedTimer>
 #include <QTest>
 
 #include <gtest/gtest.h>
@@ -280,4 +281,120 @@ TEST(Hostile, ForgedIdsThatFallSilentShareOneAlarm)
     session.check();
     EXPECT_EQ(graph.ownLevel(summary), alarms::Normal);
     EXPECT_EQ(graph.ownLevel(real), alarms::Error) << "the real vehicle is not forgotten";
+}
+
+namespace {
+
+// A console's script host, its scripts run only when the test asks.
+struct ScriptedConsole
+{
+    ScriptedConsole()
+    {
+        scripts.setFrameInterval(0);
+        console.tree().setSystemName(0x1f, QStringLiteral("lauv"));
+    }
+    void set(const char *name, const char *source)
+    {
+        ASSERT_TRUE(scripts.setScript(QString::fromLatin1(name), QString::fromLatin1(source))) << source;
+        scripts.runPending();
+    }
+    alarms::Level level(const char *name) { return levelOf(console.alarmGraph(), QStringLiteral("scripts/") + QLatin1StringView(name)); }
+    QString message(const char *name)
+    {
+        return console.alarmGraph().message(console.alarmGraph().find(QStringLiteral("scripts/") + QLatin1StringView(name)));
+    }
+
+    session::Console console{test::shippedSchema()};
+    scripting::ScriptHost &scripts = *console.scripts();
+};
+
+} // namespace
+
+// `let a = []; while (true) a.push(new Array(1e6))` crashed the console
+// (SIGSEGV, 10 of 10) inside the script thread; a shared layout with it
+// killed every console that opened it. Now it ends its own host process.
+TEST(Hostile, AScriptThatEatsMemoryEndsOnlyItsHost)
+{
+    ScriptedConsole c;
+    c.scripts.setTimeLimit(1000);
+    c.scripts.setMemoryLimit(256);
+    c.set("before", "return Info(\"fine\");");
+    // The engine keeps these arrays sparse, so it is stopped by time, or
+    // the engine crashes while stopping it (it did in the console's thread).
+    c.set("bomb", "let a = []; while (true) a.push(new Array(1e6)); return Normal;");
+    EXPECT_EQ(c.level("bomb"), alarms::Error);
+    EXPECT_TRUE(c.message("bomb").contains(QStringLiteral("script stopped"))) << c.message("bomb").toStdString();
+    // Memory the engine does fill is stopped at the cap, before the time limit.
+    c.set("hoard", "let a = []; for (;;) a.push(String(a.length).repeat(1 << 20)); return Normal;");
+    EXPECT_EQ(c.level("hoard"), alarms::Error);
+    EXPECT_TRUE(c.message("hoard").contains(QStringLiteral("more than 256 MB"))) << c.message("hoard").toStdString();
+    // The other scripts go on in a new host, and new ones run too.
+    EXPECT_EQ(c.level("before"), alarms::Info);
+    c.set("after", "return Warning(\"still here\");");
+    EXPECT_EQ(c.level("after"), alarms::Warning);
+    EXPECT_EQ(c.message("after"), QStringLiteral("still here"));
+    // The bomb stays stopped, whatever changes.
+    c.console.tree().ingest(msg::Message(test::shippedSchema()->byAbbrev(u"Heartbeat")));
+    c.scripts.runPending();
+    EXPECT_EQ(c.level("bomb"), alarms::Error);
+}
+
+// `new Array(2**27).fill(0)` ran 16.8 s past a 50 ms limit with the GUI
+// frozen: a built-in does not check for interruption.
+TEST(Hostile, ASlowBuiltInIsStoppedSoonAfterTheLimit)
+{
+    ScriptedConsole c;
+    c.scripts.setTimeLimit(50);
+    c.scripts.setMemoryLimit(4096);
+    QElapsedTimer timer;
+    timer.start();
+    c.set("slow", "new Array(2**27).fill(0); return Normal;");
+    const qint64 elapsed = timer.elapsed();
+    std::printf("slow built-in stopped after %lld ms (limit 50 ms)\n", static_cast<long long>(elapsed));
+    EXPECT_LT(elapsed, 2000);
+    EXPECT_EQ(c.level("slow"), alarms::Error);
+    EXPECT_TRUE(c.message("slow").contains(QStringLiteral("time limit"))) << c.message("slow").toStdString();
+    c.set("after", "return Normal;");
+    EXPECT_EQ(c.level("after"), alarms::Normal);
+}
+
+// The GUI thread waited on the script thread to install or test a script,
+// so a slow script froze the console.
+TEST(Hostile, TheGuiThreadNeverWaitsOnAScript)
+{
+    ScriptedConsole c;
+    c.scripts.setTimeLimit(1500);
+    QElapsedTimer timer;
+    timer.start();
+    ASSERT_TRUE(c.scripts.setScript(QStringLiteral("spin"), QStringLiteral("while (true) {}")));
+    ASSERT_TRUE(c.scripts.setScript(QStringLiteral("next"), QStringLiteral("return Normal;")));
+    const QVariantMap installed = c.scripts.install(QStringLiteral("third"), QStringLiteral("return Info;"));
+    const qint64 elapsed = timer.elapsed();
+    std::printf("three scripts installed in %lld ms while one spins for 1500 ms\n", static_cast<long long>(elapsed));
+    EXPECT_TRUE(installed.value(QStringLiteral("ok")).toBool());
+    EXPECT_LT(elapsed, 1000);
+    c.scripts.runPending();
+    EXPECT_GE(timer.elapsed(), 1500);
+    EXPECT_EQ(c.level("spin"), alarms::Error);
+    EXPECT_EQ(c.level("next"), alarms::Normal);
+    EXPECT_EQ(c.level("third"), alarms::Info);
+}
+
+// All scripts shared one engine: a __level on Object.prototype in one made
+// another's Error read as Normal.
+TEST(Hostile, AScriptCannotChangeWhatAnotherSees)
+{
+    ScriptedConsole c;
+    c.set("poison", "Object.defineProperty(Object.prototype, \"__level\", { get() { return 1; } });\nreturn Normal;");
+    c.set("victim", "return Error(\"the real state\");");
+    EXPECT_EQ(c.level("poison"), alarms::Error) << c.message("poison").toStdString();
+    EXPECT_EQ(c.level("victim"), alarms::Error);
+    EXPECT_EQ(c.message("victim"), QStringLiteral("the real state"));
+    // Nor through other built-ins or the global object.
+    c.set("tamper", "Array.prototype.includes = () => true; Math.max = () => 0; globalThis.shared = 1;\n"
+                    "Error.prototype.toString = () => 'fine'; return Normal;");
+    c.set("reader", "if ([1].includes(2) || Math.max(1, 2) !== 2 || 'shared' in globalThis)\n"
+                    "    return Failure(\"tampered\");\nreturn Info(String(new Error('x')));");
+    EXPECT_EQ(c.level("reader"), alarms::Info) << c.message("reader").toStdString();
+    EXPECT_EQ(c.message("reader"), QStringLiteral("Error: x"));
 }

@@ -31,6 +31,13 @@ struct Scripts : ::testing::Test
         tree.setSystemName(0x1f, QStringLiteral("lauv"));
         tree.setSystemName(0x20, QStringLiteral("lauv-xplore-2"));
     }
+    // Sets a script and waits for its first run.
+    std::expected<void, CompileError> set(const QString &name, const QString &source)
+    {
+        auto result = host.setScript(name, source);
+        host.runPending();
+        return result;
+    }
     alarms::Level levelOf(const char *name) const
     {
         return graph.ownLevel(graph.find(QStringLiteral("scripts/") + QString::fromLatin1(name)));
@@ -55,7 +62,7 @@ const QString depthScript = QStringLiteral(
 TEST_F(Scripts, ReturnValueSetsTheScriptsAlarm)
 {
     tree.ingest(message("EstimatedState", 0x1f, "depth", 5));
-    ASSERT_TRUE(host.setScript(QStringLiteral("depth"), depthScript));
+    ASSERT_TRUE(set(QStringLiteral("depth"), depthScript));
     EXPECT_EQ(levelOf("depth"), alarms::Normal);
     tree.ingest(message("EstimatedState", 0x1f, "depth", 25));
     host.runPending();
@@ -63,7 +70,7 @@ TEST_F(Scripts, ReturnValueSetsTheScriptsAlarm)
     EXPECT_EQ(messageOf("depth"), QStringLiteral("too deep: 25"));
     EXPECT_EQ(graph.rootLevel(), alarms::Error);
 
-    ASSERT_TRUE(host.setScript(QStringLiteral("levels"),
+    ASSERT_TRUE(set(QStringLiteral("levels"),
         QStringLiteral("return sys[\"lauv-xplore-2\"].Voltage.value < 22 ? Warning(\"battery\") : Info;")));
     EXPECT_EQ(levelOf("levels"), alarms::Info) << "a missing value compares false";
     tree.ingest(message("Voltage", 0x20, "value", 21.5));
@@ -76,7 +83,7 @@ TEST_F(Scripts, RerunsOnlyWhenAVariableItReadChanges)
 {
     tree.ingest(message("EstimatedState", 0x1f, "depth", 5));
     tree.ingest(message("Voltage", 0x1f, "value", 24));
-    ASSERT_TRUE(host.setScript(QStringLiteral("depth"), depthScript));
+    ASSERT_TRUE(set(QStringLiteral("depth"), depthScript));
     EXPECT_EQ(host.runs(QStringLiteral("depth")), 1);
 
     tree.ingest(message("Voltage", 0x1f, "value", 23)); // not read by the script
@@ -97,7 +104,7 @@ TEST_F(Scripts, RerunsOnlyWhenAVariableItReadChanges)
 
 TEST_F(Scripts, ScriptsWaitingForAVehicleRunWhenItAppears)
 {
-    ASSERT_TRUE(host.setScript(QStringLiteral("depth"), depthScript));
+    ASSERT_TRUE(set(QStringLiteral("depth"), depthScript));
     EXPECT_EQ(levelOf("depth"), alarms::Normal);
     tree.ingest(message("EstimatedState", 0x1f, "depth", 30));
     host.runPending();
@@ -107,16 +114,16 @@ TEST_F(Scripts, ScriptsWaitingForAVehicleRunWhenItAppears)
 TEST_F(Scripts, ErrorsAreShownOnceAndTheConsoleCarriesOn)
 {
     tree.ingest(message("EstimatedState", 0x1f, "depth", 5));
-    ASSERT_TRUE(host.setScript(QStringLiteral("broken"),
+    ASSERT_TRUE(set(QStringLiteral("broken"),
         QStringLiteral("const d = lauv.EstimatedState.depth;\nthrow new Error(\"sensor says \" + d);")));
     EXPECT_EQ(levelOf("broken"), alarms::Error);
     EXPECT_TRUE(messageOf("broken").contains(QStringLiteral("sensor says 5"))) << messageOf("broken").toStdString();
 
-    ASSERT_TRUE(host.setScript(QStringLiteral("silent"), QStringLiteral("const x = 1;")));
+    ASSERT_TRUE(set(QStringLiteral("silent"), QStringLiteral("const x = 1;")));
     EXPECT_EQ(levelOf("silent"), alarms::Error);
     EXPECT_TRUE(messageOf("silent").contains(QStringLiteral("returned nothing")));
 
-    const auto refused = host.setScript(QStringLiteral("syntax"), QStringLiteral("return Normal;\nif (x > ) {"));
+    const auto refused = set(QStringLiteral("syntax"), QStringLiteral("return Normal;\nif (x > ) {"));
     ASSERT_FALSE(refused);
     EXPECT_EQ(levelOf("syntax"), alarms::Error);
 }
@@ -126,14 +133,14 @@ TEST_F(Scripts, RunawayLoopIsStoppedWithinTheLimit)
     host.setTimeLimit(20);
     QElapsedTimer timer;
     timer.start();
-    ASSERT_TRUE(host.setScript(QStringLiteral("runaway"), QStringLiteral("while (true) {}\nreturn Normal;")));
+    ASSERT_TRUE(set(QStringLiteral("runaway"), QStringLiteral("while (true) {}\nreturn Normal;")));
     const qint64 elapsed = timer.elapsed();
     std::printf("runaway script stopped after %lld ms (limit 20 ms)\n", static_cast<long long>(elapsed));
     EXPECT_LT(elapsed, 100);
     EXPECT_EQ(levelOf("runaway"), alarms::Error);
     EXPECT_TRUE(messageOf("runaway").contains(QStringLiteral("time limit"))) << messageOf("runaway").toStdString();
     // The engine is usable afterwards.
-    ASSERT_TRUE(host.setScript(QStringLiteral("after"), QStringLiteral("return Info(\"fine\");")));
+    ASSERT_TRUE(set(QStringLiteral("after"), QStringLiteral("return Info(\"fine\");")));
     EXPECT_EQ(levelOf("after"), alarms::Info);
 }
 
@@ -150,15 +157,15 @@ TEST_F(Scripts, SandboxEscapesFail)
     int n = 0;
     for (const char *attempt : attempts) {
         const QString name = QStringLiteral("escape%1").arg(n++);
-        ASSERT_TRUE(host.setScript(name, QString::fromLatin1(attempt))) << attempt;
+        ASSERT_TRUE(set(name, QString::fromLatin1(attempt))) << attempt;
         EXPECT_EQ(graph.ownLevel(graph.find(QStringLiteral("scripts/") + name)), alarms::Error) << attempt;
     }
     // The levels cannot be redefined.
-    ASSERT_TRUE(host.setScript(QStringLiteral("redefine"), QStringLiteral("Normal = Failure; return Normal;")));
+    ASSERT_TRUE(set(QStringLiteral("redefine"), QStringLiteral("Normal = Failure; return Normal;")));
     EXPECT_EQ(levelOf("redefine"), alarms::Normal);
     // Module import is refused before anything runs.
     for (const char *attempt : {"return import('file:///etc/passwd');", "import fs from 'fs'; return Normal;"}) {
-        const auto refused = host.setScript(QStringLiteral("import"), QString::fromLatin1(attempt));
+        const auto refused = set(QStringLiteral("import"), QString::fromLatin1(attempt));
         ASSERT_FALSE(refused) << attempt;
         EXPECT_TRUE(refused.error().message.contains(QStringLiteral("import")));
     }
