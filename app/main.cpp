@@ -4,6 +4,7 @@
 #include "CommandLine.h"
 #include "ComponentPalette.h"
 #include "ConsoleCatalog.h"
+#include "JsWatchdog.h"
 #include "qmlmodels/ConsoleSession.h"
 #include "SelfTest.h"
 
@@ -129,12 +130,24 @@ int main(int argc, char *argv[])
         {QStringLiteral("width"), commandLine->windowSize.width()},
         {QStringLiteral("height"), commandLine->windowSize.height()},
     });
+    // A binding or handler that never ends is stopped, and said where.
+    JsWatchdog watchdog(engine);
+    QObject::connect(&watchdog, &JsWatchdog::stopped, &app, [&](const QString &report) {
+        const QString layout = engine.rootObjects().isEmpty()
+            ? commandLine->consoleFile
+            : engine.rootObjects().constFirst()->property("consoleUrl").toUrl().toLocalFile();
+        const QString text = layout + QStringLiteral(": ") + report;
+        std::fprintf(stderr, "neptus: %s\n", qPrintable(text));
+        auto &graph = session.console().alarmGraph();
+        graph.raise(graph.ensure(QStringLiteral("console/javascript")), neptus::alarms::Error, text);
+    });
     QObject::connect(&engine, &QQmlApplicationEngine::objectCreationFailed, &app,
                      [] { QCoreApplication::exit(1); }, Qt::QueuedConnection);
     engine.loadFromModule("Neptus.Shell", "Main");
     if (engine.rootObjects().isEmpty())
         return 1;
     auto *window = qobject_cast<QQuickWindow *>(engine.rootObjects().constFirst());
+
 
     if (!commandLine->screenshotFile.isEmpty()) {
         // Grab after the first frame (and the delay asked for, to let data
