@@ -7,8 +7,7 @@
 // It stops a run past the time limit itself (the engine checks between
 // instructions; when a slow built-in does not return, the console kills this
 // process), and exits with status 3 when its memory passes the cap: resident
-// memory, or a quarter of its address space (an idle host has ~25 MB
-// resident and ~100 MB of address space).
+// memory, or a quarter of the address space it took since it started.
 #include "scripting/ScriptProtocol.h"
 #include "scripting/ScriptRunner.h"
 
@@ -150,9 +149,10 @@ public:
     }
 
 private:
-    // Resident and virtual size: memory the engine reserves but has not
-    // touched yet (`new Array(1e6)`) counts too, at a quarter.
-    qint64 usedBytes() const
+    // Resident size, and what the address space grew by since the start:
+    // memory the engine reserves but has not touched yet (`new Array(1e6)`)
+    // counts too, at a quarter. (Sanitizers reserve terabytes at start.)
+    qint64 usedBytes()
     {
         char text[128] = {};
         if (m_statm < 0 || ::pread(m_statm, text, sizeof text - 1, 0) <= 0)
@@ -160,7 +160,9 @@ private:
         long long size = 0, resident = 0;
         if (std::sscanf(text, "%lld %lld", &size, &resident) != 2)
             return 0;
-        return std::max(resident, size / 4) * ::sysconf(_SC_PAGESIZE);
+        if (m_startSize < 0)
+            m_startSize = size;
+        return std::max(resident, (size - m_startSize) / 4) * ::sysconf(_SC_PAGESIZE);
     }
     void watch()
     {
@@ -180,6 +182,7 @@ private:
 
     QJSEngine &m_engine;
     int m_statm;
+    long long m_startSize = -1; // pages of address space at the first look
     std::atomic<int> m_limitMs{50};
     std::atomic<qint64> m_capBytes{0};
     std::atomic<qint64> m_startedNs{0};

@@ -2,9 +2,46 @@
 
 #include <QDataStream>
 #include <QIODevice>
+#include <QMetaType>
+#include <QVariant>
 #include <QtEndian>
 
 namespace neptus::scripting::protocol {
+
+namespace {
+
+// The values a frame carries: scalars, text and bytes. Containers are not
+// read (QDataStream reserves a container's claimed size before reading it,
+// so four bytes could ask for gigabytes); text and bytes are read in steps.
+bool carried(int type)
+{
+    switch (type) {
+    case QMetaType::UnknownType:
+    case QMetaType::Bool:
+    case QMetaType::Int:
+    case QMetaType::UInt:
+    case QMetaType::LongLong:
+    case QMetaType::ULongLong:
+    case QMetaType::Double:
+    case QMetaType::QString:
+    case QMetaType::QByteArray:
+        return true;
+    default:
+        return false;
+    }
+}
+
+// Anything else as a number or as text.
+QVariant wireValue(const QVariant &value)
+{
+    if (carried(value.metaType().id()))
+        return value;
+    bool number = false;
+    const double d = value.toDouble(&number);
+    return number ? QVariant(d) : QVariant(value.toString());
+}
+
+} // namespace
 
 QByteArray encode(Op op, const QVariantList &args)
 {
@@ -12,7 +49,9 @@ QByteArray encode(Op op, const QVariantList &args)
     {
         QDataStream out(&frame, QIODevice::WriteOnly | QIODevice::Append);
         out.setVersion(QDataStream::Qt_6_8);
-        out << static_cast<quint8>(op) << args;
+        out << static_cast<quint8>(op) << static_cast<quint32>(args.size());
+        for (const QVariant &arg : args)
+            out << wireValue(arg);
     }
     qToBigEndian(static_cast<quint32>(frame.size() - 4), frame.data());
     return frame;
@@ -32,8 +71,19 @@ std::expected<std::optional<Frame>, QString> take(QByteArray &buffer)
     QDataStream in(body);
     in.setVersion(QDataStream::Qt_6_8);
     quint8 op = 0;
+    quint32 count = 0;
     Frame frame;
-    in >> op >> frame.args;
+    in >> op >> count;
+    if (quint64(count) * 5 > quint64(body.size())) // each value takes at least 5 bytes
+        return std::unexpected(QStringLiteral("a frame claiming %1 values in %2 bytes").arg(count).arg(body.size()));
+    for (quint32 i = 0; i < count && in.status() == QDataStream::Ok; ++i) {
+        const QByteArray type = in.device()->peek(4);
+        if (type.size() == 4 && !carried(int(qFromBigEndian<quint32>(type.constData()))))
+            return std::unexpected(QStringLiteral("a frame carrying a value of type %1").arg(qFromBigEndian<quint32>(type.constData())));
+        QVariant value;
+        in >> value;
+        frame.args.append(value);
+    }
     if (in.status() != QDataStream::Ok || !in.atEnd())
         return std::unexpected(QStringLiteral("a frame that does not decode"));
     if (op < quint8(Op::Compile) || op > quint8(Op::Answer))

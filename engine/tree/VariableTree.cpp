@@ -300,9 +300,22 @@ void VariableTree::markChangedLocked(int index)
 
 // --- Input -------------------------------------------------------------------------
 
-void VariableTree::setSystemName(quint16 id, const QString &name)
+void VariableTree::setSystemName(quint16 id, const QString &configured)
 {
+    // A configured name is a path element too ("lauv/x" would hide its variables).
+    const QString name = pathSafe(configured);
     QMutexLocker lock(&m_mutex);
+    if (name.isEmpty()) {
+        // No name: the system is known by its id again (an empty path element finds nothing).
+        m_configuredNames.remove(id);
+        const auto it = m_systemIndex.constFind(id);
+        if (it != m_systemIndex.cend()) {
+            SystemInfo &info = *m_systems[static_cast<size_t>(*it)];
+            info.named = false;
+            renameLocked(info.node, msg::systemLabel(id));
+        }
+        return;
+    }
     m_configuredNames.insert(id, name);
     const auto it = m_systemIndex.constFind(id);
     if (it != m_systemIndex.cend()) {

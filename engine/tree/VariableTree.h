@@ -79,7 +79,7 @@ public:
     // A decoded message from the network (any thread).
     void ingest(const msg::Message &message);
     // Known names for system ids, before (or instead of) their Announce.
-    void setSystemName(quint16 id, const QString &name);
+    void setSystemName(quint16 id, const QString &name); // "/" and control characters become "_"; "" forgets it
     // The link a system was last heard on ("IMC/UDP", "DDS"), shown beside its id.
     void setSystemLink(quint16 id, const QString &link);
 
