@@ -6,12 +6,20 @@
 
 namespace neptus::geo {
 
+namespace {
+// New systems that join per update (per frame): a thousand at once froze the console.
+constexpr int newSystemsPerUpdate = 8;
+} // namespace
+
 Tracks::Tracks(tree::VariableTreeModel *model, QObject *parent)
     : QAbstractListModel(parent)
     , m_model(model)
     , m_consumer(model->tree()->addConsumer())
 {
     connect(model, &tree::VariableTreeModel::synced, this, &Tracks::update);
+    m_more.setSingleShot(true);
+    m_more.setInterval(16);
+    connect(&m_more, &QTimer::timeout, this, &Tracks::update);
 }
 
 QStringList Tracks::systems() const
@@ -111,7 +119,7 @@ Tracks::Track &Tracks::trackFor(quint16 id, const QString &system)
         if (t.system != system) {
             t.system = system; // named by its Announce
             emit dataChanged(index(*row), index(*row), {SystemRole});
-            emit systemsChanged();
+            m_systemsChanged = true;
         }
         return t;
     }
@@ -123,8 +131,18 @@ Tracks::Track &Tracks::trackFor(quint16 id, const QString &system)
     m_rowById.insert(id, row);
     m_shownRevision.push_back(0);
     endInsertRows();
-    emit systemsChanged();
+    m_systemsChanged = true;
     return *m_tracks.back();
+}
+
+void Tracks::flushSystems()
+{
+    // Once per batch: what binds to the list (a colour per system, found by
+    // its index) reads it again once, not once per new system.
+    if (!m_systemsChanged)
+        return;
+    m_systemsChanged = false;
+    emit systemsChanged();
 }
 
 void Tracks::notifyChanged()
@@ -212,6 +230,7 @@ void Tracks::append(const QString &system, const Fix &fix)
     Track &t = trackFor(known ? known->id : quint16(0xF000 + m_tracks.size()), system);
     homeOnce(fix.lat, fix.lon, 0);
     add(t, fix);
+    flushSystems();
     notifyChanged();
 }
 
@@ -267,9 +286,29 @@ void Tracks::update()
     const tree::VariableTree &tree = *m_model->tree();
     const auto changes = m_model->tree()->takeChanges(m_consumer);
     const quint64 before = m_revision;
+    // New systems join a few per update: each brings a marker, a trail and
+    // a 3D model, and a thousand at once froze the console for seconds.
+    // The others wait for the next updates (one frame each), newest state first read then.
+    std::vector<tree::NodeId> nodes;
+    nodes.swap(m_waiting);
+    m_waitingSet.clear();
     for (const tree::NodeId node : changes.changedNodes)
         if (tree.kind(node) == tree::VariableTree::Kind::Message && tree.name(node) == QLatin1String("EstimatedState"))
-            read(node);
+            nodes.push_back(node);
+    int joined = 0;
+    for (const tree::NodeId node : nodes) {
+        if (!m_rowById.contains(tree.systemOf(node)) && joined++ >= newSystemsPerUpdate) {
+            if (!m_waitingSet.contains(node)) {
+                m_waitingSet.insert(node);
+                m_waiting.push_back(node);
+            }
+            continue;
+        }
+        read(node);
+    }
+    if (!m_waiting.empty() && !m_more.isActive())
+        m_more.start(); // the model syncs only when the tree changes
+    flushSystems();
     if (m_revision == before)
         return;
     notifyChanged();

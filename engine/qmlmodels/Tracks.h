@@ -5,6 +5,8 @@
 #include <QAbstractListModel>
 #include <QHash>
 #include <QPointer>
+#include <QSet>
+#include <QTimer>
 #include <QVariantMap>
 #include <QtQml/qqmlregistration.h>
 
@@ -116,6 +118,7 @@ signals:
 
 private:
     Track &trackFor(quint16 id, const QString &system);
+    void flushSystems();
     // Home is the first position heard, unless set.
     void homeOnce(double lat, double lon, double height);
     void add(Track &track, const Fix &fix);
@@ -130,6 +133,11 @@ private:
     QHash<quint16, int> m_rowById;
     std::vector<quint64> m_shownRevision;          // per row: what views were told
     quint64 m_revision = 0;
+    bool m_systemsChanged = false; // systemsChanged is due at the end of this batch
+    // EstimatedStates of systems not tracked yet, past this update's budget.
+    std::vector<tree::NodeId> m_waiting;
+    QSet<tree::NodeId> m_waitingSet;
+    QTimer m_more; // the next update while some wait
     bool m_hasHome = false;
     double m_homeLat = 0, m_homeLon = 0, m_homeHeight = 0;
     double m_minimumSpacing = 0.1;

@@ -6,6 +6,7 @@
 
 #include <QAbstractItemModelTester>
 #include <QSignalSpy>
+#include <QTest>
 
 #include <gtest/gtest.h>
 
@@ -151,4 +152,25 @@ TEST_F(TrackRecording, AListModelOfSystemsWhereAMoveChangesOnlyItsRow)
     EXPECT_EQ(changed[0][0].value<QModelIndex>().row(), 1) << "only the system that moved";
     EXPECT_EQ(changed[0][1].value<QModelIndex>().row(), 1);
     EXPECT_EQ(tracks.roleNames().value(Tracks::NorthRole), QByteArray("north"));
+}
+
+// 1,000 new systems in one frame froze the console for seconds: each brought
+// a marker, a trail and a 3D model at once, and every binding on the list of
+// systems read it again per system. Now a few join per frame, the list
+// changes once per frame, and none is lost.
+TEST_F(TrackRecording, AFloodOfNewSystemsJoinsAFewPerFrame)
+{
+    QSignalSpy systemsChanged(&tracks, &Tracks::systemsChanged);
+    for (int i = 0; i < 100; ++i)
+        tree.ingest(state(quint16(0x4000 + i), 41.0, -8.0, i, 0, 0));
+    model.sync();
+    EXPECT_GT(tracks.rowCount(), 0);
+    EXPECT_LE(tracks.rowCount(), 10) << "a few per frame";
+    EXPECT_EQ(systemsChanged.count(), 1);
+    // The others join on the next frames, without new data.
+    QTRY_COMPARE_WITH_TIMEOUT(tracks.rowCount(), 100, 5000);
+    EXPECT_LE(systemsChanged.count(), 100 / 8 + 2);
+    const auto *last = tracks.track(QStringLiteral("0x4063"));
+    ASSERT_TRUE(last);
+    EXPECT_EQ(last->fixes.size(), 1u);
 }
