@@ -15,24 +15,28 @@
 
 namespace {
 
-std::unique_ptr<QObject> create(QQmlEngine &engine, const char *qml, const char *file)
+// An engine watched with a 300 ms limit.
+struct HostileLayouts : ::testing::Test
 {
-    QQmlComponent component(&engine);
-    component.setData(qml, QUrl::fromLocalFile(QString::fromLatin1(file)));
-    return std::unique_ptr<QObject>(component.create());
-}
+    std::unique_ptr<QObject> create(const char *qml, const char *file)
+    {
+        QQmlComponent component(&engine);
+        component.setData(qml, QUrl::fromLocalFile(QString::fromLatin1(file)));
+        return std::unique_ptr<QObject>(component.create());
+    }
+
+    QQmlEngine engine;
+    JsWatchdog watchdog{engine, std::chrono::milliseconds(300)};
+    QSignalSpy stopped{&watchdog, &JsWatchdog::stopped};
+};
 
 } // namespace
 
-TEST(HostileLayouts, ABindingThatNeverEndsIsStoppedAndNamed)
+TEST_F(HostileLayouts, ABindingThatNeverEndsIsStoppedAndNamed)
 {
-    QQmlEngine engine;
-    JsWatchdog watchdog(engine, std::chrono::milliseconds(300));
-    QSignalSpy stopped(&watchdog, &JsWatchdog::stopped);
     QElapsedTimer timer;
     timer.start();
-    const auto spin = create(engine,
-                             "import QtQml\n"
+    const auto spin = create("import QtQml\n"
                              "QtObject {\n"
                              "    property int depth: { while (true) {} return 1 }\n"
                              "    property string name: \"after the loop\"\n"
@@ -47,35 +51,29 @@ TEST(HostileLayouts, ABindingThatNeverEndsIsStoppedAndNamed)
     EXPECT_TRUE(report.contains(QStringLiteral("was stopped"))) << report.toStdString();
 
     // The engine runs JavaScript again afterwards.
-    const auto next = create(engine, "import QtQml\nQtObject { property int answer: { let a = 0; for (let i = 0; i < 42; ++i) ++a; return a } }\n",
+    const auto next = create("import QtQml\nQtObject { property int answer: { let a = 0; for (let i = 0; i < 42; ++i) ++a; return a } }\n",
                              "/layouts/Next.qml");
     ASSERT_NE(next, nullptr);
     EXPECT_EQ(next->property("answer").toInt(), 42);
 }
 
-TEST(HostileLayouts, AHandlerThatNeverEndsIsStopped)
+TEST_F(HostileLayouts, AHandlerThatNeverEndsIsStopped)
 {
-    QQmlEngine engine;
-    JsWatchdog watchdog(engine, std::chrono::milliseconds(300));
-    QSignalSpy stopped(&watchdog, &JsWatchdog::stopped);
-    const auto spin = create(engine, "import QtQml\nQtObject {\n    Component.onCompleted: { for (;;) {} }\n}\n",
+    const auto spin = create("import QtQml\nQtObject {\n    Component.onCompleted: { for (;;) {} }\n}\n",
                              "/layouts/Handler.qml");
     ASSERT_NE(spin, nullptr);
     ASSERT_TRUE(stopped.wait(2000));
     EXPECT_TRUE(stopped.constFirst().constFirst().toString().contains(QStringLiteral("was stopped")));
 }
 
-TEST(HostileLayouts, AQuietConsoleIsNeverInterrupted)
+TEST_F(HostileLayouts, AQuietConsoleIsNeverInterrupted)
 {
-    QQmlEngine engine;
-    JsWatchdog watchdog(engine, std::chrono::milliseconds(300));
-    QSignalSpy stopped(&watchdog, &JsWatchdog::stopped);
     // Work in many short turns, each under the limit, for longer than it.
     QElapsedTimer timer;
     timer.start();
     int sum = 0;
     while (timer.elapsed() < 900) {
-        const auto busy = create(engine, "import QtQml\nQtObject { property int n: { let t = Date.now(); while (Date.now() - t < 100) {} return 1 } }\n",
+        const auto busy = create("import QtQml\nQtObject { property int n: { let t = Date.now(); while (Date.now() - t < 100) {} return 1 } }\n",
                                  "/layouts/Busy.qml");
         sum += busy ? busy->property("n").toInt() : 0;
         QCoreApplication::processEvents();
