@@ -155,6 +155,11 @@ void HealthMonitor::check()
             continue;
         }
         if (!establishedLocked(it.key(), system)) {
+            // What its entities said is as doubtful as the system itself: no
+            // forged id's entity failure stays behind (the summary names it).
+            for (const Entity &entity : std::as_const(system.entities))
+                if (m_graph.ownLevel(entity.node) != Unknown)
+                    m_graph.raise(entity.node, Unknown);
             if (silent > forgetShortLivedMs) {
                 it = m_systems.erase(it);
                 continue;

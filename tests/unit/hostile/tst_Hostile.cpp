@@ -283,6 +283,43 @@ TEST(Hostile, ForgedIdsThatFallSilentShareOneAlarm)
     EXPECT_EQ(graph.ownLevel(real), alarms::Error) << "the real vehicle is not forgotten";
 }
 
+// Forged ids that reported an entity failure before falling silent left one
+// Failure per id behind: their entity alarms now go quiet with them.
+TEST(Hostile, ForgedEntityFailuresGoQuietWithTheirSystems)
+{
+    ManualClock clock(QDateTime::currentDateTimeUtc());
+    session::Console session(test::shippedSchema(), &clock);
+    transport::ImcUdpConfig config = unbound();
+    config.clock = &clock;
+    config.maxDatagramsPerSecond = 0;
+    auto *imc = session.attachImc(std::make_unique<transport::ImcUdpTransport>(session.schemaSet(), config));
+    msg::Codec codec(test::shippedSchema());
+    for (int i = 0; i < 10; ++i) {
+        imc->receive(packet("Heartbeat", 0x1f), QHostAddress::LocalHost, 6002);
+        if (i == 5) {
+            for (quint16 id = 0x3000; id < 0x3000 + 300; ++id) {
+                msg::Message failure(test::shippedSchema()->byAbbrev(u"EntityState"));
+                failure.header.src = id;
+                failure.header.srcEnt = 7;
+                failure.setInteger(failure.def()->indexOf(u"state"), 4); // FAILURE
+                failure.setBytes(failure.def()->indexOf(u"description"), "forged");
+                imc->receive(*codec.encode(failure), QHostAddress(QStringLiteral("127.0.0.5")), 6002);
+            }
+            EXPECT_EQ(session.alarmGraph().rootLevel(), alarms::Failure) << "while they talk, their failures show";
+        }
+        clock.advance(1000);
+        session.check();
+    }
+    imc->receive(packet("Heartbeat", 0x1f), QHostAddress::LocalHost, 6002);
+    clock.advance(500);
+    session.check(); // the forged ids are silent; the real vehicle is not
+
+    const alarms::AlarmGraph &graph = session.alarmGraph();
+    EXPECT_EQ(graph.activeAlarms().size(), 1u) << "only the summary of the forged ids";
+    EXPECT_EQ(graph.rootLevel(), alarms::Warning);
+    EXPECT_NE(graph.find(QStringLiteral("links/short-lived systems")), alarms::AlarmGraph::noNode);
+}
+
 namespace {
 
 // A console's script host, its scripts run only when the test asks.
