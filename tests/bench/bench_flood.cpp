@@ -200,8 +200,7 @@ int main(int argc, char **argv)
         auto *vehicle = new test::FakeVehicle(vehicleId);
         vehicle->setParent(&vehicleContext);
         auto *timer = new QTimer(&vehicleContext);
-        double depth = 0;
-        QObject::connect(timer, &QTimer::timeout, &vehicleContext, [vehicle, port, &vehicleSent, &depth] {
+        QObject::connect(timer, &QTimer::timeout, &vehicleContext, [vehicle, port, &vehicleSent, depth = 0.0]() mutable {
             if (!vehicle->streaming()) {
                 vehicle->announceTo(port);
                 return;
