@@ -13,6 +13,22 @@ namespace neptus::scripting {
 namespace {
 // A host that cannot start is tried again after this long, not every frame.
 constexpr qint64 restartBackoffMs = 5000;
+
+// What the editor API gives for a check: {ok, line, column, message}.
+QVariantMap checked(const std::optional<CompileError> &error)
+{
+    if (!error)
+        return {{QStringLiteral("ok"), true}};
+    return {{QStringLiteral("ok"), false}, {QStringLiteral("line"), error->line}, {QStringLiteral("column"), error->column},
+            {QStringLiteral("message"), error->message}};
+}
+
+// A test run that did not run: {ok, level, levelName, message}.
+QVariantMap failedRun(const QString &message)
+{
+    return {{QStringLiteral("ok"), false}, {QStringLiteral("level"), int(alarms::Error)},
+            {QStringLiteral("levelName"), alarms::levelName(alarms::Error)}, {QStringLiteral("message"), message}};
+}
 } // namespace
 
 // Lives on the host's thread: owns the script host process and decides what runs.
@@ -111,16 +127,11 @@ public:
 
     QVariantMap testRun(const QString &source)
     {
-        const auto failed = [](const QString &message) {
-            return QVariantMap{{QStringLiteral("ok"), false}, {QStringLiteral("level"), int(alarms::Error)},
-                               {QStringLiteral("levelName"), alarms::levelName(alarms::Error)},
-                               {QStringLiteral("message"), message}};
-        };
         if (!ready())
-            return failed(m_startError.isEmpty() ? QStringLiteral("the script host is not running") : m_startError);
+            return failedRun(m_startError.isEmpty() ? QStringLiteral("the script host is not running") : m_startError);
         const auto id = m_process->compile(source);
         if (!id)
-            return failed(id.error().toString());
+            return failedRun(id.error().toString());
         const RunResult result = m_process->run(*id);
         if (m_process->lost())
             forgetCompiled();
@@ -295,26 +306,18 @@ void ScriptHost::runPending()
 QVariantMap ScriptHost::install(const QString &name, const QString &source)
 {
     const auto installed = setScript(name, source);
-    if (installed)
-        return {{QStringLiteral("ok"), true}};
-    return {{QStringLiteral("ok"), false}, {QStringLiteral("line"), installed.error().line},
-            {QStringLiteral("column"), installed.error().column}, {QStringLiteral("message"), installed.error().message}};
+    return checked(installed ? std::nullopt : std::optional(installed.error()));
 }
 
 QVariantMap ScriptHost::check(const QString &source) const
 {
-    const auto error = ScriptRunner::check(source);
-    if (!error)
-        return {{QStringLiteral("ok"), true}};
-    return {{QStringLiteral("ok"), false}, {QStringLiteral("line"), error->line}, {QStringLiteral("column"), error->column},
-            {QStringLiteral("message"), error->message}};
+    return checked(ScriptRunner::check(source));
 }
 
 QVariantMap ScriptHost::testRun(const QString &source)
 {
     if (const auto error = ScriptRunner::check(source))
-        return {{QStringLiteral("ok"), false}, {QStringLiteral("level"), int(alarms::Error)},
-                {QStringLiteral("levelName"), alarms::levelName(alarms::Error)}, {QStringLiteral("message"), error->toString()}};
+        return failedRun(error->toString());
     QVariantMap result;
     QMetaObject::invokeMethod(m_worker, [&] { result = m_worker->testRun(source); }, Qt::BlockingQueuedConnection);
     return result;

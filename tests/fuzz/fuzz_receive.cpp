@@ -17,12 +17,12 @@
 // datagram is accounted for: one over its host's budget is counted as
 // dropped, a packet that decodes lands in the tree under its system and
 // type, one that does not is counted as a decode error.
+#include "FuzzApplication.h"
 #include "Paths.h"
 #include "qmlmodels/LinkStatisticsModel.h"
 #include "qmlmodels/VariableTreeModel.h"
 #include "session/Console.h"
 
-#include <QCoreApplication>
 #include <QModelIndex>
 
 #include <cstdio>
@@ -81,13 +81,7 @@ int readModel(const QAbstractItemModel &model, const QModelIndex &parent, int bu
 
 std::unique_ptr<Console> &console(bool tiny)
 {
-    static int argc = 1;
-    static char name[] = "fuzz_receive";
-    static char *argv[] = {name, nullptr};
-    // Never destroyed: the consoles below, zero-initialised before it, are
-    // destroyed after it at exit and still need it.
-    static auto *app = new QCoreApplication(argc, argv);
-    Q_UNUSED(app);
+    test::ensureFuzzApplication();
     static const auto shipped = load(msg::Schema::filesIn(test::msgdefsDirectory()));
     static const auto small = load({test::sourcePath(QStringLiteral("tests/data/tiny-imc.xml"))});
     static std::unique_ptr<Console> consoles[2];

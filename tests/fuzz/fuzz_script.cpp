@@ -9,12 +9,12 @@
 // Beyond "no crash, no sanitizer report" in this process, it checks that a
 // run gives a level in range, and that no script changes what the next one
 // sees: after each, probes returning Normal and Error("probe") still read so.
+#include "FuzzApplication.h"
 #include "Paths.h"
 #include "messages/Schema.h"
 #include "scripting/ScriptProtocol.h"
 #include "scripting/ScriptProcess.h"
 
-#include <QCoreApplication>
 
 #include <cstdio>
 #include <cstdlib>
@@ -71,11 +71,7 @@ struct Sandbox
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
-    static int argc = 1;
-    static char name[] = "fuzz_script";
-    static char *argv[] = {name, nullptr};
-    static auto *app = new QCoreApplication(argc, argv);
-    Q_UNUSED(app);
+    test::ensureFuzzApplication();
     if (size < 1)
         return 0;
     if (data[0] & 1) {

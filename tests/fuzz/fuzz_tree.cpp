@@ -8,12 +8,12 @@
 // Beyond "no crash, no sanitizer report", it checks that every node's path
 // leads back to a node of that same path, and that every packet that
 // decodes lands in the tree under its system and type.
+#include "FuzzApplication.h"
 #include "Paths.h"
 #include "messages/Codec.h"
 #include "qmlmodels/VariableTreeModel.h"
 #include "tree/VariableTree.h"
 
-#include <QCoreApplication>
 
 #include <cstdio>
 #include <cstdlib>
@@ -55,11 +55,7 @@ void checkPath(const tree::VariableTree &tree, tree::NodeId node)
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
-    static int argc = 1;
-    static char name[] = "fuzz_tree";
-    static char *argv[] = {name, nullptr};
-    static auto *app = new QCoreApplication(argc, argv);
-    Q_UNUSED(app);
+    test::ensureFuzzApplication();
 
     tree::VariableTree tree;
     tree::VariableTreeModel model(&tree);

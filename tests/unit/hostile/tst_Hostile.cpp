@@ -241,17 +241,33 @@ TEST(Hostile, ForgedSystemIdsAreCappedAndForgotten)
     EXPECT_EQ(imc.knownSystems(), QList<quint16>{0x4000}) << "room again";
 }
 
+namespace {
+
+// A console on a clock the test moves, whose IMC/UDP link is fed by hand
+// with no budget: what reaches the health monitor is exactly what was sent.
+struct ClockedConsole : ::testing::Test
+{
+    static transport::ImcUdpConfig config(const Clock *clock)
+    {
+        transport::ImcUdpConfig c = unbound();
+        c.clock = clock;
+        c.maxDatagramsPerSecond = 0;
+        return c;
+    }
+
+    ManualClock clock{QDateTime::currentDateTimeUtc()};
+    session::Console session{test::shippedSchema(), &clock};
+    transport::ImcUdpTransport *imc
+        = session.attachImc(std::make_unique<transport::ImcUdpTransport>(session.schemaSet(), config(&clock)));
+};
+
+} // namespace
+
 // Every forged id left a "communications lost" Error of its own: 1,000 of
 // them buried the real vehicle's alarm under 1,000 rows. Now systems never
 // named and heard for under 5 s share one Warning, and are forgotten.
-TEST(Hostile, ForgedIdsThatFallSilentShareOneAlarm)
+TEST_F(ClockedConsole, ForgedIdsThatFallSilentShareOneAlarm)
 {
-    ManualClock clock(QDateTime::currentDateTimeUtc());
-    session::Console session(test::shippedSchema(), &clock);
-    transport::ImcUdpConfig config = unbound();
-    config.clock = &clock;
-    config.maxDatagramsPerSecond = 0;
-    auto *imc = session.attachImc(std::make_unique<transport::ImcUdpTransport>(session.schemaSet(), config));
     // The real vehicle: named, talking at 1 Hz for 10 s.
     imc->receive(announce(0x1f, "lauv-real", QStringLiteral("imc+udp://127.0.0.1:6002/")), QHostAddress::LocalHost, 6002);
     for (int i = 0; i < 10; ++i) {
@@ -285,14 +301,8 @@ TEST(Hostile, ForgedIdsThatFallSilentShareOneAlarm)
 
 // Forged ids that reported an entity failure before falling silent left one
 // Failure per id behind: their entity alarms now go quiet with them.
-TEST(Hostile, ForgedEntityFailuresGoQuietWithTheirSystems)
+TEST_F(ClockedConsole, ForgedEntityFailuresGoQuietWithTheirSystems)
 {
-    ManualClock clock(QDateTime::currentDateTimeUtc());
-    session::Console session(test::shippedSchema(), &clock);
-    transport::ImcUdpConfig config = unbound();
-    config.clock = &clock;
-    config.maxDatagramsPerSecond = 0;
-    auto *imc = session.attachImc(std::make_unique<transport::ImcUdpTransport>(session.schemaSet(), config));
     msg::Codec codec(test::shippedSchema());
     for (int i = 0; i < 10; ++i) {
         imc->receive(packet("Heartbeat", 0x1f), QHostAddress::LocalHost, 6002);
