@@ -1,8 +1,13 @@
 #include "transport/imc/ImcUdpTransport.h"
 
-#include <QNetworkDatagram>
 #include <QNetworkInterface>
 #include <QRegularExpression>
+
+#include <cstring>
+
+#include <netinet/in.h>
+#include <sys/socket.h>
+#include <unistd.h>
 
 namespace neptus::transport {
 
@@ -11,8 +16,8 @@ namespace {
 // IMC's discovery multicast group (DUNE and the Java Neptus use it).
 const QHostAddress discoveryGroup(QStringLiteral("224.0.75.69"));
 
-// Datagrams read in one go: a flood must not keep the event loop in here.
-constexpr int datagramsPerRead = 256;
+// Datagrams taken in one go: a flood must not keep the event loop in here.
+constexpr int datagramsPerDrain = 256;
 // Hosts remembered per system (an attacker can forge many source addresses).
 constexpr int sendersPerSystem = 16;
 
@@ -48,8 +53,6 @@ ImcUdpTransport::ImcUdpTransport(std::shared_ptr<msg::SchemaSet> schemas, ImcUdp
     , m_schemas(std::move(schemas))
     , m_config(std::move(config))
 {
-    connect(&m_socket, &QUdpSocket::readyRead, this, [this] { readDatagrams(m_socket); });
-    connect(&m_discovery, &QUdpSocket::readyRead, this, [this] { readDatagrams(m_discovery); });
     m_timer.setInterval(m_config.heartbeatMs);
     connect(&m_timer, &QTimer::timeout, this, &ImcUdpTransport::heartbeat);
 }
@@ -59,27 +62,54 @@ ImcUdpTransport::ImcUdpTransport(std::shared_ptr<const msg::Schema> schema, ImcU
 {
 }
 
+ImcUdpTransport::~ImcUdpTransport()
+{
+    m_reader.reset(); // stops reading before the sockets close
+    for (const int fd : {m_fd, m_discoveryFd}) {
+        if (fd >= 0)
+            ::close(fd);
+    }
+}
+
 std::expected<void, QString> ImcUdpTransport::start()
 {
-    if (!m_socket.bind(m_config.bindAddress, m_config.port))
+    // Qt binds and sets the sockets up (errors, multicast); then they are
+    // ours, read by the reader's thread and written with sendto().
+    QUdpSocket socket, discovery;
+    if (!socket.bind(m_config.bindAddress, m_config.port))
         return std::unexpected(QStringLiteral("IMC/UDP: cannot listen on %1:%2: %3")
-                                   .arg(m_config.bindAddress.toString()).arg(m_config.port).arg(m_socket.errorString()));
-    if (auto bound = bindDiscovery(); !bound)
+                                   .arg(m_config.bindAddress.toString()).arg(m_config.port).arg(socket.errorString()));
+    if (auto bound = bindDiscovery(socket, discovery); !bound)
         return bound;
+    m_port = socket.localPort();
+    m_fd = ::dup(int(socket.socketDescriptor()));
+    std::vector<int> fds{m_fd};
+    if (discovery.state() == QAbstractSocket::BoundState) {
+        m_discoveryPort = discovery.localPort();
+        m_discoveryFd = ::dup(int(discovery.socketDescriptor()));
+        fds.push_back(m_discoveryFd);
+    }
+    if (std::find(fds.begin(), fds.end(), -1) != fds.end())
+        return std::unexpected(QStringLiteral("IMC/UDP: cannot keep the socket: %1").arg(qt_error_string(errno)));
+    DatagramReader::Limits limits;
+    limits.datagramsPerSecond = m_config.maxDatagramsPerSecond;
+    m_reader = std::make_unique<DatagramReader>(fds, limits, [this] {
+        QMetaObject::invokeMethod(this, &ImcUdpTransport::drain, Qt::QueuedConnection);
+    });
     m_timer.start();
     heartbeat();
     return {};
 }
 
-std::expected<void, QString> ImcUdpTransport::bindDiscovery()
+std::expected<void, QString> ImcUdpTransport::bindDiscovery(QUdpSocket &socket, QUdpSocket &discovery)
 {
     if (!m_config.discovery)
         return {};
     const bool loopback = m_config.bindAddress.isLoopback();
     if (m_config.discoveryPort == 0) {
-        if (!m_discovery.bind(m_config.bindAddress, 0))
+        if (!discovery.bind(m_config.bindAddress, 0))
             return std::unexpected(QStringLiteral("IMC/UDP: cannot listen for announcements on %1: %2")
-                                       .arg(m_config.bindAddress.toString(), m_discovery.errorString()));
+                                       .arg(m_config.bindAddress.toString(), discovery.errorString()));
         return {};
     }
     if (!loopback) {
@@ -89,12 +119,12 @@ std::expected<void, QString> ImcUdpTransport::bindDiscovery()
         if (!interface)
             return std::unexpected(QStringLiteral("IMC/UDP: no network interface has the address %1")
                                        .arg(m_config.bindAddress.toString()));
-        if (!m_discovery.bind(QHostAddress::AnyIPv4, m_config.discoveryPort,
+        if (!discovery.bind(QHostAddress::AnyIPv4, m_config.discoveryPort,
                               QUdpSocket::ShareAddress | QUdpSocket::ReuseAddressHint))
             return std::unexpected(QStringLiteral("IMC/UDP: cannot listen for announcements on port %1: %2")
-                                       .arg(m_config.discoveryPort).arg(m_discovery.errorString()));
-        m_discovery.joinMulticastGroup(discoveryGroup, interface->first);
-        m_socket.setMulticastInterface(interface->first);
+                                       .arg(m_config.discoveryPort).arg(discovery.errorString()));
+        discovery.joinMulticastGroup(discoveryGroup, interface->first);
+        socket.setMulticastInterface(interface->first);
         return {};
     }
     // Loopback: each program takes the first free port of the range and
@@ -102,10 +132,10 @@ std::expected<void, QString> ImcUdpTransport::bindDiscovery()
     QString why;
     for (int i = 0; i < m_config.discoveryPortCount; ++i) {
         const auto port = static_cast<quint16>(m_config.discoveryPort + i);
-        if (m_discovery.bind(m_config.bindAddress, port))
+        if (discovery.bind(m_config.bindAddress, port))
             return {};
-        why = m_discovery.errorString();
-        m_discovery.close();
+        why = discovery.errorString();
+        discovery.close();
     }
     return std::unexpected(QStringLiteral("IMC/UDP: cannot listen for announcements on %1, ports %2-%3: %4")
                                .arg(m_config.bindAddress.toString())
@@ -139,21 +169,36 @@ QString ImcUdpTransport::Endpoint::name() const
     return peerName(address, port);
 }
 
-void ImcUdpTransport::readDatagrams(QUdpSocket &socket)
+void ImcUdpTransport::drain()
 {
-    // What is left is read on the next turn of the event loop (the socket
-    // stays readable).
-    for (int i = 0; i < datagramsPerRead && socket.hasPendingDatagrams(); ++i) {
-        const QNetworkDatagram datagram = socket.receiveDatagram();
-        receive(datagram.data(), datagram.senderAddress(), static_cast<quint16>(datagram.senderPort()));
+    if (!m_reader)
+        return;
+    DatagramReader::Batch batch = m_reader->take(datagramsPerDrain);
+    if (!batch.dropped.isEmpty()) {
+        const qint64 now = nowMs();
+        for (auto it = batch.dropped.cbegin(); it != batch.dropped.cend(); ++it) {
+            Budget &budget = m_budgets[it.key()];
+            rollBudget(it.key(), budget, now);
+            budget.dropped += it.value();
+            m_dropped += quint64(it.value());
+        }
     }
+    for (const DatagramReader::Datagram &datagram : batch.datagrams)
+        process(datagram.bytes, datagram.from, datagram.port);
+    // What is left is taken on the next turn of the event loop.
+    if (batch.more)
+        QMetaObject::invokeMethod(this, &ImcUdpTransport::drain, Qt::QueuedConnection);
 }
 
 void ImcUdpTransport::receive(QByteArrayView datagram, const QHostAddress &from, quint16 fromPort)
 {
+    if (withinBudget(hostName(from)))
+        process(datagram, from, fromPort);
+}
+
+void ImcUdpTransport::process(QByteArrayView datagram, const QHostAddress &from, quint16 fromPort)
+{
     const QString host = hostName(from);
-    if (!withinBudget(host))
-        return;
     auto message = m_schemas->decode(datagram);
     if (!message) {
         ++m_decodeErrors;
@@ -381,8 +426,29 @@ std::expected<void, QString> ImcUdpTransport::send(const msg::Message &message, 
 {
     if (auto encoded = m_schemas->codecFor(message.header.dst)->encode(message, m_buffer); !encoded)
         return std::unexpected(QStringLiteral("%1 does not encode: %2").arg(message.abbrev(), encoded.error().toString()));
-    if (m_socket.writeDatagram(m_buffer, to.address, to.port) != m_buffer.size())
-        return std::unexpected(QStringLiteral("cannot send to %1: %2").arg(peerName(to.address, to.port), m_socket.errorString()));
+    if (m_fd < 0)
+        return std::unexpected(QStringLiteral("cannot send to %1: not started").arg(to.name()));
+    sockaddr_storage address{};
+    socklen_t size = 0;
+    bool isIpv4 = false;
+    const quint32 ipv4 = to.address.toIPv4Address(&isIpv4);
+    if (isIpv4 && m_config.bindAddress.protocol() != QAbstractSocket::IPv6Protocol) {
+        auto *v4 = reinterpret_cast<sockaddr_in *>(&address);
+        v4->sin_family = AF_INET;
+        v4->sin_port = htons(to.port);
+        v4->sin_addr.s_addr = htonl(ipv4);
+        size = sizeof *v4;
+    } else {
+        auto *v6 = reinterpret_cast<sockaddr_in6 *>(&address);
+        v6->sin6_family = AF_INET6;
+        v6->sin6_port = htons(to.port);
+        const Q_IPV6ADDR bytes = to.address.toIPv6Address();
+        std::memcpy(&v6->sin6_addr, bytes.c, sizeof v6->sin6_addr);
+        size = sizeof *v6;
+    }
+    if (::sendto(m_fd, m_buffer.constData(), size_t(m_buffer.size()), 0, reinterpret_cast<sockaddr *>(&address), size)
+        != m_buffer.size())
+        return std::unexpected(QStringLiteral("cannot send to %1: %2").arg(to.name(), qt_error_string(errno)));
     return {};
 }
 
@@ -396,7 +462,7 @@ msg::Message ImcUdpTransport::announcement() const
     announce.setInteger(def->indexOf(u"owner"), 0xFFFF);
     announce.setBytes(def->indexOf(u"services"), QStringLiteral("imc+info://0.0.0.0/version/%1;imc+udp://%2:%3/")
                                                      .arg(schema.version(), m_config.bindAddress.toString())
-                                                     .arg(port())
+                                                     .arg(m_port)
                                                      .toUtf8());
     return announce;
 }

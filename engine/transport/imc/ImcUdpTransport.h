@@ -3,6 +3,7 @@
 #include "core/Clock.h"
 #include "messages/SchemaSet.h"
 #include "transport/OutputSink.h"
+#include "transport/imc/DatagramReader.h"
 
 #include <QHash>
 #include <QHostAddress>
@@ -70,6 +71,12 @@ struct ImcUdpConfig
 // are forgotten (no more heartbeats to them), at most maxSystems systems are
 // kept, and each host may deliver at most maxDatagramsPerSecond (0: no limit,
 // for replaying logs); the excess is dropped before it is decoded.
+//
+// The sockets are read on a thread of their own (DatagramReader), which
+// keeps a bounded queue per sending host; the GUI thread takes datagrams
+// from the queues one host at a time in turn, so a flooding host delays and
+// drops only its own datagrams. Everything else happens on the thread that
+// owns the transport.
 class ImcUdpTransport : public QObject, public OutputSink
 {
     Q_OBJECT
@@ -77,21 +84,22 @@ class ImcUdpTransport : public QObject, public OutputSink
 public:
     ImcUdpTransport(std::shared_ptr<msg::SchemaSet> schemas, ImcUdpConfig config, QObject *parent = nullptr);
     ImcUdpTransport(std::shared_ptr<const msg::Schema> schema, ImcUdpConfig config, QObject *parent = nullptr);
+    ~ImcUdpTransport() override;
 
     // Binds the sockets; an error names the address and port and why.
     std::expected<void, QString> start();
-    quint16 port() const { return m_socket.localPort(); }
-    quint16 discoveryPort() const { return m_discovery.localPort(); }
+    quint16 port() const { return m_port; }
+    quint16 discoveryPort() const { return m_discoveryPort; }
     // Systems with an address commands can go to.
     QList<quint16> knownSystems() const;
     int decodeErrors() const { return m_decodeErrors; }
     int maxDatagramsPerSecond() const { return m_config.maxDatagramsPerSecond; }
-    // Datagrams dropped unread over their host's budget, since the start.
+    // Datagrams dropped unread over their host's budget or queue, since the start.
     quint64 droppedDatagrams() const { return m_dropped; }
     const msg::SchemaSet &schemas() const { return *m_schemas; }
 
-    // One datagram as it arrived from `from`:`fromPort` (the sockets call
-    // it; tests and the fuzz target call it without any socket).
+    // One datagram as it arrived from `from`:`fromPort`, within its host's
+    // budget (tests and the fuzz target call it without any socket).
     void receive(QByteArrayView datagram, const QHostAddress &from, quint16 fromPort);
 
     // OutputSink: sends `message` to `system`, addressed to it, in its
@@ -179,19 +187,24 @@ private:
     bool withinBudget(const QString &host);
     void rollBudget(const QString &host, Budget &budget, qint64 now);
 
-    void readDatagrams(QUdpSocket &socket);
+    // Takes what the reader queued (already within budget), in turns.
+    void drain();
+    // A datagram within its host's budget.
+    void process(QByteArrayView datagram, const QHostAddress &from, quint16 fromPort);
     void learnFromAnnounce(const msg::Message &announce, const QHostAddress &from, const QString &host);
     std::expected<void, QString> send(const msg::Message &message, const Endpoint &to);
     double now() const { return m_config.clock->now().toMSecsSinceEpoch() / 1000.0; }
     msg::Message announcement() const;
-    std::expected<void, QString> bindDiscovery();
+    std::expected<void, QString> bindDiscovery(QUdpSocket &socket, QUdpSocket &discovery);
     // Where our Announce goes besides the vehicles we know: the discovery ports.
     QList<Endpoint> discoveryTargets() const;
 
     std::shared_ptr<msg::SchemaSet> m_schemas;
     ImcUdpConfig m_config;
-    QUdpSocket m_socket;
-    QUdpSocket m_discovery;
+    int m_fd = -1;          // bound by start(); sends go from it
+    int m_discoveryFd = -1;
+    quint16 m_port = 0;
+    quint16 m_discoveryPort = 0;
     QTimer m_timer;
     QHash<quint16, Peer> m_peers; // known systems
     QHash<QString, Budget> m_budgets; // by sending host
@@ -200,6 +213,7 @@ private:
     int m_decodeErrors = 0;
     quint64 m_dropped = 0;
     QByteArray m_buffer;
+    std::unique_ptr<DatagramReader> m_reader; // last: stops before the rest goes
 };
 
 } // namespace neptus::transport
