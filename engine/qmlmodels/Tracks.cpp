@@ -1,6 +1,7 @@
 #include "qmlmodels/Tracks.h"
 
 #include "geo/Geodesy.h"
+#include "messages/Message.h"
 
 #include <cmath>
 
@@ -20,6 +21,9 @@ Tracks::Tracks(tree::VariableTreeModel *model, QObject *parent)
     m_more.setSingleShot(true);
     m_more.setInterval(16);
     connect(&m_more, &QTimer::timeout, this, &Tracks::update);
+    m_forget.setInterval(1000);
+    connect(&m_forget, &QTimer::timeout, this, &Tracks::forgetSilent);
+    m_forget.start();
 }
 
 QStringList Tracks::systems() const
@@ -30,13 +34,20 @@ QStringList Tracks::systems() const
     return names;
 }
 
-// By name: called by QML and tests, not per fix.
 const Tracks::Track *Tracks::track(const QString &system) const
 {
-    for (const auto &t : m_tracks)
-        if (t->system == system)
-            return t.get();
-    return nullptr;
+    return m_byName.value(system);
+}
+
+void Tracks::setMaxDrawn(int systems)
+{
+    systems = std::max(systems, 1);
+    if (systems == m_maxDrawn)
+        return;
+    m_maxDrawn = systems;
+    m_rowsDirty = true;
+    updateRows();
+    emit systemsChanged();
 }
 
 QVariantMap Tracks::home() const
@@ -61,7 +72,7 @@ void Tracks::setHome(const QVariantMap &home)
     m_homeHeight = home.value(QStringLiteral("height")).toDouble();
     m_hasHome = true;
     emit homeChanged();
-    if (!m_tracks.empty()) // every row's position from home moved
+    if (!m_rows.empty()) // every row's position from home moved
         emit dataChanged(index(0), index(rowCount() - 1), {NorthRole, EastRole, DownRole});
 }
 
@@ -96,43 +107,118 @@ int Tracks::count(const QString &system) const
 
 void Tracks::clear(const QString &system)
 {
-    for (auto &t : m_tracks)
-        if (t->system == system) {
-            t->dropped += t->fixes.size();
-            t->fixes.clear();
-            ++t->revision;
-            ++m_revision;
-            notifyChanged();
-            emit updated();
-        }
+    Track *t = m_byName.value(system);
+    if (!t)
+        return;
+    t->dropped += t->fixes.size();
+    t->fixes.clear();
+    ++t->revision;
+    ++m_revision;
+    notifyChanged();
+    emit updated();
 }
 
-int Tracks::rowOf(const Track &track) const
+Tracks::Track &Tracks::trackFor(quint16 id, const QString &system, bool named)
 {
-    return m_rowById.value(track.id, -1);
-}
-
-Tracks::Track &Tracks::trackFor(quint16 id, const QString &system)
-{
-    if (const auto row = m_rowById.constFind(id); row != m_rowById.cend()) {
-        Track &t = *m_tracks[static_cast<size_t>(*row)];
-        if (t.system != system) {
-            t.system = system; // named by its Announce
-            emit dataChanged(index(*row), index(*row), {SystemRole});
+    if (Track *t = m_byId.value(id)) {
+        if (t->system != system) { // named by its Announce
+            m_byName.remove(t->system);
+            t->system = system;
+            m_byName.insert(system, t);
+            const auto row = std::find(m_rows.begin(), m_rows.end(), t);
+            if (row != m_rows.end()) {
+                const int r = int(row - m_rows.begin());
+                emit dataChanged(index(r), index(r), {SystemRole});
+            }
             m_systemsChanged = true;
         }
-        return t;
+        if (t->named != named) {
+            t->named = named;
+            m_rowsDirty = true;
+        }
+        return *t;
     }
-    const int row = rowCount();
-    beginInsertRows({}, row, row);
     m_tracks.push_back(std::make_unique<Track>());
-    m_tracks.back()->id = id;
-    m_tracks.back()->system = system;
-    m_rowById.insert(id, row);
-    m_shownRevision.push_back(0);
-    endInsertRows();
+    Track *t = m_tracks.back().get();
+    t->id = id;
+    t->system = system;
+    t->named = named;
+    m_byId.insert(id, t);
+    m_byName.insert(system, t);
+    m_rowsDirty = true;
     m_systemsChanged = true;
-    return *m_tracks.back();
+    return *t;
+}
+
+void Tracks::updateRows()
+{
+    if (!m_rowsDirty)
+        return;
+    m_rowsDirty = false;
+    // Named systems first, then the others, each in the order first heard.
+    std::vector<Track *> drawn;
+    for (const bool named : {true, false}) {
+        for (const auto &t : m_tracks) {
+            if (t->named == named && int(drawn.size()) < m_maxDrawn)
+                drawn.push_back(t.get());
+        }
+    }
+    const QSet<Track *> wanted(drawn.begin(), drawn.end());
+    const QSet<Track *> had(m_rows.begin(), m_rows.end());
+    if (wanted == had)
+        return;
+    for (int row = int(m_rows.size()) - 1; row >= 0; --row) {
+        if (wanted.contains(m_rows[size_t(row)]))
+            continue;
+        beginRemoveRows({}, row, row);
+        m_rows.erase(m_rows.begin() + row);
+        m_shownRevision.erase(m_shownRevision.begin() + row);
+        endRemoveRows();
+    }
+    for (Track *t : drawn) {
+        if (had.contains(t))
+            continue;
+        const int row = rowCount();
+        beginInsertRows({}, row, row);
+        m_rows.push_back(t);
+        m_shownRevision.push_back(t->revision);
+        endInsertRows();
+    }
+    m_systemsChanged = true; // `hidden` changed
+}
+
+void Tracks::forgetSilent()
+{
+    if (!m_model)
+        return;
+    const qint64 now = m_model->tree()->clock().now().toMSecsSinceEpoch();
+    const auto silent = [&](const std::unique_ptr<Track> &t) {
+        return !t->named && now - t->heardMs > m_forgetAfterMs;
+    };
+    if (std::none_of(m_tracks.begin(), m_tracks.end(), silent))
+        return;
+    for (int row = int(m_rows.size()) - 1; row >= 0; --row) {
+        const Track *t = m_rows[size_t(row)];
+        if (t->named || now - t->heardMs <= m_forgetAfterMs)
+            continue;
+        beginRemoveRows({}, row, row);
+        m_rows.erase(m_rows.begin() + row);
+        m_shownRevision.erase(m_shownRevision.begin() + row);
+        endRemoveRows();
+    }
+    for (const auto &t : m_tracks) {
+        if (silent(t)) {
+            m_byId.remove(t->id);
+            m_byName.remove(t->system);
+        }
+    }
+    std::erase_if(m_tracks, silent);
+    m_rowsDirty = true;
+    updateRows(); // others may take the rows given back
+    m_systemsChanged = true;
+    flushSystems();
+    ++m_revision;
+    emit updated();
 }
 
 void Tracks::flushSystems()
@@ -150,16 +236,16 @@ void Tracks::notifyChanged()
     // One dataChanged per run of neighbouring rows that moved.
     const int rows = rowCount();
     for (int row = 0; row < rows;) {
-        if (m_tracks[static_cast<size_t>(row)]->revision == m_shownRevision[static_cast<size_t>(row)]) {
+        if (m_rows[static_cast<size_t>(row)]->revision == m_shownRevision[static_cast<size_t>(row)]) {
             ++row;
             continue;
         }
         int last = row;
         while (last + 1 < rows
-               && m_tracks[static_cast<size_t>(last + 1)]->revision != m_shownRevision[static_cast<size_t>(last + 1)])
+               && m_rows[static_cast<size_t>(last + 1)]->revision != m_shownRevision[static_cast<size_t>(last + 1)])
             ++last;
         for (int r = row; r <= last; ++r)
-            m_shownRevision[static_cast<size_t>(r)] = m_tracks[static_cast<size_t>(r)]->revision;
+            m_shownRevision[static_cast<size_t>(r)] = m_rows[static_cast<size_t>(r)]->revision;
         emit dataChanged(index(row), index(last));
         row = last + 1;
     }
@@ -167,14 +253,14 @@ void Tracks::notifyChanged()
 
 int Tracks::rowCount(const QModelIndex &parent) const
 {
-    return parent.isValid() ? 0 : static_cast<int>(m_tracks.size());
+    return parent.isValid() ? 0 : static_cast<int>(m_rows.size());
 }
 
 QVariant Tracks::data(const QModelIndex &index, int role) const
 {
     if (!checkIndex(index, CheckIndexOption::IndexIsValid | CheckIndexOption::ParentIsInvalid))
         return {};
-    const Track &t = *m_tracks[static_cast<size_t>(index.row())];
+    const Track &t = *m_rows[static_cast<size_t>(index.row())];
     const Fix &f = t.latest;
     const bool valid = t.revision > 0;
     const auto fromHome = [&](int axis) {
@@ -219,7 +305,7 @@ void Tracks::homeOnce(double lat, double lon, double height)
     m_homeHeight = height;
     m_hasHome = true;
     emit homeChanged();
-    if (!m_tracks.empty())
+    if (!m_rows.empty())
         emit dataChanged(index(0), index(rowCount() - 1), {NorthRole, EastRole, DownRole});
 }
 
@@ -227,9 +313,10 @@ void Tracks::append(const QString &system, const Fix &fix)
 {
     const Track *known = track(system);
     // Not from the tree: a private id, past any IMC system's.
-    Track &t = trackFor(known ? known->id : quint16(0xF000 + m_tracks.size()), system);
+    Track &t = trackFor(known ? known->id : m_nextPrivateId++, system, true);
     homeOnce(fix.lat, fix.lon, 0);
     add(t, fix);
+    updateRows();
     flushSystems();
     notifyChanged();
 }
@@ -276,7 +363,10 @@ void Tracks::read(tree::NodeId node)
     fix.heading = float(field("psi"));
     const quint16 id = tree.systemOf(node);
     homeOnce(lat, lon, field("height")); // the vehicle's own reference, not its offset position
-    add(trackFor(id, tree.systemName(id)), fix);
+    const QString name = tree.systemName(id);
+    Track &t = trackFor(id, name, name != msg::systemLabel(id));
+    t.heardMs = tree.clock().now().toMSecsSinceEpoch();
+    add(t, fix);
 }
 
 void Tracks::update()
@@ -297,7 +387,7 @@ void Tracks::update()
             nodes.push_back(node);
     int joined = 0;
     for (const tree::NodeId node : nodes) {
-        if (!m_rowById.contains(tree.systemOf(node)) && joined++ >= newSystemsPerUpdate) {
+        if (!m_byId.contains(tree.systemOf(node)) && joined++ >= newSystemsPerUpdate) {
             if (!m_waitingSet.contains(node)) {
                 m_waitingSet.insert(node);
                 m_waiting.push_back(node);
@@ -308,6 +398,7 @@ void Tracks::update()
     }
     if (!m_waiting.empty() && !m_more.isActive())
         m_more.start(); // the model syncs only when the tree changes
+    updateRows();
     flushSystems();
     if (m_revision == before)
         return;

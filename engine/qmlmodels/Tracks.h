@@ -24,7 +24,13 @@ namespace neptus::geo {
 //
 // Also a list model, a row per system with its latest state, for the map's
 // and the 3D scene's Repeaters: a new system inserts its row, a move changes
-// only that row (no view rebuilds its other items).
+// only that row (no view rebuilds its other items). At most `maxDrawn`
+// systems have a row (each costs a marker, a trail and a 3D model on every
+// frame): named systems (Announce, configuration) before unnamed ones, each
+// in the order first heard, so a burst of forged ids cannot push a real
+// vehicle off the map; `hidden` counts the others. A system never named and
+// not heard from for `forgetAfter` seconds is forgotten; a named one keeps
+// its last position (where the vehicle was last seen matters most).
 class Tracks : public QAbstractListModel
 {
     Q_OBJECT
@@ -33,6 +39,8 @@ class Tracks : public QAbstractListModel
     Q_PROPERTY(QStringList systems READ systems NOTIFY systemsChanged)
     Q_PROPERTY(quint64 revision READ revision NOTIFY updated)
     Q_PROPERTY(QVariantMap home READ home WRITE setHome NOTIFY homeChanged)
+    Q_PROPERTY(int maxDrawn READ maxDrawn WRITE setMaxDrawn NOTIFY systemsChanged)
+    Q_PROPERTY(int hidden READ hidden NOTIFY systemsChanged)
 
 public:
     enum Role {
@@ -70,12 +78,22 @@ public:
         Fix latest;             // the last state heard, moved or not
         quint64 dropped = 0;    // fixes forgotten from the front so far
         quint64 revision = 0;   // grows with every change
+        bool named = false;     // by Announce or configuration, not "0x4001"
+        qint64 heardMs = 0;     // when its last state arrived (the tree's clock)
     };
 
     explicit Tracks(tree::VariableTreeModel *model, QObject *parent = nullptr);
 
+    // Every system tracked, drawn or not, in the order first heard.
     QStringList systems() const;
     quint64 revision() const { return m_revision; }
+    int maxDrawn() const { return m_maxDrawn; }
+    void setMaxDrawn(int systems);
+    int hidden() const { return int(m_tracks.size() - m_rows.size()); }
+    double forgetAfter() const { return m_forgetAfterMs / 1000.0; }
+    void setForgetAfter(double seconds) { m_forgetAfterMs = qint64(seconds * 1000); }
+    // Forgets unnamed systems silent for forgetAfter (a timer does it every second).
+    void forgetSilent();
     const Track *track(const QString &system) const;
 
     // {lat, lon (degrees), height, valid}: the origin of local NED grids and
@@ -117,21 +135,29 @@ signals:
     void homeChanged();
 
 private:
-    Track &trackFor(quint16 id, const QString &system);
+    Track &trackFor(quint16 id, const QString &system, bool named);
     void flushSystems();
+    // Gives rows to the systems that should be drawn, and takes them from the others.
+    void updateRows();
     // Home is the first position heard, unless set.
     void homeOnce(double lat, double lon, double height);
     void add(Track &track, const Fix &fix);
     void read(tree::NodeId estimatedState);
-    int rowOf(const Track &track) const;
     // Rows whose track changed since the views were last told.
     void notifyChanged();
 
     QPointer<tree::VariableTreeModel> m_model;
     int m_consumer = -1;
-    std::vector<std::unique_ptr<Track>> m_tracks; // in row order
-    QHash<quint16, int> m_rowById;
-    std::vector<quint64> m_shownRevision;          // per row: what views were told
+    std::vector<std::unique_ptr<Track>> m_tracks; // in the order first heard
+    QHash<quint16, Track *> m_byId;
+    QHash<QString, Track *> m_byName;
+    std::vector<Track *> m_rows;                    // the drawn ones, in row order
+    std::vector<quint64> m_shownRevision;           // per row: what views were told
+    bool m_rowsDirty = false; // a system came, went or was named: updateRows() is due
+    int m_maxDrawn = 50;
+    quint16 m_nextPrivateId = 0xF000; // for append(): past any IMC system's
+    qint64 m_forgetAfterMs = 60'000;
+    QTimer m_forget;
     quint64 m_revision = 0;
     bool m_systemsChanged = false; // systemsChanged is due at the end of this batch
     // EstimatedStates of systems not tracked yet, past this update's budget.

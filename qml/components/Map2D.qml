@@ -223,6 +223,17 @@ Rectangle {
         color: Theme.textDim
         font.pixelSize: Theme.smallFontPixelSize
     }
+    // Past tracks.maxDrawn systems the rest are counted, not drawn.
+    Text {
+        objectName: "hiddenSystems"
+        visible: root.tracks !== null && root.tracks.hidden > 0
+        anchors { left: parent.left; top: parent.top; margins: Theme.spacing; topMargin: Theme.spacing * 2 + Theme.smallFontPixelSize * 1.4 }
+        text: root.tracks ? qsTr("%L1 more systems not drawn (the first %L2 named and heard are)")
+                            .arg(root.tracks.hidden).arg(root.tracks.maxDrawn) : ""
+        color: Theme.text
+        font.pixelSize: Theme.smallFontPixelSize
+        font.bold: true
+    }
 
     // Trails, one per system, drawn by the scene graph.
     Repeater {

@@ -282,6 +282,15 @@ Rectangle {
         TouchButton { objectName: "resetView"; text: "⟲"; toolTip: qsTr("Reset the view"); onClicked: root.resetView() }
     }
     Text {
+        objectName: "hiddenSystems"
+        visible: root.tracks !== null && root.tracks.hidden > 0
+        anchors { left: parent.left; top: parent.top; margins: Theme.spacing }
+        text: root.tracks ? qsTr("%L1 more systems not drawn").arg(root.tracks.hidden) : ""
+        color: Theme.text
+        font.pixelSize: Theme.smallFontPixelSize
+        font.bold: true
+    }
+    Text {
         objectName: "modelError"
         anchors { left: parent.left; bottom: parent.bottom; margins: Theme.spacing }
         text: [terrain.errorString, vehicleGeometry.errorString].filter(e => e !== "").join("\n")

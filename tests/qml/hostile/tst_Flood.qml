@@ -7,7 +7,8 @@ import Neptus.Testing
 // 300 systems appearing at once (valid EstimatedState from 300 source ids)
 // froze the default console for over 150 s: every new system rebuilt every
 // item of the map's, the 3D scene's, the systems list's and the health
-// strip's Repeaters. Now each adds its own items only. Bounded by the
+// strip's Repeaters. Now each adds its own items only, and the map and the
+// 3D scene draw at most Tracks.maxDrawn of them. Bounded by the
 // test's time limit (60 s).
 TestCase {
     id: test
@@ -37,11 +38,19 @@ TestCase {
             }
         }
         Fixtures.treeModel.sync()
-        tryVerify(() => map.tracks.rowCount() >= 300, 10000, "a row of the tracks per system")
-        const name = "0x" + (first + 299).toString(16).padStart(4, "0")
-        tryVerify(() => findChild(map, "marker:" + name) !== null, 10000, "the last system is on the map")
-        tryVerify(() => findChild(scene.view, "vehicle:" + name) !== null, 10000, "and in the 3D scene")
-        tryVerify(() => findChild(strip, "health-" + name) !== null, 10000, "and in the health strip")
+        tryVerify(() => map.tracks.systems.length >= 300, 10000, "every system is tracked")
+        // The map and the 3D scene draw the first maxDrawn, and count the rest.
+        compare(map.tracks.rowCount(), map.tracks.maxDrawn)
+        const nameOf = i => "0x" + (first + i).toString(16).padStart(4, "0")
+        const lastDrawn = nameOf(map.tracks.maxDrawn - 1)
+        tryVerify(() => findChild(map, "marker:" + lastDrawn) !== null, 10000, "the last drawn system is on the map")
+        tryVerify(() => findChild(scene.view, "vehicle:" + lastDrawn) !== null, 10000, "and in the 3D scene")
+        verify(findChild(map, "marker:" + nameOf(299)) === null, "past maxDrawn, not drawn")
+        const hidden = findChild(map, "hiddenSystems")
+        verify(hidden.visible)
+        verify(hidden.text.startsWith(String(map.tracks.systems.length - map.tracks.maxDrawn) + " more systems"), hidden.text)
+        verify(findChild(scene, "hiddenSystems").visible)
+        tryVerify(() => findChild(strip, "health-" + nameOf(299)) !== null, 10000, "every system is in the health strip")
         compare(systems.count, Session.systems.length)
         verify(Session.systems.length >= 300)
     }

@@ -168,9 +168,77 @@ TEST_F(TrackRecording, AFloodOfNewSystemsJoinsAFewPerFrame)
     EXPECT_LE(tracks.rowCount(), 10) << "a few per frame";
     EXPECT_EQ(systemsChanged.count(), 1);
     // The others join on the next frames, without new data.
-    QTRY_COMPARE_WITH_TIMEOUT(tracks.rowCount(), 100, 5000);
+    QTRY_COMPARE_WITH_TIMEOUT(tracks.systems().size(), 100, 5000);
     EXPECT_LE(systemsChanged.count(), 100 / 8 + 2);
     const auto *last = tracks.track(QStringLiteral("0x4063"));
     ASSERT_TRUE(last);
     EXPECT_EQ(last->fixes.size(), 1u);
+}
+
+// With 1,000 systems alive the console drew 1,000 markers, trails and 3D
+// models a frame (half-second frames, +600 MB). Now at most maxDrawn have a
+// row; named systems take them first, so forged ids that came first cannot
+// push the real vehicle off the map, and the rest are counted.
+TEST_F(TrackRecording, AtMostMaxDrawnSystemsAreDrawnNamedOnesFirst)
+{
+    QAbstractItemModelTester tester(&tracks, QAbstractItemModelTester::FailureReportingMode::Fatal);
+    tracks.setMaxDrawn(20);
+    for (int i = 0; i < 30; ++i) {
+        tree.ingest(state(quint16(0x4000 + i), 41.0, -8.0, i, 0, 0));
+        model.sync();
+    }
+    QTRY_COMPARE_WITH_TIMEOUT(tracks.systems().size(), 30, 5000);
+    EXPECT_EQ(tracks.rowCount(), 20);
+    EXPECT_EQ(tracks.hidden(), 10);
+    EXPECT_EQ(tracks.index(0).data(Tracks::SystemRole).toString(), QStringLiteral("0x4000")) << "first heard first";
+
+    // A vehicle that announced itself comes after them, and is drawn.
+    tree.setSystemName(0x1f, QStringLiteral("lauv-xplore-1"));
+    tree.ingest(state(0x1f, 41.0, -8.0, 500, 0, 3));
+    model.sync();
+    EXPECT_EQ(tracks.rowCount(), 20);
+    EXPECT_EQ(tracks.hidden(), 11);
+    QStringList drawn;
+    for (int row = 0; row < tracks.rowCount(); ++row)
+        drawn << tracks.index(row).data(Tracks::SystemRole).toString();
+    EXPECT_TRUE(drawn.contains(QStringLiteral("lauv-xplore-1"))) << drawn.join(u' ').toStdString();
+    EXPECT_FALSE(drawn.contains(QStringLiteral("0x4013"))) << "the last unnamed one drawn gave its row";
+
+    tracks.setMaxDrawn(100);
+    EXPECT_EQ(tracks.rowCount(), 31);
+    EXPECT_EQ(tracks.hidden(), 0);
+}
+
+// Systems never named that fall silent are forgotten (their rows and
+// trails too); a named vehicle keeps its last position however long silent.
+TEST_F(TrackRecording, SilentUnnamedSystemsAreForgottenNamedOnesStay)
+{
+    QAbstractItemModelTester tester(&tracks, QAbstractItemModelTester::FailureReportingMode::Fatal);
+    tracks.setForgetAfter(60);
+    tree.setSystemName(0x1f, QStringLiteral("lauv-xplore-1"));
+    tree.ingest(state(0x1f, 41.0, -8.0, 0, 0, 3));
+    tree.ingest(state(0x4000, 41.0, -8.0, 10, 0, 0));
+    tree.ingest(state(0x4001, 41.0, -8.0, 20, 0, 0));
+    model.sync();
+    ASSERT_EQ(tracks.rowCount(), 3);
+
+    clock.advance(30'000);
+    tree.ingest(state(0x4001, 41.0, -8.0, 25, 0, 0)); // still talking
+    model.sync();
+    clock.advance(31'000);
+    tracks.forgetSilent();
+    EXPECT_EQ(tracks.systems(), (QStringList{QStringLiteral("lauv-xplore-1"), QStringLiteral("0x4001")}));
+    EXPECT_EQ(tracks.rowCount(), 2);
+    EXPECT_EQ(tracks.track(QStringLiteral("0x4000")), nullptr);
+
+    clock.advance(3600'000);
+    tracks.forgetSilent();
+    EXPECT_EQ(tracks.systems(), QStringList{QStringLiteral("lauv-xplore-1")});
+    EXPECT_EQ(tracks.latest(QStringLiteral("lauv-xplore-1")).value(QStringLiteral("depth")).toDouble(), 3);
+
+    // One that comes back starts a new track.
+    tree.ingest(state(0x4000, 41.0, -8.0, 10, 0, 0));
+    model.sync();
+    EXPECT_EQ(tracks.rowCount(), 2);
+    EXPECT_EQ(tracks.count(QStringLiteral("0x4000")), 1);
 }
