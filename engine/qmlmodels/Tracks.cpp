@@ -50,6 +50,17 @@ void Tracks::setMaxDrawn(int systems)
     emit systemsChanged();
 }
 
+void Tracks::setMaxUnnamedDrawn(int systems)
+{
+    systems = std::max(systems, 0);
+    if (systems == m_maxUnnamedDrawn)
+        return;
+    m_maxUnnamedDrawn = systems;
+    m_rowsDirty = true;
+    updateRows();
+    emit systemsChanged();
+}
+
 QVariantMap Tracks::home() const
 {
     return {{QStringLiteral("lat"), degrees(m_homeLat)},
@@ -155,11 +166,12 @@ void Tracks::updateRows()
     if (!m_rowsDirty)
         return;
     m_rowsDirty = false;
-    // Named systems first, then the others, each in the order first heard.
+    // Named systems first, then a few others, each in the order first heard.
     std::vector<Track *> drawn;
     for (const bool named : {true, false}) {
+        const int most = named ? m_maxDrawn : std::min<int>(m_maxDrawn, int(drawn.size()) + m_maxUnnamedDrawn);
         for (const auto &t : m_tracks) {
-            if (t->named == named && int(drawn.size()) < m_maxDrawn)
+            if (t->named == named && int(drawn.size()) < most)
                 drawn.push_back(t.get());
         }
     }

@@ -26,9 +26,10 @@ namespace neptus::geo {
 // and the 3D scene's Repeaters: a new system inserts its row, a move changes
 // only that row (no view rebuilds its other items). At most `maxDrawn`
 // systems have a row (each costs a marker, a trail and a 3D model on every
-// frame): named systems (Announce, configuration) before unnamed ones, each
-// in the order first heard, so a burst of forged ids cannot push a real
-// vehicle off the map; `hidden` counts the others. A system never named and
+// frame), of which at most `maxUnnamedDrawn` were never named: named systems
+// (Announce, configuration) come first, each in the order first heard, so a
+// burst of forged ids can neither push a real vehicle off the map nor slow
+// every frame down; `hidden` counts the others. A system never named and
 // not heard from for `forgetAfter` seconds is forgotten; a named one keeps
 // its last position (where the vehicle was last seen matters most).
 class Tracks : public QAbstractListModel
@@ -40,6 +41,7 @@ class Tracks : public QAbstractListModel
     Q_PROPERTY(quint64 revision READ revision NOTIFY updated)
     Q_PROPERTY(QVariantMap home READ home WRITE setHome NOTIFY homeChanged)
     Q_PROPERTY(int maxDrawn READ maxDrawn WRITE setMaxDrawn NOTIFY systemsChanged)
+    Q_PROPERTY(int maxUnnamedDrawn READ maxUnnamedDrawn WRITE setMaxUnnamedDrawn NOTIFY systemsChanged)
     Q_PROPERTY(int hidden READ hidden NOTIFY systemsChanged)
 
 public:
@@ -89,6 +91,8 @@ public:
     quint64 revision() const { return m_revision; }
     int maxDrawn() const { return m_maxDrawn; }
     void setMaxDrawn(int systems);
+    int maxUnnamedDrawn() const { return m_maxUnnamedDrawn; }
+    void setMaxUnnamedDrawn(int systems);
     int hidden() const { return int(m_tracks.size() - m_rows.size()); }
     double forgetAfter() const { return m_forgetAfterMs / 1000.0; }
     void setForgetAfter(double seconds) { m_forgetAfterMs = qint64(seconds * 1000); }
@@ -155,6 +159,7 @@ private:
     std::vector<quint64> m_shownRevision;           // per row: what views were told
     bool m_rowsDirty = false; // a system came, went or was named: updateRows() is due
     int m_maxDrawn = 50;
+    int m_maxUnnamedDrawn = 10;
     quint16 m_nextPrivateId = 0xF000; // for append(): past any IMC system's
     qint64 m_forgetAfterMs = 60'000;
     QTimer m_forget;

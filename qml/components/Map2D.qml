@@ -228,8 +228,8 @@ Rectangle {
         objectName: "hiddenSystems"
         visible: root.tracks !== null && root.tracks.hidden > 0
         anchors { left: parent.left; top: parent.top; margins: Theme.spacing; topMargin: Theme.spacing * 2 + Theme.smallFontPixelSize * 1.4 }
-        text: root.tracks ? qsTr("%L1 more systems not drawn (the first %L2 named and heard are)")
-                            .arg(root.tracks.hidden).arg(root.tracks.maxDrawn) : ""
+        text: root.tracks ? qsTr("%L1 more systems not drawn (named ones first, at most %L2, %L3 unnamed)")
+                            .arg(root.tracks.hidden).arg(root.tracks.maxDrawn).arg(root.tracks.maxUnnamedDrawn) : ""
         color: Theme.text
         font.pixelSize: Theme.smallFontPixelSize
         font.bold: true

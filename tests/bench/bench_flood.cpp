@@ -11,11 +11,14 @@
 // The window is asked for a new frame after every frame, so frame times are
 // what the console can do, not what it needs. The vehicle's share is the
 // console's count of its messages over what it sent.
-// Run: tools/bench flood (30 s per phase); --smoke: 1 s each (ctest).
+// Run: tools/bench flood (30 s per phase); --smoke: 1 s each (ctest);
+// --seconds N per phase; --max-unnamed N: unnamed systems drawn
+// (Tracks::maxUnnamedDrawn; the flood's ids are never named).
 #include "FakeVehicle.h"
 #include "core/DataFiles.h"
 #include "qmlmodels/ConsoleSession.h"
 
+#include <QEventLoop>
 #include <QGuiApplication>
 #include <QQmlApplicationEngine>
 #include <QQuickWindow>
@@ -158,8 +161,12 @@ double percentile(std::vector<double> v, double p)
 int main(int argc, char **argv)
 {
     QGuiApplication app(argc, argv);
-    const bool smoke = app.arguments().contains(QStringLiteral("--smoke"));
-    const int seconds = smoke ? 1 : 30;
+    const QStringList args = app.arguments();
+    const auto option = [&](const QString &name, int otherwise) {
+        const qsizetype at = args.indexOf(name);
+        return at >= 0 && at + 1 < args.size() ? args[at + 1].toInt() : otherwise;
+    };
+    const int seconds = args.contains(QStringLiteral("--smoke")) ? 1 : option(QStringLiteral("--seconds"), 30);
 
     ConsoleSession session(test::shippedSchema());
     transport::ImcUdpConfig config;
@@ -171,6 +178,7 @@ int main(int argc, char **argv)
         return 1;
     }
     const quint16 port = session.console().imc()->port();
+    session.tracks()->setMaxUnnamedDrawn(option(QStringLiteral("--max-unnamed"), session.tracks()->maxUnnamedDrawn()));
 
     QQmlApplicationEngine engine;
     engine.setInitialProperties({
@@ -217,11 +225,11 @@ int main(int argc, char **argv)
                 return s.messages;
         return quint64(0);
     };
+    // The event loop as the console runs it (exec, which sleeps when idle).
     const auto waitFor = [](int ms) {
-        QElapsedTimer t;
-        t.start();
-        while (t.elapsed() < ms)
-            QCoreApplication::processEvents(QEventLoop::AllEvents, 5);
+        QEventLoop loop;
+        QTimer::singleShot(ms, &loop, &QEventLoop::quit);
+        loop.exec();
     };
     waitFor(3000); // the console starts, the vehicle is heard and heartbeated
 
@@ -238,7 +246,7 @@ int main(int argc, char **argv)
         const quint64 sentBefore = vehicleSent.load(), receivedBefore = vehicleMessages();
         const quint64 droppedBefore = session.console().imc()->droppedDatagrams();
         phase.rssStart = residentMb();
-        QElapsedTimer frame, total, rssTick;
+        QElapsedTimer frame, total;
         double cpu = threadCpuMs();
         bool started = false;
         auto connection = QObject::connect(window, &QQuickWindow::frameSwapped, window, [&] {
@@ -254,14 +262,11 @@ int main(int argc, char **argv)
         });
         window->update();
         total.start();
-        rssTick.start();
-        while (total.elapsed() < seconds * 1000) {
-            QCoreApplication::processEvents(QEventLoop::AllEvents, 5);
-            if (rssTick.elapsed() >= 250) {
-                phase.rssMax = std::max(phase.rssMax, residentMb());
-                rssTick.restart();
-            }
-        }
+        QTimer rssTick;
+        QObject::connect(&rssTick, &QTimer::timeout, [&] { phase.rssMax = std::max(phase.rssMax, residentMb()); });
+        rssTick.start(250);
+        waitFor(seconds * 1000);
+        rssTick.stop();
         QObject::disconnect(connection);
         stop.store(true);
         if (flood.joinable())

@@ -177,12 +177,14 @@ TEST_F(TrackRecording, AFloodOfNewSystemsJoinsAFewPerFrame)
 
 // With 1,000 systems alive the console drew 1,000 markers, trails and 3D
 // models a frame (half-second frames, +600 MB). Now at most maxDrawn have a
-// row; named systems take them first, so forged ids that came first cannot
-// push the real vehicle off the map, and the rest are counted.
+// row, and at most maxUnnamedDrawn of them were never named; named systems
+// take them first, so forged ids that came first cannot push the real vehicle
+// off the map, and the rest are counted.
 TEST_F(TrackRecording, AtMostMaxDrawnSystemsAreDrawnNamedOnesFirst)
 {
     QAbstractItemModelTester tester(&tracks, QAbstractItemModelTester::FailureReportingMode::Fatal);
     tracks.setMaxDrawn(20);
+    tracks.setMaxUnnamedDrawn(20);
     for (int i = 0; i < 30; ++i) {
         tree.ingest(state(quint16(0x4000 + i), 41.0, -8.0, i, 0, 0));
         model.sync();
@@ -205,8 +207,11 @@ TEST_F(TrackRecording, AtMostMaxDrawnSystemsAreDrawnNamedOnesFirst)
     EXPECT_FALSE(drawn.contains(QStringLiteral("0x4013"))) << "the last unnamed one drawn gave its row";
 
     tracks.setMaxDrawn(100);
-    EXPECT_EQ(tracks.rowCount(), 31);
-    EXPECT_EQ(tracks.hidden(), 0);
+    EXPECT_EQ(tracks.rowCount(), 21) << "20 unnamed at most";
+    tracks.setMaxUnnamedDrawn(5);
+    EXPECT_EQ(tracks.rowCount(), 6);
+    EXPECT_EQ(tracks.hidden(), 25);
+    EXPECT_EQ(tracks.index(0).data(Tracks::SystemRole).toString(), QStringLiteral("0x4000"));
 }
 
 // Systems never named that fall silent are forgotten (their rows and
