@@ -82,14 +82,7 @@ transport::ImcUdpTransport *Console::attachImc(std::unique_ptr<transport::ImcUdp
                 m_announcedVersions.insert(system, version);
                 updateDefinitionsAlarm(system, m_linkStatistics.system(system));
             });
-    connect(imc.get(), &transport::ImcUdpTransport::sourcesChanged, this,
-            [this](quint16 system, const QStringList &hosts, const QString &destination) {
-                Sources &sources = m_sources[system];
-                sources.hosts = hosts;
-                sources.destination = destination;
-                m_linkStatistics.setSources(system, hosts, destination);
-                updateSourcesAlarm(system);
-            });
+    connect(imc.get(), &transport::ImcUdpTransport::sourcesChanged, this, &Console::sourcesChanged);
     connect(imc.get(), &transport::ImcUdpTransport::announceIgnored, this,
             [this](quint16 system, const QString &from, const QString &services) {
                 Sources &sources = m_sources[system];
@@ -131,6 +124,7 @@ std::expected<void, QString> Console::startDds(transport::DdsConfig config)
             [this](quint16 system, const QString &, const QString &theirs, const QString &ours) {
                 definitionsDiffer(system, theirs, ours);
             });
+    connect(dds.get(), &transport::DdsTransport::sourcesChanged, this, &Console::sourcesChanged);
     m_dds = std::move(dds);
     addLink(link, m_dds.get());
     return {};
@@ -192,7 +186,18 @@ void Console::decodeFailed(quint16 system, const QString &link, const QString &p
 
 bool Console::chooseSource(quint16 system, const QString &host)
 {
-    return m_imc && m_imc->pick(system, host);
+    const bool imc = m_imc && m_imc->pick(system, host);
+    const bool dds = m_dds && m_dds->pick(system, host);
+    return imc || dds;
+}
+
+void Console::sourcesChanged(quint16 system, const QStringList &senders, const QString &destination)
+{
+    Sources &sources = m_sources[system];
+    sources.hosts = senders;
+    sources.destination = destination;
+    m_linkStatistics.setSources(system, senders, destination);
+    updateSourcesAlarm(system);
 }
 
 void Console::updateSourcesAlarm(quint16 id)
@@ -201,11 +206,11 @@ void Console::updateSourcesAlarm(quint16 id)
     const qint64 now = m_clock->now().toMSecsSinceEpoch();
     QString text;
     if (sources.hosts.size() > 1 && sources.destination.isEmpty())
-        text = tr("%1 hosts send as this system (%2): commands to it are held until one is chosen in Links")
+        text = tr("%1 sources send as this system (%2): commands to it are held until one is chosen in Links")
                    .arg(sources.hosts.size())
                    .arg(sources.hosts.join(QStringLiteral(", ")));
     else if (sources.hosts.size() > 1)
-        text = tr("%1 hosts send as this system (%2); commands go to %3, as chosen")
+        text = tr("%1 sources send as this system (%2); commands go to %3, as chosen")
                    .arg(sources.hosts.size())
                    .arg(sources.hosts.join(QStringLiteral(", ")), sources.destination);
     else if (!sources.ignoredAnnounce.isEmpty() && now - sources.ignoredMs < ignoredAnnounceAlarmMs)

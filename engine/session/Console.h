@@ -84,9 +84,10 @@ public:
     std::expected<void, QString> send(quint16 system, msg::Message message);
     std::expected<void, QString> send(const QString &system, msg::Message message);
 
-    // Several hosts send as `system` (an impostor, or a vehicle on two
-    // networks): commands go to `host` ("" lets the link choose again).
-    // False if the system was not heard from that host.
+    // Several hosts (IMC/UDP) or participants (DDS, "dds:<GUID prefix>")
+    // send as `system` (an impostor, or a vehicle on two networks): commands
+    // go to `host` ("" lets the link choose again). False if the system was
+    // not heard from that host.
     bool chooseSource(quint16 system, const QString &host);
 
     // A few times a second: silence, entity queries. Once a second: rates and
@@ -106,6 +107,8 @@ private:
     // Who sends as a system: several hosts, or an Announce naming addresses
     // elsewhere, raise a Warning on "systems/<system>/sources".
     void updateSourcesAlarm(quint16 id);
+    // A link says who sends as `system` now, and where commands go ("" held).
+    void sourcesChanged(quint16 system, const QStringList &senders, const QString &destination);
 
     const Clock *m_clock;
     std::shared_ptr<const msg::Schema> m_schema;

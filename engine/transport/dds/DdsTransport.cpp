@@ -9,8 +9,20 @@
 #include <QVarLengthArray>
 
 #include <array>
+#include <chrono>
 
 namespace neptus::transport {
+
+namespace {
+
+// For the conflict window: cheap (read per sample), never jumps.
+qint64 monotonicMs()
+{
+    return std::chrono::duration_cast<std::chrono::milliseconds>(std::chrono::steady_clock::now().time_since_epoch())
+        .count();
+}
+
+} // namespace
 
 DdsTransport::DdsTransport(std::shared_ptr<msg::SchemaSet> schemas, DdsConfig config, QObject *parent)
     : QObject(parent)
@@ -74,9 +86,13 @@ std::expected<void, QString> DdsTransport::start()
     dds_lset_data_available(peers, &DdsTransport::onParticipant);
     const dds_entity_t peerReader = dds_create_reader(m_participant, topic, lasting, peers);
     dds_delete_listener(peers);
+    dds_listener_t *presence = dds_create_listener(this);
+    dds_lset_data_available(presence, &DdsTransport::onPresence);
+    const dds_entity_t presenceReader = dds_create_reader(m_participant, DDS_BUILTIN_TOPIC_DCPSPARTICIPANT, nullptr, presence);
+    dds_delete_listener(presence);
     m_participantWriter = dds_create_writer(m_participant, topic, lasting, nullptr);
     dds_delete_qos(lasting);
-    if (topic < 0 || peerReader < 0 || m_participantWriter < 0)
+    if (topic < 0 || peerReader < 0 || presenceReader < 0 || m_participantWriter < 0)
         return std::unexpected(QStringLiteral("DDS: cannot set up the participant topic"));
     QByteArray name = m_config.systemName.toUtf8(), type = m_config.systemType.toUtf8();
     QByteArray digest = m_schemas->defaultSchema().digest();
@@ -115,6 +131,43 @@ void DdsTransport::onParticipant(dds_entity_t reader, void *self)
             }, Qt::QueuedConnection);
         }
         dds_return_loan(reader, samples, n);
+    }
+}
+
+void DdsTransport::onPresence(dds_entity_t reader, void *self)
+{
+    auto *transport = static_cast<DdsTransport *>(self);
+    void *samples[8] = {};
+    dds_sample_info_t infos[8];
+    for (;;) {
+        const dds_return_t n = dds_take(reader, samples, infos, 8, 8);
+        if (n <= 0)
+            break;
+        QStringList gone;
+        for (int i = 0; i < n; ++i) {
+            if (infos[i].instance_state == DDS_IST_ALIVE)
+                continue;
+            const auto *participant = static_cast<const dds_builtintopic_participant_t *>(samples[i]);
+            gone << QStringLiteral("dds:") + QByteArray(reinterpret_cast<const char *>(participant->key.v), 12).toHex();
+        }
+        dds_return_loan(reader, samples, n);
+        if (gone.isEmpty())
+            continue;
+        const qint64 now = monotonicMs();
+        QMutexLocker lock(&transport->m_mutex);
+        transport->m_participantOfWriter.removeIf([&](const auto &it) { return gone.contains(it.value()); });
+        for (auto peer = transport->m_peers.begin(); peer != transport->m_peers.end(); ++peer) {
+            bool changed = false;
+            for (const QString &name : gone) {
+                changed = peer->senders.remove(name) || changed;
+                if (peer->picked == name)
+                    peer->picked.clear();
+                if (peer->last == name)
+                    peer->last.clear();
+            }
+            if (changed)
+                transport->resolveLocked(peer.key(), *peer, now);
+        }
     }
 }
 
@@ -183,10 +236,13 @@ void DdsTransport::onData(dds_entity_t reader, void *self)
                                         TakeBuffers::count);
         if (n <= 0)
             break;
+        const qint64 now = monotonicMs();
         for (int i = 0; i < n; ++i) {
             const neptus_Envelope &envelope = buffers.envelopes[i];
             if (!buffers.infos[i].valid_data || envelope.src == transport->m_config.systemId)
                 continue; // a disposal, or our own
+            if (!transport->heard(envelope.src, reader, buffers.infos[i].publication_handle, now))
+                continue; // the operator trusts another participant as this system
             const auto bytes = static_cast<qsizetype>(envelope.packet._length);
             auto message = transport->m_schemas->codecFor(envelope.src)->decode(QByteArrayView(envelope.packet._buffer, bytes));
             if (!message) {
@@ -205,6 +261,106 @@ void DdsTransport::onData(dds_entity_t reader, void *self)
             }, Qt::QueuedConnection);
         }
     }
+}
+
+bool DdsTransport::heard(quint16 system, dds_entity_t reader, dds_instance_handle_t publication, qint64 nowMs)
+{
+    constexpr int sendersPerSystem = 16;
+    QMutexLocker lock(&m_mutex);
+    auto name = m_participantOfWriter.constFind(publication);
+    if (name == m_participantOfWriter.cend()) {
+        // The GUID prefix (12 bytes) names the writer's participant.
+        QString participant = QStringLiteral("dds:unknown");
+        lock.unlock();
+        if (dds_builtintopic_endpoint_t *writer = dds_get_matched_publication_data(reader, publication)) {
+            participant = QStringLiteral("dds:")
+                          + QByteArray(reinterpret_cast<const char *>(writer->participant_key.v), 12).toHex();
+            dds_builtintopic_free_endpoint(writer);
+        }
+        lock.relock();
+        if (m_participantOfWriter.size() >= 4096) // writers come and go: forget them all now and then
+            m_participantOfWriter.clear();
+        name = m_participantOfWriter.insert(publication, participant);
+    }
+    const QString &participant = *name;
+    Peer &peer = m_peers[system];
+    // The usual case: the one sender of this system again.
+    if (peer.senders.size() == 1 && peer.last == participant) {
+        qint64 &last = *peer.senders.begin();
+        const bool wasSilent = nowMs - last > m_config.conflictWindowMs;
+        last = nowMs;
+        if (wasSilent)
+            resolveLocked(system, peer, nowMs);
+        return peer.picked.isEmpty() || peer.picked == participant;
+    }
+    auto sender = peer.senders.find(participant);
+    const bool arrived = sender == peer.senders.end() || nowMs - *sender > m_config.conflictWindowMs;
+    if (sender == peer.senders.end()) {
+        if (peer.senders.size() >= sendersPerSystem)
+            return false;
+        sender = peer.senders.insert(participant, nowMs);
+    }
+    *sender = nowMs;
+    peer.last = participant;
+    // Several senders: who is recent changes slowly, look a few times a second.
+    if (arrived || nowMs - peer.resolvedMs >= 250)
+        resolveLocked(system, peer, nowMs);
+    return peer.picked.isEmpty() || peer.picked == participant;
+}
+
+void DdsTransport::resolveLocked(quint16 system, Peer &peer, qint64 nowMs)
+{
+    peer.resolvedMs = nowMs;
+    QStringList recent;
+    QString newest;
+    qint64 newestMs = std::numeric_limits<qint64>::min();
+    for (auto it = peer.senders.cbegin(); it != peer.senders.cend(); ++it) {
+        if (nowMs - *it <= m_config.conflictWindowMs)
+            recent.append(it.key());
+        if (*it > newestMs) {
+            newestMs = *it;
+            newest = it.key();
+        }
+    }
+    recent.sort();
+    QString chosen;
+    if (!peer.picked.isEmpty())
+        chosen = peer.picked;
+    else if (recent.size() == 1)
+        chosen = recent.front();
+    else if (recent.isEmpty())
+        chosen = newest;
+    if (recent == peer.sources && chosen == peer.destination)
+        return;
+    peer.sources = recent;
+    peer.destination = chosen;
+    QMetaObject::invokeMethod(this, [this, system, recent, chosen] { emit sourcesChanged(system, recent, chosen); },
+                              Qt::QueuedConnection);
+}
+
+QString DdsTransport::participantName() const
+{
+    dds_guid_t guid{};
+    if (m_participant <= 0 || dds_get_guid(m_participant, &guid) != DDS_RETCODE_OK)
+        return {};
+    return QStringLiteral("dds:") + QByteArray(reinterpret_cast<const char *>(guid.v), 12).toHex();
+}
+
+QStringList DdsTransport::sources(quint16 system) const
+{
+    QMutexLocker lock(&m_mutex);
+    return m_peers.value(system).sources;
+}
+
+bool DdsTransport::pick(quint16 system, const QString &participant)
+{
+    QMutexLocker lock(&m_mutex);
+    const auto it = m_peers.find(system);
+    if (it == m_peers.end() || (!participant.isEmpty() && !it->senders.contains(participant)))
+        return false;
+    it->picked = participant;
+    resolveLocked(system, *it, monotonicMs());
+    return true;
 }
 
 dds_entity_t DdsTransport::writerFor(const msg::MessageDef &def)
@@ -288,6 +444,14 @@ bool DdsTransport::broadcast(std::span<const msg::Message> messages)
 
 std::expected<void, QString> DdsTransport::publish(quint16 system, const msg::Message &message)
 {
+    {
+        QMutexLocker lock(&m_mutex);
+        const Peer peer = m_peers.value(system);
+        if (peer.destination.isEmpty() && peer.sources.size() > 1)
+            return std::unexpected(QStringLiteral("DDS: %1 participants send as %2 (%3): commands are held until one is chosen")
+                                       .arg(peer.sources.size())
+                                       .arg(msg::systemLabel(system), peer.sources.join(QStringLiteral(", "))));
+    }
     const auto addressed = m_schemas->forSystem(system, message);
     if (!addressed)
         return std::unexpected(addressed.error());

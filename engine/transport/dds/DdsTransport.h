@@ -33,6 +33,8 @@ struct DdsConfig
     // latest per sender), so a console started later still learns names.
     QStringList lasting{QStringLiteral("Announce"), QStringLiteral("EntityList"), QStringLiteral("EntityInfo")};
     const Clock *clock = &Clock::system(); // stamps what it sends
+    // How long two participants sending as one system id must be apart to be one.
+    int conflictWindowMs = 10000;
 };
 
 // Cyclone DDS between consoles and vehicles: every message of the schema on
@@ -41,6 +43,14 @@ struct DdsConfig
 // Cyclone's threads and are handed to this object's thread as `received`.
 // Packets are decoded with the sender's definitions (SchemaSet, by the
 // envelope's src) and encoded with the receiver's.
+//
+// Against impostors: each sample's writer tells which participant sent it
+// ("dds:" and its GUID prefix). Two participants sending as one system id
+// within conflictWindowMs are a conflict: commands to it are held until the
+// operator picks one (pick()), and from then on the other's samples for that
+// system are dropped, so its position cannot jump between two places. (DDS
+// delivers to every reader: only DDS Security keeps others from reading
+// commands or writing as a vehicle.)
 class DdsTransport : public QObject, public OutputSink
 {
     Q_OBJECT
@@ -70,6 +80,15 @@ public:
     // OutputSink: to one system, in its definitions; an error says why not.
     std::expected<void, QString> publish(quint16 system, const msg::Message &message) override;
 
+    // This transport's own participant as others see it ("dds:<GUID prefix>"); empty before start().
+    QString participantName() const;
+    // The participants that sent as `system` within the conflict window.
+    QStringList sources(quint16 system) const;
+    // The operator trusts `participant` as `system`: commands flow again and
+    // only its samples for `system` are taken; "" goes back to automatic.
+    // False if `system` was not heard from that participant.
+    bool pick(quint16 system, const QString &participant);
+
 signals:
     // A decoded message and the size of its packet.
     void received(const neptus::msg::Message &message, qsizetype bytes);
@@ -79,10 +98,16 @@ signals:
     // A peer speaks other message definitions than ours: values it sends may
     // be decoded wrongly. Said once per peer and digest.
     void definitionsDiffer(quint16 system, const QString &name, const QString &theirDigest, const QString &ourDigest);
+    // Who sends as `system` changed: its recent participants, and the one
+    // trusted ("" while two claim it and none was picked).
+    void sourcesChanged(quint16 system, const QStringList &senders, const QString &destination);
 
 private:
     static void onData(dds_entity_t reader, void *self);
     static void onParticipant(dds_entity_t reader, void *self);
+    // DCPSParticipant: a participant that left (or whose lease ran out) no
+    // longer counts as a sender, so a vehicle restarted is not its own impostor.
+    static void onPresence(dds_entity_t reader, void *self);
     dds_entity_t topicFor(const QString &abbrev);
     // The QoS of a message's topic, the same for its readers and writers so they always match.
     dds_qos_t *qosFor(const QString &abbrev) const;
@@ -92,15 +117,34 @@ private:
     // writer's batch until flushed.
     std::expected<void, QString> write(dds_entity_t writer, const msg::Message &message,
                                        const msg::Message::Header &header);
+    // Notes that the participant that wrote `publication` sent as `system`
+    // at `nowMs`; false when its samples are to be dropped (the operator
+    // trusts another).
+    bool heard(quint16 system, dds_entity_t reader, dds_instance_handle_t publication, qint64 nowMs);
+
+    // The participants that send as one system (by their names,
+    // "dds:<GUID prefix>"), and the one trusted.
+    struct Peer
+    {
+        QHash<QString, qint64> senders; // last heard, ms
+        QString picked;
+        QStringList sources;            // as last reported
+        QString destination;            // as last reported ("" while held)
+        QString last;                   // the sender of the last sample
+        qint64 resolvedMs = 0;
+    };
+    void resolveLocked(quint16 system, Peer &peer, qint64 nowMs);
 
     std::shared_ptr<msg::SchemaSet> m_schemas;
     DdsConfig m_config;
     dds_entity_t m_participant = 0;
-    QMutex m_mutex;
+    mutable QMutex m_mutex;
     QHash<QString, dds_entity_t> m_topics;
     QHash<const msg::MessageDef *, dds_entity_t> m_writers;
     dds_entity_t m_participantWriter = 0;
     QHash<quint16, QString> m_peerDigests;
+    QHash<dds_instance_handle_t, QString> m_participantOfWriter; // by publication handle
+    QHash<quint16, Peer> m_peers;
     std::function<void(const msg::Message &, qsizetype)> m_direct;
 };
 

@@ -4,6 +4,7 @@
 // as a flaky timing assertion.
 #include "messages/Schema.h"
 #include "session/Console.h"
+#include "transport/dds/DdsTransport.h"
 
 #include "FakeVehicle.h"
 #include "Schemas.h"
@@ -189,6 +190,57 @@ TEST(Hostile, AnImpostorHoldsCommandsUntilOneHostIsChosen)
     EXPECT_EQ(console.destination(0x23), QStringLiteral("127.0.0.1:%1").arg(vehicle.port()));
     session.tick();
     EXPECT_EQ(levelOf(session.alarmGraph(), QStringLiteral("systems/lauv-sim-1/sources")), alarms::Normal);
+}
+
+// Over DDS an impostor with a vehicle's id made its position jump between
+// two places and took 3 of 6 Aborts, with no warning. Now two participants
+// sending as one id raise a Warning and hold commands until the operator
+// picks one; from then on the other's samples for that id are dropped.
+TEST(Hostile, ADdsImpostorHoldsCommandsAndIsDroppedOnceOneIsChosen)
+{
+    session::Console session(test::shippedSchema());
+    ASSERT_TRUE(session.startDds(transport::DdsConfig{11, {}, 0x4001}));
+    transport::DdsTransport vehicle(test::shippedSchema(), transport::DdsConfig{11, {}, 0x23, QStringLiteral("auv")});
+    transport::DdsTransport impostor(test::shippedSchema(), transport::DdsConfig{11, {}, 0x23, QStringLiteral("auv")});
+    ASSERT_TRUE(vehicle.start());
+    ASSERT_TRUE(impostor.start());
+    QSignalSpy atVehicle(&vehicle, &transport::DdsTransport::received);
+    const auto stateAt = [](double depth) {
+        msg::Message state(test::shippedSchema()->byAbbrev(u"EstimatedState"));
+        state.setNumber(state.def()->indexOf(u"depth"), depth);
+        return state;
+    };
+    const auto depth = [&] {
+        return session.tree().snapshot(session.tree().find(u"0x0023/EstimatedState/depth")).value.toDouble();
+    };
+    ASSERT_TRUE(QTest::qWaitFor([&] {
+        vehicle.broadcast(stateAt(10));
+        return depth() == 10;
+    }, 10000));
+    EXPECT_TRUE(session.send(0x23, abortCommand())) << "one participant: commands flow";
+    ASSERT_TRUE(QTest::qWaitFor([&] {
+        impostor.broadcast(stateAt(500));
+        return session.dds()->sources(0x23).size() == 2;
+    }, 10000));
+    const auto held = session.send(0x23, abortCommand());
+    ASSERT_FALSE(held);
+    EXPECT_TRUE(held.error().contains(QStringLiteral("held"))) << held.error().toStdString();
+    ASSERT_TRUE(QTest::qWaitFor([&] {
+        return levelOf(session.alarmGraph(), QStringLiteral("systems/0x0023/sources")) == alarms::Warning;
+    }, 2000));
+
+    // The operator trusts the vehicle's participant.
+    ASSERT_TRUE(session.chooseSource(0x23, vehicle.participantName()));
+    ASSERT_TRUE(session.send(0x23, abortCommand()));
+    ASSERT_TRUE(QTest::qWaitFor([&] { return atVehicle.count() >= 2; }, 5000)) << "the two Aborts sent";
+    vehicle.broadcast(stateAt(11));
+    ASSERT_TRUE(QTest::qWaitFor([&] { return depth() == 11; }, 5000));
+    for (int i = 0; i < 5; ++i) {
+        impostor.broadcast(stateAt(500));
+        QTest::qWait(50);
+    }
+    EXPECT_EQ(depth(), 11) << "the impostor's samples no longer reach the tree";
+    EXPECT_FALSE(session.chooseSource(0x23, QStringLiteral("dds:000000000000000000000000"))) << "never heard";
 }
 
 // A flood from one host was decoded to the last datagram, and starved

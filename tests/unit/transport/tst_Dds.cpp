@@ -126,3 +126,28 @@ TEST(DdsTransport, ABurstArrivesWholeAndInOrder)
         expected << QString::fromLatin1(entryWith(i).bytes(entry->indexOf(u"text")));
     EXPECT_EQ(texts, expected);
 }
+
+// A vehicle's software restarted is a new DDS participant with the same id:
+// once the old one has left it must not count as a second sender (that would
+// hold its commands as if an impostor had come).
+TEST(DdsTransport, ARestartedVehicleIsNotItsOwnImpostor)
+{
+    DdsTransport console(test::shippedSchema(), DdsConfig{12, {}, 0x4001});
+    ASSERT_TRUE(console.start());
+    const msg::Message state(test::shippedSchema()->byAbbrev(u"EstimatedState"));
+    {
+        DdsTransport before(test::shippedSchema(), DdsConfig{12, {}, 0x23});
+        ASSERT_TRUE(before.start());
+        ASSERT_TRUE(QTest::qWaitFor([&] {
+            before.broadcast(state);
+            return console.sources(0x23) == QStringList{before.participantName()};
+        }, 10000));
+    }
+    DdsTransport after(test::shippedSchema(), DdsConfig{12, {}, 0x23});
+    ASSERT_TRUE(after.start());
+    ASSERT_TRUE(QTest::qWaitFor([&] {
+        after.broadcast(state);
+        return console.sources(0x23) == QStringList{after.participantName()};
+    }, 5000)) << "within half the conflict window: " << console.sources(0x23).join(u' ').toStdString();
+    EXPECT_TRUE(console.publish(0x23, msg::Message(test::shippedSchema()->byAbbrev(u"Abort"))));
+}
