@@ -52,6 +52,13 @@ std::expected<CommandLine, QString> CommandLine::parse(const QStringList &argume
         QStringLiteral("Cyclone DDS domain id (default 0; -1 turns DDS off)."), QStringLiteral("id"));
     const QCommandLineOption ddsConfig(QStringLiteral("dds-config"),
         QStringLiteral("Cyclone DDS XML configuration (default: dds/loopback.xml, loopback only)."), QStringLiteral("file"));
+    const QCommandLineOption ddsKeys(QStringLiteral("dds-keys"),
+        QStringLiteral("DDS Security: a key set made by tools/dds-keys (docs/dds-security.md); with "
+                       "--dds-identity. Without keys, secured vehicles and consoles do not talk to this one."),
+        QStringLiteral("dir"));
+    const QCommandLineOption ddsIdentity(QStringLiteral("dds-identity"),
+        QStringLiteral("DDS Security: the name this console's keys were made for (a folder of --dds-keys)."),
+        QStringLiteral("name"));
     const QCommandLineOption defs(QStringLiteral("defs"),
         QStringLiteral("Message definition file to load instead of the shipped ones (repeatable)."), QStringLiteral("file"));
     const QCommandLineOption defsFor(QStringLiteral("defs-for"),
@@ -67,7 +74,7 @@ std::expected<CommandLine, QString> CommandLine::parse(const QStringList &argume
     const QCommandLineOption quitAfter(QStringLiteral("quit-after"),
         QStringLiteral("Exit after this many milliseconds."), QStringLiteral("ms"));
     parser.addOptions({console, screenshot, screenshotDelay, components, edit, select, system, palette, size, selfTest,
-                       imcPort, imcBind, imcPeer, ddsDomain, ddsConfig, defs, defsFor, imcDiscovery, dumpTree, quitAfter});
+                       imcPort, imcBind, imcPeer, ddsDomain, ddsConfig, ddsKeys, ddsIdentity, defs, defsFor, imcDiscovery, dumpTree, quitAfter});
     // "--defs-for SYSTEM FILE" (two words, as the documentation writes it) is
     // "--defs-for SYSTEM=FILE" to the parser, which takes one value per option.
     QStringList words = arguments;
@@ -143,6 +150,14 @@ std::expected<CommandLine, QString> CommandLine::parse(const QStringList &argume
         result.ddsConfig = QFileInfo(parser.value(ddsConfig)).absoluteFilePath();
         if (!QFileInfo(result.ddsConfig).isFile())
             return std::unexpected(QStringLiteral("DDS configuration '%1' does not exist").arg(result.ddsConfig));
+    }
+    if (parser.isSet(ddsKeys) != parser.isSet(ddsIdentity))
+        return std::unexpected(QStringLiteral("--dds-keys and --dds-identity go together (the key set, and whose keys in it)"));
+    if (parser.isSet(ddsKeys)) {
+        result.ddsKeys = QFileInfo(parser.value(ddsKeys)).absoluteFilePath();
+        result.ddsIdentity = parser.value(ddsIdentity);
+        if (!QFileInfo(result.ddsKeys).isDir())
+            return std::unexpected(QStringLiteral("--dds-keys: '%1' is not a folder (make one with tools/dds-keys)").arg(result.ddsKeys));
     }
     for (const QString &file : parser.values(defs)) {
         if (!QFileInfo(file).isFile())

@@ -30,6 +30,7 @@ struct CommandLine
     int quitAfterMs = 0;                // run this long, then exit (0: until closed)
     int ddsDomain = 0;                  // -1: no DDS
     QString ddsConfig;                  // Cyclone XML; empty: dds/loopback.xml
+    QString ddsKeys, ddsIdentity;       // DDS Security; empty: none
     bool selfTest = false;
 
     // Parses arguments (argv[0] included). An error is a message for the user.

@@ -105,9 +105,13 @@ int main(int argc, char *argv[])
 
     // Cyclone DDS on the loopback configuration unless told otherwise.
     if (commandLine->ddsDomain >= 0) {
-        const neptus::transport::DdsConfig config{static_cast<dds_domainid_t>(commandLine->ddsDomain), commandLine->ddsConfig};
+        neptus::transport::DdsConfig config{static_cast<dds_domainid_t>(commandLine->ddsDomain), commandLine->ddsConfig};
+        config.security = {commandLine->ddsKeys, commandLine->ddsIdentity};
         if (auto started = session.console().startDds(config); !started)
             std::fprintf(stderr, "neptus: %s; carrying on without DDS\n", qPrintable(started.error()));
+        else if (!config.security.keys.isEmpty())
+            std::printf("neptus: DDS Security on, as %s (keys in %s)\n", qPrintable(config.security.identity),
+                        qPrintable(config.security.keys));
     }
 
     // Components from --components, then the user's own and the system's

@@ -66,11 +66,13 @@ int main(int argc, char *argv[])
     const QCommandLineOption defs(QStringLiteral("defs"), QStringLiteral("Message definition file (repeatable; default msgdefs/)."), QStringLiteral("file"));
     const QCommandLineOption dds(QStringLiteral("dds"), QStringLiteral("Also publish over Cyclone DDS (loopback configuration)."));
     const QCommandLineOption domain(QStringLiteral("dds-domain"), QStringLiteral("DDS domain id (default 0)."), QStringLiteral("id"), QStringLiteral("0"));
+    const QCommandLineOption ddsKeys(QStringLiteral("dds-keys"), QStringLiteral("DDS Security: a key set made by tools/dds-keys, with --dds-identity."), QStringLiteral("dir"));
+    const QCommandLineOption ddsIdentity(QStringLiteral("dds-identity"), QStringLiteral("DDS Security: the name this vehicle's keys were made for."), QStringLiteral("name"));
     const QCommandLineOption dune(QStringLiteral("like-dune"),
         QStringLiteral("Behave as a stock DUNE vehicle: announce only to the IMC discovery ports (127.0.0.1:30100-30104) "
                        "and listen there, take messages only from systems that announced themselves, stream to those "
                        "heard from in the last 30 s, send the EntityList only when asked."));
-    parser.addOptions({id, name, kind, port, host, console, announcePort, phase, fault, drop, defs, dds, domain, dune});
+    parser.addOptions({id, name, kind, port, host, console, announcePort, phase, fault, drop, defs, dds, domain, ddsKeys, ddsIdentity, dune});
     if (!parser.parse(QCoreApplication::arguments()))
         return usage(parser.errorText());
     if (parser.isSet(QStringLiteral("help")))
@@ -237,8 +239,9 @@ int main(int argc, char *argv[])
     // Over DDS there is no heartbeat handshake: publish to whoever subscribes.
     std::unique_ptr<transport::DdsTransport> ddsLink;
     if (parser.isSet(dds)) {
-        ddsLink = std::make_unique<transport::DdsTransport>(
-            *schema, transport::DdsConfig{static_cast<dds_domainid_t>(parser.value(domain).toUInt()), {}, config.id});
+        transport::DdsConfig ddsConfig{static_cast<dds_domainid_t>(parser.value(domain).toUInt()), {}, config.id};
+        ddsConfig.security = {parser.value(ddsKeys), parser.value(ddsIdentity)};
+        ddsLink = std::make_unique<transport::DdsTransport>(*schema, ddsConfig);
         if (auto started = ddsLink->start(); !started) {
             std::fprintf(stderr, "neptus-sim: %s\n", qPrintable(started.error()));
             return 1;

@@ -3,17 +3,38 @@
 
 #include "Envelope.h"
 
+#include <QDir>
 #include <QFile>
+#include <QFileInfo>
 #include <QMetaObject>
 #include <QMutexLocker>
 #include <QVarLengthArray>
 
 #include <array>
+#include <tuple>
+
+#include <dlfcn.h>
 #include <chrono>
 
 namespace neptus::transport {
 
 namespace {
+
+// Where Cyclone's security plugins are: beside libddsc, or in Debian's
+// private folder there (libddsc0debian); else the bare names for the loader.
+QString securityPlugin(const char *name)
+{
+    Dl_info info{};
+    if (dladdr(reinterpret_cast<void *>(&dds_create_participant), &info) != 0 && info.dli_fname) {
+        const QString dir = QFileInfo(QString::fromLocal8Bit(info.dli_fname)).absolutePath();
+        for (const QString &candidate : {dir + QStringLiteral("/libddsc0debian/lib%1.so"), dir + QStringLiteral("/lib%1.so")}) {
+            const QString path = candidate.arg(QLatin1String(name));
+            if (QFileInfo::exists(path))
+                return path;
+        }
+    }
+    return QLatin1String(name);
+}
 
 // For the conflict window: cheap (read per sample), never jumps.
 qint64 monotonicMs()
@@ -54,7 +75,18 @@ std::expected<void, QString> DdsTransport::start()
     if (domain < 0 && domain != DDS_RETCODE_PRECONDITION_NOT_MET)
         return std::unexpected(QStringLiteral("DDS: cannot create domain %1 from %2: %3")
                                    .arg(m_config.domain).arg(file, QString::fromUtf8(dds_strretcode(domain))));
-    m_participant = dds_create_participant(m_config.domain, nullptr, nullptr);
+    auto qos = securityQos(m_config.security);
+    if (!qos)
+        return std::unexpected(qos.error());
+    m_participant = dds_create_participant(m_config.domain, *qos, nullptr);
+    dds_delete_qos(*qos);
+    if (m_participant < 0 && !m_config.security.keys.isEmpty())
+        return std::unexpected(QStringLiteral("DDS Security: cannot join domain %1 as %2 with the keys in %3: %4 "
+                                              "(expired or mismatched certificates, a permissions document for "
+                                              "another name or domain, or unsigned documents)")
+                                   .arg(m_config.domain)
+                                   .arg(m_config.security.identity, m_config.security.keys,
+                                        QString::fromUtf8(dds_strretcode(m_participant))));
     if (m_participant < 0)
         return std::unexpected(QStringLiteral("DDS: cannot join domain %1: %2")
                                    .arg(m_config.domain).arg(QString::fromUtf8(dds_strretcode(m_participant))));
@@ -103,6 +135,44 @@ std::expected<void, QString> DdsTransport::start()
     self.digest = digest.data();
     dds_write(m_participantWriter, &self);
     return {};
+}
+
+std::expected<dds_qos_t *, QString> DdsTransport::securityQos(const DdsSecurity &security)
+{
+    if (security.keys.isEmpty())
+        return nullptr;
+    const QDir keys(security.keys);
+    const QString identity = security.identity;
+    if (identity.isEmpty() || identity.contains(u'/'))
+        return std::unexpected(QStringLiteral("DDS Security: name the identity (a folder of %1) to use").arg(keys.path()));
+    const std::pair<const char *, QString> files[] = {
+        {"dds.sec.auth.identity_ca", QStringLiteral("identity_ca.pem")},
+        {"dds.sec.auth.identity_certificate", identity + QStringLiteral("/cert.pem")},
+        {"dds.sec.auth.private_key", identity + QStringLiteral("/key.pem")},
+        {"dds.sec.access.permissions_ca", QStringLiteral("permissions_ca.pem")},
+        {"dds.sec.access.governance", QStringLiteral("governance.p7s")},
+        {"dds.sec.access.permissions", identity + QStringLiteral("/permissions.p7s")},
+    };
+    for (const auto &[property, file] : files) {
+        if (!QFileInfo(keys.filePath(file)).isReadable())
+            return std::unexpected(QStringLiteral("DDS Security: %1 is missing or unreadable (make keys with tools/dds-keys)")
+                                       .arg(keys.filePath(file)));
+    }
+    dds_qos_t *qos = dds_create_qos();
+    for (const auto &[property, file] : files)
+        dds_qset_prop(qos, property, (QStringLiteral("file:") + keys.absoluteFilePath(file)).toUtf8().constData());
+    const std::tuple<const char *, const char *, const char *, const char *> plugins[] = {
+        {"auth", "dds_security_auth", "init_authentication", "finalize_authentication"},
+        {"crypto", "dds_security_crypto", "init_crypto", "finalize_crypto"},
+        {"access", "dds_security_ac", "init_access_control", "finalize_access_control"},
+    };
+    for (const auto &[kind, library, init, finalize] : plugins) {
+        const QByteArray prefix = QByteArray("dds.sec.") + kind + ".library.";
+        dds_qset_prop(qos, (prefix + "path").constData(), securityPlugin(library).toUtf8().constData());
+        dds_qset_prop(qos, (prefix + "init").constData(), init);
+        dds_qset_prop(qos, (prefix + "finalize").constData(), finalize);
+    }
+    return qos;
 }
 
 void DdsTransport::onParticipant(dds_entity_t reader, void *self)
@@ -382,7 +452,7 @@ dds_entity_t DdsTransport::writerFor(const msg::MessageDef &def)
         writer = dds_create_writer(m_participant, topic, qos, nullptr);
         dds_delete_qos(qos);
         if (writer < 0)
-            return 0;
+            return writer; // the reason, e.g. DDS_RETCODE_NOT_ALLOWED_BY_SECURITY
         m_writers.insert(&def, writer);
     }
     return writer;
@@ -456,8 +526,13 @@ std::expected<void, QString> DdsTransport::publish(quint16 system, const msg::Me
     if (!addressed)
         return std::unexpected(addressed.error());
     const dds_entity_t writer = addressed->def() ? writerFor(*addressed->def()) : 0;
-    if (writer <= 0)
-        return std::unexpected(QStringLiteral("DDS: no writer for %1 (not started?)").arg(addressed->abbrev()));
+    if (writer == DDS_RETCODE_NOT_ALLOWED_BY_SECURITY)
+        return std::unexpected(QStringLiteral("DDS Security: the permissions of %1 do not allow publishing neptus/%2")
+                                   .arg(m_config.security.identity, addressed->abbrev()));
+    if (writer == 0)
+        return std::unexpected(QStringLiteral("DDS: no writer for %1 (not started)").arg(addressed->abbrev()));
+    if (writer < 0)
+        return std::unexpected(QStringLiteral("DDS: no writer for %1: %2").arg(addressed->abbrev(), QString::fromUtf8(dds_strretcode(writer))));
     msg::Message::Header header = addressed->header;
     header.src = m_config.systemId;
     header.dst = system;

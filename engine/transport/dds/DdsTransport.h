@@ -17,6 +17,17 @@
 
 namespace neptus::transport {
 
+// DDS Security (authentication, access control, encryption) from a key set
+// made by tools/dds-keys (docs/dds-security.md): `keys` holds the two CA
+// certificates and governance.p7s, `keys`/`identity` this system's cert.pem,
+// key.pem and permissions.p7s. Without keys a participant is not secured,
+// and secured participants neither hear it nor are heard by it.
+struct DdsSecurity
+{
+    QString keys;     // a folder; empty: no security
+    QString identity; // the name the keys were made for
+};
+
 struct DdsConfig
 {
     dds_domainid_t domain = 0;
@@ -35,6 +46,7 @@ struct DdsConfig
     const Clock *clock = &Clock::system(); // stamps what it sends
     // How long two participants sending as one system id must be apart to be one.
     int conflictWindowMs = 10000;
+    DdsSecurity security = {};
 };
 
 // Cyclone DDS between consoles and vehicles: every message of the schema on
@@ -103,6 +115,8 @@ signals:
     void sourcesChanged(quint16 system, const QStringList &senders, const QString &destination);
 
 private:
+    // The participant QoS that turns DDS Security on (null without keys).
+    static std::expected<dds_qos_t *, QString> securityQos(const DdsSecurity &security);
     static void onData(dds_entity_t reader, void *self);
     static void onParticipant(dds_entity_t reader, void *self);
     // DCPSParticipant: a participant that left (or whose lease ran out) no
@@ -111,7 +125,8 @@ private:
     dds_entity_t topicFor(const QString &abbrev);
     // The QoS of a message's topic, the same for its readers and writers so they always match.
     dds_qos_t *qosFor(const QString &abbrev) const;
-    // The writer of a message's topic, made on first use; 0 if it cannot be.
+    // The writer of a message's topic, made on first use; 0 before start(),
+    // negative (a DDS_RETCODE) if it cannot be made.
     dds_entity_t writerFor(const msg::MessageDef &def);
     // Writes `message` with `header` without sending: samples wait in the
     // writer's batch until flushed.
