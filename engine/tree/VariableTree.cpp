@@ -432,7 +432,11 @@ void VariableTree::ingest(const Message &message)
         }
     }
     commitLocked(any, message, now);
-    if (entities.size() > 1 && entity != 0 && entity != 0xFF)
+    // Branches for the first maxEntityBranches entities only: a forged
+    // system sending from all 254 entities would make thousands of nodes
+    // per system (400 such ids made 2.1 M); the others show in "Message".
+    if (entities.size() > 1 && entity != 0 && entity != 0xFF
+        && std::size_t(std::find(entities.begin(), entities.end(), entity) - entities.begin()) < maxEntityBranches)
         commitLocked(bindingLocked(source, entity, message, true), message, now);
 }
 

@@ -22,7 +22,8 @@ constexpr NodeId noNode = -1;
 // Every message a console receives, per system, as a tree of variables:
 //   system / Message / field             the latest message of that type, from any entity
 //   system / Message@Entity / field      the latest from that entity, once two or more
-//                                        entities send the type (not for entity 0 or 255);
+//                                        entities send the type (not for entity 0 or 255;
+//                                        for the first maxEntityBranches (64) of a type);
 //                                        while one entity does, the path finds "Message"
 //   system / Unknown(281)                a type the definitions lack, kept opaque
 //   system / Message / inline / field    an inline message is a branch
@@ -69,6 +70,9 @@ public:
             return newNodes.empty() && renamedNodes.empty() && changedNodes.empty() && !relinked;
         }
     };
+
+    // Entities of one message type that get a branch of their own, per system.
+    static constexpr std::size_t maxEntityBranches = 64;
 
     explicit VariableTree(const Clock *clock = &Clock::system());
     ~VariableTree();

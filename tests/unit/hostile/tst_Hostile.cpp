@@ -4,6 +4,7 @@
 // as a flaky timing assertion.
 #include "messages/Schema.h"
 #include "session/Console.h"
+#include "tree/VariableTree.h"
 #include "transport/dds/DdsTransport.h"
 
 #include "FakeVehicle.h"
@@ -67,6 +68,30 @@ alarms::Level levelOf(alarms::AlarmGraph &graph, const QString &path)
 }
 
 } // namespace
+
+// 400 forged ids each sending from all 254 entities made 2.1 M tree nodes
+// (+340 MB) that every age tick then signalled. Now only the first
+// maxEntityBranches entities of a type get a branch of their own; the others
+// show in the type's shared branch.
+TEST(Hostile, ForgedEntitiesMakeABoundedTree)
+{
+    tree::VariableTree tree;
+    constexpr int systems = 40;
+    for (int id = 0; id < systems; ++id) {
+        for (int entity = 1; entity <= 254; ++entity) {
+            msg::Message state(test::shippedSchema()->byAbbrev(u"EntityState"));
+            state.header.src = quint16(0x5000 + id);
+            state.header.srcEnt = quint8(entity);
+            tree.ingest(state);
+        }
+    }
+    const int perBranch = 1 + int(test::shippedSchema()->byAbbrev(u"EntityState")->fields.size());
+    const int perSystem = 1 + perBranch * int(1 + tree::VariableTree::maxEntityBranches);
+    EXPECT_LE(tree.nodeCount(), 1 + systems * perSystem) << "was " << 1 + systems * (1 + perBranch * 255);
+    EXPECT_NE(tree.find(u"0x5000/EntityState@64"), tree::noNode);
+    EXPECT_EQ(tree.find(u"0x5000/EntityState@65"), tree::noNode) << "past the cap";
+    EXPECT_EQ(tree.snapshot(tree.find(u"0x5000/EntityState")).sourceEntity, 254) << "the shared branch has the latest";
+}
 
 // One 64 KB PlanSpecification with 32,000 start actions froze the GUI for
 // about 4 s: list items were found by name with a scan of every sibling.
