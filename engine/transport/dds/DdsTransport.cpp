@@ -36,6 +36,28 @@ QString securityPlugin(const char *name)
     return QLatin1String(name);
 }
 
+// How a participant is named to the operator: "dds:" and its GUID prefix.
+QString participantLabel(const dds_guid_t &guid)
+{
+    return QStringLiteral("dds:") + QByteArray(reinterpret_cast<const char *>(guid.v), 12).toHex();
+}
+
+// Takes every sample `reader` has, on loan, 8 at a time: fn(sample, info).
+template<typename Sample, typename Fn>
+void forEachTaken(dds_entity_t reader, Fn fn)
+{
+    void *samples[8] = {};
+    dds_sample_info_t infos[8];
+    for (;;) {
+        const dds_return_t n = dds_take(reader, samples, infos, 8, 8);
+        if (n <= 0)
+            return;
+        for (int i = 0; i < n; ++i)
+            fn(*static_cast<const Sample *>(samples[i]), infos[i]);
+        dds_return_loan(reader, samples, n);
+    }
+}
+
 // For the conflict window: cheap (read per sample), never jumps.
 qint64 monotonicMs()
 {
@@ -178,66 +200,48 @@ std::expected<dds_qos_t *, QString> DdsTransport::securityQos(const DdsSecurity 
 void DdsTransport::onParticipant(dds_entity_t reader, void *self)
 {
     auto *transport = static_cast<DdsTransport *>(self);
-    void *samples[8] = {};
-    dds_sample_info_t infos[8];
-    for (;;) {
-        const dds_return_t n = dds_take(reader, samples, infos, 8, 8);
-        if (n <= 0)
-            break;
-        for (int i = 0; i < n; ++i) {
-            const auto *peer = static_cast<const neptus_Participant *>(samples[i]);
-            if (!infos[i].valid_data || peer->system == transport->m_config.systemId)
-                continue;
-            const QString theirs = QString::fromUtf8(peer->digest);
-            const QString ours = QString::fromLatin1(transport->m_schemas->defaultSchema().digest());
-            QMutexLocker lock(&transport->m_mutex);
-            if (theirs == ours || transport->m_peerDigests.value(peer->system) == theirs)
-                continue;
-            transport->m_peerDigests.insert(peer->system, theirs);
-            const quint16 system = peer->system;
-            const QString name = QString::fromUtf8(peer->name);
-            QMetaObject::invokeMethod(transport, [transport, system, name, theirs, ours] {
-                emit transport->definitionsDiffer(system, name, theirs, ours);
-            }, Qt::QueuedConnection);
-        }
-        dds_return_loan(reader, samples, n);
-    }
+    forEachTaken<neptus_Participant>(reader, [transport](const neptus_Participant &peer, const dds_sample_info_t &info) {
+        if (!info.valid_data || peer.system == transport->m_config.systemId)
+            return;
+        const QString theirs = QString::fromUtf8(peer.digest);
+        const QString ours = QString::fromLatin1(transport->m_schemas->defaultSchema().digest());
+        QMutexLocker lock(&transport->m_mutex);
+        if (theirs == ours || transport->m_peerDigests.value(peer.system) == theirs)
+            return;
+        transport->m_peerDigests.insert(peer.system, theirs);
+        const quint16 system = peer.system;
+        const QString name = QString::fromUtf8(peer.name);
+        QMetaObject::invokeMethod(transport, [transport, system, name, theirs, ours] {
+            emit transport->definitionsDiffer(system, name, theirs, ours);
+        }, Qt::QueuedConnection);
+    });
 }
 
 void DdsTransport::onPresence(dds_entity_t reader, void *self)
 {
     auto *transport = static_cast<DdsTransport *>(self);
-    void *samples[8] = {};
-    dds_sample_info_t infos[8];
-    for (;;) {
-        const dds_return_t n = dds_take(reader, samples, infos, 8, 8);
-        if (n <= 0)
-            break;
-        QStringList gone;
-        for (int i = 0; i < n; ++i) {
-            if (infos[i].instance_state == DDS_IST_ALIVE)
-                continue;
-            const auto *participant = static_cast<const dds_builtintopic_participant_t *>(samples[i]);
-            gone << QStringLiteral("dds:") + QByteArray(reinterpret_cast<const char *>(participant->key.v), 12).toHex();
+    QStringList gone;
+    forEachTaken<dds_builtintopic_participant_t>(reader, [&](const dds_builtintopic_participant_t &participant,
+                                                             const dds_sample_info_t &info) {
+        if (info.instance_state != DDS_IST_ALIVE)
+            gone << participantLabel(participant.key);
+    });
+    if (gone.isEmpty())
+        return;
+    const qint64 now = monotonicMs();
+    QMutexLocker lock(&transport->m_mutex);
+    transport->m_participantOfWriter.removeIf([&](const auto &it) { return gone.contains(it.value()); });
+    for (auto peer = transport->m_peers.begin(); peer != transport->m_peers.end(); ++peer) {
+        bool changed = false;
+        for (const QString &name : gone) {
+            changed = peer->senders.remove(name) || changed;
+            if (peer->picked == name)
+                peer->picked.clear();
+            if (peer->last == name)
+                peer->last.clear();
         }
-        dds_return_loan(reader, samples, n);
-        if (gone.isEmpty())
-            continue;
-        const qint64 now = monotonicMs();
-        QMutexLocker lock(&transport->m_mutex);
-        transport->m_participantOfWriter.removeIf([&](const auto &it) { return gone.contains(it.value()); });
-        for (auto peer = transport->m_peers.begin(); peer != transport->m_peers.end(); ++peer) {
-            bool changed = false;
-            for (const QString &name : gone) {
-                changed = peer->senders.remove(name) || changed;
-                if (peer->picked == name)
-                    peer->picked.clear();
-                if (peer->last == name)
-                    peer->last.clear();
-            }
-            if (changed)
-                transport->resolveLocked(peer.key(), *peer, now);
-        }
+        if (changed)
+            transport->resolveLocked(peer.key(), *peer, now);
     }
 }
 
@@ -339,12 +343,11 @@ bool DdsTransport::heard(quint16 system, dds_entity_t reader, dds_instance_handl
     QMutexLocker lock(&m_mutex);
     auto name = m_participantOfWriter.constFind(publication);
     if (name == m_participantOfWriter.cend()) {
-        // The GUID prefix (12 bytes) names the writer's participant.
+        // The writer's participant names it.
         QString participant = QStringLiteral("dds:unknown");
         lock.unlock();
         if (dds_builtintopic_endpoint_t *writer = dds_get_matched_publication_data(reader, publication)) {
-            participant = QStringLiteral("dds:")
-                          + QByteArray(reinterpret_cast<const char *>(writer->participant_key.v), 12).toHex();
+            participant = participantLabel(writer->participant_key);
             dds_builtintopic_free_endpoint(writer);
         }
         lock.relock();
@@ -413,7 +416,7 @@ QString DdsTransport::participantName() const
     dds_guid_t guid{};
     if (m_participant <= 0 || dds_get_guid(m_participant, &guid) != DDS_RETCODE_OK)
         return {};
-    return QStringLiteral("dds:") + QByteArray(reinterpret_cast<const char *>(guid.v), 12).toHex();
+    return participantLabel(guid);
 }
 
 QStringList DdsTransport::sources(quint16 system) const
