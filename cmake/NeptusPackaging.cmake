@@ -17,6 +17,8 @@ foreach(entry ${NEPTUS_DATA_FOLDERS})
   install(DIRECTORY ${PROJECT_SOURCE_DIR}/${source}/ DESTINATION ${CMAKE_INSTALL_DATADIR}/neptus-qt/${target})
 endforeach()
 install(FILES ${PROJECT_SOURCE_DIR}/tools/neptus-qt.desktop DESTINATION ${CMAKE_INSTALL_DATADIR}/applications)
+# DDS Security keys (docs/dds-security.md); finds share/neptus-qt/msgdefs beside bin/.
+install(PROGRAMS ${PROJECT_SOURCE_DIR}/tools/dds-keys DESTINATION ${CMAKE_INSTALL_BINDIR} RENAME neptus-dds-keys)
 
 file(STRINGS ${PROJECT_SOURCE_DIR}/tools/runtime-packages.txt runtime_lines)
 set(runtime_packages "")
@@ -41,5 +43,6 @@ set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT)
 set(CPACK_DEBIAN_PACKAGE_SECTION science)
 set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
 set(CPACK_DEBIAN_PACKAGE_DEPENDS "${runtime_depends}")
+set(CPACK_DEBIAN_PACKAGE_RECOMMENDS "openssl") # neptus-dds-keys
 set(CPACK_STRIP_FILES ON)
 include(CPack)
