@@ -6,7 +6,7 @@ import Neptus.Engine
 // types (and those the console's definitions lack), packets that could not be
 // decoded with the last reason, and the entities the system named. Tap a
 // system to list its message types, busiest first, with their rates. When
-// several hosts send as one system (an impostor, or a vehicle on two
+// several sources (IMC hosts, DDS participants) send as one system (an impostor, or a vehicle on two
 // networks) its commands are held: a button per host lets the operator
 // choose the one to trust.
 Rectangle {
@@ -144,8 +144,8 @@ Rectangle {
                     width: parent.width
                     visible: row.contested
                     text: row.destination === ""
-                          ? qsTr("%1 hosts send as %2: commands are held. Trust one:").arg(row.sources.length).arg(row.system)
-                          : qsTr("%1 hosts send as %2; commands go to %3").arg(row.sources.length).arg(row.system).arg(row.destination)
+                          ? qsTr("%1 sources send as %2: commands are held. Trust one:").arg(row.sources.length).arg(row.system)
+                          : qsTr("%1 sources send as %2; commands go to %3").arg(row.sources.length).arg(row.system).arg(row.destination)
                     color: Theme.levelColor(AlarmLevel.Warning)
                     font.pixelSize: Theme.smallFontPixelSize
                     font.bold: row.destination === ""
