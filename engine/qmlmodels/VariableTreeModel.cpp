@@ -163,9 +163,11 @@ void VariableTreeModel::sync()
 
 void VariableTreeModel::refreshAges()
 {
+    const quint32 tick = m_ageTick++;
     for (size_t parent = 0; parent < m_knownChildren.size(); ++parent) {
         const int count = m_knownChildren[parent];
-        if (count == 0)
+        // Rows no view read since the previous tick are not on screen.
+        if (count == 0 || parent >= m_readAt.size() || m_readAt[parent] + 1 < tick)
             continue;
         const QModelIndex p = indexOfNode(static_cast<NodeId>(parent));
         // Staleness greys every column of a row; only the age column's text changes.
@@ -232,6 +234,11 @@ QVariant VariableTreeModel::data(const QModelIndex &index, int role) const
     if (!checkIndex(index, CheckIndexOption::IndexIsValid))
         return {};
     const NodeId node = nodeOf(index);
+    if (const auto parent = static_cast<size_t>(m_tree->parent(node)); parent < m_knownChildren.size()) {
+        if (m_readAt.size() < m_knownChildren.size())
+            m_readAt.resize(m_knownChildren.size(), 0);
+        m_readAt[parent] = m_ageTick;
+    }
     if (role == NameRole || (role == Qt::DisplayRole && index.column() == NameColumn))
         return m_tree->name(node);
     if (role == PathRole)

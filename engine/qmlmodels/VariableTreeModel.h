@@ -69,8 +69,9 @@ public:
     // Takes the tree's changes and notifies views, Variables and listeners.
     // Runs by itself every frame (16 ms); tests call it directly.
     Q_INVOKABLE void sync();
-    // Recomputes ages and staleness; runs by itself every second (tests call it
-    // after moving their clock).
+    // Recomputes ages and staleness of the rows views showed since the last
+    // time (and of every Variable); runs by itself every second (tests call
+    // it after moving their clock).
     Q_INVOKABLE void refreshAges();
 
     // Used by Variable.
@@ -102,6 +103,11 @@ private:
     double m_staleAfter = 5.0;
     // What views know: the number of children of each node they were told of.
     std::vector<int> m_knownChildren;
+    // The age tick in which a view last read a row under each node: views
+    // read only the rows they show, so refreshAges() signals only those
+    // (every row of 1,000 systems, every second, was most of a core).
+    mutable std::vector<quint32> m_readAt;
+    quint32 m_ageTick = 2; // 0 in m_readAt: never read
     QTimer m_frame;
     QTimer m_ageTimer;
 

@@ -226,3 +226,41 @@ TEST_F(Fixture, BranchListenersHearChangesBeneath)
     model.sync();
     EXPECT_EQ(caravelaCalls, 1);
 }
+
+// Every second the model signalled a new age for every row of every branch:
+// with 1,000 systems (or 400 forged ids with 254 entities each) that was
+// most of a core. Views read only the rows they show, so only branches a
+// view read from since the last tick are signalled.
+TEST(VariableTreeModelAges, OnlyRowsAViewReadAreRefreshed)
+{
+    ManualClock clock{QDateTime::fromMSecsSinceEpoch(1'000'000, QTimeZone::UTC)};
+    VariableTree tree{&clock};
+    VariableTreeModel model{&tree};
+    for (quint16 id = 1; id <= 1000; ++id)
+        tree.ingest(state(id, id));
+    model.sync();
+    QSignalSpy changed(&model, &QAbstractItemModel::dataChanged);
+
+    // A view shows one system's EstimatedState: it reads those rows.
+    const QModelIndex depth = model.indexOfPath(QStringLiteral("0x0001/EstimatedState/depth"));
+    ASSERT_TRUE(depth.isValid());
+    model.data(depth, VariableTreeModel::AgeRole);
+    model.refreshAges();
+    ASSERT_EQ(changed.count(), 2) << "the one branch shown (staleness, then ages)";
+    EXPECT_EQ(changed[0][0].value<QModelIndex>().parent(), depth.parent());
+
+    // The view reads again what it was told changed; one that stops reading
+    // (scrolled away, closed) is dropped after the next tick.
+    changed.clear();
+    model.data(depth, VariableTreeModel::AgeRole);
+    model.refreshAges();
+    EXPECT_EQ(changed.count(), 2);
+    changed.clear();
+    model.refreshAges();
+    EXPECT_EQ(changed.count(), 2) << "one tick of grace";
+    changed.clear();
+    model.refreshAges();
+    EXPECT_EQ(changed.count(), 0);
+    clock.advance(10'000);
+    EXPECT_TRUE(model.data(depth, VariableTreeModel::StaleRole).toBool()) << "read again, it is up to date";
+}
