@@ -229,6 +229,7 @@ int main(int argc, char **argv)
         }
         case protocol::Op::Limits:
             watchdog.setLimits(args.value(0).toInt(), args.value(1).toInt());
+            runner.setTimeLimitMs(args.value(0).toInt());
             break;
         default:
             fail(QStringLiteral("unexpected operation %1 from the console").arg(int(frame->op)));

@@ -277,8 +277,9 @@ RunResult ScriptRunner::run(int script)
         result.failed = true;
         result.level = alarms::Error;
         const int line = outcome.property(QStringLiteral("lineNumber")).toInt();
+        const QString limit = m_timeLimitMs > 0 ? QStringLiteral("%1 ms ").arg(m_timeLimitMs) : QString();
         result.message = m_engine.isInterrupted()
-            ? QStringLiteral("script stopped: it ran longer than its time limit")
+            ? QStringLiteral("script stopped: it ran longer than its %1time limit").arg(limit)
             : outcome.toString() + (line > 2 ? QStringLiteral(" (line %1)").arg(line - 2) : QString());
         return result;
     }

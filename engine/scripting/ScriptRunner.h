@@ -100,6 +100,8 @@ public:
 
     // For a watchdog on another thread: stops the running script.
     QJSEngine &engine() { return m_engine; }
+    // The limit that watchdog applies, for the message of a run it stopped.
+    void setTimeLimitMs(int milliseconds) { m_timeLimitMs = milliseconds; }
 
 private:
     class Bridge;
@@ -109,6 +111,7 @@ private:
     QJSValue m_compile;
     QHash<int, QJSValue> m_scripts;
     int m_nextId = 1;
+    int m_timeLimitMs = 0; // 0: not known here
 };
 
 } // namespace neptus::scripting
