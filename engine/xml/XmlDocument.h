@@ -38,6 +38,8 @@ public:
 
     const xmlNode *root() const { return xmlDocGetRootElement(m_doc.get()); }
     xmlDoc *get() const { return m_doc.get(); }
+    // Hands the document to a library that frees it (libxslt); empty afterwards.
+    xmlDoc *take() { return m_doc.release(); }
     const QString &fileName() const { return m_fileName; }
 
     // An error at `node`, for the loaders that interpret the document.
