@@ -41,21 +41,19 @@ const Tracks::Track *Tracks::track(const QString &system) const
 
 void Tracks::setMaxDrawn(int systems)
 {
-    systems = std::max(systems, 1);
-    if (systems == m_maxDrawn)
-        return;
-    m_maxDrawn = systems;
-    m_rowsDirty = true;
-    updateRows();
-    emit systemsChanged();
+    setDrawLimit(m_maxDrawn, std::max(systems, 1));
 }
 
 void Tracks::setMaxUnnamedDrawn(int systems)
 {
-    systems = std::max(systems, 0);
-    if (systems == m_maxUnnamedDrawn)
+    setDrawLimit(m_maxUnnamedDrawn, std::max(systems, 0));
+}
+
+void Tracks::setDrawLimit(int &limit, int systems)
+{
+    if (systems == limit)
         return;
-    m_maxUnnamedDrawn = systems;
+    limit = systems;
     m_rowsDirty = true;
     updateRows();
     emit systemsChanged();

@@ -143,6 +143,7 @@ private:
     void flushSystems();
     // Gives rows to the systems that should be drawn, and takes them from the others.
     void updateRows();
+    void setDrawLimit(int &limit, int systems);
     // Home is the first position heard, unless set.
     void homeOnce(double lat, double lon, double height);
     void add(Track &track, const Fix &fix);
