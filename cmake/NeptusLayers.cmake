@@ -27,6 +27,7 @@ set(NEPTUS_LAYERS
   "neptus-sim          -           neptus-simulation neptus-transport"
   "neptus-model-import -           neptus-model-reader"
   "neptus-script-host  -           neptus-scripting"
+  "neptus-xslt         -           neptus-processor"
 )
 
 # neptus_layer(LIBRARY <folder-var> <uses-var> <allowed-var>): the table's
