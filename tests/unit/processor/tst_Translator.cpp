@@ -76,7 +76,11 @@ TEST(Translator, AStylesheetThatRunsOnIsStoppedAtItsLimit)
         const qint64 elapsed = clock.elapsed();
         ASSERT_FALSE(out);
         EXPECT_TRUE(out.error().message.startsWith(QStringLiteral("stopped:"))) << out.error().toString().toStdString();
+#if !defined(__SANITIZE_ADDRESS__)
+        // (AddressSanitizer reserves its heap at start: the address-space cap
+        // does not see it grow, and the helper meets its time limit instead.)
         EXPECT_TRUE(out.error().message.contains(expected)) << out.error().toString().toStdString();
+#endif
         EXPECT_LT(elapsed, limits.seconds * 1000 + 2000) << "stopped at its limit, not after";
         std::printf("doubling(40), limits %d s / %d MB: stopped after %lld ms: %s\n", limits.seconds, limits.megabytes,
                     static_cast<long long>(elapsed), qPrintable(out.error().message));
