@@ -1,5 +1,7 @@
 #include "JsWatchdog.h"
 
+#include "core/Clock.h"
+
 #include <QQmlEngine>
 #include <QQmlError>
 
@@ -12,18 +14,13 @@ constexpr int heartbeatMs = 50;
 constexpr auto interruptFor = std::chrono::microseconds(200);
 constexpr qint64 retryMs = 1000;
 
-qint64 nowMs()
-{
-    return std::chrono::duration_cast<std::chrono::milliseconds>(std::chrono::steady_clock::now().time_since_epoch()).count();
-}
-
 } // namespace
 
 JsWatchdog::JsWatchdog(QQmlEngine &engine, std::chrono::milliseconds limit, QObject *parent)
     : QObject(parent)
     , m_engine(engine)
     , m_limit(limit)
-    , m_lastTickMs(nowMs())
+    , m_lastTickMs(neptus::monotonicMs())
 {
     connect(&m_heartbeat, &QTimer::timeout, this, &JsWatchdog::tick);
     m_heartbeat.start(heartbeatMs);
@@ -42,7 +39,7 @@ void JsWatchdog::watch()
     qint64 interruptedMs = 0;
     while (!m_quit.load()) {
         std::this_thread::sleep_for(std::chrono::milliseconds(heartbeatMs));
-        const qint64 now = nowMs();
+        const qint64 now = neptus::monotonicMs();
         const qint64 stuckMs = now - m_lastTickMs.load();
         if (stuckMs < m_limit.count() || now - interruptedMs < retryMs)
             continue;
@@ -66,7 +63,7 @@ void JsWatchdog::collect(const QList<QQmlError> &warnings)
 
 void JsWatchdog::tick()
 {
-    m_lastTickMs.store(nowMs());
+    m_lastTickMs.store(neptus::monotonicMs());
     const qint64 stuckMs = m_stoppedAfterMs.load();
     if (stuckMs == 0)
         return;

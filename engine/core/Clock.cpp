@@ -1,5 +1,7 @@
 #include "core/Clock.h"
 
+#include <chrono>
+
 namespace neptus {
 
 namespace {
@@ -9,6 +11,12 @@ public:
     QDateTime now() const override { return QDateTime::currentDateTimeUtc(); }
 };
 } // namespace
+
+qint64 monotonicMs()
+{
+    return std::chrono::duration_cast<std::chrono::milliseconds>(std::chrono::steady_clock::now().time_since_epoch())
+        .count();
+}
 
 Clock &Clock::system()
 {

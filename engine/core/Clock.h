@@ -17,6 +17,11 @@ public:
     static Clock &system();
 };
 
+// Milliseconds on the monotonic clock: for timeouts, rate windows and
+// watchdogs, which must neither jump with the wall clock nor be driven by a
+// test's Clock (cheap enough to read per packet).
+qint64 monotonicMs();
+
 // A clock that moves only when told to: for tests and for log replay.
 class ManualClock final : public Clock
 {

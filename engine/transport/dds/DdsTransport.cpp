@@ -14,7 +14,6 @@
 #include <tuple>
 
 #include <dlfcn.h>
-#include <chrono>
 
 namespace neptus::transport {
 
@@ -56,13 +55,6 @@ void forEachTaken(dds_entity_t reader, Fn fn)
             fn(*static_cast<const Sample *>(samples[i]), infos[i]);
         dds_return_loan(reader, samples, n);
     }
-}
-
-// For the conflict window: cheap (read per sample), never jumps.
-qint64 monotonicMs()
-{
-    return std::chrono::duration_cast<std::chrono::milliseconds>(std::chrono::steady_clock::now().time_since_epoch())
-        .count();
 }
 
 } // namespace

@@ -1,6 +1,6 @@
 #include "transport/imc/DatagramReader.h"
 
-#include <QDeadlineTimer>
+#include "core/Clock.h"
 
 #include <array>
 #include <cerrno>
@@ -19,11 +19,6 @@ namespace {
 constexpr std::size_t largestDatagram = 65536;
 // Datagrams read from one socket before looking at the others.
 constexpr int readsPerSocket = 512;
-
-qint64 monotonicMs()
-{
-    return QDeadlineTimer::current().deadline();
-}
 
 // "127.0.0.1" also for an IPv4 address in IPv6 form (as ImcUdpTransport names hosts).
 QString hostName(const QHostAddress &address)
