@@ -20,15 +20,14 @@ constexpr std::size_t largestDatagram = 65536;
 // Datagrams read from one socket before looking at the others.
 constexpr int readsPerSocket = 512;
 
-// "127.0.0.1" also for an IPv4 address in IPv6 form (as ImcUdpTransport names hosts).
-QString hostName(const QHostAddress &address)
+} // namespace
+
+QString DatagramReader::hostName(const QHostAddress &address)
 {
     bool isIpv4 = false;
     const quint32 ipv4 = address.toIPv4Address(&isIpv4);
     return isIpv4 ? QHostAddress(ipv4).toString() : address.toString();
 }
-
-} // namespace
 
 DatagramReader::DatagramReader(std::vector<int> fds, Limits limits, std::function<void()> wake)
     : m_fds(std::move(fds))
@@ -132,6 +131,7 @@ void DatagramReader::admitLocked(const char *data, qsizetype size, const void *f
     if (host == m_hosts.end()) {
         if (m_hosts.size() >= m_limits.hosts) {
             ++m_droppedUnqueued;
+            m_dropped = true;
             return;
         }
         const QHostAddress address(static_cast<const sockaddr *>(from));
@@ -147,12 +147,13 @@ void DatagramReader::admitLocked(const char *data, qsizetype size, const void *f
                       || host->bytes + size > m_limits.queuedBytesPerHost;
     if (overRate || full) {
         ++host->dropped;
+        m_dropped = true;
         return;
     }
     ++host->count;
     if (host->queue.empty())
         m_turns.push_back(key);
-    host->queue.push_back({QByteArray(data, size), host->address, port});
+    host->queue.push_back({QByteArray(data, size), host->address, port, host->name});
     host->bytes += size;
 }
 
@@ -170,17 +171,25 @@ DatagramReader::Batch DatagramReader::take(int max)
         if (!host.queue.empty())
             m_turns.push_back(key);
     }
+    // Drops are collected, and quiet hosts let go, only when there are some
+    // or once a second: not a walk over every host on each take.
     const qint64 now = monotonicMs();
-    for (auto it = m_hosts.begin(); it != m_hosts.end();) {
-        if (it->dropped > 0) {
-            batch.dropped[it->name] += it->dropped;
-            it->dropped = 0;
+    const bool prune = now - m_prunedMs >= 1000;
+    if (m_dropped || prune) {
+        for (auto it = m_hosts.begin(); it != m_hosts.end();) {
+            if (it->dropped > 0) {
+                batch.dropped[it->name] += it->dropped;
+                it->dropped = 0;
+            }
+            // A host quiet for two seconds keeps no queue (nor a rate window).
+            if (prune && it->queue.empty() && now - it->secondStartMs > 2000)
+                it = m_hosts.erase(it);
+            else
+                ++it;
         }
-        // A host quiet for two seconds keeps no queue (nor a rate window).
-        if (it->queue.empty() && now - it->secondStartMs > 2000)
-            it = m_hosts.erase(it);
-        else
-            ++it;
+        m_dropped = false;
+        if (prune)
+            m_prunedMs = now;
     }
     if (m_droppedUnqueued > 0) {
         batch.dropped[QStringLiteral("other hosts")] += m_droppedUnqueued;

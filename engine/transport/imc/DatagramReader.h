@@ -30,6 +30,7 @@ public:
         QByteArray bytes;
         QHostAddress from;
         quint16 port = 0;
+        QString host; // hostName(from)
     };
     struct Batch
     {
@@ -56,6 +57,10 @@ public:
 
     // Up to `max` waiting datagrams, one host at a time in turn.
     Batch take(int max);
+
+    // How a sending host is named in counts and alarms: "127.0.0.1", also
+    // for an IPv4 address in IPv6 form.
+    static QString hostName(const QHostAddress &address);
 
 private:
     struct Host
@@ -92,6 +97,8 @@ private:
     QHash<Key, Host> m_hosts;  // by address
     std::deque<Key> m_turns;   // hosts with datagrams waiting, in turn
     int m_droppedUnqueued = 0;       // from hosts beyond Limits::hosts
+    bool m_dropped = false;          // some host dropped since the last take()
+    qint64 m_prunedMs = 0;           // when quiet hosts were last let go
     bool m_told = false;             // wake was called and no take() emptied the queues since
 
     std::thread m_thread;

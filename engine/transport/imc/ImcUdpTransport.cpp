@@ -26,14 +26,6 @@ QString peerName(const QHostAddress &address, quint16 port)
     return QStringLiteral("%1:%2").arg(address.toString()).arg(port);
 }
 
-// "127.0.0.1" also for an IPv4 address in IPv6 form.
-QString hostName(const QHostAddress &address)
-{
-    bool isIpv4 = false;
-    const quint32 ipv4 = address.toIPv4Address(&isIpv4);
-    return isIpv4 ? QHostAddress(ipv4).toString() : address.toString();
-}
-
 // The interface that holds `address`, if any.
 std::optional<std::pair<QNetworkInterface, QNetworkAddressEntry>> interfaceOf(const QHostAddress &address)
 {
@@ -184,7 +176,7 @@ void ImcUdpTransport::drain()
         }
     }
     for (const DatagramReader::Datagram &datagram : batch.datagrams)
-        process(datagram.bytes, datagram.from, datagram.port);
+        process(datagram.bytes, datagram.from, datagram.port, datagram.host);
     // What is left is taken on the next turn of the event loop.
     if (batch.more)
         QMetaObject::invokeMethod(this, &ImcUdpTransport::drain, Qt::QueuedConnection);
@@ -192,13 +184,13 @@ void ImcUdpTransport::drain()
 
 void ImcUdpTransport::receive(QByteArrayView datagram, const QHostAddress &from, quint16 fromPort)
 {
-    if (withinBudget(hostName(from)))
-        process(datagram, from, fromPort);
+    const QString host = DatagramReader::hostName(from);
+    if (withinBudget(host))
+        process(datagram, from, fromPort, host);
 }
 
-void ImcUdpTransport::process(QByteArrayView datagram, const QHostAddress &from, quint16 fromPort)
+void ImcUdpTransport::process(QByteArrayView datagram, const QHostAddress &from, quint16 fromPort, const QString &host)
 {
-    const QString host = hostName(from);
     auto message = m_schemas->decode(datagram);
     if (!message) {
         ++m_decodeErrors;

@@ -189,8 +189,8 @@ private:
 
     // Takes what the reader queued (already within budget), in turns.
     void drain();
-    // A datagram within its host's budget.
-    void process(QByteArrayView datagram, const QHostAddress &from, quint16 fromPort);
+    // A datagram within its host's budget, from `host` (DatagramReader::hostName(from)).
+    void process(QByteArrayView datagram, const QHostAddress &from, quint16 fromPort, const QString &host);
     void learnFromAnnounce(const msg::Message &announce, const QHostAddress &from, const QString &host);
     std::expected<void, QString> send(const msg::Message &message, const Endpoint &to);
     double now() const { return m_config.clock->now().toMSecsSinceEpoch() / 1000.0; }
