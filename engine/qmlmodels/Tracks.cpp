@@ -173,18 +173,11 @@ void Tracks::updateRows()
                 drawn.push_back(t.get());
         }
     }
-    const QSet<Track *> wanted(drawn.begin(), drawn.end());
-    const QSet<Track *> had(m_rows.begin(), m_rows.end());
+    const QSet<const Track *> wanted(drawn.begin(), drawn.end());
+    const QSet<const Track *> had(m_rows.begin(), m_rows.end());
     if (wanted == had)
         return;
-    for (int row = int(m_rows.size()) - 1; row >= 0; --row) {
-        if (wanted.contains(m_rows[size_t(row)]))
-            continue;
-        beginRemoveRows({}, row, row);
-        m_rows.erase(m_rows.begin() + row);
-        m_shownRevision.erase(m_shownRevision.begin() + row);
-        endRemoveRows();
-    }
+    removeRows([&](const Track &t) { return !wanted.contains(&t); });
     for (Track *t : drawn) {
         if (had.contains(t))
             continue;
@@ -197,32 +190,34 @@ void Tracks::updateRows()
     m_systemsChanged = true; // `hidden` changed
 }
 
-void Tracks::forgetSilent()
+void Tracks::removeRows(const std::function<bool(const Track &)> &unwanted)
 {
-    if (!m_model)
-        return;
-    const qint64 now = m_model->tree()->clock().now().toMSecsSinceEpoch();
-    const auto silent = [&](const std::unique_ptr<Track> &t) {
-        return !t->named && now - t->heardMs > m_forgetAfterMs;
-    };
-    if (std::none_of(m_tracks.begin(), m_tracks.end(), silent))
-        return;
     for (int row = int(m_rows.size()) - 1; row >= 0; --row) {
-        const Track *t = m_rows[size_t(row)];
-        if (t->named || now - t->heardMs <= m_forgetAfterMs)
+        if (!unwanted(*m_rows[size_t(row)]))
             continue;
         beginRemoveRows({}, row, row);
         m_rows.erase(m_rows.begin() + row);
         m_shownRevision.erase(m_shownRevision.begin() + row);
         endRemoveRows();
     }
+}
+
+void Tracks::forgetSilent()
+{
+    if (!m_model)
+        return;
+    const qint64 now = m_model->tree()->clock().now().toMSecsSinceEpoch();
+    const auto silent = [&](const Track &t) { return !t.named && now - t.heardMs > m_forgetAfterMs; };
+    if (std::none_of(m_tracks.begin(), m_tracks.end(), [&](const auto &t) { return silent(*t); }))
+        return;
+    removeRows(silent); // before the tracks they point to go
     for (const auto &t : m_tracks) {
-        if (silent(t)) {
+        if (silent(*t)) {
             m_byId.remove(t->id);
             m_byName.remove(t->system);
         }
     }
-    std::erase_if(m_tracks, silent);
+    std::erase_if(m_tracks, [&](const auto &t) { return silent(*t); });
     m_rowsDirty = true;
     updateRows(); // others may take the rows given back
     m_systemsChanged = true;

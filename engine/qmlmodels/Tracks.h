@@ -10,6 +10,7 @@
 #include <QVariantMap>
 #include <QtQml/qqmlregistration.h>
 
+#include <functional>
 #include <vector>
 
 namespace neptus::geo {
@@ -144,6 +145,8 @@ private:
     // Gives rows to the systems that should be drawn, and takes them from the others.
     void updateRows();
     void setDrawLimit(int &limit, int systems);
+    // Takes the rows of the tracks `unwanted` names from the views.
+    void removeRows(const std::function<bool(const Track &)> &unwanted);
     // Home is the first position heard, unless set.
     void homeOnce(double lat, double lon, double height);
     void add(Track &track, const Fix &fix);

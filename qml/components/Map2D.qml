@@ -214,6 +214,7 @@ Rectangle {
         axisWidth: Math.max(2, Theme.mm(0.4))
     }
     Text {
+        id: gridLabel
         objectName: "gridLabel"
         visible: nedGrid.visible
         anchors { left: parent.left; top: parent.top; margins: Theme.spacing }
@@ -227,7 +228,7 @@ Rectangle {
     Text {
         objectName: "hiddenSystems"
         visible: root.tracks !== null && root.tracks.hidden > 0
-        anchors { left: parent.left; top: parent.top; margins: Theme.spacing; topMargin: Theme.spacing * 2 + Theme.smallFontPixelSize * 1.4 }
+        anchors { left: parent.left; top: gridLabel.visible ? gridLabel.bottom : parent.top; margins: Theme.spacing }
         text: root.tracks ? qsTr("%L1 more systems not drawn (named ones first, at most %L2, %L3 unnamed)")
                             .arg(root.tracks.hidden).arg(root.tracks.maxDrawn).arg(root.tracks.maxUnnamedDrawn) : ""
         color: Theme.text
