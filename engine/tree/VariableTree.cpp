@@ -416,7 +416,9 @@ void VariableTree::ingest(const Message &message)
     // gets a branch of its own and "Message" is the latest from any of them.
     const int any = bindingLocked(source, 0xFF, message, false);
     std::vector<quint8> &entities = m_bindings[static_cast<size_t>(any)]->entities;
-    if (std::find(entities.begin(), entities.end(), entity) == entities.end()) {
+    auto known = std::find(entities.begin(), entities.end(), entity);
+    const std::size_t order = std::size_t(known - entities.begin()); // first heard is 0
+    if (known == entities.end()) {
         entities.push_back(entity);
         if (entities.size() == 2) {
             const Binding &whole = *m_bindings[static_cast<size_t>(any)];
@@ -435,8 +437,7 @@ void VariableTree::ingest(const Message &message)
     // Branches for the first maxEntityBranches entities only: a forged
     // system sending from all 254 entities would make thousands of nodes
     // per system (400 such ids made 2.1 M); the others show in "Message".
-    if (entities.size() > 1 && entity != 0 && entity != 0xFF
-        && std::size_t(std::find(entities.begin(), entities.end(), entity) - entities.begin()) < maxEntityBranches)
+    if (entities.size() > 1 && entity != 0 && entity != 0xFF && order < maxEntityBranches)
         commitLocked(bindingLocked(source, entity, message, true), message, now);
 }
 

@@ -511,11 +511,11 @@ std::expected<void, QString> DdsTransport::publish(quint16 system, const msg::Me
 {
     {
         QMutexLocker lock(&m_mutex);
-        const Peer peer = m_peers.value(system);
-        if (peer.destination.isEmpty() && peer.sources.size() > 1)
+        const auto peer = m_peers.constFind(system);
+        if (peer != m_peers.cend() && peer->destination.isEmpty() && peer->sources.size() > 1)
             return std::unexpected(QStringLiteral("DDS: %1 participants send as %2 (%3): commands are held until one is chosen")
-                                       .arg(peer.sources.size())
-                                       .arg(msg::systemLabel(system), peer.sources.join(QStringLiteral(", "))));
+                                       .arg(peer->sources.size())
+                                       .arg(msg::systemLabel(system), peer->sources.join(QStringLiteral(", "))));
     }
     const auto addressed = m_schemas->forSystem(system, message);
     if (!addressed)
