@@ -1,7 +1,5 @@
 #include "processor/Stylesheet.h"
 
-#include <QDir>
-#include <QFile>
 #include <QFileInfo>
 #include <QRegularExpression>
 #include <QUrl>
@@ -110,23 +108,27 @@ struct Stylesheet::Compiled
 
 std::expected<Stylesheet, xml::XmlError> Stylesheet::load(const QString &path)
 {
-    QFile file(path);
-    if (!file.open(QIODevice::ReadOnly))
-        return std::unexpected(xml::XmlError{path, 0, 0, QStringLiteral("cannot read: %1").arg(file.errorString())});
-    if (file.size() > xml::XmlDocument::maxBytes)
-        return std::unexpected(xml::XmlError{path, 0, 0, QStringLiteral("too big for a stylesheet (%1 bytes)").arg(file.size())});
-    return parse(file.readAll(), QFileInfo(path).absoluteFilePath());
+    auto doc = xml::XmlDocument::load(QFileInfo(path).absoluteFilePath());
+    if (!doc)
+        return std::unexpected(doc.error());
+    return compile(std::move(*doc));
 }
 
 std::expected<Stylesheet, xml::XmlError> Stylesheet::parse(QByteArrayView data, const QString &fileName)
 {
-    initialise();
     auto doc = xml::XmlDocument::parse(data, fileName);
     if (!doc)
         return std::unexpected(doc.error());
+    return compile(std::move(*doc));
+}
+
+std::expected<Stylesheet, xml::XmlError> Stylesheet::compile(xml::XmlDocument doc)
+{
+    initialise();
+    const QString fileName = doc.fileName();
     Errors errors{QFileInfo(fileName).absolutePath(), {}};
     current = &errors;
-    xmlDocPtr raw = doc->take();
+    xmlDocPtr raw = doc.take();
     xsltStylesheetPtr style = xsltParseStylesheetDoc(raw);
     current = nullptr;
     if (!style || style->errors > 0) {

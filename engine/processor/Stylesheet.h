@@ -43,6 +43,7 @@ public:
     const QString &fileName() const { return m_fileName; }
 
 private:
+    static std::expected<Stylesheet, xml::XmlError> compile(xml::XmlDocument doc);
     struct Compiled;
     std::shared_ptr<Compiled> m_compiled;
     QString m_fileName;
