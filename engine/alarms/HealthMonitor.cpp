@@ -103,7 +103,7 @@ QString HealthMonitor::silenceText(double ms)
 
 bool HealthMonitor::establishedLocked(quint16 id, const System &system) const
 {
-    return system.lastMs - system.firstMs >= establishMs || system.name != msg::systemLabel(id);
+    return system.lastMs - system.firstMs >= establishMs || m_tree.isNamed(id);
 }
 
 void HealthMonitor::updateShortLivedLocked(const QList<quint16> &silent)

@@ -1,7 +1,6 @@
 #include "qmlmodels/Tracks.h"
 
 #include "geo/Geodesy.h"
-#include "messages/Message.h"
 
 #include <cmath>
 
@@ -369,7 +368,7 @@ void Tracks::read(tree::NodeId node)
     const quint16 id = tree.systemOf(node);
     homeOnce(lat, lon, field("height")); // the vehicle's own reference, not its offset position
     const QString name = tree.systemName(id);
-    Track &t = trackFor(id, name, name != msg::systemLabel(id));
+    Track &t = trackFor(id, name, tree.isNamed(id));
     t.heardMs = tree.clock().now().toMSecsSinceEpoch();
     add(t, fix);
 }

@@ -580,6 +580,13 @@ int VariableTree::nodeCount() const
     return static_cast<int>(m_nodes.size());
 }
 
+bool VariableTree::isNamed(quint16 id) const
+{
+    QMutexLocker lock(&m_mutex);
+    const auto it = m_systemIndex.constFind(id);
+    return it != m_systemIndex.cend() ? m_systems[static_cast<size_t>(*it)]->named : m_configuredNames.contains(id);
+}
+
 QString VariableTree::systemName(quint16 id) const
 {
     QMutexLocker lock(&m_mutex);

@@ -113,6 +113,8 @@ public:
     Snapshot snapshot(NodeId node) const;
     // The name a system is shown by ("lauv-xplore-1", or "0x001f" until known).
     QString systemName(quint16 id) const;
+    // Whether that name came from its Announce or the configuration (not its id).
+    bool isNamed(quint16 id) const;
     // An entity's label ("Navigation"), or its number until known.
     QString entityLabel(quint16 system, quint8 entity) const;
     // The entities a system named (EntityList, EntityInfo), by number.
