@@ -16,6 +16,7 @@ set(NEPTUS_LAYERS
   "neptus-scripting    scripting   neptus-alarms"
   "neptus-transport    transport   neptus-messages"
   "neptus-geo          geo         neptus-core"
+  "neptus-mission      mission     neptus-messages neptus-geo"
   "neptus-processor    processor   neptus-xml"
   "neptus-models       models      neptus-core"
   "neptus-model-reader models      neptus-models"

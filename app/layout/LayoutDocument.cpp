@@ -2,10 +2,11 @@
 
 #include "LayoutText.h"
 
+#include "core/SafeFile.h"
+
 #include <QFile>
 #include <QFileInfo>
 #include <QRegularExpression>
-#include <QSaveFile>
 
 #include <algorithm>
 
@@ -143,29 +144,7 @@ QString LayoutDocument::text() const
 
 std::expected<void, QString> LayoutDocument::save(const QString &path, const std::function<void()> &beforeReplace) const
 {
-    const QByteArray bytes = text().toUtf8();
-    QSaveFile file(path);
-    if (!file.open(QIODevice::WriteOnly))
-        return std::unexpected(QStringLiteral("%1: %2").arg(path, file.errorString()));
-    if (file.write(bytes) != bytes.size()) {
-        file.cancelWriting();
-        return std::unexpected(QStringLiteral("%1: %2").arg(path, file.errorString()));
-    }
-    if (beforeReplace)
-        beforeReplace();
-    // The previous version becomes the backup, itself replaced atomically.
-    QFile previous(path);
-    if (previous.exists()) {
-        if (!previous.open(QIODevice::ReadOnly))
-            return std::unexpected(QStringLiteral("%1: cannot read the previous version: %2").arg(path, previous.errorString()));
-        const QByteArray old = previous.readAll();
-        QSaveFile backup(path + u".bak"_s);
-        if (!backup.open(QIODevice::WriteOnly) || backup.write(old) != old.size() || !backup.commit())
-            return std::unexpected(QStringLiteral("%1.bak: %2").arg(path, backup.errorString()));
-    }
-    if (!file.commit())
-        return std::unexpected(QStringLiteral("%1: %2").arg(path, file.errorString()));
-    return {};
+    return saveFileKeepingPrevious(path, text().toUtf8(), beforeReplace);
 }
 
 LayoutObject *LayoutDocument::find(const QString &id) const

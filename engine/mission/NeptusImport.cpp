@@ -1,0 +1,800 @@
+#include "mission/NeptusImport.h"
+
+#include "core/Gzip.h"
+#include "geo/Geodesy.h"
+
+#include <QDir>
+#include <QFileInfo>
+#include <QRegularExpression>
+
+#include <archive.h>
+#include <archive_entry.h>
+
+#include <cmath>
+#include <functional>
+
+namespace neptus::mission {
+
+using namespace xml;
+using namespace Qt::StringLiterals;
+
+std::optional<double> parseNeptusAngle(const QString &input)
+{
+    const QString text = input.trimmed();
+    bool ok = false;
+    const double plain = text.toDouble(&ok);
+    if (ok)
+        return std::isfinite(plain) ? std::optional(plain) : std::nullopt;
+    // 38N32'1.790''  41N11.081333  8W42.365167  0N   (degrees, hemisphere, minutes', seconds'')
+    static const QRegularExpression dms(uR"(^(\d+(?:\.\d*)?)\s*([NSEWnsew])\s*(?:(\d+(?:\.\d*)?)\s*'?\s*(?:(\d+(?:\.\d*)?)\s*(?:''|")?)?)?$)"_s);
+    // N38.638295°   (Neptus's display form, as in centerLocation)
+    static const QRegularExpression prefixed(uR"(^([NSEWnsew])\s*(\d+(?:\.\d*)?)\s*°?$)"_s);
+    double degrees = 0;
+    QChar hemisphere;
+    if (const auto m = dms.match(text); m.hasMatch()) {
+        degrees = m.captured(1).toDouble() + m.captured(3).toDouble() / 60 + m.captured(4).toDouble() / 3600;
+        hemisphere = m.captured(2).at(0).toUpper();
+    } else if (const auto p = prefixed.match(text); p.hasMatch()) {
+        degrees = p.captured(2).toDouble();
+        hemisphere = p.captured(1).at(0).toUpper();
+    } else {
+        return std::nullopt;
+    }
+    return hemisphere == u'S' || hemisphere == u'W' ? -degrees : degrees;
+}
+
+namespace {
+
+// Reads one file the mission refers to (a map), relative to the mission.
+using FileSource = std::function<std::expected<QByteArray, QString>(const QString &relative)>;
+
+// Ids as our schema takes them: letters, digits, '_', '.', '-'; 64 at most.
+QString validId(const QString &id)
+{
+    QString result;
+    for (const QChar c : id)
+        result += (c.isLetterOrNumber() && c.unicode() < 128) || c == u'_' || c == u'.' || c == u'-' ? c : u'_';
+    if (result.isEmpty() || result.front() == u'.' || result.front() == u'-')
+        result.prepend(u'_');
+    return result.left(64);
+}
+
+QString colorText(int r, int g, int b)
+{
+    return QStringLiteral("#%1%2%3").arg(r & 255, 2, 16, QChar(u'0')).arg(g & 255, 2, 16, QChar(u'0')).arg(b & 255, 2, 16, QChar(u'0'));
+}
+
+struct Position
+{
+    double lat = 0, lon = 0, height = 0;
+};
+
+class Importer
+{
+public:
+    Errors warnings;
+    Errors errors;
+
+    std::optional<Mission> mission(const XmlDocument &doc, const FileSource &files);
+    std::optional<Map> map(const XmlDocument &doc);
+
+private:
+    void warn(const XmlDocument &doc, const xmlNode *node, const QString &what)
+    {
+        warnings.append(doc.errorAt(node, u"Element '%1': %2"_s.arg(elementName(node), what)));
+    }
+    void notUnderstood(const XmlDocument &doc, const xmlNode *node)
+    {
+        warn(doc, node, u"not understood; left out"_s);
+    }
+    std::optional<double> number(const XmlDocument &doc, const xmlNode *node);
+    std::optional<Position> coordinate(const XmlDocument &doc, const xmlNode *node);
+    bool point(const XmlDocument &doc, const xmlNode *node, Maneuver &m, bool isElevator);
+    void speed(const XmlDocument &doc, const xmlNode *node, Maneuver &m);
+    std::optional<Maneuver> maneuver(const XmlDocument &doc, const xmlNode *node, const QString &id);
+    std::optional<Plan> plan(const XmlDocument &doc, const xmlNode *node);
+    std::optional<Feature> feature(const XmlDocument &doc, const xmlNode *node);
+};
+
+std::optional<double> Importer::number(const XmlDocument &doc, const xmlNode *node)
+{
+    bool ok = false;
+    const QString text = textContent(node).trimmed();
+    const double value = text.toDouble(&ok);
+    if (!ok || !std::isfinite(value)) {
+        warn(doc, node, u"'%1' is not a number; left out"_s.arg(text));
+        return std::nullopt;
+    }
+    return value;
+}
+
+// <coordinate>: latitude, longitude, height or depth, and NED offsets from there.
+std::optional<Position> Importer::coordinate(const XmlDocument &doc, const xmlNode *node)
+{
+    std::optional<double> lat, lon;
+    double height = 0, north = 0, east = 0, up = 0, distance = 0, azimuth = 0, elevation = 0;
+    for (const xmlNode *c : childElements(node)) {
+        const QString name = elementName(c);
+        if (name == u"latitude" || name == u"longitude") {
+            const auto angle = parseNeptusAngle(textContent(c));
+            if (!angle) {
+                errors.append(doc.errorAt(c, u"Element '%1': '%2' is not a coordinate"_s.arg(name, textContent(c).trimmed())));
+                return std::nullopt;
+            }
+            (name == u"latitude" ? lat : lon) = *angle;
+            continue;
+        }
+        const auto value = number(doc, c);
+        if (!value)
+            continue;
+        if (name == u"height") height = *value;
+        else if (name == u"depth") height = -*value;
+        else if (name == u"offset-north") north = *value;
+        else if (name == u"offset-south") north = -*value;
+        else if (name == u"offset-east") east = *value;
+        else if (name == u"offset-west") east = -*value;
+        else if (name == u"offset-up") up = *value;
+        else if (name == u"offset-down") up = -*value;
+        else if (name == u"offset-distance") distance = *value;
+        else if (name == u"azimuth") azimuth = *value;
+        else if (name == u"zenith" || name == u"offset-elevation") elevation = *value;
+        else notUnderstood(doc, c);
+    }
+    if (!lat || !lon) {
+        errors.append(doc.errorAt(node, u"Element 'coordinate': needs a latitude and a longitude"_s));
+        return std::nullopt;
+    }
+    if (distance != 0) {
+        // Spherical offset: azimuth from north, elevation above the horizon, degrees.
+        const double a = geo::radians(azimuth), e = geo::radians(elevation);
+        north += distance * std::cos(e) * std::cos(a);
+        east += distance * std::cos(e) * std::sin(a);
+        up += distance * std::sin(e);
+    }
+    Position p{*lat, *lon, height + up};
+    if (north != 0 || east != 0) {
+        const geo::Geodetic at = geo::fromNed(Eigen::Vector3d(north, east, 0),
+                                              geo::Geodetic{geo::radians(*lat), geo::radians(*lon), 0});
+        p.lat = geo::degrees(at.lat);
+        p.lon = geo::degrees(at.lon);
+    }
+    return p;
+}
+
+// finalPoint / basePoint: <point><coordinate/><z/><zunits/></point><radiusTolerance/>
+bool Importer::point(const XmlDocument &doc, const xmlNode *node, Maneuver &m, bool isElevator)
+{
+    const xmlNode *p = firstChildElement(node, "point");
+    const xmlNode *c = p ? firstChildElement(p, "coordinate") : nullptr;
+    if (!c) {
+        errors.append(doc.errorAt(node, u"Element '%1': has no point/coordinate"_s.arg(elementName(node))));
+        return false;
+    }
+    const auto at = coordinate(doc, c);
+    if (!at)
+        return false;
+    m.set(u"lat"_s, at->lat);
+    m.set(u"lon"_s, at->lon);
+    double z = -at->height; // old files: the coordinate's depth
+    QString units = u"DEPTH"_s;
+    if (const xmlNode *zNode = firstChildElement(p, "z")) {
+        z = number(doc, zNode).value_or(0);
+        units = textContent(firstChildElement(p, "zunits")).trimmed().toUpper();
+        if (units.isEmpty())
+            units = u"DEPTH"_s;
+        if (!QStringList{u"NONE"_s, u"DEPTH"_s, u"ALTITUDE"_s, u"HEIGHT"_s}.contains(units)) {
+            warn(doc, firstChildElement(p, "zunits"), u"unknown z units '%1'; DEPTH assumed"_s.arg(units));
+            units = u"DEPTH"_s;
+        }
+    }
+    m.set(isElevator ? u"end_z"_s : u"z"_s, z);
+    m.parameters.insert(isElevator ? u"end_z_units"_s : u"z_units"_s, units);
+    if (const xmlNode *r = firstChildElement(node, "radiusTolerance"); r && m.type == u"PopUp")
+        m.set(u"radius"_s, number(doc, r).value_or(0));
+    return true;
+}
+
+void Importer::speed(const XmlDocument &doc, const xmlNode *node, Maneuver &m)
+{
+    const auto value = number(doc, node);
+    if (!value)
+        return;
+    const QString unit = attribute(node, "unit").trimmed().toLower();
+    QString units;
+    if (unit.isEmpty() || unit == u"m/s" || unit == u"mps")
+        units = u"METERS_PS"_s;
+    else if (unit == u"rpm")
+        units = u"RPM"_s;
+    else if (unit == u"%" || unit == u"percentage")
+        units = u"PERCENTAGE"_s;
+    else {
+        warn(doc, node, u"unknown speed unit '%1'; left out"_s.arg(unit));
+        return;
+    }
+    m.set(u"speed"_s, *value);
+    m.parameters.insert(u"speed_units"_s, units);
+}
+
+QString loiterType(const QString &neptus)
+{
+    const QString t = neptus.trimmed().toLower();
+    if (t == u"circular") return u"CIRCULAR"_s;
+    if (t == u"racetrack") return u"RACETRACK"_s;
+    if (t == u"figure 8" || t == u"eight") return u"EIGHT"_s;
+    if (t == u"hover") return u"HOVER"_s;
+    if (t == u"default") return u"DEFAULT"_s;
+    return {};
+}
+
+// Clockwise, Counter-Clockwise, Vehicle Dependent, the IMC names, or their numbers.
+QString direction(const QString &neptus)
+{
+    const QString d = neptus.trimmed().toLower().remove(u'-').remove(u' ');
+    if (d == u"clockwise" || d == u"clockw" || d == u"1") return u"CLOCKW"_s;
+    if (d == u"counterclockwise" || d == u"cclockw" || d == u"2") return u"CCLOCKW"_s;
+    if (d == u"vehicledependent" || d == u"vdep" || d == u"0") return u"VDEP"_s;
+    if (d == u"intothewind" || d == u"iwindcurr" || d == u"3") return u"IWINDCURR"_s;
+    return {};
+}
+
+bool isTrue(const QString &text)
+{
+    return text.trimmed().compare(u"true"_s, Qt::CaseInsensitive) == 0;
+}
+
+// Neptus elements read on purpose with no counterpart (docs/missions.md).
+const QStringList &ignoredManeuverElements()
+{
+    static const QStringList names{u"annotation"_s, u"trajectoryTolerance"_s, u"paintSSRangeShadow"_s,
+                                   u"custom"_s, u"vstep"_s, u"height"_s, u"popupDuration"_s, u"popupPeriod"_s};
+    return names;
+}
+
+const QStringList &timedTypes()
+{
+    static const QStringList names{u"Goto"_s, u"PopUp"_s, u"Loiter"_s, u"YoYo"_s, u"Rows"_s, u"FollowPath"_s,
+                                   u"FollowTrajectory"_s, u"Elevator"_s, u"CompassCalibration"_s, u"Launch"_s,
+                                   u"ExpandingSquare"_s};
+    return names;
+}
+
+std::optional<Maneuver> Importer::maneuver(const XmlDocument &doc, const xmlNode *node, const QString &id)
+{
+    const xmlNode *body = nullptr;
+    std::optional<double> maxTime;
+    for (const xmlNode *c : childElements(node)) {
+        const QString name = elementName(c);
+        if (name == u"maxTime")
+            maxTime = number(doc, c);
+        else if (name != u"minTime")
+            body = c;
+    }
+    if (!body) {
+        errors.append(doc.errorAt(node, u"Element 'maneuver': holds no maneuver"_s));
+        return std::nullopt;
+    }
+    static const QStringList known{u"Goto"_s, u"PopUp"_s, u"Loiter"_s, u"StationKeeping"_s, u"YoYo"_s, u"Rows"_s,
+                                   u"FollowPath"_s, u"FollowTrajectory"_s, u"Elevator"_s, u"CompassCalibration"_s,
+                                   u"ScheduledGoto"_s, u"Launch"_s, u"Takeoff"_s, u"Land"_s, u"ExpandingSquare"_s};
+    Maneuver m;
+    m.id = validId(id);
+    m.line.value = static_cast<int>(xmlGetLineNo(body));
+    m.type = elementName(body) == u"RowsManeuver" ? u"Rows"_s : elementName(body);
+    if (!known.contains(m.type)) {
+        warn(doc, body, u"maneuver type '%1' has no counterpart here; maneuver '%2' left out"_s.arg(m.type, id));
+        return std::nullopt;
+    }
+    const bool elevator = m.type == u"Elevator";
+    QStringList flags;
+    for (const xmlNode *c : childElements(body)) {
+        const QString name = elementName(c);
+        const QString text = textContent(c).trimmed();
+        if (name == u"finalPoint" || name == u"basePoint") {
+            if (!point(doc, c, m, elevator))
+                return std::nullopt;
+        } else if (name == u"speed" || name == u"velocity") {
+            speed(doc, c, m);
+        } else if (name == u"duration" || name == u"amplitude" || name == u"radius" || name == u"width"
+                   || name == u"length" || name == u"hstep" || name == u"bearing") {
+            if (const auto v = number(doc, c))
+                m.set(name, *v);
+        } else if (name == u"pitch") {
+            // YoYo's pitch is in radians in Neptus files, CompassCalibration's in degrees.
+            if (const auto v = number(doc, c); v && m.type == u"YoYo")
+                m.set(name, geo::degrees(*v));
+            else if (v && m.type == u"CompassCalibration")
+                m.set(name, *v);
+        } else if (name == u"direction") {
+            if (const QString d = direction(text); !d.isEmpty())
+                m.parameters.insert(u"direction"_s, d);
+            else
+                warn(doc, c, u"unknown direction '%1'; left out"_s.arg(text));
+        } else if (name == u"trajectory") {
+            for (const xmlNode *t : childElements(c)) {
+                const QString tn = elementName(t);
+                const QString tt = textContent(t).trimmed();
+                if (tn == u"radius" || tn == u"length" || tn == u"bearing") {
+                    if (const auto v = number(doc, t); v && (m.type == u"Loiter" || tn == u"radius"))
+                        m.set(tn, *v);
+                } else if (tn == u"type" && m.type == u"Loiter") {
+                    if (const QString lt = loiterType(tt); !lt.isEmpty())
+                        m.parameters.insert(u"type"_s, lt);
+                    else
+                        warn(doc, t, u"unknown loiter type '%1'; left out"_s.arg(tt));
+                } else if (tn == u"direction" && m.type == u"Loiter") {
+                    if (const QString d = direction(tt); !d.isEmpty())
+                        m.parameters.insert(u"direction"_s, d);
+                    else
+                        warn(doc, t, u"unknown direction '%1'; left out"_s.arg(tt));
+                } else if (tn != u"radiusTolerance") {
+                    notUnderstood(doc, t);
+                }
+            }
+        } else if (name == u"crossAngle") {
+            if (const auto v = number(doc, c))
+                m.set(u"cross_angle"_s, *v);
+        } else if (name == u"alternationPercent" || name == u"alternation") {
+            if (const auto v = number(doc, c))
+                m.set(u"alternation"_s, *v);
+        } else if (name == u"curveOffset") {
+            if (const auto v = number(doc, c))
+                m.set(u"coff"_s, *v);
+        } else if (name == u"squareCurve" || name == u"firstCurveRight") {
+            if (isTrue(text))
+                flags << (name == u"squareCurve" ? u"SQUARE_CURVE"_s : u"CURVE_RIGHT"_s);
+        } else if (name == u"flags" && m.type == u"PopUp") {
+            if (isTrue(attribute(c, "CurrPos"))) flags << u"CURR_POS"_s;
+            if (isTrue(attribute(c, "WaitAtSurface"))) flags << u"WAIT_AT_SURFACE"_s;
+            if (isTrue(attribute(c, "StationKeep"))) flags << u"STATION_KEEP"_s;
+        } else if (name == u"path") {
+            for (const xmlNode *o : childElements(c, "nedOffsets")) {
+                PathPoint pp;
+                pp.x = attribute(o, "northOffset").toDouble();
+                pp.y = attribute(o, "eastOffset").toDouble();
+                pp.z = attribute(o, "depthOffset").toDouble();
+                m.points.append(pp);
+            }
+        } else if (name == u"startZ" && elevator) {
+            if (const auto v = number(doc, c))
+                m.set(u"start_z"_s, *v);
+        } else if (name == u"startZUnits" && elevator) {
+            m.parameters.insert(u"start_z_units"_s, text.toUpper());
+        } else if (name == u"keepSafe") {
+            if (isTrue(text))
+                warn(doc, c, u"keep-safe station keeping (IMC StationKeepingExtended) is not supported; "
+                             "plain station keeping kept"_s);
+        } else if (!ignoredManeuverElements().contains(name)) {
+            notUnderstood(doc, c);
+        }
+    }
+    if (!flags.isEmpty())
+        m.parameters.insert(u"flags"_s, flags.join(u'|'));
+    if (maxTime && timedTypes().contains(m.type) && *maxTime > 0)
+        m.set(u"timeout"_s, std::min(*maxTime, 65535.0));
+    return m;
+}
+
+std::optional<Plan> Importer::plan(const XmlDocument &doc, const xmlNode *node)
+{
+    Plan p;
+    p.id = validId(attribute(node, "id"));
+    p.vehicle = validId(attribute(node, "vehicle"));
+    p.line.value = static_cast<int>(xmlGetLineNo(node));
+    const xmlNode *graph = nullptr;
+    for (const xmlNode *c : childElements(node)) {
+        if (elementName(c) == u"graph")
+            graph = c;
+        else
+            notUnderstood(doc, c);
+    }
+    QSet<QString> kept;
+    QString firstNode;
+    for (const xmlNode *n : childElements(graph, "node")) {
+        const QString id = textContent(firstChildElement(n, "id")).trimmed();
+        auto m = maneuver(doc, firstChildElement(n, "maneuver"), id);
+        if (!m) {
+            if (!errors.isEmpty())
+                return std::nullopt;
+            continue;
+        }
+        if (const xmlNode *actions = firstChildElement(n, "actions")) {
+            for (const xmlNode *list : childElements(actions)) {
+                const QString kind = elementName(list);
+                if (kind != u"start-actions" && kind != u"end-actions") {
+                    notUnderstood(doc, list);
+                    continue;
+                }
+                for (const xmlNode *message : childElements(firstChildElement(list, "messages")))
+                    (kind == u"start-actions" ? m->startActions : m->endActions).append(readElement(message));
+            }
+        }
+        if (firstNode.isEmpty())
+            firstNode = m->id;
+        if (isTrue(attribute(n, "start")))
+            p.start = m->id;
+        kept.insert(m->id);
+        p.maneuvers.append(*m);
+    }
+    if (p.maneuvers.isEmpty()) {
+        warn(doc, node, u"plan '%1' has no maneuver we can read; left out"_s.arg(p.id));
+        return std::nullopt;
+    }
+    if (p.start.isEmpty()) {
+        warn(doc, node, u"plan '%1' marks no start maneuver; its first, '%2', starts it"_s.arg(p.id, firstNode));
+        p.start = firstNode;
+    }
+    for (const xmlNode *e : childElements(graph, "edge")) {
+        Transition t;
+        t.from = validId(textContent(firstChildElement(e, "source")).trimmed());
+        t.to = validId(textContent(firstChildElement(e, "target")).trimmed());
+        t.line.value = static_cast<int>(xmlGetLineNo(e));
+        const QString guard = textContent(firstChildElement(e, "guard")).trimmed();
+        if (!guard.isEmpty())
+            t.condition = guard;
+        if (!kept.contains(t.from) || !kept.contains(t.to)) {
+            warn(doc, e, u"transition %1 → %2 joins a maneuver left out; left out too"_s.arg(t.from, t.to));
+            continue;
+        }
+        for (const xmlNode *message : childElements(firstChildElement(firstChildElement(e, "actions"), "messages")))
+            t.actions.append(readElement(message));
+        p.transitions.append(t);
+    }
+    return p;
+}
+
+std::optional<Feature> Importer::feature(const XmlDocument &doc, const xmlNode *node)
+{
+    static const QHash<QString, QString> kinds{
+        {u"mark"_s, u"mark"_s}, {u"transponder"_s, u"transponder"_s}, {u"path"_s, u"path"_s},
+        {u"MineDangerAreaElement"_s, u"circle"_s}, {u"parallelepiped"_s, u"box"_s},
+        {u"ellipsoid"_s, u"ellipsoid"_s}, {u"cylinder"_s, u"cylinder"_s}, {u"image"_s, u"image"_s},
+        {u"model3d"_s, u"model"_s}};
+    const QString neptusKind = elementName(node);
+    if (!kinds.contains(neptusKind)) {
+        warn(doc, node, u"map feature type not understood; left out"_s);
+        return std::nullopt;
+    }
+    Feature f;
+    f.kind = kinds.value(neptusKind);
+    f.line.value = static_cast<int>(xmlGetLineNo(node));
+    const QString id = textContent(firstChildElement(node, "id")).trimmed();
+    f.id = validId(id);
+    f.name = id; // what Neptus shows; its <name> is an internal tag
+    Position origin;
+    bool closed = false;
+    QList<Eigen::Vector3d> offsets;
+    for (const xmlNode *c : childElements(node)) {
+        const QString name = elementName(c);
+        const QString text = textContent(c).trimmed();
+        if (name == u"id" || name == u"name" || name == u"filled" || name == u"obstacle" || name == u"buoy-attached") {
+            continue; // docs/missions.md: read, no counterpart
+        } else if (name == u"coordinate") {
+            const auto at = coordinate(doc, c);
+            if (!at)
+                return std::nullopt;
+            origin = *at;
+        } else if (name == u"color") {
+            static const QRegularExpression awt(uR"(r=(\d+),\s*g=(\d+),\s*b=(\d+))"_s);
+            if (const auto m = awt.match(text); m.hasMatch())
+                f.color = colorText(m.captured(1).toInt(), m.captured(2).toInt(), m.captured(3).toInt());
+            else
+                f.color = colorText(textContent(firstChildElement(c, "r")).toInt(), textContent(firstChildElement(c, "g")).toInt(),
+                                    textContent(firstChildElement(c, "b")).toInt());
+        } else if (name == u"translation") {
+            offsets.append(Eigen::Vector3d(textContent(firstChildElement(c, "n")).toDouble(),
+                                           textContent(firstChildElement(c, "e")).toDouble(),
+                                           textContent(firstChildElement(c, "d")).toDouble()));
+        } else if (name == u"shape") {
+            closed = isTrue(text);
+        } else if (name == u"file" && f.kind == u"transponder") {
+            f.attributes.insert(u"config"_s, textContent(firstChildElement(c, "href")).trimmed());
+        } else if (name == u"radius" && f.kind == u"circle") {
+            if (const auto v = number(doc, c))
+                f.attributes.insert(u"radius"_s, formatNumber(*v));
+        } else if (name == u"centerLocation") {
+            continue; // the same place as <coordinate>, in display text
+        } else if ((name == u"length" || name == u"width") && (f.kind == u"box" || f.kind == u"ellipsoid" || f.kind == u"cylinder")) {
+            if (const auto v = number(doc, c))
+                f.attributes.insert(name, formatNumber(*v));
+        } else if (name == u"yaw" || name == u"rotation") {
+            if (const auto v = number(doc, c))
+                f.attributes.insert(f.kind == u"image" ? u"rotation"_s : f.kind == u"model" ? u"yaw"_s : u"bearing"_s, formatNumber(*v));
+        } else if (name == u"href" && (f.kind == u"image" || f.kind == u"model")) {
+            f.attributes.insert(u"file"_s, text);
+        } else if (name == u"imageScale" || name == u"scale") {
+            if (const auto v = number(doc, c))
+                f.attributes.insert(u"scale"_s, formatNumber(*v));
+        } else {
+            notUnderstood(doc, c);
+        }
+    }
+    if (f.kind == u"circle")
+        f.attributes.insert(u"role"_s, u"no-go"_s);
+    if (f.kind == u"path") {
+        const geo::Geodetic o{geo::radians(origin.lat), geo::radians(origin.lon), 0};
+        for (const Eigen::Vector3d &n : offsets) {
+            const geo::Geodetic at = geo::fromNed(Eigen::Vector3d(n.x(), n.y(), 0), o);
+            Feature::Point p;
+            p.lat = geo::degrees(at.lat);
+            p.lon = geo::degrees(at.lon);
+            if (n.z() > 0)
+                p.depth = n.z();
+            f.points.append(p);
+        }
+        if (closed && f.points.size() > 1 && f.points.first() == f.points.last())
+            f.points.removeLast();
+        if (closed && f.points.size() >= 3)
+            f.kind = u"polygon"_s;
+        if (f.points.size() < 2) {
+            warn(doc, node, u"a path of fewer than two points; left out"_s);
+            return std::nullopt;
+        }
+        return f;
+    }
+    f.position.lat = origin.lat;
+    f.position.lon = origin.lon;
+    if (origin.height > 0)
+        f.position.height = origin.height;
+    else if (origin.height < 0)
+        f.position.depth = -origin.height;
+    if ((f.kind == u"image" || f.kind == u"model") && !f.attributes.contains(u"file"_s)) {
+        warn(doc, node, u"no file named; left out"_s);
+        return std::nullopt;
+    }
+    if ((f.kind == u"box" || f.kind == u"ellipsoid" || f.kind == u"cylinder")
+        && !(f.attributes.contains(u"width"_s) && f.attributes.contains(u"length"_s))) {
+        warn(doc, node, u"no width and length; left out"_s);
+        return std::nullopt;
+    }
+    if (f.kind == u"circle" && !f.attributes.contains(u"radius"_s)) {
+        warn(doc, node, u"no radius; left out"_s);
+        return std::nullopt;
+    }
+    return f;
+}
+
+std::optional<Map> Importer::map(const XmlDocument &doc)
+{
+    const xmlNode *root = doc.root();
+    if (elementName(root) != u"map") {
+        errors.append(doc.errorAt(root, u"Element '%1': a Neptus map (.nmap) starts with <map>"_s.arg(elementName(root))));
+        return std::nullopt;
+    }
+    Map map;
+    const xmlNode *header = firstChildElement(root, "header");
+    const QString id = textContent(firstChildElement(header, "id")).trimmed();
+    map.id = validId(id.isEmpty() ? QFileInfo(doc.fileName()).baseName() : id);
+    map.name = textContent(firstChildElement(header, "name")).trimmed();
+    for (const xmlNode *c : childElements(root)) {
+        const QString name = elementName(c);
+        if (name == u"header")
+            continue;
+        if (name != u"features") {
+            notUnderstood(doc, c);
+            continue;
+        }
+        for (const xmlNode *f : childElements(c)) {
+            if (auto feature = this->feature(doc, f))
+                map.features.append(*feature);
+            else if (!errors.isEmpty())
+                return std::nullopt;
+        }
+    }
+    return map;
+}
+
+std::optional<Mission> Importer::mission(const XmlDocument &doc, const FileSource &files)
+{
+    const xmlNode *root = doc.root();
+    if (elementName(root) != u"mission-def") {
+        errors.append(doc.errorAt(root, u"Element '%1': a Neptus mission starts with <mission-def>"_s.arg(elementName(root))));
+        return std::nullopt;
+    }
+    Mission m;
+    for (const xmlNode *section : childElements(root)) {
+        const QString name = elementName(section);
+        if (name == u"header") {
+            m.id = validId(textContent(firstChildElement(section, "id")).trimmed());
+            m.name = textContent(firstChildElement(section, "name")).trimmed();
+            m.description = textContent(firstChildElement(section, "description")).trimmed();
+        } else if (name == u"definitions") {
+            for (const xmlNode *d : childElements(section)) {
+                const QString dn = elementName(d);
+                if (dn == u"vehicles") {
+                    for (const xmlNode *v : childElements(d, "vehicle"))
+                        m.vehicles.append(validId(textContent(firstChildElement(v, "id")).trimmed()));
+                } else if (dn == u"home-reference") {
+                    if (const auto at = coordinate(doc, firstChildElement(d, "origin")))
+                        m.home = GeoPosition{at->lat, at->lon, at->height};
+                    else
+                        return std::nullopt;
+                } else if (dn == u"maps") {
+                    for (const xmlNode *ref : childElements(d, "map")) {
+                        const QString href = textContent(firstChildElement(ref, "href")).trimmed();
+                        const auto bytes = files(href);
+                        if (!bytes) {
+                            warn(doc, ref, u"map '%1' not read: %2"_s.arg(href, bytes.error()));
+                            continue;
+                        }
+                        const QString mapName = QFileInfo(doc.fileName()).dir().filePath(href);
+                        auto mapDoc = XmlDocument::parse(*bytes, mapName);
+                        if (!mapDoc) {
+                            errors.append(mapDoc.error());
+                            return std::nullopt;
+                        }
+                        auto read = map(*mapDoc);
+                        if (!read)
+                            return std::nullopt;
+                        m.maps.append(*read);
+                    }
+                } else if (dn == u"checklists") {
+                    for (const xmlNode *c : childElements(d))
+                        warn(doc, c, u"Neptus checklists (.nchk) are not imported; left out"_s);
+                } else {
+                    notUnderstood(doc, d);
+                }
+            }
+        } else if (name == u"body") {
+            for (const xmlNode *p : childElements(section)) {
+                if (elementName(p) != u"plan") {
+                    notUnderstood(doc, p);
+                    continue;
+                }
+                auto plan = this->plan(doc, p);
+                if (!errors.isEmpty())
+                    return std::nullopt;
+                if (plan)
+                    m.plans.append(*plan);
+            }
+        } else {
+            notUnderstood(doc, section);
+        }
+    }
+    if (m.id.isEmpty())
+        m.id = validId(QFileInfo(doc.fileName()).baseName());
+    // Every vehicle a plan is for takes part (Neptus files do not always list them).
+    for (const Plan &p : std::as_const(m.plans)) {
+        if (!m.vehicles.contains(p.vehicle))
+            m.vehicles.append(p.vehicle);
+    }
+    // Map ids must be unique in our files.
+    QSet<QString> mapIds;
+    for (Map &map : m.maps) {
+        for (int n = 2; mapIds.contains(map.id); ++n)
+            map.id = map.id.section(u'~', 0, 0) + u'~' + QString::number(n);
+        mapIds.insert(map.id);
+    }
+    return m;
+}
+
+// The regular files of a zip, by normalised path, within the limits above.
+std::expected<QHash<QString, QByteArray>, QString> unzip(QByteArrayView data)
+{
+    struct Free { void operator()(archive *a) const { archive_read_free(a); } };
+    std::unique_ptr<archive, Free> zip(archive_read_new());
+    archive_read_support_format_zip(zip.get());
+    if (archive_read_open_memory(zip.get(), data.data(), static_cast<size_t>(data.size())) != ARCHIVE_OK)
+        return std::unexpected(u"not a zip archive: %1"_s.arg(QString::fromUtf8(archive_error_string(zip.get()))));
+    QHash<QString, QByteArray> files;
+    qsizetype total = 0;
+    archive_entry *entry = nullptr;
+    for (;;) {
+        const int status = archive_read_next_header(zip.get(), &entry);
+        if (status == ARCHIVE_EOF)
+            break;
+        if (status != ARCHIVE_OK && status != ARCHIVE_WARN)
+            return std::unexpected(u"damaged zip archive: %1"_s.arg(QString::fromUtf8(archive_error_string(zip.get()))));
+        if (files.size() >= maxArchiveEntries)
+            return std::unexpected(u"more than %1 files in the archive"_s.arg(maxArchiveEntries));
+        const char *rawName = archive_entry_pathname(entry);
+        const QString name = QDir::cleanPath(QString::fromUtf8(rawName ? rawName : ""));
+        if (archive_entry_filetype(entry) != AE_IFREG)
+            continue;
+        QByteArray bytes;
+        char buffer[65536];
+        for (;;) {
+            const la_ssize_t n = archive_read_data(zip.get(), buffer, sizeof buffer);
+            if (n < 0)
+                return std::unexpected(u"damaged zip archive: %1: %2"_s.arg(name, QString::fromUtf8(archive_error_string(zip.get()))));
+            if (n == 0)
+                break;
+            total += n;
+            if (total > maxArchiveBytes)
+                return std::unexpected(u"the archive unpacks to more than %1 MiB"_s.arg(maxArchiveBytes / (1024 * 1024)));
+            bytes.append(buffer, n);
+        }
+        files.insert(name, bytes);
+    }
+    return files;
+}
+
+// A file a mission names: relative, inside the mission's folder.
+bool isInside(const QString &href)
+{
+    const QString clean = QDir::cleanPath(href);
+    return !href.isEmpty() && !QDir::isAbsolutePath(clean) && !clean.startsWith(u".."_s);
+}
+
+std::expected<NeptusImport, Errors> finish(Importer &importer, std::optional<Mission> mission, const QString &fileName)
+{
+    if (!mission || !importer.errors.isEmpty()) {
+        if (importer.errors.isEmpty())
+            importer.errors.append(XmlError{fileName, 0, 0, u"not imported"_s});
+        return std::unexpected(importer.errors);
+    }
+    // What we made must be a valid file of ours; if not, it is our bug, said as such.
+    const QByteArray written = writeMission(*mission);
+    const auto check = readMission(written, fileName + u" (imported)"_s);
+    if (!check)
+        return std::unexpected(check.error());
+    return NeptusImport{*check, importer.warnings};
+}
+
+std::expected<NeptusImport, Errors> importDocument(QByteArrayView data, const QString &fileName, const FileSource &files)
+{
+    auto doc = XmlDocument::parse(data, fileName);
+    if (!doc)
+        return std::unexpected(Errors{doc.error()});
+    Importer importer;
+    if (fileName.endsWith(u".nmap"_s, Qt::CaseInsensitive)) {
+        auto map = importer.map(*doc);
+        std::optional<Mission> mission;
+        if (map) {
+            mission = Mission{};
+            mission->id = map->id;
+            mission->name = map->name;
+            mission->maps.append(*map);
+        }
+        return finish(importer, mission, fileName);
+    }
+    auto mission = importer.mission(*doc, files);
+    return finish(importer, mission, fileName);
+}
+
+} // namespace
+
+std::expected<NeptusImport, Errors> importNeptus(QByteArrayView data, const QString &fileName)
+{
+    if (!fileName.endsWith(u".nmisz"_s, Qt::CaseInsensitive)) {
+        return importDocument(data, fileName, [](const QString &) -> std::expected<QByteArray, QString> {
+            return std::unexpected(u"read from bytes, no folder to look in"_s);
+        });
+    }
+    const auto files = unzip(data);
+    if (!files)
+        return std::unexpected(Errors{XmlError{fileName, 0, 0, files.error()}});
+    QString missionName;
+    for (auto it = files->cbegin(); it != files->cend(); ++it) {
+        if (it.key().endsWith(u".nmis"_s) && (missionName.isEmpty() || it.key().size() < missionName.size()))
+            missionName = it.key();
+    }
+    if (missionName.isEmpty())
+        return std::unexpected(Errors{XmlError{fileName, 0, 0, u"the archive holds no mission (.nmis)"_s}});
+    const QString folder = QFileInfo(missionName).path();
+    const FileSource source = [&](const QString &href) -> std::expected<QByteArray, QString> {
+        if (!isInside(href))
+            return std::unexpected(u"outside the archive"_s);
+        const QString path = QDir::cleanPath(folder == u"." ? href : folder + u'/' + href);
+        if (!files->contains(path))
+            return std::unexpected(u"not in the archive"_s);
+        return files->value(path);
+    };
+    return importDocument(files->value(missionName), fileName + u'/' + missionName, source);
+}
+
+std::expected<NeptusImport, Errors> importNeptus(const QString &path)
+{
+    const auto data = readFileMaybeGzip(path, maxArchiveBytes);
+    if (!data)
+        return std::unexpected(Errors{XmlError{path, 0, 0, QString(data.error()).remove(path + u": "_s)}});
+    if (path.endsWith(u".nmisz"_s, Qt::CaseInsensitive) || path.endsWith(u".nmap"_s, Qt::CaseInsensitive))
+        return importNeptus(*data, path);
+    const QDir folder = QFileInfo(path).dir();
+    return importDocument(*data, path, [&](const QString &href) -> std::expected<QByteArray, QString> {
+        if (!isInside(href))
+            return std::unexpected(u"outside the mission's folder"_s);
+        return readFileMaybeGzip(folder.filePath(href), XmlDocument::maxBytes);
+    });
+}
+
+} // namespace neptus::mission

@@ -1,0 +1,42 @@
+#pragma once
+
+#include "mission/MissionXml.h"
+
+#include <QString>
+
+#include <optional>
+
+namespace neptus::mission {
+
+// Reads what LSTS Neptus writes into our model: missions (.nmisz, a zip of
+// mission.nmis and maps/*.nmap, read with libarchive; or a bare .nmis with
+// its maps beside it), maps (.nmap). Coordinates come as decimal degrees or
+// as Neptus's text ("38N32'1.790''", "41N11.081333") with NED offsets,
+// and are written as decimal degrees. Ids our schema does not accept (spaces)
+// are made valid and the original kept as the name.
+//
+// What has no place in our model becomes a warning naming the file, line and
+// element, never dropped in silence; docs/missions.md lists the Neptus
+// elements read on purpose without a counterpart (editor positions, the
+// tolerances IMC has no field for).
+struct NeptusImport
+{
+    Mission mission;
+    Errors warnings;
+};
+
+// By extension: .nmisz, .nmis or .nmap.
+std::expected<NeptusImport, Errors> importNeptus(const QString &path);
+// The same from bytes (`fileName` names the input in messages and says
+// which format it is); a .nmis read so finds no maps.
+std::expected<NeptusImport, Errors> importNeptus(QByteArrayView data, const QString &fileName);
+
+// Neptus's latitude or longitude text, in decimal degrees (south and west
+// negative); empty when it is neither form.
+std::optional<double> parseNeptusAngle(const QString &text);
+
+// Limits on what a .nmisz may unpack to (a zip bomb stops here).
+constexpr qsizetype maxArchiveEntries = 1000;
+constexpr qsizetype maxArchiveBytes = 256 * 1024 * 1024;
+
+} // namespace neptus::mission

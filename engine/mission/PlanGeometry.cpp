@@ -1,0 +1,217 @@
+#include "mission/PlanGeometry.h"
+
+#include "geo/Geodesy.h"
+
+#include <cmath>
+#include <numbers>
+
+namespace neptus::mission {
+
+using namespace Qt::StringLiterals;
+
+namespace {
+
+constexpr int circleSegments = 36;
+
+// Points in metres north/east/down of a maneuver's position.
+struct Local
+{
+    Local(const Maneuver &m, double z, QString units)
+        : origin{geo::radians(m.number(u"lat"_s)), geo::radians(m.number(u"lon"_s)), 0}, z(z), units(std::move(units)) {}
+
+    Waypoint at(double north, double east, double down = 0) const
+    {
+        const geo::Geodetic p = geo::fromNed(Eigen::Vector3d(north, east, 0), origin);
+        return Waypoint{geo::degrees(p.lat), geo::degrees(p.lon), z + down, units};
+    }
+
+    geo::Geodetic origin;
+    double z;
+    QString units;
+};
+
+double speedOf(const Maneuver &m, const SpeedModel &speeds)
+{
+    const double value = m.number(u"speed"_s);
+    const QString units = m.text(u"speed_units"_s, u"METERS_PS"_s);
+    double speed = value;
+    if (units == u"RPM")
+        speed = value * speeds.metresPerSecondPerRpm;
+    else if (units == u"PERCENTAGE")
+        speed = value / 100 * speeds.maxSpeed;
+    return speed > 0 ? speed : speeds.defaultSpeed;
+}
+
+void circle(QList<Waypoint> &points, const Local &local, double radius)
+{
+    for (int i = 0; i <= circleSegments; ++i) {
+        const double a = 2 * std::numbers::pi * i / circleSegments;
+        points.append(local.at(radius * std::cos(a), radius * std::sin(a)));
+    }
+}
+
+// Lawnmower: rows of `length` along `bearing`, `hstep` apart across a
+// `width`, first turn to the left unless CURVE_RIGHT; each row extended by
+// the curve offset at both ends; steps alternate between alternation % and
+// (200 − alternation) % of hstep (0 or 100: even rows); cross_angle slants
+// the step off the perpendicular.
+void rows(QList<Waypoint> &points, const Local &local, const Maneuver &m)
+{
+    const double bearing = geo::radians(m.number(u"bearing"_s));
+    const double cross = geo::radians(m.number(u"cross_angle"_s));
+    const double length = m.number(u"length"_s);
+    const double width = m.number(u"width"_s);
+    const double hstep = m.number(u"hstep"_s);
+    const double offset = m.number(u"coff"_s);
+    double alternation = m.number(u"alternation"_s);
+    if (alternation <= 0 || alternation > 100)
+        alternation = 100;
+    const bool right = m.text(u"flags"_s).contains(u"CURVE_RIGHT"_s);
+    const Eigen::Vector2d along(std::cos(bearing), std::sin(bearing));
+    const double side = bearing + (right ? 1 : -1) * (std::numbers::pi / 2) + cross;
+    const Eigen::Vector2d across(std::cos(side), std::sin(side));
+    const int count = hstep > 0 ? static_cast<int>(std::floor(width / hstep + 1e-9)) + 1 : 1;
+    Eigen::Vector2d start(0, 0);
+    for (int row = 0; row < count; ++row) {
+        const bool forward = row % 2 == 0;
+        const Eigen::Vector2d a = start + along * (forward ? -offset : length + offset);
+        const Eigen::Vector2d b = start + along * (forward ? length + offset : -offset);
+        points.append(local.at(a.x(), a.y()));
+        points.append(local.at(b.x(), b.y()));
+        const double step = hstep * (row % 2 == 0 ? alternation : 200 - alternation) / 100;
+        start += across * step;
+    }
+}
+
+// Square spiral out from the position: legs of hstep, hstep, 2·hstep,
+// 2·hstep, … turning right, until a side reaches `width`.
+void expandingSquare(QList<Waypoint> &points, const Local &local, const Maneuver &m)
+{
+    const double bearing = geo::radians(m.number(u"bearing"_s));
+    const double hstep = m.number(u"hstep"_s);
+    const double width = m.number(u"width"_s);
+    Eigen::Vector2d at(0, 0);
+    points.append(local.at(0, 0));
+    if (hstep <= 0)
+        return;
+    for (int leg = 0; leg < 10000; ++leg) {
+        const double legLength = hstep * (leg / 2 + 1);
+        if (legLength > width + 1e-9)
+            break;
+        const double heading = bearing + leg * (std::numbers::pi / 2);
+        at += Eigen::Vector2d(std::cos(heading), std::sin(heading)) * legLength;
+        points.append(local.at(at.x(), at.y()));
+    }
+}
+
+double pathLength(const QList<Waypoint> &points)
+{
+    double total = 0;
+    for (qsizetype i = 1; i < points.size(); ++i)
+        total += distance(points[i - 1], points[i]);
+    return total;
+}
+
+} // namespace
+
+double distance(const Waypoint &a, const Waypoint &b)
+{
+    const auto g = geo::inverse(geo::radians(a.lat), geo::radians(a.lon), geo::radians(b.lat), geo::radians(b.lon));
+    return g ? g->distance : 0;
+}
+
+ManeuverGeometry maneuverGeometry(const Maneuver &m, const Waypoint *previous, const SpeedModel &speeds)
+{
+    ManeuverGeometry g;
+    g.id = m.id;
+    g.type = m.type;
+    g.speed = speedOf(m, speeds);
+    const bool elevator = m.type == u"Elevator";
+    const double z = m.number(elevator ? u"end_z"_s : u"z"_s);
+    g.zUnits = m.text(elevator ? u"end_z_units"_s : u"z_units"_s, u"NONE"_s);
+    g.minZ = g.maxZ = z;
+    const Local local(m, z, g.zUnits);
+    const double duration = m.number(u"duration"_s);
+    // Once there: how long the maneuver lasts by its own clock (a loiter's laps
+    // for `duration`, a station keeping, a pop-up's wait), and whether it ends.
+    double hold = 0;
+    bool circling = false;
+    bool endless = false;
+
+    if (m.type == u"Rows") {
+        rows(g.points, local, m);
+    } else if (m.type == u"ExpandingSquare") {
+        expandingSquare(g.points, local, m);
+    } else if (m.type == u"FollowPath" || m.type == u"FollowTrajectory") {
+        for (const PathPoint &p : m.points)
+            g.points.append(local.at(p.x, p.y, p.z));
+        if (g.points.isEmpty())
+            g.points.append(local.at(0, 0));
+        for (const Waypoint &w : g.points) {
+            g.minZ = std::min(g.minZ, w.z);
+            g.maxZ = std::max(g.maxZ, w.z);
+        }
+    } else if (m.type == u"Loiter" || m.type == u"CompassCalibration") {
+        if (m.text(u"type"_s) == u"HOVER")
+            g.points.append(local.at(0, 0));
+        else
+            circle(g.points, local, m.number(u"radius"_s));
+        circling = true;
+        hold = duration;
+        endless = duration <= 0;
+        if (m.type == u"CompassCalibration") {
+            g.minZ = z - m.number(u"amplitude"_s);
+            g.maxZ = z + m.number(u"amplitude"_s);
+        }
+    } else {
+        // Goto, PopUp, StationKeeping, YoYo, Elevator, ScheduledGoto, Launch, Takeoff, Land: a point.
+        g.points.append(local.at(0, 0));
+        if (m.type == u"StationKeeping") {
+            hold = duration;
+            endless = duration <= 0;
+        } else if (m.type == u"PopUp") {
+            hold = duration;
+        } else if (m.type == u"YoYo") {
+            g.minZ = z - m.number(u"amplitude"_s);
+            g.maxZ = z + m.number(u"amplitude"_s);
+        } else if (elevator) {
+            const double startZ = m.number(u"start_z"_s);
+            g.minZ = std::min(startZ, z);
+            g.maxZ = std::max(startZ, z);
+        }
+    }
+    if (previous)
+        g.transit = distance(*previous, g.points.first());
+    // A timed loiter covers its circle for as long as it lasts; an endless one, one lap at least.
+    g.length = circling && hold > 0 ? hold * g.speed : pathLength(g.points);
+    if (!endless)
+        g.duration = g.transit / g.speed + (circling ? hold : g.length / g.speed + hold);
+    return g;
+}
+
+PlanGeometry planGeometry(const Plan &plan, const SpeedModel &speeds)
+{
+    PlanGeometry result;
+    result.duration = 0.0;
+    const Waypoint *previous = nullptr;
+    for (const Maneuver *m : plan.executionOrder()) {
+        result.maneuvers.append(maneuverGeometry(*m, previous, speeds));
+        const ManeuverGeometry &g = result.maneuvers.last();
+        previous = &g.points.last();
+        result.length += g.length + g.transit;
+        if (result.duration && g.duration)
+            *result.duration += *g.duration;
+        else
+            result.duration.reset();
+        const auto raise = [&](std::optional<double> &max) { max = std::max(max.value_or(g.maxZ), g.maxZ); };
+        if (g.zUnits == u"DEPTH")
+            raise(result.maxDepth);
+        else if (g.zUnits == u"ALTITUDE")
+            raise(result.maxAltitude);
+        else if (g.zUnits == u"HEIGHT")
+            raise(result.maxHeight);
+    }
+    return result;
+}
+
+} // namespace neptus::mission

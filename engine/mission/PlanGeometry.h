@@ -1,0 +1,71 @@
+#pragma once
+
+#include "mission/Mission.h"
+
+#include <QList>
+#include <QString>
+
+#include <optional>
+
+namespace neptus::mission {
+
+// What a plan implies: the points each maneuver makes the vehicle visit, how
+// far it goes and for how long at the planned speeds, and how deep or high.
+// Worked out on a local tangent plane around each maneuver's position (WGS84
+// through geo/), which is exact to centimetres over the few kilometres a
+// maneuver spans.
+
+// Turning planned speeds into metres per second: RPM and percentages need
+// the vehicle's figures (its definition's limits); these are the defaults.
+struct SpeedModel
+{
+    double metresPerSecondPerRpm = 1.0 / 1000; // 1000 RPM ≈ 1 m/s, as LSTS's AUVs
+    double maxSpeed = 2.0;                      // what 100 % means, m/s
+    double defaultSpeed = 1.0;                  // for maneuvers that give no speed
+};
+
+struct Waypoint
+{
+    double lat = 0; // degrees
+    double lon = 0;
+    double z = 0;
+    QString zUnits; // NONE, DEPTH, ALTITUDE, HEIGHT
+};
+
+struct ManeuverGeometry
+{
+    QString id;
+    QString type;
+    // The path the maneuver itself makes; the first point is where it begins
+    // (the vehicle arrives there from the previous maneuver's last point).
+    QList<Waypoint> points;
+    double transit = 0;  // metres from the previous maneuver's end to points.first()
+    double length = 0;   // metres along points (laps of a timed loiter included)
+    double speed = 0;    // m/s
+    // Seconds, transit included; empty when the maneuver does not end by
+    // itself (a loiter or station keeping with no duration).
+    std::optional<double> duration;
+    double minZ = 0, maxZ = 0; // the z range it visits, in zUnits (a yo-yo's amplitude included)
+    QString zUnits;
+};
+
+struct PlanGeometry
+{
+    QList<ManeuverGeometry> maneuvers; // in execution order (Plan::executionOrder)
+    double length = 0;
+    std::optional<double> duration;    // empty when some maneuver never ends by itself
+    std::optional<double> maxDepth;    // over maneuvers in DEPTH
+    std::optional<double> maxAltitude; // over maneuvers in ALTITUDE (above the bottom)
+    std::optional<double> maxHeight;   // over maneuvers in HEIGHT (above the surface)
+};
+
+// `previous` is where the vehicle is before the maneuver (its transit starts
+// there); none for the first.
+ManeuverGeometry maneuverGeometry(const Maneuver &maneuver, const Waypoint *previous = nullptr,
+                                  const SpeedModel &speeds = {});
+PlanGeometry planGeometry(const Plan &plan, const SpeedModel &speeds = {});
+
+// Great-circle distance in metres (WGS84 geodesic).
+double distance(const Waypoint &a, const Waypoint &b);
+
+} // namespace neptus::mission

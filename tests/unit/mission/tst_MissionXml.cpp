@@ -1,0 +1,246 @@
+#include "mission/MissionXml.h"
+
+#include <QDir>
+#include <QFile>
+#include <QTemporaryDir>
+
+#include <gtest/gtest.h>
+
+using namespace neptus::mission;
+using namespace Qt::StringLiterals;
+
+namespace {
+
+// Every maneuver type, a map with every feature kind and a checklist.
+const char *const everything = R"X(<?xml version="1.0" encoding="UTF-8"?>
+<mission format="1" id="harbour" name="Harbour survey">
+  <description>Every element once.</description>
+  <home lat="41.185" lon="-8.706" height="0"/>
+  <vehicle id="lauv-xplore-1"/>
+  <vehicle id="x8-02"/>
+  <map id="harbour-map" name="Harbour">
+    <mark id="buoy" name="Buoy" color="#ff8000" layer="marks" lat="41.186" lon="-8.705"/>
+    <transponder id="t1" north="100" east="-50" depth="10" config="lsts3.conf"/>
+    <path id="channel"><point lat="41.18" lon="-8.70"/><point north="10" east="20"/></path>
+    <polygon id="ops" role="operating-area" z-min="0" z-max="50" z-units="DEPTH">
+      <point lat="41.18" lon="-8.71"/><point lat="41.19" lon="-8.71"/><point lat="41.19" lon="-8.70"/>
+    </polygon>
+    <circle id="nogo" role="no-go" lat="41.187" lon="-8.707" radius="30"/>
+    <box id="pier" lat="41.187" lon="-8.707" width="10" length="80" bearing="45" z-min="0" z-max="5" z-units="HEIGHT"/>
+    <cylinder id="c" north="0" east="0" width="10" length="10"/>
+    <ellipsoid id="e" north="0" east="0" width="10" length="20"/>
+    <image id="chart" file="chart.png"><corner lat="41.19" lon="-8.71"/><corner lat="41.18" lon="-8.70"/></image>
+    <image id="photo" file="photo.jpg" lat="41.185" lon="-8.706" scale="0.5" rotation="10"/>
+    <model id="ship" file="ship.obj" lat="41.185" lon="-8.706" yaw="90" scale="1"/>
+  </map>
+  <plan id="survey" vehicle="lauv-xplore-1" start="go">
+    <description>Out, survey, back.</description>
+    <variable name="target_depth" value="5"/>
+    <start-actions>
+      <SetEntityParameters><name>Sidescan</name><params><EntityParameter><name>Active</name><value>true</value></EntityParameter></params></SetEntityParameters>
+    </start-actions>
+    <maneuvers>
+      <Goto id="go" lat="41.185" lon="-8.706" z="2" z_units="DEPTH" speed="1.5" speed_units="METERS_PS" timeout="600"/>
+      <PopUp id="up" lat="41.186" lon="-8.706" z="0" z_units="DEPTH" speed="1.5" duration="30" radius="5" flags="WAIT_AT_SURFACE|CURR_POS"/>
+      <Loiter id="wait" lat="41.186" lon="-8.706" z="3" z_units="DEPTH" speed="1" duration="300" type="CIRCULAR" radius="20" direction="CLOCKW"/>
+      <StationKeeping id="sk" lat="41.186" lon="-8.705" radius="10" duration="60" speed="1"/>
+      <YoYo id="yoyo" lat="41.187" lon="-8.705" z="10" z_units="DEPTH" amplitude="4" pitch="15" speed="1.2"/>
+      <Rows id="rows" lat="41.187" lon="-8.705" z="3" z_units="ALTITUDE" speed="1.2" bearing="90" width="50" length="100" hstep="10" coff="5" alternation="100" flags="SQUARE_CURVE"/>
+      <FollowPath id="path" lat="41.186" lon="-8.704" z="2" z_units="DEPTH" speed="1"><point x="0" y="0" z="0"/><point x="50" y="0" z="1"/></FollowPath>
+      <FollowTrajectory id="traj" lat="41.186" lon="-8.704" speed="1"><point x="0" y="0" t="0"/><point x="0" y="30" t="30"/></FollowTrajectory>
+      <Elevator id="elev" lat="41.186" lon="-8.704" start_z="0" start_z_units="DEPTH" end_z="20" end_z_units="DEPTH" radius="15" speed="1"/>
+      <ExpandingSquare id="square" lat="41.186" lon="-8.704" z="2" z_units="DEPTH" speed="1" width="30" hstep="10" bearing="0"/>
+      <CompassCalibration id="compass" lat="41.186" lon="-8.704" z="1" z_units="DEPTH" pitch="10" amplitude="1" duration="600" speed="1" radius="15" direction="CCLOCKW"/>
+      <ScheduledGoto id="sched" arrival_time="1800000000" lat="41.186" lon="-8.704" z="1" z_units="DEPTH" travel_z="2" travel_z_units="DEPTH" delayed="SKIP"/>
+      <Launch id="launch" lat="41.186" lon="-8.704" z="0" z_units="DEPTH" speed="1"/>
+      <Takeoff id="takeoff" lat="41.186" lon="-8.704" z="100" z_units="HEIGHT" speed="17" takeoff_pitch="15"/>
+      <Land id="land" lat="41.186" lon="-8.704" z="0" z_units="HEIGHT" speed="15" abort_z="30" bearing="270" glide_slope="8" glide_slope_alt="20"/>
+    </maneuvers>
+    <transition from="go" to="up" condition="ManeuverIsDone"/>
+    <transition from="up" to="rows"><actions><PlanControl><type>REQUEST</type></PlanControl></actions></transition>
+  </plan>
+  <checklist id="before-launch" name="Before launch">
+    <group name="Power">
+      <item text="Battery above 80 %" variable="lauv-xplore-1/FuelLevel/value" min="80" max="100"/>
+      <item text="Hull closed" checked="true" note="Two people check"/>
+    </group>
+  </checklist>
+</mission>
+)X";
+
+QString errorsText(const Errors &errors)
+{
+    QStringList lines;
+    for (const auto &e : errors)
+        lines << e.toString();
+    return lines.join(u'\n');
+}
+
+std::expected<Mission, Errors> read(const QByteArray &text)
+{
+    return readMission(text, u"test.xml"_s);
+}
+
+// The plan of `everything` with its maneuvers replaced.
+QByteArray withManeuvers(const char *maneuvers, const char *transitions = "")
+{
+    return QByteArray(R"X(<mission format="1" id="m"><home lat="0" lon="0"/><vehicle id="v"/>
+<plan id="p" vehicle="v" start="a">
+<maneuvers>)X") + maneuvers + "</maneuvers>" + transitions + "</plan></mission>";
+}
+
+} // namespace
+
+TEST(MissionXml, ReadsEveryElement)
+{
+    const auto mission = read(everything);
+    ASSERT_TRUE(mission) << errorsText(mission.error()).toStdString();
+    EXPECT_EQ(mission->id, u"harbour"_s);
+    EXPECT_DOUBLE_EQ(mission->home.lat, 41.185);
+    EXPECT_EQ(mission->vehicles, (QStringList{u"lauv-xplore-1"_s, u"x8-02"_s}));
+    ASSERT_EQ(mission->maps.size(), 1);
+    EXPECT_EQ(mission->maps[0].features.size(), 11);
+    const Feature &transponder = mission->maps[0].features[1];
+    EXPECT_EQ(transponder.kind, u"transponder"_s);
+    EXPECT_EQ(transponder.position.north, 100.0);
+    EXPECT_EQ(transponder.position.depth, 10.0);
+    EXPECT_EQ(transponder.attributes.value(u"config"_s), u"lsts3.conf"_s);
+    EXPECT_EQ(mission->maps[0].features[3].points.size(), 3);
+    EXPECT_EQ(mission->maps[0].features[8].points.size(), 2); // image corners
+
+    ASSERT_EQ(mission->plans.size(), 1);
+    const Plan &plan = mission->plans[0];
+    EXPECT_EQ(plan.maneuvers.size(), 15);
+    EXPECT_EQ(plan.transitions.size(), 2);
+    EXPECT_EQ(plan.transitions[1].condition, u"ManeuverIsDone"_s); // the default
+    ASSERT_EQ(plan.transitions[1].actions.size(), 1);
+    EXPECT_EQ(plan.transitions[1].actions[0].name, u"PlanControl"_s);
+    ASSERT_EQ(plan.startActions.size(), 1);
+    EXPECT_EQ(plan.startActions[0].children[0].text, u"Sidescan"_s);
+    EXPECT_EQ(plan.variables, (QList<std::pair<QString, QString>>{{u"target_depth"_s, u"5"_s}}));
+    const Maneuver *rows = plan.maneuver(u"rows"_s);
+    ASSERT_TRUE(rows);
+    EXPECT_EQ(rows->number(u"hstep"_s), 10.0);
+    EXPECT_EQ(rows->text(u"flags"_s), u"SQUARE_CURVE"_s);
+    EXPECT_EQ(plan.maneuver(u"traj"_s)->points[1].t, 30.0);
+    EXPECT_EQ(plan.maneuvers[0].line.value, 29);
+
+    ASSERT_EQ(mission->checklists.size(), 1);
+    const ChecklistItem &battery = mission->checklists[0].groups[0].items[0];
+    EXPECT_EQ(battery.variable, u"lauv-xplore-1/FuelLevel/value"_s);
+    EXPECT_EQ(battery.min, 80.0);
+    EXPECT_TRUE(mission->checklists[0].groups[0].items[1].checked);
+}
+
+TEST(MissionXml, WriteReadWriteIsAFixpoint)
+{
+    const auto mission = read(everything);
+    ASSERT_TRUE(mission);
+    const QByteArray first = writeMission(*mission);
+    const auto again = read(first);
+    ASSERT_TRUE(again) << errorsText(again.error()).toStdString() << "\n" << first.constData();
+    EXPECT_EQ(*again, *mission);
+    EXPECT_EQ(writeMission(*again), first);
+}
+
+TEST(MissionXml, AMissionMadeInCodeIsValid)
+{
+    Mission mission;
+    mission.id = u"made"_s;
+    mission.home = {38.5, -28.6, 0};
+    mission.vehicles = {u"auv"_s};
+    Plan plan;
+    plan.id = u"p"_s;
+    plan.vehicle = u"auv"_s;
+    plan.start = u"a"_s;
+    Maneuver a;
+    a.id = u"a"_s;
+    a.type = u"Goto"_s;
+    a.set(u"lat"_s, 38.5);
+    a.set(u"lon"_s, -28.6);
+    a.set(u"speed"_s, 0.1 + 0.2); // the shortest text that reads back the same
+    plan.maneuvers.append(a);
+    mission.plans.append(plan);
+    const QByteArray text = writeMission(mission);
+    EXPECT_TRUE(text.contains(R"(speed="0.30000000000000004")")) << text.constData();
+    const auto back = read(text);
+    ASSERT_TRUE(back) << errorsText(back.error()).toStdString();
+    EXPECT_EQ(*back, mission);
+    EXPECT_EQ(back->plans[0].maneuvers[0].number(u"speed"_s), 0.1 + 0.2);
+}
+
+TEST(MissionXml, SchemaErrorsNameTheFileLineAndElement)
+{
+    struct Case
+    {
+        const char *what;
+        QByteArray text;
+        int line;
+        const char *says;
+    };
+    const QList<Case> cases{
+        {"missing latitude", withManeuvers("<Goto id='a' lon='1'/>"), 3, "Element 'Goto': The attribute 'lat' is required"},
+        {"latitude out of range", withManeuvers("\n<Goto id='a' lat='91' lon='1'/>"), 4, "The value '91' is greater than the maximum value allowed ('90')"},
+        {"unknown maneuver", withManeuvers("\n\n<Teleport id='a' lat='1' lon='1'/>"), 5, "Element 'Teleport': This element is not expected"},
+        {"unknown parameter", withManeuvers("<Goto id='a' lat='1' lon='1' warp='9'/>"), 3, "The attribute 'warp' is not allowed"},
+        {"bad enumeration", withManeuvers("<Goto id='a' lat='1' lon='1' z_units='FATHOMS'/>"), 3, "FATHOMS"},
+        {"duplicate maneuver", withManeuvers("<Goto id='a' lat='1' lon='1'/>\n<Goto id='a' lat='1' lon='1'/>"), 4, "Duplicate key-sequence ['a']"},
+        {"transition to nowhere", withManeuvers("<Goto id='a' lat='1' lon='1'/>", "\n<transition from='a' to='b'/>"), 4, "No match found for key-sequence ['b']"},
+        {"start nowhere", QByteArray(withManeuvers("<Goto id='b' lat='1' lon='1'/>")), 2, "No match found for key-sequence ['a']"},
+        {"plan for an unlisted vehicle", QByteArray(withManeuvers("<Goto id='a' lat='1' lon='1'/>")).replace("vehicle=\"v\" start", "vehicle=\"w\" start"), 2, "No match found for key-sequence ['w']"},
+        {"not a number", withManeuvers("<Goto id='a' lat='1' lon='1' speed='NaN'/>"), 3, "'NaN' is not a finite number"},
+    };
+    for (const Case &c : cases) {
+        const auto result = read(c.text);
+        ASSERT_FALSE(result) << c.what;
+        const auto &first = result.error().first();
+        EXPECT_EQ(first.file, u"test.xml"_s) << c.what;
+        EXPECT_EQ(first.line, c.line) << c.what << ": " << first.toString().toStdString();
+        EXPECT_TRUE(first.message.contains(QString::fromUtf8(c.says))) << c.what << ": " << first.toString().toStdString();
+    }
+}
+
+TEST(MissionXml, PositionsAreGivenOneWay)
+{
+    const QByteArray both = R"(<mission format="1" id="m"><home lat="0" lon="0"/>
+<map id="x"><mark id="a" lat="1" lon="1" north="3" east="4"/></map></mission>)";
+    const auto result = read(both);
+    ASSERT_FALSE(result);
+    EXPECT_EQ(result.error().first().line, 2);
+    EXPECT_TRUE(result.error().first().message.contains(u"not both or neither"_s));
+    const QByteArray half = R"(<mission format="1" id="m"><home lat="0" lon="0"/>
+<map id="x"><mark id="a" lat="1"/></map></mission>)";
+    EXPECT_FALSE(read(half));
+}
+
+TEST(MissionXml, HostileDocumentsAreRefused)
+{
+    const QByteArray entity = R"(<?xml version="1.0"?><!DOCTYPE m [<!ENTITY x SYSTEM "file:///etc/passwd">]>
+<mission format="1" id="m"><description>&x;</description><home lat="0" lon="0"/></mission>)";
+    const auto result = read(entity);
+    ASSERT_FALSE(result);
+    EXPECT_TRUE(result.error().first().message.contains(u"DOCTYPE"_s));
+    EXPECT_FALSE(read("<mission"));
+    EXPECT_FALSE(read(""));
+}
+
+TEST(MissionXml, SavingIsAtomicAndKeepsThePreviousVersion)
+{
+    QTemporaryDir dir;
+    const QString path = dir.filePath(u"m.xml"_s);
+    auto mission = read(everything);
+    ASSERT_TRUE(mission);
+    ASSERT_TRUE(saveMission(*mission, path));
+    mission->name = u"Renamed"_s;
+    ASSERT_TRUE(saveMission(*mission, path));
+    const auto now = loadMission(path);
+    ASSERT_TRUE(now);
+    EXPECT_EQ(now->name, u"Renamed"_s);
+    const auto before = loadMission(path + u".bak"_s);
+    ASSERT_TRUE(before);
+    EXPECT_EQ(before->name, u"Harbour survey"_s);
+    EXPECT_EQ(QDir(dir.path()).entryList(QDir::Files).size(), 2); // no temporary left behind
+    const auto missing = loadMission(dir.filePath(u"none.xml"_s));
+    ASSERT_FALSE(missing);
+    EXPECT_EQ(missing.error().first().file, dir.filePath(u"none.xml"_s));
+}

@@ -1,0 +1,288 @@
+#include "mission/NeptusImport.h"
+#include "mission/PlanGeometry.h"
+
+#include "Fixtures.h"
+
+#include <QFile>
+#include <QTemporaryDir>
+
+#include <archive.h>
+#include <archive_entry.h>
+
+#include <gtest/gtest.h>
+
+using namespace neptus::mission;
+using namespace neptus::test;
+using namespace Qt::StringLiterals;
+
+namespace {
+
+QString errorsText(const Errors &errors)
+{
+    QStringList lines;
+    for (const auto &e : errors)
+        lines << e.toString();
+    return lines.join(u'\n');
+}
+
+struct Counts
+{
+    int plans = 0;
+    QMap<QString, int> maneuvers;
+    int transitions = 0;
+    QMap<QString, int> features;
+    QStringList planVehicles;
+};
+
+Counts count(const Mission &mission)
+{
+    Counts c;
+    c.plans = static_cast<int>(mission.plans.size());
+    for (const Plan &p : mission.plans) {
+        for (const Maneuver &m : p.maneuvers)
+            ++c.maneuvers[m.type];
+        c.transitions += static_cast<int>(p.transitions.size());
+        if (!c.planVehicles.contains(p.vehicle))
+            c.planVehicles.append(p.vehicle);
+    }
+    for (const Map &map : mission.maps) {
+        for (const Feature &f : map.features)
+            ++c.features[f.kind];
+    }
+    c.planVehicles.sort();
+    return c;
+}
+
+std::expected<NeptusImport, Errors> importFixture(const char *name)
+{
+    return importNeptus(fixturePath((std::string("neptus/missions/") + name).c_str()));
+}
+
+// A zip made here with libarchive: (name, bytes) entries, or one entry of `zeros` zero bytes.
+QByteArray zip(const QList<std::pair<QByteArray, QByteArray>> &entries, qint64 zeros = 0)
+{
+    QByteArray out(4 * 1024 * 1024, '\0');
+    size_t used = 0;
+    archive *a = archive_write_new();
+    archive_write_set_format_zip(a);
+    archive_write_open_memory(a, out.data(), static_cast<size_t>(out.size()), &used);
+    const auto add = [&](const QByteArray &name, qint64 size, const std::function<void()> &write) {
+        archive_entry *e = archive_entry_new();
+        archive_entry_set_pathname(e, name.constData());
+        archive_entry_set_filetype(e, AE_IFREG);
+        archive_entry_set_perm(e, 0644);
+        archive_entry_set_size(e, size);
+        archive_write_header(a, e);
+        write();
+        archive_entry_free(e);
+    };
+    for (const auto &[name, bytes] : entries)
+        add(name, bytes.size(), [&] { archive_write_data(a, bytes.constData(), static_cast<size_t>(bytes.size())); });
+    if (zeros > 0) {
+        const QByteArray block(1024 * 1024, '\0');
+        add("mission.nmis", zeros, [&] {
+            for (qint64 left = zeros; left > 0; left -= block.size())
+                archive_write_data(a, block.constData(), static_cast<size_t>(std::min<qint64>(left, block.size())));
+        });
+    }
+    archive_write_close(a);
+    archive_write_free(a);
+    out.truncate(static_cast<qsizetype>(used));
+    return out;
+}
+
+const QByteArray tinyMission = R"(<mission-def><header><id>t</id></header><definitions>
+<maps><map><href>../../../etc/passwd</href></map></maps>
+<home-reference><origin><latitude>41N0</latitude><longitude>8W0</longitude></origin></home-reference>
+</definitions><body><plan id="p" vehicle="v"><graph><node><id>a</id><maneuver><Goto>
+<finalPoint><point><coordinate><latitude>41.0</latitude><longitude>-8.0</longitude></coordinate><z>2</z><zunits>DEPTH</zunits></point></finalPoint>
+<speed unit="m/s">1</speed><teleport>yes</teleport></Goto></maneuver></node></graph></plan></body></mission-def>)";
+
+} // namespace
+
+TEST(NeptusImport, ReadsNeptusCoordinateText)
+{
+    EXPECT_NEAR(*parseNeptusAngle(u"38N32'1.790''"_s), 38 + 32 / 60.0 + 1.79 / 3600, 1e-12);
+    EXPECT_NEAR(*parseNeptusAngle(u"28W37'17.230''"_s), -(28 + 37 / 60.0 + 17.23 / 3600), 1e-12);
+    EXPECT_NEAR(*parseNeptusAngle(u"41N11.081333"_s), 41 + 11.081333 / 60, 1e-12);
+    EXPECT_EQ(*parseNeptusAngle(u"0N"_s), 0);
+    EXPECT_EQ(*parseNeptusAngle(u"-8.746142226095024"_s), -8.746142226095024);
+    EXPECT_NEAR(*parseNeptusAngle(u"W28.721014°"_s), -28.721014, 1e-12);
+    EXPECT_FALSE(parseNeptusAngle(u"north"_s));
+    EXPECT_FALSE(parseNeptusAngle(u"38X32"_s));
+    EXPECT_FALSE(parseNeptusAngle(u"nan"_s));
+}
+
+// The counts of ../shared/fixtures/neptus/README.md, table "missions/".
+TEST(NeptusImport, EveryFixtureMissionHasItsReadmeCounts)
+{
+    struct Expected
+    {
+        const char *file;
+        int plans;
+        QStringList vehicles;
+        QMap<QString, int> maneuvers;
+        int transitions;
+        QMap<QString, int> features; // path and polygon counted together as "path"
+    };
+    const QList<Expected> fixtures{
+        {"phase3.nmisz", 5, {u"lauv-noptilus-3"_s, u"lauv-xplore-1"_s},
+         {{u"Goto"_s, 10}, {u"Rows"_s, 7}, {u"PopUp"_s, 6}, {u"StationKeeping"_s, 5}, {u"YoYo"_s, 4}}, 27, {{u"path"_s, 7}}},
+        {"missao-cavado.nmisz", 12, {u"lauv-noptilus-1"_s, u"lauv-xplore-1"_s},
+         {{u"Goto"_s, 22}, {u"StationKeeping"_s, 8}, {u"PopUp"_s, 7}, {u"FollowPath"_s, 4}, {u"Rows"_s, 2}}, 31,
+         {{u"mark"_s, 8}, {u"transponder"_s, 2}, {u"path"_s, 1}}},
+        {"Split.nmisz", 14, {u"lauv-xplore-1"_s},
+         {{u"Goto"_s, 5}, {u"StationKeeping"_s, 5}, {u"Loiter"_s, 3}, {u"CompassCalibration"_s, 1}}, 0,
+         {{u"mark"_s, 5}, {u"path"_s, 1}}},
+        {"Horta.nmisz", 3, {u"x8-02"_s, u"x8-03"_s}, {{u"Goto"_s, 8}, {u"Loiter"_s, 1}}, 8,
+         {{u"mark"_s, 1}, {u"circle"_s, 1}}},
+    };
+    if (!QFileInfo::exists(fixturePath("neptus/missions")))
+        GTEST_SKIP() << "../shared/fixtures/neptus is absent (a user's clone); CI and developer machines have it";
+    for (const Expected &e : fixtures) {
+        const auto imported = importFixture(e.file);
+        ASSERT_TRUE(imported) << e.file << ": " << errorsText(imported.error()).toStdString();
+        Counts c = count(imported->mission);
+        c.features[u"path"_s] += c.features.take(u"polygon"_s);
+        if (c.features.value(u"path"_s) == 0)
+            c.features.remove(u"path"_s);
+        EXPECT_EQ(c.plans, e.plans) << e.file;
+        EXPECT_EQ(c.planVehicles, e.vehicles) << e.file;
+        EXPECT_EQ(c.maneuvers, e.maneuvers) << e.file;
+        EXPECT_EQ(c.transitions, e.transitions) << e.file;
+        EXPECT_EQ(c.features, e.features) << e.file;
+        for (const auto &w : imported->warnings)
+            std::cout << "  warning: " << w.toString().toStdString() << "\n";
+        // Each imported plan makes sense: a geometry with a length.
+        for (const Plan &p : imported->mission.plans)
+            EXPECT_GE(planGeometry(p).length, 0) << e.file << " " << p.id.toStdString();
+    }
+}
+
+TEST(NeptusImport, Phase3KeepsItsCoordinatesUnitsAndStartActions)
+{
+    if (!QFileInfo::exists(fixturePath("neptus/missions")))
+        GTEST_SKIP() << "../shared/fixtures/neptus is absent (a user's clone); CI and developer machines have it";
+    const auto imported = importFixture("phase3.nmisz");
+    ASSERT_TRUE(imported);
+    const Mission &m = imported->mission;
+    EXPECT_NEAR(m.home.lat, 38 + 32 / 60.0 + 1.79 / 3600, 1e-12);
+    EXPECT_NEAR(m.home.lon, -(28 + 37 / 60.0 + 17.23 / 3600), 1e-12);
+    const Plan *ctd1 = m.plan(u"ctd1"_s);
+    ASSERT_TRUE(ctd1);
+    EXPECT_EQ(ctd1->start, u"Goto1"_s); // no node marked: the first starts it
+    const Maneuver *go = ctd1->maneuver(u"Goto1"_s);
+    ASSERT_TRUE(go);
+    EXPECT_NEAR(go->number(u"lat"_s), 38 + 32 / 60.0 + 41.593 / 3600, 1e-12);
+    EXPECT_EQ(go->text(u"speed_units"_s), u"METERS_PS"_s);
+    EXPECT_EQ(go->number(u"timeout"_s), 10000);
+    ASSERT_EQ(go->startActions.size(), 1);
+    EXPECT_EQ(go->startActions[0].name, u"SetEntityParameters"_s);
+    EXPECT_EQ(go->startActions[0].children[0].text, u"LBL"_s);
+    // YoYo pitch: radians in Neptus, degrees here.
+    const Maneuver *yoyo = ctd1->maneuver(u"YoYo1"_s);
+    ASSERT_TRUE(yoyo);
+    EXPECT_NEAR(yoyo->number(u"pitch"_s), 10, 1e-6);
+    EXPECT_EQ(yoyo->number(u"z"_s), 5);
+    // Rows at an altitude.
+    for (const Plan &p : m.plans) {
+        for (const Maneuver &man : p.maneuvers) {
+            if (man.type == u"Rows") {
+                EXPECT_EQ(man.text(u"z_units"_s), u"ALTITUDE"_s);
+                EXPECT_EQ(man.number(u"hstep"_s), 10);
+            }
+        }
+    }
+}
+
+TEST(NeptusImport, OffsetsAreAppliedAndRpmKept)
+{
+    if (!QFileInfo::exists(fixturePath("neptus/missions")))
+        GTEST_SKIP() << "../shared/fixtures/neptus is absent (a user's clone); CI and developer machines have it";
+    const auto imported = importFixture("missao-cavado.nmisz");
+    ASSERT_TRUE(imported);
+    bool sawOffset = false, sawRpm = false, sawPath = false;
+    for (const Plan &p : imported->mission.plans) {
+        for (const Maneuver &man : p.maneuvers) {
+            // 41.515225900009916 + 141.088 m north ≈ +0.00127 degrees
+            if (man.type == u"PopUp" && std::abs(man.number(u"lat"_s) - 41.5164964) < 2e-6)
+                sawOffset = true;
+            sawRpm |= man.text(u"speed_units"_s) == u"RPM";
+            if (man.type == u"FollowPath") {
+                sawPath = true;
+                EXPECT_GE(man.points.size(), 2);
+            }
+        }
+    }
+    EXPECT_TRUE(sawOffset);
+    EXPECT_TRUE(sawRpm);
+    EXPECT_TRUE(sawPath);
+}
+
+TEST(NeptusImport, ImportedMissionsAreValidFilesOfOurs)
+{
+    if (!QFileInfo::exists(fixturePath("neptus/missions")))
+        GTEST_SKIP() << "../shared/fixtures/neptus is absent (a user's clone); CI and developer machines have it";
+    for (const char *name : {"phase3.nmisz", "missao-cavado.nmisz", "Split.nmisz", "Horta.nmisz"}) {
+        const auto imported = importFixture(name);
+        ASSERT_TRUE(imported) << name;
+        const QByteArray text = writeMission(imported->mission);
+        const auto again = readMission(text, u"again.xml"_s);
+        ASSERT_TRUE(again) << name << ": " << errorsText(again.error()).toStdString();
+        EXPECT_EQ(writeMission(*again), text) << name;
+    }
+}
+
+TEST(NeptusImport, WhatIsNotUnderstoodIsAWarningNamingItsLine)
+{
+    const auto imported = importNeptus(zip({{"mission.nmis", tinyMission}}), u"tiny.nmisz"_s);
+    ASSERT_TRUE(imported) << errorsText(imported.error()).toStdString();
+    EXPECT_EQ(imported->mission.plans.size(), 1);
+    const QString warnings = errorsText(imported->warnings);
+    EXPECT_TRUE(warnings.contains(u"tiny.nmisz/mission.nmis:6: Element 'teleport': not understood"_s)) << warnings.toStdString();
+    EXPECT_TRUE(warnings.contains(u"map '../../../etc/passwd' not read: outside the archive"_s)) << warnings.toStdString();
+}
+
+TEST(NeptusImport, DamagedAndHostileArchivesAreRefused)
+{
+    const auto refuse = [](const QByteArray &bytes, const QString &says) {
+        const auto result = importNeptus(bytes, u"bad.nmisz"_s);
+        ASSERT_FALSE(result) << says.toStdString();
+        EXPECT_TRUE(result.error().first().file.startsWith(u"bad.nmisz"_s));
+        EXPECT_TRUE(result.error().first().message.contains(says)) << result.error().first().toString().toStdString();
+    };
+    refuse("not a zip at all", u"not a zip archive"_s);
+    QByteArray cut = zip({{"mission.nmis", tinyMission}});
+    cut.truncate(cut.size() / 2);
+    refuse(cut, u"damaged zip archive"_s);
+    refuse(zip({{"readme.txt", "hello"}}), u"holds no mission"_s);
+    refuse(zip({{"mission.nmis", "<mission-def><header>"}}), u"Premature end"_s);
+    refuse(zip({{"mission.nmis", "<!DOCTYPE x [<!ENTITY a 'b'>]><mission-def/>"}}), u"DOCTYPE"_s);
+    // A zip bomb: 257 MiB of zeros packs into a few hundred kB.
+    refuse(zip({}, maxArchiveBytes + 1024 * 1024), u"unpacks to more than 256 MiB"_s);
+}
+
+TEST(NeptusImport, BareMissionsAndMapsImportToo)
+{
+    QTemporaryDir dir;
+    QFile mission(dir.filePath(u"m.nmis"_s));
+    ASSERT_TRUE(mission.open(QIODevice::WriteOnly));
+    mission.write(QByteArray(tinyMission).replace("../../../etc/passwd", "maps/a.nmap"));
+    mission.close();
+    QDir(dir.path()).mkdir(u"maps"_s);
+    QFile map(dir.filePath(u"maps/a.nmap"_s));
+    ASSERT_TRUE(map.open(QIODevice::WriteOnly));
+    map.write(R"(<map><header><id>a</id></header><features><mark><id>Alto dos Cedros</id><coordinate>
+<latitude>38N38'18.720''</latitude><longitude>28W43'15.680''</longitude><height>220.0</height></coordinate></mark></features></map>)");
+    map.close();
+    const auto imported = importNeptus(mission.fileName());
+    ASSERT_TRUE(imported) << errorsText(imported.error()).toStdString();
+    ASSERT_EQ(imported->mission.maps.size(), 1);
+    const Feature &mark = imported->mission.maps[0].features[0];
+    EXPECT_EQ(mark.id, u"Alto_dos_Cedros"_s);
+    EXPECT_EQ(mark.name, u"Alto dos Cedros"_s);
+    EXPECT_EQ(mark.position.height, 220.0);
+    const auto alone = importNeptus(map.fileName());
+    ASSERT_TRUE(alone) << errorsText(alone.error()).toStdString();
+    EXPECT_EQ(alone->mission.maps[0].features.size(), 1);
+}

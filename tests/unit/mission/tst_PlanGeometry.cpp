@@ -1,0 +1,154 @@
+#include "mission/PlanGeometry.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+using namespace neptus::mission;
+using namespace Qt::StringLiterals;
+
+namespace {
+
+Maneuver maneuver(const QString &type, std::initializer_list<std::pair<const char *, double>> numbers,
+                  std::initializer_list<std::pair<const char *, const char *>> texts = {})
+{
+    Maneuver m;
+    m.id = type.toLower();
+    m.type = type;
+    m.set(u"lat"_s, 41.0);
+    m.set(u"lon"_s, -8.0);
+    for (const auto &[name, value] : numbers)
+        m.set(QString::fromLatin1(name), value);
+    for (const auto &[name, value] : texts)
+        m.parameters.insert(QString::fromLatin1(name), QString::fromLatin1(value));
+    return m;
+}
+
+// One metre of latitude at 41° N, in degrees (WGS84 meridian arc: 111,052 m per degree).
+constexpr double degreesPerMetreNorth = 1 / 111052.0;
+
+} // namespace
+
+TEST(PlanGeometry, GotoIsItsTransit)
+{
+    const Waypoint from{41.0 - 1000 * degreesPerMetreNorth, -8.0, 0, u"DEPTH"_s};
+    const auto g = maneuverGeometry(maneuver(u"Goto"_s, {{"speed", 2}, {"z", 3}}, {{"z_units", "DEPTH"}}), &from);
+    ASSERT_EQ(g.points.size(), 1);
+    EXPECT_NEAR(g.transit, 1000, 1.0);
+    EXPECT_EQ(g.length, 0);
+    EXPECT_NEAR(*g.duration, 500, 0.5);
+    EXPECT_EQ(g.maxZ, 3);
+}
+
+TEST(PlanGeometry, RowsMakeALawnmower)
+{
+    // 50 m wide in 10 m steps: 6 rows of 100 m plus 5 m curve offsets at both ends, 5 steps between.
+    const auto g = maneuverGeometry(maneuver(u"Rows"_s, {{"bearing", 0}, {"width", 50}, {"length", 100}, {"hstep", 10},
+                                                         {"coff", 5}, {"speed", 1}}));
+    ASSERT_EQ(g.points.size(), 12);
+    EXPECT_NEAR(g.length, 6 * 110 + 5 * 10, 0.05);
+    EXPECT_NEAR(*g.duration, 710, 0.05);
+    // First row northwards from 5 m south of the start; the first turn is to the left (west).
+    EXPECT_NEAR((g.points[1].lat - g.points[0].lat) / degreesPerMetreNorth, 110, 0.1);
+    EXPECT_LT(g.points[2].lon, g.points[1].lon);
+    EXPECT_NEAR(g.points[2].lat, g.points[1].lat, 1e-9);
+    // CURVE_RIGHT turns east instead.
+    const auto right = maneuverGeometry(maneuver(u"Rows"_s, {{"width", 50}, {"length", 100}, {"hstep", 10}},
+                                                 {{"flags", "CURVE_RIGHT"}}));
+    EXPECT_GT(right.points[2].lon, right.points[1].lon);
+    // Alternating steps of 50 % and 150 % cover the same width in the same rows.
+    const auto alternating = maneuverGeometry(maneuver(u"Rows"_s, {{"width", 50}, {"length", 100}, {"hstep", 10},
+                                                                   {"alternation", 50}}));
+    EXPECT_NEAR(alternating.length, 6 * 100 + 3 * 5 + 2 * 15, 0.05);
+}
+
+TEST(PlanGeometry, LoitersLastTheirDurationOrForEver)
+{
+    const auto timed = maneuverGeometry(maneuver(u"Loiter"_s, {{"radius", 20}, {"duration", 300}, {"speed", 1.5}}));
+    EXPECT_EQ(timed.points.size(), 37); // a closed circle
+    EXPECT_NEAR(timed.length, 450, 1e-9);
+    EXPECT_NEAR(*timed.duration, 300, 1e-9);
+    EXPECT_NEAR(distance(timed.points[0], timed.points[18]), 40, 0.01); // a diameter
+    const auto endless = maneuverGeometry(maneuver(u"Loiter"_s, {{"radius", 20}, {"speed", 1.5}}));
+    EXPECT_FALSE(endless.duration);
+    EXPECT_NEAR(endless.length, 2 * std::numbers::pi * 20, 0.2); // one lap, as 36 chords
+    const auto keeping = maneuverGeometry(maneuver(u"StationKeeping"_s, {{"duration", 60}, {"speed", 1}}));
+    EXPECT_NEAR(*keeping.duration, 60, 1e-9);
+    EXPECT_FALSE(maneuverGeometry(maneuver(u"StationKeeping"_s, {})).duration);
+}
+
+TEST(PlanGeometry, PathsSquaresAndProfiles)
+{
+    Maneuver path = maneuver(u"FollowPath"_s, {{"z", 2}, {"speed", 1}}, {{"z_units", "DEPTH"}});
+    path.points = {{0, 0, 0, {}}, {30, 0, 1, {}}, {30, 40, 4, {}}};
+    const auto p = maneuverGeometry(path);
+    EXPECT_NEAR(p.length, 70, 0.01);
+    EXPECT_EQ(p.minZ, 2);
+    EXPECT_EQ(p.maxZ, 6);
+
+    // Legs 10, 10, 20, 20, 30, 30.
+    const auto square = maneuverGeometry(maneuver(u"ExpandingSquare"_s, {{"width", 30}, {"hstep", 10}, {"speed", 1}}));
+    EXPECT_EQ(square.points.size(), 7);
+    EXPECT_NEAR(square.length, 120, 0.01);
+
+    const auto yoyo = maneuverGeometry(maneuver(u"YoYo"_s, {{"z", 10}, {"amplitude", 4}}, {{"z_units", "DEPTH"}}));
+    EXPECT_EQ(yoyo.minZ, 6);
+    EXPECT_EQ(yoyo.maxZ, 14);
+    const auto elevator = maneuverGeometry(maneuver(u"Elevator"_s, {{"start_z", 2}, {"end_z", 20}},
+                                                    {{"end_z_units", "DEPTH"}}));
+    EXPECT_EQ(elevator.zUnits, u"DEPTH"_s);
+    EXPECT_EQ(elevator.maxZ, 20);
+    EXPECT_EQ(elevator.minZ, 2);
+    const auto popup = maneuverGeometry(maneuver(u"PopUp"_s, {{"duration", 45}, {"speed", 1}}));
+    EXPECT_NEAR(*popup.duration, 45, 1e-9);
+}
+
+TEST(PlanGeometry, SpeedsInRpmAndPercentUseTheVehicleFigures)
+{
+    const Waypoint from{41.0 - 100 * degreesPerMetreNorth, -8.0, 0, {}};
+    SpeedModel speeds;
+    speeds.metresPerSecondPerRpm = 1.0 / 500;
+    speeds.maxSpeed = 4;
+    const auto rpm = maneuverGeometry(maneuver(u"Goto"_s, {{"speed", 1000}}, {{"speed_units", "RPM"}}), &from, speeds);
+    EXPECT_DOUBLE_EQ(rpm.speed, 2);
+    const auto percent = maneuverGeometry(maneuver(u"Goto"_s, {{"speed", 25}}, {{"speed_units", "PERCENTAGE"}}), &from, speeds);
+    EXPECT_DOUBLE_EQ(percent.speed, 1);
+    EXPECT_DOUBLE_EQ(maneuverGeometry(maneuver(u"Goto"_s, {}), &from, speeds).speed, speeds.defaultSpeed);
+}
+
+TEST(PlanGeometry, APlanFollowsItsTransitionsFromTheStart)
+{
+    Plan plan;
+    plan.start = u"b"_s;
+    Maneuver a = maneuver(u"Goto"_s, {{"speed", 1}, {"z", 5}}, {{"z_units", "DEPTH"}});
+    a.id = u"a"_s;
+    Maneuver b = maneuver(u"Goto"_s, {{"speed", 1}, {"z", 12}}, {{"z_units", "DEPTH"}});
+    b.id = u"b"_s;
+    b.set(u"lat"_s, 41.0 - 200 * degreesPerMetreNorth);
+    Maneuver c = maneuver(u"Loiter"_s, {{"speed", 1}, {"radius", 10}, {"z", 50}}, {{"z_units", "HEIGHT"}});
+    c.id = u"c"_s;
+    plan.maneuvers = {a, b, c};
+    Transition ba;
+    ba.from = u"b"_s;
+    ba.to = u"a"_s;
+    Transition ac = ba;
+    ac.from = u"a"_s;
+    ac.to = u"c"_s;
+    plan.transitions = {ba, ac};
+    const auto g = planGeometry(plan);
+    ASSERT_EQ(g.maneuvers.size(), 3);
+    EXPECT_EQ(g.maneuvers[0].id, u"b"_s);
+    EXPECT_EQ(g.maneuvers[1].id, u"a"_s);
+    EXPECT_NEAR(g.maneuvers[1].transit, 200, 0.2);
+    EXPECT_FALSE(g.duration); // the loiter never ends
+    EXPECT_EQ(g.maxDepth, 12.0);
+    EXPECT_EQ(g.maxHeight, 50.0);
+    EXPECT_FALSE(g.maxAltitude);
+    plan.transitions.removeLast();
+    plan.maneuvers.removeLast();
+    const auto bounded = planGeometry(plan);
+    ASSERT_TRUE(bounded.duration);
+    EXPECT_NEAR(*bounded.duration, 200, 0.2);
+    EXPECT_NEAR(bounded.length, 200, 0.2);
+}
