@@ -16,8 +16,8 @@ set(NEPTUS_LAYERS
   "neptus-scripting    scripting   neptus-alarms"
   "neptus-transport    transport   neptus-messages"
   "neptus-geo          geo         neptus-core"
-  "neptus-mission      mission     neptus-messages neptus-geo"
-  "neptus-processor    processor   neptus-xml"
+  "neptus-mission-model mission    neptus-messages neptus-geo"
+  "neptus-processor    processor   neptus-mission-model"
   "neptus-models       models      neptus-core"
   "neptus-model-reader models      neptus-models"
   "neptus-simulation   sim         neptus-messages neptus-geo"
@@ -29,6 +29,7 @@ set(NEPTUS_LAYERS
   "neptus-model-import -           neptus-model-reader"
   "neptus-script-host  -           neptus-scripting"
   "neptus-xslt         -           neptus-processor"
+  "neptus-mission      -           neptus-processor"
 )
 
 # neptus_layer(LIBRARY <folder-var> <uses-var> <allowed-var>): the table's

@@ -1,11 +1,12 @@
 #pragma once
 
+#include "xml/XmlElement.h"
+
 #include <QList>
 #include <QMap>
 #include <QString>
 
 #include <optional>
-#include <vector>
 
 namespace neptus::mission {
 
@@ -32,18 +33,10 @@ struct SourceLine
     friend bool operator==(SourceLine, SourceLine) { return true; }
 };
 
-// A message as our files write IMC messages in XML: the element named after
-// the message, one child element per field (nested messages as children).
-// Kept as the generic tree it is; checked against the IMC definitions where
-// it is encoded.
-struct XmlElement
-{
-    QString name;
-    QList<std::pair<QString, QString>> attributes;
-    QString text;
-    std::vector<XmlElement> children; // std::vector: QList cannot compare a type that holds itself
-    friend bool operator==(const XmlElement &, const XmlElement &) = default;
-};
+// IMC messages as our files write them in XML (plan actions): the element
+// named after the message, one child element per field. Checked against the
+// IMC definitions where they are encoded (msg::fromXml).
+using XmlElement = xml::Element;
 
 struct PathPoint
 {

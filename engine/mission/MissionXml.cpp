@@ -7,6 +7,7 @@
 
 #include <QXmlStreamWriter>
 
+#include <map>
 #include <mutex>
 
 namespace neptus::mission {
@@ -14,21 +15,31 @@ namespace neptus::mission {
 using namespace xml;
 using namespace Qt::StringLiterals;
 
-QString missionSchemaPath()
+const std::expected<XmlSchema, XmlError> &shippedSchema(const QString &name)
 {
-    return dataPath(QStringLiteral("schemas/mission.xsd"));
+    static std::mutex mutex;
+    static std::map<QString, std::expected<XmlSchema, XmlError>> schemas;
+    const std::lock_guard lock(mutex);
+    auto found = schemas.find(name);
+    if (found == schemas.end())
+        found = schemas.emplace(name, XmlSchema::load(dataPath(u"schemas/"_s + name))).first;
+    return found->second;
+}
+
+std::expected<XmlDocument, Errors> readValid(QByteArrayView data, const QString &fileName, const QString &schemaName)
+{
+    auto document = XmlDocument::parse(data, fileName);
+    if (!document)
+        return std::unexpected(Errors{document.error()});
+    const auto &schema = shippedSchema(schemaName);
+    if (!schema)
+        return std::unexpected(Errors{schema.error()});
+    if (Errors invalid = schema->validate(*document); !invalid.isEmpty())
+        return std::unexpected(invalid);
+    return std::move(*document);
 }
 
 namespace {
-
-// Compiled once per process; the schema is the program's own file.
-const std::expected<XmlSchema, XmlError> &missionSchema()
-{
-    static std::once_flag once;
-    static std::optional<std::expected<XmlSchema, XmlError>> schema;
-    std::call_once(once, [] { schema = XmlSchema::load(missionSchemaPath()); });
-    return *schema;
-}
 
 // Attributes written first, in this order; the rest follow by name.
 const QStringList &leadingParameters()
@@ -404,30 +415,11 @@ void writeChecklist(QXmlStreamWriter &out, const Checklist &list, bool root)
 
 } // namespace
 
-XmlElement readElement(const xmlNode *node)
-{
-    XmlElement element;
-    element.name = elementName(node);
-    for (const xmlAttr *a = node->properties; a; a = a->next)
-        element.attributes.append({QString::fromUtf8(reinterpret_cast<const char *>(a->name)),
-                                   attribute(node, reinterpret_cast<const char *>(a->name))});
-    for (const xmlNode *child : childElements(node))
-        element.children.push_back(readElement(child));
-    if (element.children.empty())
-        element.text = textContent(node).trimmed();
-    return element;
-}
-
 std::expected<Mission, Errors> readMission(QByteArrayView data, const QString &fileName)
 {
-    auto document = XmlDocument::parse(data, fileName);
+    auto document = readValid(data, fileName, u"mission.xsd"_s);
     if (!document)
-        return std::unexpected(Errors{document.error()});
-    const auto &schema = missionSchema();
-    if (!schema)
-        return std::unexpected(Errors{schema.error()});
-    if (Errors invalid = schema->validate(*document); !invalid.isEmpty())
-        return std::unexpected(invalid);
+        return std::unexpected(document.error());
     Reader reader(*document);
     Mission mission = reader.mission(document->root());
     if (!reader.errors.isEmpty())

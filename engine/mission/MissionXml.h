@@ -2,6 +2,7 @@
 
 #include "mission/Mission.h"
 #include "xml/XmlDocument.h"
+#include "xml/XmlSchema.h"
 
 #include <QByteArray>
 #include <QList>
@@ -30,10 +31,9 @@ QByteArray writeMission(const Mission &mission);
 // Atomic, keeping the previous version as path + ".bak" (core/SafeFile.h).
 std::expected<void, QString> saveMission(const Mission &mission, const QString &path);
 
-// The schema file, beside the program's data (share/neptus-qt/schemas).
-QString missionSchemaPath();
-
-// IMC messages in XML (plan actions) to and from our generic element tree.
-XmlElement readElement(const xmlNode *node);
+// A schema we ship (share/neptus-qt/schemas/<name>), compiled once per process.
+const std::expected<xml::XmlSchema, xml::XmlError> &shippedSchema(const QString &name);
+// Reads `data` and validates it against a shipped schema: the document, or every error.
+std::expected<xml::XmlDocument, Errors> readValid(QByteArrayView data, const QString &fileName, const QString &schema);
 
 } // namespace neptus::mission

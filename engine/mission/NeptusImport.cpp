@@ -77,6 +77,7 @@ public:
 
     std::optional<Mission> mission(const XmlDocument &doc, const FileSource &files);
     std::optional<Map> map(const XmlDocument &doc);
+    std::optional<VehicleDefinition> vehicle(const XmlDocument &doc);
 
 private:
     void warn(const XmlDocument &doc, const xmlNode *node, const QString &what)
@@ -91,7 +92,10 @@ private:
     std::optional<Position> coordinate(const XmlDocument &doc, const xmlNode *node);
     bool point(const XmlDocument &doc, const xmlNode *node, Maneuver &m, bool isElevator);
     void speed(const XmlDocument &doc, const xmlNode *node, Maneuver &m);
-    std::optional<Maneuver> maneuver(const XmlDocument &doc, const xmlNode *node, const QString &id);
+    // A vehicle's feasible maneuvers hold defaults, often with no position:
+    // read them without one.
+    std::optional<Maneuver> maneuver(const XmlDocument &doc, const xmlNode *node, const QString &id,
+                                     bool positionOptional = false);
     std::optional<Plan> plan(const XmlDocument &doc, const xmlNode *node);
     std::optional<Feature> feature(const XmlDocument &doc, const xmlNode *node);
 };
@@ -258,7 +262,8 @@ const QStringList &timedTypes()
     return names;
 }
 
-std::optional<Maneuver> Importer::maneuver(const XmlDocument &doc, const xmlNode *node, const QString &id)
+std::optional<Maneuver> Importer::maneuver(const XmlDocument &doc, const xmlNode *node, const QString &id,
+                                           bool positionOptional)
 {
     const xmlNode *body = nullptr;
     std::optional<double> maxTime;
@@ -279,7 +284,11 @@ std::optional<Maneuver> Importer::maneuver(const XmlDocument &doc, const xmlNode
     Maneuver m;
     m.id = validId(id);
     m.line.value = static_cast<int>(xmlGetLineNo(body));
-    m.type = elementName(body) == u"RowsManeuver" ? u"Rows"_s : elementName(body);
+    m.type = elementName(body);
+    if (m.type == u"RowsManeuver")
+        m.type = u"Rows"_s;
+    else if (m.type == u"ExpandingSquarePattern")
+        m.type = u"ExpandingSquare"_s;
     if (!known.contains(m.type)) {
         warn(doc, body, u"maneuver type '%1' has no counterpart here; maneuver '%2' left out"_s.arg(m.type, id));
         return std::nullopt;
@@ -290,18 +299,26 @@ std::optional<Maneuver> Importer::maneuver(const XmlDocument &doc, const xmlNode
         const QString name = elementName(c);
         const QString text = textContent(c).trimmed();
         if (name == u"finalPoint" || name == u"basePoint") {
-            if (!point(doc, c, m, elevator))
+            if (positionOptional) {
+                // Only the z units matter as a default.
+                const QString units = textContent(firstChildElement(firstChildElement(c, "point"), "zunits")).trimmed().toUpper();
+                if (!units.isEmpty())
+                    m.parameters.insert(elevator ? u"end_z_units"_s : u"z_units"_s, units);
+            } else if (!point(doc, c, m, elevator)) {
                 return std::nullopt;
+            }
         } else if (name == u"speed" || name == u"velocity") {
-            speed(doc, c, m);
+            if (m.type != u"ScheduledGoto") // IMC's ScheduledGoto has no speed: it has an arrival time
+                speed(doc, c, m);
         } else if (name == u"duration" || name == u"amplitude" || name == u"radius" || name == u"width"
                    || name == u"length" || name == u"hstep" || name == u"bearing") {
             if (const auto v = number(doc, c))
                 m.set(name, *v);
         } else if (name == u"pitch") {
             // YoYo's pitch is in radians in Neptus files, CompassCalibration's in degrees.
+            // (Neptus wrote radians rounded to 8 digits: 0.17453292 is 10°, not 9.9999997°.)
             if (const auto v = number(doc, c); v && m.type == u"YoYo")
-                m.set(name, geo::degrees(*v));
+                m.set(name, std::round(geo::degrees(*v) * 1e6) / 1e6);
             else if (v && m.type == u"CompassCalibration")
                 m.set(name, *v);
         } else if (name == u"direction") {
@@ -359,6 +376,15 @@ std::optional<Maneuver> Importer::maneuver(const XmlDocument &doc, const xmlNode
                 m.set(u"start_z"_s, *v);
         } else if (name == u"startZUnits" && elevator) {
             m.parameters.insert(u"start_z_units"_s, text.toUpper());
+        } else if (name == u"takeoffPitch" || name == u"glideSlope" || name == u"glideSlopeAltitude" || name == u"abortZ"
+                   || name == u"TravelZ") {
+            static const QHash<QString, QString> fields{{u"takeoffPitch"_s, u"takeoff_pitch"_s}, {u"glideSlope"_s, u"glide_slope"_s},
+                                                        {u"glideSlopeAltitude"_s, u"glide_slope_alt"_s}, {u"abortZ"_s, u"abort_z"_s},
+                                                        {u"TravelZ"_s, u"travel_z"_s}};
+            if (const auto v = number(doc, c))
+                m.set(fields.value(name), *v);
+        } else if (name == u"TravelUnits" || name == u"DelayedBehavior") {
+            m.parameters.insert(name == u"TravelUnits" ? u"travel_z_units"_s : u"delayed"_s, text.toUpper());
         } else if (name == u"keepSafe") {
             if (isTrue(text))
                 warn(doc, c, u"keep-safe station keeping (IMC StationKeepingExtended) is not supported; "
@@ -551,6 +577,171 @@ std::optional<Feature> Importer::feature(const XmlDocument &doc, const xmlNode *
         return std::nullopt;
     }
     return f;
+}
+
+QString unitOf(const QString &parameter, const Maneuver &m)
+{
+    static const QHash<QString, QString> units{
+        {u"duration"_s, u"s"_s}, {u"timeout"_s, u"s"_s}, {u"radius"_s, u"m"_s}, {u"length"_s, u"m"_s},
+        {u"width"_s, u"m"_s}, {u"hstep"_s, u"m"_s}, {u"amplitude"_s, u"m"_s}, {u"z"_s, u"m"_s},
+        {u"start_z"_s, u"m"_s}, {u"end_z"_s, u"m"_s}, {u"coff"_s, u"m"_s}, {u"bearing"_s, u"deg"_s},
+        {u"pitch"_s, u"deg"_s}, {u"cross_angle"_s, u"deg"_s}, {u"alternation"_s, u"%"_s},
+        {u"takeoff_pitch"_s, u"deg"_s}, {u"glide_slope"_s, u"%"_s}, {u"glide_slope_alt"_s, u"m"_s},
+        {u"abort_z"_s, u"m"_s}, {u"travel_z"_s, u"m"_s}};
+    if (parameter == u"speed") {
+        const QString speedUnits = m.text(u"speed_units"_s, u"METERS_PS"_s);
+        return speedUnits == u"RPM" ? u"rpm"_s : speedUnits == u"PERCENTAGE" ? u"%"_s : u"m/s"_s;
+    }
+    return units.value(parameter);
+}
+
+// IMC's names for the enumerated and bitfield parameters (mission.xsd has the same lists).
+const QHash<QString, QStringList> &enumValues()
+{
+    static const QHash<QString, QStringList> values{
+        {u"type"_s, {u"DEFAULT"_s, u"CIRCULAR"_s, u"RACETRACK"_s, u"EIGHT"_s, u"HOVER"_s}},
+        {u"direction"_s, {u"VDEP"_s, u"CLOCKW"_s, u"CCLOCKW"_s, u"IWINDCURR"_s}},
+        {u"delayed"_s, {u"RESUME"_s, u"SKIP"_s, u"FAIL"_s}}};
+    return values;
+}
+
+const QHash<QString, QStringList> &flagValues()
+{
+    static const QHash<QString, QStringList> values{
+        {u"PopUp"_s, {u"CURR_POS"_s, u"WAIT_AT_SURFACE"_s, u"STATION_KEEP"_s}},
+        {u"Rows"_s, {u"SQUARE_CURVE"_s, u"CURVE_RIGHT"_s}},
+        {u"Elevator"_s, {u"CURR_POS"_s}}};
+    return values;
+}
+
+std::optional<VehicleDefinition> Importer::vehicle(const XmlDocument &doc)
+{
+    const xmlNode *root = doc.root();
+    if (elementName(root) != u"system") {
+        errors.append(doc.errorAt(root, u"Element '%1': a Neptus vehicle (.nvcl) starts with <system>"_s.arg(elementName(root))));
+        return std::nullopt;
+    }
+    VehicleDefinition v;
+    const xmlNode *properties = firstChildElement(root, "properties");
+    v.id = validId(textContent(firstChildElement(properties, "id")).trimmed());
+    v.name = textContent(firstChildElement(properties, "name")).trimmed();
+    static const QHash<QString, QString> kinds{{u"AUV"_s, u"UUV"_s}, {u"UUV"_s, u"UUV"_s}, {u"ASV"_s, u"USV"_s},
+                                               {u"USV"_s, u"USV"_s}, {u"UAV"_s, u"UAV"_s}, {u"ROV"_s, u"ROV"_s},
+                                               {u"UGV"_s, u"UGV"_s}};
+    const QString type = textContent(firstChildElement(properties, "type")).trimmed().toUpper();
+    v.kind = kinds.value(type);
+    if (v.kind.isEmpty()) {
+        warn(doc, firstChildElement(properties, "type"), u"vehicle type '%1' unknown; taken as a sensor node"_s.arg(type));
+        v.kind = u"sensor"_s;
+    }
+    if (v.id.isEmpty()) {
+        errors.append(doc.errorAt(root, u"Element 'system': has no properties/id"_s));
+        return std::nullopt;
+    }
+    for (const xmlNode *c : childElements(properties)) {
+        const QString name = elementName(c);
+        if (name == u"limits") {
+            for (const xmlNode *l : childElements(c)) {
+                const QString ln = elementName(l);
+                if (ln == u"valid-zunits") {
+                    for (const QString &u : textContent(l).split(u',', Qt::SkipEmptyParts))
+                        v.limits.zUnits << u.trimmed().toUpper();
+                } else if (ln == u"min-speed" || ln == u"max-speed" || ln == u"max-duration-hours" || ln == u"max-depth") {
+                    const auto value = number(doc, l);
+                    if (ln == u"min-speed") v.limits.minSpeed = value;
+                    else if (ln == u"max-speed") v.limits.maxSpeed = value;
+                    else if (ln == u"max-depth") v.limits.maxDepth = value;
+                    else if (value) v.limits.endurance = *value * 3600;
+                } else {
+                    notUnderstood(doc, l);
+                }
+            }
+        } else if (name == u"appearance") {
+            // The 2D images and sizes are Neptus's drawing; the 3D model is kept as named.
+            v.model = textContent(firstChildElement(c, "model-3D")).trimmed();
+        } else if (name != u"id" && name != u"name" && name != u"type" && name != u"model"
+                   && name != u"coordinate-system-label") {
+            notUnderstood(doc, c);
+        }
+    }
+    for (const xmlNode *c : childElements(root)) {
+        const QString name = elementName(c);
+        if (name == u"feasibleManeuvers") {
+            for (const xmlNode *node : childElements(c, "maneuver")) {
+                auto m = maneuver(doc, node, u"default"_s, true);
+                if (!m) {
+                    if (!errors.isEmpty())
+                        return std::nullopt;
+                    continue;
+                }
+                ManeuverSpec spec{m->type, {}};
+                for (auto it = m->parameters.cbegin(); it != m->parameters.cend(); ++it) {
+                    ParameterSpec p;
+                    p.name = it.key();
+                    p.defaultValue = it.value();
+                    p.unit = unitOf(p.name, *m);
+                    if (p.name.endsWith(u"units"_s)) {
+                        p.type = u"enum"_s;
+                        p.values = p.name == u"speed_units"
+                            ? QStringList{u"METERS_PS"_s, u"RPM"_s, u"PERCENTAGE"_s}
+                            : (v.limits.zUnits.isEmpty() ? QStringList{u"DEPTH"_s, u"ALTITUDE"_s, u"HEIGHT"_s} : v.limits.zUnits);
+                    } else if (enumValues().contains(p.name)) {
+                        p.type = u"enum"_s;
+                        p.values = enumValues().value(p.name);
+                    } else if (p.name == u"flags") {
+                        p.type = u"flags"_s;
+                        p.values = flagValues().value(m->type);
+                    } else {
+                        p.type = u"number"_s;
+                    }
+                    if (p.type == u"enum" && !p.defaultValue.isEmpty() && !p.values.contains(p.defaultValue))
+                        p.values.prepend(p.defaultValue);
+                    if (p.name == u"speed" && m->text(u"speed_units"_s, u"METERS_PS"_s) == u"METERS_PS") {
+                        p.min = v.limits.minSpeed;
+                        p.max = v.limits.maxSpeed;
+                    }
+                    spec.parameters.append(p);
+                }
+                if (v.maneuver(spec.type))
+                    warn(doc, node, u"%1 listed twice; the first kept"_s.arg(spec.type));
+                else
+                    v.maneuvers.append(spec);
+            }
+        } else if (name == u"communication-means") {
+            for (const xmlNode *mean : childElements(c, "comm-mean")) {
+                const xmlNode *imc = firstChildElement(firstChildElement(mean, "protocols-args"), "imc");
+                if (!imc) {
+                    warn(doc, mean, u"only IMC links are imported; left out"_s);
+                    continue;
+                }
+                const QString idText = textContent(firstChildElement(imc, "imc-id")).trimmed().remove(u':');
+                bool ok = false;
+                const uint id = idText.toUInt(&ok, 16);
+                if (ok && id <= 0xFFFF)
+                    v.imcId = static_cast<quint16>(id);
+                else
+                    warn(doc, imc, u"imc-id '%1' is not an IMC id; left out"_s.arg(idText));
+                VehicleLink link;
+                link.protocol = u"imc-udp"_s;
+                link.host = textContent(firstChildElement(mean, "host-address")).trimmed();
+                link.port = textContent(firstChildElement(imc, "port")).trimmed().toInt();
+                v.links.append(link);
+            }
+        } else if (name == u"consoles") {
+            for (const xmlNode *console : childElements(c))
+                warn(doc, console, u"Neptus consoles (.ncon) are not ours; left out"_s);
+        } else if (name == u"protocols-supported") {
+            if (!textContent(firstChildElement(c, "protocols")).trimmed().isEmpty())
+                warn(doc, c, u"GSM and Iridium links are not imported; left out"_s);
+        } else if (name != u"properties") {
+            notUnderstood(doc, c);
+        }
+    }
+    v.translations = {
+        Translation{u"imc"_s, u"IMC PlanSpecification"_s, u"imc-plan.xsl"_s, u"imc.xml"_s, {}},
+        Translation{u"sheet"_s, u"Mission sheet (HTML)"_s, u"mission-sheet.xsl"_s, u"html"_s, {}},
+    };
+    return v;
 }
 
 std::optional<Map> Importer::map(const XmlDocument &doc)
@@ -780,6 +971,32 @@ std::expected<NeptusImport, Errors> importNeptus(QByteArrayView data, const QStr
         return files->value(path);
     };
     return importDocument(files->value(missionName), fileName + u'/' + missionName, source);
+}
+
+std::expected<NeptusVehicleImport, Errors> importNeptusVehicle(QByteArrayView data, const QString &fileName)
+{
+    auto doc = XmlDocument::parse(data, fileName);
+    if (!doc)
+        return std::unexpected(Errors{doc.error()});
+    Importer importer;
+    auto vehicle = importer.vehicle(*doc);
+    if (!vehicle || !importer.errors.isEmpty())
+        return std::unexpected(importer.errors.isEmpty() ? Errors{XmlError{fileName, 0, 0, u"not imported"_s}} : importer.errors);
+    // What we made must be a valid definition of ours.
+    const auto check = readVehicle(writeVehicle(*vehicle), fileName + u" (imported)"_s);
+    if (!check)
+        return std::unexpected(check.error());
+    VehicleDefinition result = *check;
+    result.fileName.clear();
+    return NeptusVehicleImport{result, importer.warnings};
+}
+
+std::expected<NeptusVehicleImport, Errors> importNeptusVehicle(const QString &path)
+{
+    const auto data = readFileMaybeGzip(path, XmlDocument::maxBytes);
+    if (!data)
+        return std::unexpected(Errors{XmlError{path, 0, 0, QString(data.error()).remove(path + u": "_s)}});
+    return importNeptusVehicle(*data, path);
 }
 
 std::expected<NeptusImport, Errors> importNeptus(const QString &path)

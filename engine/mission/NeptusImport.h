@@ -1,6 +1,7 @@
 #pragma once
 
 #include "mission/MissionXml.h"
+#include "mission/Vehicle.h"
 
 #include <QString>
 
@@ -25,11 +26,23 @@ struct NeptusImport
     Errors warnings;
 };
 
-// By extension: .nmisz, .nmis or .nmap.
+// By extension: .nmisz, .nmis or .nmap (.nvcl: importNeptusVehicle).
 std::expected<NeptusImport, Errors> importNeptus(const QString &path);
 // The same from bytes (`fileName` names the input in messages and says
 // which format it is); a .nmis read so finds no maps.
 std::expected<NeptusImport, Errors> importNeptus(QByteArrayView data, const QString &fileName);
+
+// A Neptus vehicle definition (.nvcl): id, name, kind, IMC id and address,
+// limits, and its feasible maneuvers with their defaults, as a definition
+// of ours offering the IMC translation and the mission sheet. Maneuver types
+// with no counterpart here are warnings.
+struct NeptusVehicleImport
+{
+    VehicleDefinition vehicle;
+    Errors warnings;
+};
+std::expected<NeptusVehicleImport, Errors> importNeptusVehicle(QByteArrayView data, const QString &fileName);
+std::expected<NeptusVehicleImport, Errors> importNeptusVehicle(const QString &path);
 
 // Neptus's latitude or longitude text, in decimal degrees (south and west
 // negative); empty when it is neither form.

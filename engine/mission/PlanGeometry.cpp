@@ -17,14 +17,18 @@ constexpr int circleSegments = 36;
 struct Local
 {
     Local(const Maneuver &m, double z, QString units)
-        : origin{geo::radians(m.number(u"lat"_s)), geo::radians(m.number(u"lon"_s)), 0}, z(z), units(std::move(units)) {}
+        : lat(m.number(u"lat"_s)), lon(m.number(u"lon"_s)), origin{geo::radians(lat), geo::radians(lon), 0}, z(z),
+          units(std::move(units)) {}
 
     Waypoint at(double north, double east, double down = 0) const
     {
+        if (north == 0 && east == 0) // the position as written, not as it comes back from the ellipsoid
+            return Waypoint{lat, lon, z + down, units};
         const geo::Geodetic p = geo::fromNed(Eigen::Vector3d(north, east, 0), origin);
         return Waypoint{geo::degrees(p.lat), geo::degrees(p.lon), z + down, units};
     }
 
+    double lat, lon;
     geo::Geodetic origin;
     double z;
     QString units;
@@ -83,27 +87,6 @@ void rows(QList<Waypoint> &points, const Local &local, const Maneuver &m)
     }
 }
 
-// Square spiral out from the position: legs of hstep, hstep, 2·hstep,
-// 2·hstep, … turning right, until a side reaches `width`.
-void expandingSquare(QList<Waypoint> &points, const Local &local, const Maneuver &m)
-{
-    const double bearing = geo::radians(m.number(u"bearing"_s));
-    const double hstep = m.number(u"hstep"_s);
-    const double width = m.number(u"width"_s);
-    Eigen::Vector2d at(0, 0);
-    points.append(local.at(0, 0));
-    if (hstep <= 0)
-        return;
-    for (int leg = 0; leg < 10000; ++leg) {
-        const double legLength = hstep * (leg / 2 + 1);
-        if (legLength > width + 1e-9)
-            break;
-        const double heading = bearing + leg * (std::numbers::pi / 2);
-        at += Eigen::Vector2d(std::cos(heading), std::sin(heading)) * legLength;
-        points.append(local.at(at.x(), at.y()));
-    }
-}
-
 double pathLength(const QList<Waypoint> &points)
 {
     double total = 0;
@@ -113,6 +96,30 @@ double pathLength(const QList<Waypoint> &points)
 }
 
 } // namespace
+
+QList<PathPoint> expandingSquareOffsets(const Maneuver &m)
+{
+    const double bearing = geo::radians(m.number(u"bearing"_s));
+    const double hstep = m.number(u"hstep"_s);
+    const double width = m.number(u"width"_s);
+    QList<PathPoint> points{PathPoint{}};
+    if (hstep <= 0)
+        return points;
+    double north = 0, east = 0;
+    for (int leg = 0; leg < 10000; ++leg) {
+        const double legLength = hstep * (leg / 2 + 1);
+        if (legLength > width + 1e-9)
+            break;
+        const double heading = bearing + leg * (std::numbers::pi / 2);
+        north += std::cos(heading) * legLength;
+        east += std::sin(heading) * legLength;
+        PathPoint p;
+        p.x = north;
+        p.y = east;
+        points.append(p);
+    }
+    return points;
+}
 
 double distance(const Waypoint &a, const Waypoint &b)
 {
@@ -140,10 +147,8 @@ ManeuverGeometry maneuverGeometry(const Maneuver &m, const Waypoint *previous, c
 
     if (m.type == u"Rows") {
         rows(g.points, local, m);
-    } else if (m.type == u"ExpandingSquare") {
-        expandingSquare(g.points, local, m);
-    } else if (m.type == u"FollowPath" || m.type == u"FollowTrajectory") {
-        for (const PathPoint &p : m.points)
+    } else if (m.type == u"FollowPath" || m.type == u"FollowTrajectory" || m.type == u"ExpandingSquare") {
+        for (const PathPoint &p : m.type == u"ExpandingSquare" ? expandingSquareOffsets(m) : m.points)
             g.points.append(local.at(p.x, p.y, p.z));
         if (g.points.isEmpty())
             g.points.append(local.at(0, 0));

@@ -65,6 +65,12 @@ ManeuverGeometry maneuverGeometry(const Maneuver &maneuver, const Waypoint *prev
                                   const SpeedModel &speeds = {});
 PlanGeometry planGeometry(const Plan &plan, const SpeedModel &speeds = {});
 
+// ExpandingSquare's corners, metres north (x) and east (y) of its position:
+// legs of hstep, hstep, 2·hstep, 2·hstep, … turning right from `bearing`,
+// until a leg would pass `width`. The IMC translation sends them as a
+// FollowPath.
+QList<PathPoint> expandingSquareOffsets(const Maneuver &maneuver);
+
 // Great-circle distance in metres (WGS84 geodesic).
 double distance(const Waypoint &a, const Waypoint &b);
 

@@ -1,0 +1,254 @@
+// neptus-mission: missions from the command line. Validates our mission and
+// vehicle files, imports LSTS Neptus's, translates a plan into a vehicle's own
+// format with the stylesheets its definition names, lists the targets a
+// vehicle offers, and prints what each plan implies. docs/missions.md.
+#include "core/SafeFile.h"
+#include "mission/NeptusImport.h"
+#include "mission/PlanGeometry.h"
+#include "mission/Vehicle.h"
+#include "processor/MissionTranslator.h"
+
+#include <QCommandLineParser>
+#include <QCoreApplication>
+#include <QFileInfo>
+#include <QTextStream>
+
+#include <cstdio>
+
+using namespace neptus;
+using namespace neptus::mission;
+using namespace Qt::StringLiterals;
+
+namespace {
+
+constexpr int usageError = 2;
+
+int fail(const QString &message)
+{
+    std::fprintf(stderr, "neptus-mission: %s\n", qPrintable(message));
+    return 1;
+}
+
+int failAll(const Errors &errors)
+{
+    for (const auto &e : errors)
+        std::fprintf(stderr, "%s\n", qPrintable(e.toString()));
+    return 1;
+}
+
+void warnAll(const Errors &warnings)
+{
+    for (const auto &w : warnings)
+        std::fprintf(stderr, "warning: %s\n", qPrintable(w.toString()));
+}
+
+QString duration(const std::optional<double> &seconds)
+{
+    if (!seconds)
+        return u"open-ended"_s;
+    const qint64 s = qRound64(*seconds);
+    return u"%1:%2:%3"_s.arg(s / 3600).arg(s / 60 % 60, 2, 10, QChar(u'0')).arg(s % 60, 2, 10, QChar(u'0'));
+}
+
+bool isVehicleFile(const QString &path)
+{
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly))
+        return false;
+    const QByteArray head = file.read(4096);
+    const qsizetype root = head.indexOf("<vehicle");
+    return root >= 0 && head.indexOf("<mission") < 0;
+}
+
+int validate(const QStringList &files, const VehicleCatalog &vehicles)
+{
+    int failures = 0;
+    for (const QString &path : files) {
+        if (isVehicleFile(path)) {
+            const auto v = loadVehicle(path);
+            if (!v) {
+                failAll(v.error());
+                ++failures;
+                continue;
+            }
+            std::printf("%s: valid vehicle %s (%s), %lld maneuvers, %lld translations\n", qPrintable(path), qPrintable(v->id),
+                        qPrintable(v->kind), static_cast<long long>(v->maneuvers.size()), static_cast<long long>(v->translations.size()));
+            continue;
+        }
+        const auto m = loadMission(path);
+        if (!m) {
+            failAll(m.error());
+            ++failures;
+            continue;
+        }
+        Errors problems;
+        qsizetype maneuvers = 0;
+        for (const Plan &plan : m->plans) {
+            maneuvers += plan.maneuvers.size();
+            if (const VehicleDefinition *v = vehicles.find(plan.vehicle))
+                problems += v->check(plan, path);
+            else
+                std::fprintf(stderr, "%s: note: no definition of vehicle '%s'; plan '%s' is checked against the schema only\n",
+                             qPrintable(path), qPrintable(plan.vehicle), qPrintable(plan.id));
+        }
+        if (!problems.isEmpty()) {
+            failAll(problems);
+            ++failures;
+            continue;
+        }
+        std::printf("%s: valid mission %s: %lld plans, %lld maneuvers, %lld maps, %lld checklists\n", qPrintable(path),
+                    qPrintable(m->id), static_cast<long long>(m->plans.size()), static_cast<long long>(maneuvers),
+                    static_cast<long long>(m->maps.size()), static_cast<long long>(m->checklists.size()));
+    }
+    return failures ? 1 : 0;
+}
+
+int import(const QString &path, const QString &output)
+{
+    if (output.isEmpty())
+        return fail(u"import: say where to write with -o FILE"_s);
+    QByteArray bytes;
+    QString summary;
+    if (path.endsWith(u".nvcl"_s, Qt::CaseInsensitive)) {
+        const auto imported = importNeptusVehicle(path);
+        if (!imported)
+            return failAll(imported.error());
+        warnAll(imported->warnings);
+        bytes = writeVehicle(imported->vehicle);
+        summary = u"vehicle %1 (%2), %3 maneuvers"_s.arg(imported->vehicle.id, imported->vehicle.kind).arg(imported->vehicle.maneuvers.size());
+    } else {
+        const auto imported = importNeptus(path);
+        if (!imported)
+            return failAll(imported.error());
+        warnAll(imported->warnings);
+        bytes = writeMission(imported->mission);
+        qsizetype maneuvers = 0, features = 0;
+        for (const Plan &p : imported->mission.plans)
+            maneuvers += p.maneuvers.size();
+        for (const Map &m : imported->mission.maps)
+            features += m.features.size();
+        summary = u"mission %1: %2 plans, %3 maneuvers, %4 map features, %5 warnings"_s.arg(imported->mission.id)
+                      .arg(imported->mission.plans.size()).arg(maneuvers).arg(features).arg(imported->warnings.size());
+    }
+    if (auto saved = saveFileKeepingPrevious(output, bytes); !saved)
+        return fail(saved.error());
+    std::printf("%s → %s: %s\n", qPrintable(path), qPrintable(output), qPrintable(summary));
+    return 0;
+}
+
+int translate(const QString &path, const QString &planId, const QString &vehicleId, const QString &target,
+              const QString &output, const VehicleCatalog &vehicles)
+{
+    if (planId.isEmpty() || target.isEmpty() || output.isEmpty())
+        return fail(u"translate: needs --plan ID, --to TARGET and -o FILE"_s);
+    const auto m = loadMission(path);
+    if (!m)
+        return failAll(m.error());
+    const Plan *plan = m->plan(planId);
+    if (!plan) {
+        QStringList ids;
+        for (const Plan &p : m->plans)
+            ids << p.id;
+        return fail(u"%1 has no plan '%2' (it has: %3)"_s.arg(path, planId, ids.join(u", "_s)));
+    }
+    const QString id = vehicleId.isEmpty() ? plan->vehicle : vehicleId;
+    const VehicleDefinition *vehicle = vehicles.find(id);
+    if (!vehicle)
+        return fail(u"no definition of vehicle '%1' (in %2)"_s.arg(id, vehicleFolders().join(u", "_s)));
+    if (const Errors problems = vehicle->check(*plan, path); !problems.isEmpty())
+        return failAll(problems);
+    const auto bytes = processor::translatePlan(*m, planId, *vehicle, target);
+    if (!bytes)
+        return failAll(bytes.error());
+    if (auto saved = saveFileKeepingPrevious(output, *bytes); !saved)
+        return fail(saved.error());
+    std::printf("%s: plan %s for %s → %s (%s, %lld bytes)\n", qPrintable(path), qPrintable(planId), qPrintable(id),
+                qPrintable(output), qPrintable(vehicle->translation(target)->name), static_cast<long long>(bytes->size()));
+    return 0;
+}
+
+int targets(const QString &vehicleId, const VehicleCatalog &vehicles)
+{
+    const VehicleDefinition *vehicle = vehicles.find(vehicleId);
+    if (!vehicle) {
+        QStringList ids;
+        for (const VehicleDefinition &v : vehicles.vehicles)
+            ids << v.id;
+        return fail(u"no definition of vehicle '%1' (known: %2)"_s.arg(vehicleId, ids.join(u", "_s)));
+    }
+    QTextStream out(stdout);
+    for (const Translation &t : vehicle->translations) {
+        const QString path = vehicle->stylesheetPath(t);
+        out << qSetFieldWidth(10) << Qt::left << t.target << qSetFieldWidth(0) << "  " << qSetFieldWidth(26) << t.name
+            << qSetFieldWidth(0) << "  ." << t.extension << "  " << path << (QFileInfo::exists(path) ? "" : "  (missing)") << "\n";
+    }
+    return 0;
+}
+
+int stats(const QString &path, const VehicleCatalog &vehicles)
+{
+    const auto m = loadMission(path);
+    if (!m)
+        return failAll(m.error());
+    QTextStream out(stdout);
+    out << m->id << ": " << m->plans.size() << " plans\n";
+    out << "plan                 vehicle              maneuvers  length m   duration    max depth  max alt.  max height\n";
+    for (const Plan &plan : m->plans) {
+        const VehicleDefinition *v = vehicles.find(plan.vehicle);
+        const PlanGeometry g = planGeometry(plan, v ? v->speeds() : SpeedModel{});
+        const auto metres = [](const std::optional<double> &value) { return value ? QString::number(*value, 'f', 1) : u"-"_s; };
+        out << qSetFieldWidth(21) << Qt::left << plan.id << plan.vehicle << qSetFieldWidth(11) << plan.maneuvers.size()
+            << QString::number(g.length, 'f', 0) << qSetFieldWidth(12) << duration(g.duration) << qSetFieldWidth(11)
+            << metres(g.maxDepth) << qSetFieldWidth(10) << metres(g.maxAltitude) << qSetFieldWidth(0) << metres(g.maxHeight) << "\n";
+    }
+    return 0;
+}
+
+} // namespace
+
+int main(int argc, char **argv)
+{
+    QCoreApplication app(argc, argv);
+    QCoreApplication::setApplicationName(u"neptus-mission"_s);
+    QCommandLineParser parser;
+    parser.setApplicationDescription(uR"(Missions from the command line:
+  validate FILE...                     check missions and vehicle definitions (schema, then each plan against its vehicle)
+  import FILE -o OUT                   LSTS Neptus .nmisz/.nmis/.nmap → our mission, .nvcl → our vehicle definition
+  translate MISSION --plan ID --to TARGET -o FILE [--vehicle NAME]
+                                       a plan in a vehicle's own format
+  targets --vehicle NAME               the translations a vehicle offers
+  stats MISSION                        per plan: maneuvers, length, duration, max depth/altitude/height)"_s);
+    parser.addHelpOption();
+    const QCommandLineOption output({u"o"_s, u"output"_s}, u"File to write."_s, u"file"_s);
+    const QCommandLineOption plan(u"plan"_s, u"Plan id."_s, u"id"_s);
+    const QCommandLineOption vehicle(u"vehicle"_s, u"Vehicle id (default: the plan's)."_s, u"name"_s);
+    const QCommandLineOption to(u"to"_s, u"Target format (see targets)."_s, u"target"_s);
+    const QCommandLineOption vehiclesDir(u"vehicles"_s, u"Also read vehicle definitions from this folder (repeatable; after the shipped and the user's)."_s, u"folder"_s);
+    parser.addOptions({output, plan, vehicle, to, vehiclesDir});
+    parser.addPositionalArgument(u"command"_s, u"validate, import, translate, targets or stats"_s);
+    parser.process(app);
+
+    const QStringList args = parser.positionalArguments();
+    if (args.isEmpty()) {
+        std::fprintf(stderr, "%s", qPrintable(parser.helpText()));
+        return usageError;
+    }
+    const QString command = args.first();
+    const QStringList rest = args.mid(1);
+    const VehicleCatalog vehicles = loadVehicles(vehicleFolders() + parser.values(vehiclesDir));
+    for (const auto &e : vehicles.errors)
+        std::fprintf(stderr, "warning: vehicle definition not loaded: %s\n", qPrintable(e.toString()));
+
+    if (command == u"validate" && !rest.isEmpty())
+        return validate(rest, vehicles);
+    if (command == u"import" && rest.size() == 1)
+        return import(rest.first(), parser.value(output));
+    if (command == u"translate" && rest.size() == 1)
+        return translate(rest.first(), parser.value(plan), parser.value(vehicle), parser.value(to), parser.value(output), vehicles);
+    if (command == u"targets" && rest.isEmpty() && parser.isSet(vehicle))
+        return targets(parser.value(vehicle), vehicles);
+    if (command == u"stats" && rest.size() == 1)
+        return stats(rest.first(), vehicles);
+    std::fprintf(stderr, "neptus-mission: '%s' is not a command this way; see --help\n", qPrintable(args.join(u' ')));
+    return usageError;
+}

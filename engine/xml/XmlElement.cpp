@@ -1,0 +1,39 @@
+#include "xml/XmlElement.h"
+
+#include "xml/XmlDocument.h"
+
+namespace neptus::xml {
+
+QString Element::attribute(const QString &name) const
+{
+    for (const auto &[key, value] : attributes) {
+        if (key == name)
+            return value;
+    }
+    return {};
+}
+
+const Element *Element::child(const QString &name) const
+{
+    for (const Element &c : children) {
+        if (c.name == name)
+            return &c;
+    }
+    return nullptr;
+}
+
+Element readElement(const xmlNode *node)
+{
+    Element element;
+    element.name = elementName(node);
+    for (const xmlAttr *a = node->properties; a; a = a->next)
+        element.attributes.append({QString::fromUtf8(reinterpret_cast<const char *>(a->name)),
+                                   xml::attribute(node, reinterpret_cast<const char *>(a->name))});
+    for (const xmlNode *child : childElements(node))
+        element.children.push_back(readElement(child));
+    if (element.children.empty())
+        element.text = textContent(node).trimmed();
+    return element;
+}
+
+} // namespace neptus::xml
