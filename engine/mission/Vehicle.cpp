@@ -85,9 +85,13 @@ Errors VehicleDefinition::check(const Plan &plan, const QString &planFile) const
             if (!p)
                 continue; // the schema has checked the field exists; the vehicle sets no bounds on it
             if (p->type == u"number" || p->type == u"integer") {
-                const double value = it.value().toDouble();
+                double value = it.value().toDouble();
+                // A speed range is in m/s; a speed planned in RPM or % is compared in m/s too.
+                const QString speedUnits = m.text(u"speed_units"_s, u"METERS_PS"_s);
+                if (it.key() == u"speed" && p->unit == u"m/s" && speedUnits != u"METERS_PS")
+                    value = speedUnits == u"RPM" ? value * speeds().metresPerSecondPerRpm : value / 100 * speeds().maxSpeed;
                 if ((p->min && value < *p->min) || (p->max && value > *p->max))
-                    fail(m, u"%1 = %2 %3 is outside %4's range [%5, %6]"_s.arg(it.key(), it.value(), p->unit, id,
+                    fail(m, u"%1 = %2 %3 is outside %4's range [%5, %6]"_s.arg(it.key(), formatNumber(value), p->unit, id,
                             p->min ? formatNumber(*p->min) : u"…"_s, p->max ? formatNumber(*p->max) : u"…"_s));
             } else if (p->type == u"enum" && !p->values.isEmpty() && !p->values.contains(it.value())) {
                 fail(m, u"%1 = %2 is not one %3 takes (%4)"_s.arg(it.key(), it.value(), id, p->values.join(u", "_s)));

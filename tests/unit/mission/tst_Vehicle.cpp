@@ -119,6 +119,11 @@ TEST(Vehicle, ChecksWhatAPlanAsksOfIt)
     EXPECT_TRUE(text.contains(u"depth 80 m is past test-auv's 50 m"_s));
     EXPECT_TRUE(text.contains(u"z_units = HEIGHT is not one test-auv takes (DEPTH, ALTITUDE)"_s));
     EXPECT_TRUE(text.contains(u"m.xml:12: plan 'p', maneuver 'r' (Rows): test-auv cannot do Rows (it can: Goto, Loiter)"_s)) << text.toStdString();
+    // A speed range in m/s holds for speeds planned in RPM too (rpm-per-mps 1000).
+    EXPECT_TRUE(v->check(planWith({goTo(u"a"_s, {{"speed", "1500"}, {"speed_units", "RPM"}})}), u"m.xml"_s).isEmpty());
+    const Errors rpm = v->check(planWith({goTo(u"a"_s, {{"speed", "3000"}, {"speed_units", "RPM"}})}), u"m.xml"_s);
+    ASSERT_EQ(rpm.size(), 1);
+    EXPECT_TRUE(rpm[0].message.contains(u"speed = 3 m/s is outside"_s)) << rpm[0].toString().toStdString();
     // Endurance: 1 h; a 10 km transit at 1 m/s takes 2.8 h.
     const Errors tooLong = v->check(planWith({goTo(u"a"_s, {{"speed", "1"}}), goTo(u"b"_s, {{"speed", "1"}, {"lat", "41.09"}})}), u"m.xml"_s);
     ASSERT_EQ(tooLong.size(), 1);

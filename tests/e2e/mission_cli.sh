@@ -1,0 +1,86 @@
+#!/usr/bin/env bash
+# neptus-mission as a mission planner uses it: import each LSTS Neptus fixture,
+# validate it against the shipped vehicles, translate every plan to every
+# target its vehicle offers, and add a vehicle and a target with files only.
+# Usage: mission_cli.sh NEPTUS_MISSION FIXTURES_DIR
+set -uo pipefail
+tool=$1
+fixtures=$2/neptus
+if [ ! -d "$fixtures/missions" ]; then
+  echo "SKIPPED: $fixtures/missions is absent (../shared beside the checkout)"
+  exit 77
+fi
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+failures=0
+check() { # description, then the command's success as $?
+  if [ "$2" = 0 ]; then echo "ok: $1"; else echo "FAIL: $1"; failures=$((failures + 1)); fi
+}
+
+declare -A plans=([phase3]=5 [missao-cavado]=12 [Split]=14 [Horta]=3)
+translated=0
+for name in phase3 missao-cavado Split Horta; do
+  out=$("$tool" import "$fixtures/missions/$name.nmisz" -o "$work/$name.xml" 2>"$work/$name.warnings")
+  grep -q ": ${plans[$name]} plans," <<<"$out"; check "import $name.nmisz: ${plans[$name]} plans ($out)" $?
+  "$tool" validate "$work/$name.xml" >/dev/null 2>"$work/$name.validate"
+  check "validate $name.xml against the shipped vehicles$(sed 's/^/\n    /' "$work/$name.validate")" $?
+  # Every plan, to every target its vehicle offers.
+  for plan in $(grep -o '<plan id="[^"]*" vehicle="[^"]*"' "$work/$name.xml" | sed 's/<plan id="\([^"]*\)" vehicle="\([^"]*\)"/\1:\2/'); do
+    id=${plan%%:*} vehicle=${plan##*:}
+    for target in $("$tool" targets --vehicle "$vehicle" | awk '{print $1}'); do
+      if "$tool" translate "$work/$name.xml" --plan "$id" --to "$target" -o "$work/$name.$id.$target" >/dev/null 2>"$work/err" \
+         && [ -s "$work/$name.$id.$target" ]; then
+        translated=$((translated + 1))
+      else
+        echo "  $name $id for $vehicle to $target: $(cat "$work/err")"
+        failures=$((failures + 1))
+      fi
+    done
+  done
+done
+[ "$translated" -ge $(((5 + 12 + 14 + 3) * 2)) ]; check "$translated translations of the 34 plans (IMC and mission sheet each; QGC plan and waypoints for the UAVs)" $?
+grep -q "<PlanSpecification>" "$work/phase3.ctd1.imc"; check "phase3 ctd1 → IMC PlanSpecification" $?
+head -1 "$work/Horta.rectangle.qgc-wpl" | grep -q "^QGC WPL 110$"; check "Horta rectangle → QGC WPL 110" $?
+grep -q '"fileType": "Plan"' "$work/Horta.rectangle.qgc-plan"; check "Horta rectangle → QGroundControl .plan" $?
+grep -q "<h1>Plan ctd1</h1>" "$work/phase3.ctd1.sheet"; check "phase3 ctd1 → mission sheet" $?
+
+# Translating again keeps the previous file.
+"$tool" translate "$work/phase3.xml" --plan ctd1 --to imc -o "$work/phase3.ctd1.imc" >/dev/null 2>&1
+[ -s "$work/phase3.ctd1.imc.bak" ]; check "writing over a translation keeps the previous one as .bak" $?
+
+out=$("$tool" stats "$work/Split.xml")
+[ "$(grep -c "lauv-xplore-1" <<<"$out")" = 14 ]; check "stats lists the 14 plans of Split" $?
+
+# Clear errors and exit codes for bad input.
+"$tool" translate "$work/phase3.xml" --plan nope --to imc -o "$work/x" 2>"$work/err"
+[ $? = 1 ] && grep -q "has no plan 'nope' (it has: ctd1, vents1" "$work/err"; check "an unknown plan is named, with the plans there are" $?
+"$tool" translate "$work/phase3.xml" --plan ctd1 --to iver -o "$work/x" 2>"$work/err"
+[ $? = 1 ] && grep -q "offers no translation to 'iver'" "$work/err"; check "a target the vehicle does not offer is refused" $?
+printf '<mission format="1" id="m">\n<home lat="91" lon="0"/></mission>\n' >"$work/bad.xml"
+"$tool" validate "$work/bad.xml" 2>"$work/err"
+[ $? = 1 ] && grep -q "bad.xml:2: Element 'home', attribute 'lat'" "$work/err"; check "a bad file is reported with file, line and element" $?
+"$tool" import "$work/bad.xml.nmisz" -o "$work/x" 2>"$work/err"
+[ $? = 1 ]; check "importing a file that is not there fails" $?
+"$tool" frobnicate 2>/dev/null
+[ $? = 2 ]; check "an unknown command is a usage error (2)" $?
+
+# A vehicle and a target of one's own: files only.
+mkdir -p "$work/mine"
+cat >"$work/mine/glider.xml" <<'EOF'
+<vehicle format="1" id="lauv-xplore-1" name="Xplore as a glider" kind="UUV">
+  <maneuver type="Goto"/><maneuver type="YoYo"/><maneuver type="StationKeeping"/><maneuver type="PopUp"/><maneuver type="Rows"/>
+  <translation target="count" name="Maneuver count" stylesheet="count.xsl" extension="txt"/>
+</vehicle>
+EOF
+cat >"$work/mine/count.xsl" <<'EOF'
+<xsl:stylesheet version="1.0" xmlns:xsl="http://www.w3.org/1999/XSL/Transform">
+  <xsl:output method="text"/>
+  <xsl:template match="/"><xsl:value-of select="concat(count(/translation/mission/plan/maneuvers/*), ' maneuvers&#10;')"/></xsl:template>
+</xsl:stylesheet>
+EOF
+"$tool" --vehicles "$work/mine" targets --vehicle lauv-xplore-1 | grep -q "^count"; check "a user's definition overrides the shipped one (targets lists 'count')" $?
+"$tool" --vehicles "$work/mine" translate "$work/phase3.xml" --plan ctd1 --to count -o "$work/ctd1.txt" >/dev/null
+[ "$(cat "$work/ctd1.txt")" = "9 maneuvers" ]; check "its own stylesheet translates (ctd1 has 9 maneuvers)" $?
+
+echo "$failures failure(s)"
+[ "$failures" = 0 ]
