@@ -9,11 +9,11 @@
   lacks, becomes a FollowPath through the corners the engine worked out.
 -->
 <xsl:stylesheet version="1.0" xmlns:xsl="http://www.w3.org/1999/XSL/Transform">
-  <xsl:output method="xml" indent="yes" encoding="UTF-8"/>
+  <!-- For the encoder, not for reading: no indentation (neptus-msg shows a message readably). -->
+  <xsl:output method="xml" indent="no" encoding="UTF-8"/>
 
   <xsl:key name="geometry" match="/translation/geometry/maneuver" use="@id"/>
   <xsl:variable name="plan" select="/translation/mission/plan"/>
-  <xsl:variable name="angles" select="' lat lon roll pitch yaw bearing cross_angle takeoff_pitch '"/>
 
   <xsl:template match="/">
     <PlanSpecification>
@@ -63,19 +63,18 @@
     </PlanSpecification>
   </xsl:template>
 
-  <!-- A field per attribute, angles marked as degrees. -->
-  <xsl:template match="@*" mode="field">
-    <xsl:element name="{name()}">
-      <xsl:if test="contains($angles, concat(' ', name(), ' '))">
-        <xsl:attribute name="unit">deg</xsl:attribute>
-      </xsl:if>
-      <xsl:value-of select="."/>
-    </xsl:element>
+  <!-- A field per attribute, angles marked as degrees (templates by name: matched through a hash). -->
+  <xsl:template match="@lat | @lon | @roll | @pitch | @yaw | @bearing | @cross_angle | @takeoff_pitch" mode="field">
+    <xsl:element name="{name()}"><xsl:attribute name="unit">deg</xsl:attribute><xsl:value-of select="."/></xsl:element>
   </xsl:template>
+  <xsl:template match="@*" mode="field">
+    <xsl:element name="{name()}"><xsl:value-of select="."/></xsl:element>
+  </xsl:template>
+  <xsl:template match="@id" mode="field"/>
 
   <xsl:template match="*" mode="maneuver">
     <xsl:element name="{local-name()}">
-      <xsl:apply-templates select="@*[name() != 'id']" mode="field"/>
+      <xsl:apply-templates select="@*" mode="field"/>
       <xsl:if test="point">
         <points>
           <xsl:for-each select="point">

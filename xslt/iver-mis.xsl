@@ -8,7 +8,8 @@
   deep in feet, dive angle in degrees); P the time parked at the waypoint
   (seconds: station keeping, loiter, pop-up); cameras off (VC); S speed in
   knots. Surveys, paths and squares are expanded through the points the
-  engine worked out (<geometry>).
+  engine worked out (<geometry>); a loiter is its centre, parked for its
+  duration (an Iver cannot circle).
 -->
 <xsl:stylesheet version="1.0" xmlns:xsl="http://www.w3.org/1999/XSL/Transform">
   <xsl:output method="text" encoding="UTF-8"/>
@@ -21,33 +22,23 @@
     <xsl:value-of select="concat('; Iver mission: plan ', /translation/@plan, ' of mission ', /translation/mission/@id,
                                  ' for ', /translation/@vehicle, ', made by Neptus-Qt&#10;')"/>
     <xsl:text>; depths and distances in feet, speeds in knots, park times in seconds&#10;START&#10;</xsl:text>
+    <!-- (Expressions, not variables with content: those are result tree fragments, a document each.) -->
     <xsl:for-each select="/translation/geometry/maneuver/point">
       <xsl:variable name="g" select=".."/>
-      <xsl:variable name="id" select="$g/@id"/>
-      <xsl:variable name="m" select="key('maneuver', $id)"/>
-      <xsl:variable name="n" select="position()"/>
-      <xsl:variable name="depth">
-        <xsl:choose>
-          <xsl:when test="$g/@type = 'YoYo'">
-            <xsl:value-of select="concat('U', format-number($g/@min-z * $feet, '0.0'), ',', format-number($g/@max-z * $feet, '0.0'), ',',
-                                         format-number(sum($m/@pitch), '0'))"/>
-          </xsl:when>
-          <xsl:when test="@z-units = 'ALTITUDE'"><xsl:value-of select="concat('H', format-number(@z * $feet, '0.0'))"/></xsl:when>
-          <xsl:otherwise><xsl:value-of select="concat('D', format-number(@z * $feet, '0.0'))"/></xsl:otherwise>
-        </xsl:choose>
-      </xsl:variable>
-      <xsl:variable name="park">
-        <xsl:choose>
-          <xsl:when test="not(following-sibling::point) and ($m/self::StationKeeping or $m/self::Loiter or $m/self::PopUp)">
-            <xsl:value-of select="format-number(sum($m/@duration), '0')"/>
-          </xsl:when>
-          <xsl:otherwise>0</xsl:otherwise>
-        </xsl:choose>
-      </xsl:variable>
-      <xsl:value-of select="concat($n, '; ', format-number(@lat, '0.000000'), '; ', format-number(@lon, '0.000000'), '; ',
-                                   format-number(@leg * $feet, '0.00'), '; ', format-number(@heading, '0.00'), '; ',
-                                   $depth, ' P', $park, ' VC1,0,0,1000,0,VC2,0,0,1000,0 S',
-                                   format-number($g/@speed * $knots, '0.0'), '; 0&#10;')"/>
+      <xsl:variable name="m" select="key('maneuver', $g/@id)"/>
+      <xsl:value-of select="concat(position(), '; ', format-number(@lat, '0.000000'), '; ', format-number(@lon, '0.000000'), '; ',
+                                   format-number(@leg * $feet, '0.00'), '; ', format-number(@heading, '0.00'), '; ')"/>
+      <xsl:choose>
+        <xsl:when test="$g/@type = 'YoYo'">
+          <xsl:value-of select="concat('U', format-number($g/@min-z * $feet, '0.0'), ',', format-number($g/@max-z * $feet, '0.0'), ',',
+                                       format-number(sum($m/@pitch), '0'))"/>
+        </xsl:when>
+        <xsl:when test="@z-units = 'ALTITUDE'"><xsl:value-of select="concat('H', format-number(@z * $feet, '0.0'))"/></xsl:when>
+        <xsl:otherwise><xsl:value-of select="concat('D', format-number(@z * $feet, '0.0'))"/></xsl:otherwise>
+      </xsl:choose>
+      <!-- Parked at the last point of a station keeping, loiter or pop-up, for its duration. -->
+      <xsl:value-of select="concat(' P', format-number(sum($m/@duration) * (not(following-sibling::point) and boolean($m/self::StationKeeping | $m/self::Loiter | $m/self::PopUp)), '0'),
+                                   ' VC1,0,0,1000,0,VC2,0,0,1000,0 S', format-number($g/@speed * $knots, '0.0'), '; 0&#10;')"/>
     </xsl:for-each>
     <xsl:text>END&#10;</xsl:text>
   </xsl:template>

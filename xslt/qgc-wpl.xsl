@@ -18,14 +18,8 @@
     <xsl:text>QGC WPL 110&#10;</xsl:text>
     <xsl:value-of select="concat('0&#9;1&#9;0&#9;16&#9;0&#9;0&#9;0&#9;0&#9;', $home_lat, '&#9;', $home_lon, '&#9;', $home_height, '&#9;1&#10;')"/>
     <xsl:for-each select="exsl:node-set($items)/item">
-      <xsl:variable name="p4">
-        <xsl:choose>
-          <xsl:when test="@p4 = 'nan'">0</xsl:when>
-          <xsl:otherwise><xsl:value-of select="@p4"/></xsl:otherwise>
-        </xsl:choose>
-      </xsl:variable>
       <xsl:value-of select="concat(position(), '&#9;0&#9;', @frame, '&#9;', @command, '&#9;', @p1, '&#9;', @p2, '&#9;', @p3, '&#9;',
-                                   $p4, '&#9;', @lat, '&#9;', @lon, '&#9;', @alt, '&#9;1&#10;')"/>
+                                   substring(@p4, 1, 99 * (@p4 != 'nan')), substring('0', 1, @p4 = 'nan'), '&#9;', @lat, '&#9;', @lon, '&#9;', @alt, '&#9;1&#10;')"/>
     </xsl:for-each>
   </xsl:template>
 </xsl:stylesheet>

@@ -167,6 +167,30 @@ int translate(const QString &path, const QString &planId, const QString &vehicle
     return 0;
 }
 
+// The document a stylesheet gets, for people writing one (docs/missions.md).
+int input(const QString &path, const QString &planId, const QString &vehicleId, const QString &target,
+          const QString &output, const VehicleCatalog &vehicles)
+{
+    if (planId.isEmpty() || output.isEmpty())
+        return fail(u"input: needs --plan ID and -o FILE"_s);
+    const auto m = loadMission(path);
+    if (!m)
+        return failAll(m.error());
+    const Plan *plan = m->plan(planId);
+    if (!plan)
+        return fail(u"%1 has no plan '%2'"_s.arg(path, planId));
+    const QString id = vehicleId.isEmpty() ? plan->vehicle : vehicleId;
+    const VehicleDefinition *vehicle = vehicles.find(id);
+    if (!vehicle)
+        return fail(u"no definition of vehicle '%1'"_s.arg(id));
+    const QByteArray bytes = processor::translationInput(*m, *plan, *vehicle, target);
+    if (auto saved = saveFileKeepingPrevious(output, bytes); !saved)
+        return fail(saved.error());
+    std::printf("%s: the input of a translation of plan %s for %s → %s (%lld bytes)\n", qPrintable(path), qPrintable(planId),
+                qPrintable(id), qPrintable(output), static_cast<long long>(bytes.size()));
+    return 0;
+}
+
 int targets(const QString &vehicleId, const VehicleCatalog &vehicles)
 {
     const VehicleDefinition *vehicle = vehicles.find(vehicleId);
@@ -216,6 +240,8 @@ int main(int argc, char **argv)
   import FILE -o OUT                   LSTS Neptus .nmisz/.nmis/.nmap → our mission, .nvcl → our vehicle definition
   translate MISSION --plan ID --to TARGET -o FILE [--vehicle NAME]
                                        a plan in a vehicle's own format
+  input MISSION --plan ID -o FILE [--vehicle NAME] [--to TARGET]
+                                       the document a stylesheet is given (for writing one)
   targets --vehicle NAME               the translations a vehicle offers
   stats MISSION                        per plan: maneuvers, length, duration, max depth/altitude/height)"_s);
     parser.addHelpOption();
@@ -245,6 +271,8 @@ int main(int argc, char **argv)
         return import(rest.first(), parser.value(output));
     if (command == u"translate" && rest.size() == 1)
         return translate(rest.first(), parser.value(plan), parser.value(vehicle), parser.value(to), parser.value(output), vehicles);
+    if (command == u"input" && rest.size() == 1)
+        return input(rest.first(), parser.value(plan), parser.value(vehicle), parser.value(to), parser.value(output), vehicles);
     if (command == u"targets" && rest.isEmpty() && parser.isSet(vehicle))
         return targets(parser.value(vehicle), vehicles);
     if (command == u"stats" && rest.size() == 1)

@@ -5,6 +5,7 @@
 #include "core/SafeFile.h"
 #include "xml/XmlSchema.h"
 
+#include <QHash>
 #include <QXmlStreamWriter>
 
 #include <map>
@@ -28,7 +29,7 @@ const std::expected<XmlSchema, XmlError> &shippedSchema(const QString &name)
 
 std::expected<XmlDocument, Errors> readValid(QByteArrayView data, const QString &fileName, const QString &schemaName)
 {
-    auto document = XmlDocument::parse(data, fileName);
+    auto document = XmlDocument::parse(data, fileName, XmlDocument::Blanks::Drop);
     if (!document)
         return std::unexpected(Errors{document.error()});
     const auto &schema = shippedSchema(schemaName);
@@ -63,6 +64,9 @@ public:
     Errors errors;
 
 private:
+    // An id seen a second time in its scope is an error naming the first.
+    void unique(QHash<QString, int> &seen, const xmlNode *node, const QString &id, const QString &what);
+    void references(const Plan &plan, const xmlNode *node);
     void error(const xmlNode *node, const QString &message) { errors.append(m_document.errorAt(node, message)); }
     std::optional<double> number(const xmlNode *node, const char *name);
     Feature::Point point(const xmlNode *node, bool isPosition);
@@ -117,6 +121,34 @@ QList<XmlElement> Reader::messages(const xmlNode *parent, const char *name)
     return result;
 }
 
+void Reader::unique(QHash<QString, int> &seen, const xmlNode *node, const QString &id, const QString &what)
+{
+    const int line = static_cast<int>(xmlGetLineNo(node));
+    if (const auto first = seen.constFind(id); first != seen.cend())
+        error(node, u"Element '%1': %2 id '%3' is used twice (first at line %4)"_s.arg(elementName(node), what, id).arg(*first));
+    else
+        seen.insert(id, line);
+}
+
+// What identity constraints would say, as a hash lookup each.
+void Reader::references(const Plan &plan, const xmlNode *node)
+{
+    QHash<QString, int> ids;
+    const auto maneuverNodes = childElements(firstChildElement(node, "maneuvers"));
+    for (const xmlNode *m : maneuverNodes)
+        unique(ids, m, attribute(m, "id"), u"maneuver"_s);
+    if (!ids.contains(plan.start))
+        error(node, u"Element 'plan': start '%1' names no maneuver of plan '%2'"_s.arg(plan.start, plan.id));
+    const auto transitionNodes = childElements(node, "transition");
+    for (qsizetype i = 0; i < plan.transitions.size(); ++i) {
+        const Transition &t = plan.transitions[i];
+        for (const QString &end : {t.from, t.to}) {
+            if (!ids.contains(end))
+                error(transitionNodes[i], u"Element 'transition': '%1' names no maneuver of plan '%2'"_s.arg(end, plan.id));
+        }
+    }
+}
+
 Maneuver Reader::maneuver(const xmlNode *node)
 {
     Maneuver m;
@@ -124,7 +156,7 @@ Maneuver Reader::maneuver(const xmlNode *node)
     m.line.value = static_cast<int>(xmlGetLineNo(node));
     for (const xmlAttr *a = node->properties; a; a = a->next) {
         const QString name = QString::fromUtf8(reinterpret_cast<const char *>(a->name));
-        const QString value = attribute(node, reinterpret_cast<const char *>(a->name));
+        const QString value = attributeValue(a);
         if (name == u"id") {
             m.id = value;
             continue;
@@ -193,7 +225,7 @@ Map Reader::map(const xmlNode *node)
         for (const xmlAttr *a = f->properties; a; a = a->next) {
             const QString name = QString::fromUtf8(reinterpret_cast<const char *>(a->name));
             if (!common.contains(name) && !positionAttributes().contains(name))
-                feature.attributes.insert(name, attribute(f, reinterpret_cast<const char *>(a->name)));
+                feature.attributes.insert(name, attributeValue(a));
         }
         for (const xmlNode *p : childElements(f))
             feature.points.append(point(p, false));
@@ -247,14 +279,27 @@ Mission Reader::mission(const xmlNode *root)
         m.description = textContent(d);
     if (const xmlNode *home = firstChildElement(root, "home"))
         m.home = GeoPosition{number(home, "lat").value_or(0), number(home, "lon").value_or(0), number(home, "height").value_or(0)};
-    for (const xmlNode *v : childElements(root, "vehicle"))
+    QHash<QString, int> vehicleIds, mapIds, planIds, checklistIds;
+    for (const xmlNode *v : childElements(root, "vehicle")) {
         m.vehicles.append(attribute(v, "id"));
-    for (const xmlNode *n : childElements(root, "map"))
+        unique(vehicleIds, v, m.vehicles.last(), u"vehicle"_s);
+    }
+    for (const xmlNode *n : childElements(root, "map")) {
         m.maps.append(map(n));
-    for (const xmlNode *n : childElements(root, "plan"))
+        unique(mapIds, n, m.maps.last().id, u"map"_s);
+    }
+    for (const xmlNode *n : childElements(root, "plan")) {
         m.plans.append(plan(n));
-    for (const xmlNode *n : childElements(root, "checklist"))
+        const Plan &p = m.plans.last();
+        unique(planIds, n, p.id, u"plan"_s);
+        references(p, n);
+        if (!vehicleIds.contains(p.vehicle))
+            error(n, u"Element 'plan': vehicle '%1' does not take part in the mission (add <vehicle id=\"%1\"/>)"_s.arg(p.vehicle));
+    }
+    for (const xmlNode *n : childElements(root, "checklist")) {
         m.checklists.append(checklist(n));
+        unique(checklistIds, n, m.checklists.last().id, u"checklist"_s);
+    }
     return m;
 }
 

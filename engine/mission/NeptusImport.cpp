@@ -80,8 +80,11 @@ public:
     std::optional<VehicleDefinition> vehicle(const XmlDocument &doc);
 
 private:
+    // `node` may be absent (an element a file lacks): the warning is then about the root.
     void warn(const XmlDocument &doc, const xmlNode *node, const QString &what)
     {
+        if (!node)
+            node = doc.root();
         warnings.append(doc.errorAt(node, u"Element '%1': %2"_s.arg(elementName(node), what)));
     }
     void notUnderstood(const XmlDocument &doc, const xmlNode *node)
@@ -631,7 +634,8 @@ std::optional<VehicleDefinition> Importer::vehicle(const XmlDocument &doc)
     const QString type = textContent(firstChildElement(properties, "type")).trimmed().toUpper();
     v.kind = kinds.value(type);
     if (v.kind.isEmpty()) {
-        warn(doc, firstChildElement(properties, "type"), u"vehicle type '%1' unknown; taken as a sensor node"_s.arg(type));
+        const xmlNode *typeNode = firstChildElement(properties, "type");
+        warn(doc, typeNode ? typeNode : properties, u"vehicle type '%1' unknown; taken as a sensor node"_s.arg(type));
         v.kind = u"sensor"_s;
     }
     if (v.id.isEmpty()) {
@@ -738,8 +742,8 @@ std::optional<VehicleDefinition> Importer::vehicle(const XmlDocument &doc)
         }
     }
     v.translations = {
-        Translation{u"imc"_s, u"IMC PlanSpecification"_s, u"imc-plan.xsl"_s, u"imc.xml"_s, {}},
-        Translation{u"sheet"_s, u"Mission sheet (HTML)"_s, u"mission-sheet.xsl"_s, u"html"_s, {}},
+        Translation{u"imc"_s, u"IMC PlanSpecification"_s, u"imc-plan.xsl"_s, u"imc.xml"_s, {}, Translation::Geometry::None},
+        Translation{u"sheet"_s, u"Mission sheet (HTML)"_s, u"mission-sheet.xsl"_s, u"html"_s, {}, Translation::Geometry::Maneuvers},
     };
     return v;
 }

@@ -20,19 +20,28 @@ struct Local
         : lat(m.number(u"lat"_s)), lon(m.number(u"lon"_s)), origin{geo::radians(lat), geo::radians(lon), 0}, z(z),
           units(std::move(units)) {}
 
+    // Also remembers the offset, for legs measured on the plane.
     Waypoint at(double north, double east, double down = 0) const
     {
+        offsets.append(Eigen::Vector2d(north, east));
         if (north == 0 && east == 0) // the position as written, not as it comes back from the ellipsoid
-            return Waypoint{lat, lon, z + down, units};
+            return Waypoint{lat, lon, z + down, units, 0, 0};
         const geo::Geodetic p = geo::fromNed(Eigen::Vector3d(north, east, 0), origin);
-        return Waypoint{geo::degrees(p.lat), geo::degrees(p.lon), z + down, units};
+        return Waypoint{geo::degrees(p.lat), geo::degrees(p.lon), z + down, units, 0, 0};
     }
 
     double lat, lon;
     geo::Geodetic origin;
     double z;
     QString units;
+    mutable QList<Eigen::Vector2d> offsets;
 };
+
+double headingDegrees(double north, double east)
+{
+    const double heading = geo::degrees(std::atan2(east, north));
+    return heading < 0 ? heading + 360 : heading;
+}
 
 double speedOf(const Maneuver &m, const SpeedModel &speeds)
 {
@@ -85,14 +94,6 @@ void rows(QList<Waypoint> &points, const Local &local, const Maneuver &m)
         const double step = hstep * (row % 2 == 0 ? alternation : 200 - alternation) / 100;
         start += across * step;
     }
-}
-
-double pathLength(const QList<Waypoint> &points)
-{
-    double total = 0;
-    for (qsizetype i = 1; i < points.size(); ++i)
-        total += distance(points[i - 1], points[i]);
-    return total;
 }
 
 } // namespace
@@ -185,10 +186,24 @@ ManeuverGeometry maneuverGeometry(const Maneuver &m, const Waypoint *previous, c
             g.maxZ = std::max(startZ, z);
         }
     }
-    if (previous)
-        g.transit = distance(*previous, g.points.first());
+    // Legs inside the maneuver on its plane; the transit to it as a geodesic.
+    double along = 0;
+    for (qsizetype i = 1; i < g.points.size(); ++i) {
+        const Eigen::Vector2d step = local.offsets[i] - local.offsets[i - 1];
+        g.points[i].leg = step.norm();
+        g.points[i].heading = step.norm() > 0 ? headingDegrees(step.x(), step.y()) : g.points[i - 1].heading;
+        along += g.points[i].leg;
+    }
+    if (previous) {
+        if (const auto transit = geo::inverse(geo::radians(previous->lat), geo::radians(previous->lon),
+                                              geo::radians(g.points.first().lat), geo::radians(g.points.first().lon))) {
+            g.transit = transit->distance;
+            g.points.first().leg = transit->distance;
+            g.points.first().heading = transit->distance > 0 ? std::fmod(geo::degrees(transit->initialAzimuth) + 360, 360) : 0;
+        }
+    }
     // A timed loiter covers its circle for as long as it lasts; an endless one, one lap at least.
-    g.length = circling && hold > 0 ? hold * g.speed : pathLength(g.points);
+    g.length = circling && hold > 0 ? hold * g.speed : along;
     if (!endless)
         g.duration = g.transit / g.speed + (circling ? hold : g.length / g.speed + hold);
     return g;

@@ -13,7 +13,7 @@ namespace neptus::mission {
 // far it goes and for how long at the planned speeds, and how deep or high.
 // Worked out on a local tangent plane around each maneuver's position (WGS84
 // through geo/), which is exact to centimetres over the few kilometres a
-// maneuver spans.
+// maneuver spans; transits between maneuvers are geodesics.
 
 // Turning planned speeds into metres per second: RPM and percentages need
 // the vehicle's figures (its definition's limits); these are the defaults.
@@ -30,6 +30,10 @@ struct Waypoint
     double lon = 0;
     double z = 0;
     QString zUnits; // NONE, DEPTH, ALTITUDE, HEIGHT
+    // From the previous point along the plan: metres, and the heading there
+    // in degrees from north (0 for the plan's first point).
+    double leg = 0;
+    double heading = 0;
 };
 
 struct ManeuverGeometry

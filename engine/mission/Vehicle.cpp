@@ -203,7 +203,13 @@ std::expected<VehicleDefinition, Errors> readVehicle(QByteArrayView data, const 
         v.maneuvers.append(spec);
     }
     for (const xmlNode *t : childElements(root, "translation")) {
-        Translation translation{attribute(t, "target"), attribute(t, "name"), attribute(t, "stylesheet"), attribute(t, "extension"), {}};
+        Translation translation{attribute(t, "target"), attribute(t, "name"), attribute(t, "stylesheet"), attribute(t, "extension"), {},
+                                Translation::Geometry::Points};
+        const QString geometry = attribute(t, "geometry");
+        if (geometry == u"none")
+            translation.geometry = Translation::Geometry::None;
+        else if (geometry == u"maneuvers")
+            translation.geometry = Translation::Geometry::Maneuvers;
         for (const xmlNode *p : childElements(t, "parameter"))
             translation.parameters.append({attribute(p, "name"), attribute(p, "value")});
         v.translations.append(translation);
@@ -282,6 +288,8 @@ QByteArray writeVehicle(const VehicleDefinition &v)
         out.writeAttribute(u"name"_s, t.name);
         out.writeAttribute(u"stylesheet"_s, t.stylesheet);
         out.writeAttribute(u"extension"_s, t.extension);
+        if (t.geometry != Translation::Geometry::Points)
+            out.writeAttribute(u"geometry"_s, t.geometry == Translation::Geometry::None ? u"none"_s : u"maneuvers"_s);
         for (const auto &[name, value] : t.parameters) {
             out.writeEmptyElement(u"parameter"_s);
             out.writeAttribute(u"name"_s, name);

@@ -3,7 +3,8 @@
 #include "geo/Geodesy.h"
 #include "mission/PlanGeometry.h"
 
-#include <QXmlStreamWriter>
+
+#include <cmath>
 
 namespace neptus::processor {
 
@@ -19,72 +20,119 @@ QByteArray body(const QByteArray &document)
     return document.mid(end).trimmed() + '\n';
 }
 
-QByteArray geometryElement(const Plan &plan, const VehicleDefinition &vehicle)
+// Derived figures to a millimetre (1e-8° of latitude is 1.1 mm): enough for
+// any vehicle, and half the bytes of the shortest exact text.
+QByteArray rounded(double value, double unit)
 {
-    const PlanGeometry geometry = planGeometry(plan, vehicle.speeds());
-    QByteArray bytes;
-    QXmlStreamWriter out(&bytes);
-    out.setAutoFormatting(true);
-    out.setAutoFormattingIndent(2);
-    out.writeStartElement(u"geometry"_s);
-    out.writeAttribute(u"plan"_s, plan.id);
-    out.writeAttribute(u"length"_s, formatNumber(geometry.length));
-    if (geometry.duration)
-        out.writeAttribute(u"duration"_s, formatNumber(*geometry.duration));
-    if (geometry.maxDepth)
-        out.writeAttribute(u"max-depth"_s, formatNumber(*geometry.maxDepth));
-    if (geometry.maxAltitude)
-        out.writeAttribute(u"max-altitude"_s, formatNumber(*geometry.maxAltitude));
-    if (geometry.maxHeight)
-        out.writeAttribute(u"max-height"_s, formatNumber(*geometry.maxHeight));
-    const Waypoint *previous = nullptr;
-    for (const ManeuverGeometry &g : geometry.maneuvers) {
-        out.writeStartElement(u"maneuver"_s);
-        out.writeAttribute(u"id"_s, g.id);
-        out.writeAttribute(u"type"_s, g.type);
-        out.writeAttribute(u"speed"_s, formatNumber(g.speed));
-        out.writeAttribute(u"transit"_s, formatNumber(g.transit));
-        out.writeAttribute(u"length"_s, formatNumber(g.length));
-        if (g.duration)
-            out.writeAttribute(u"duration"_s, formatNumber(*g.duration));
-        out.writeAttribute(u"min-z"_s, formatNumber(g.minZ));
-        out.writeAttribute(u"max-z"_s, formatNumber(g.maxZ));
-        out.writeAttribute(u"z-units"_s, g.zUnits);
-        for (const Waypoint &w : g.points) {
-            out.writeEmptyElement(u"point"_s);
-            out.writeAttribute(u"lat"_s, formatNumber(w.lat));
-            out.writeAttribute(u"lon"_s, formatNumber(w.lon));
-            out.writeAttribute(u"z"_s, formatNumber(w.z));
-            out.writeAttribute(u"z-units"_s, w.zUnits);
-            double leg = 0, heading = 0;
-            if (previous) {
-                if (const auto inverse = geo::inverse(geo::radians(previous->lat), geo::radians(previous->lon),
-                                                      geo::radians(w.lat), geo::radians(w.lon))) {
-                    leg = inverse->distance;
-                    heading = geo::degrees(inverse->initialAzimuth);
-                    if (heading < 0)
-                        heading += 360;
-                }
-            }
-            out.writeAttribute(u"leg"_s, formatNumber(leg));
-            out.writeAttribute(u"heading"_s, formatNumber(heading));
-            previous = &w;
+    return formatNumber(std::round(value / unit) * unit).toLatin1();
+}
+
+// Written by hand rather than with QXmlStreamWriter: a 10,000-maneuver plan
+// has 30,000 elements here, and every value is a number or an identifier.
+QByteArray geometryElement(const Plan &plan, const VehicleDefinition &vehicle, Translation::Geometry detail)
+{
+    QByteArray out;
+    const auto attribute = [&out](const char *name, const QByteArray &value) {
+        out += ' ';
+        out += name;
+        out += "=\"";
+        out += value;
+        out += '"';
+    };
+    const auto squareCorners = [&](const Maneuver &m) {
+        for (const PathPoint &p : expandingSquareOffsets(m)) {
+            out += "<offset";
+            attribute("x", formatNumber(p.x).toLatin1());
+            attribute("y", formatNumber(p.y).toLatin1());
+            out += "/>\n";
         }
-        if (g.type == u"ExpandingSquare") {
-            for (const Maneuver *m : plan.executionOrder()) {
-                if (m->id != g.id)
-                    continue;
-                for (const PathPoint &p : expandingSquareOffsets(*m)) {
-                    out.writeEmptyElement(u"offset"_s);
-                    out.writeAttribute(u"x"_s, formatNumber(p.x));
-                    out.writeAttribute(u"y"_s, formatNumber(p.y));
-                }
-            }
+    };
+    if (detail == Translation::Geometry::None) {
+        // Only what a stylesheet cannot work out exactly: the corners of squares.
+        out += "<geometry";
+        attribute("plan", plan.id.toHtmlEscaped().toUtf8());
+        out += ">\n";
+        for (const Maneuver &m : plan.maneuvers) {
+            if (m.type != u"ExpandingSquare")
+                continue;
+            out += "<maneuver";
+            attribute("id", m.id.toHtmlEscaped().toUtf8());
+            attribute("type", m.type.toUtf8());
+            out += ">\n";
+            squareCorners(m);
+            out += "</maneuver>\n";
         }
-        out.writeEndElement();
+        out += "</geometry>\n";
+        return out;
     }
-    out.writeEndElement();
-    return bytes + '\n';
+    const PlanGeometry geometry = planGeometry(plan, vehicle.speeds());
+    out.reserve(geometry.maneuvers.size() * (detail == Translation::Geometry::Points ? 400 : 200));
+    out += "<geometry";
+    attribute("plan", plan.id.toHtmlEscaped().toUtf8());
+    attribute("length", rounded(geometry.length, 1e-3));
+    if (geometry.duration)
+        attribute("duration", rounded(*geometry.duration, 1e-3));
+    if (geometry.maxDepth)
+        attribute("max-depth", formatNumber(*geometry.maxDepth).toLatin1());
+    if (geometry.maxAltitude)
+        attribute("max-altitude", formatNumber(*geometry.maxAltitude).toLatin1());
+    if (geometry.maxHeight)
+        attribute("max-height", formatNumber(*geometry.maxHeight).toLatin1());
+    out += ">\n";
+    const QList<const Maneuver *> order = plan.executionOrder(); // geometry.maneuvers' order
+    std::optional<Waypoint> previous;
+    for (qsizetype step = 0; step < geometry.maneuvers.size(); ++step) {
+        const ManeuverGeometry &g = geometry.maneuvers[step];
+        const Maneuver &m = *order[step];
+        out += "<maneuver";
+        attribute("step", QByteArray::number(step + 1));
+        attribute("id", g.id.toHtmlEscaped().toUtf8());
+        attribute("type", g.type.toHtmlEscaped().toUtf8());
+        attribute("speed", formatNumber(g.speed).toLatin1());
+        attribute("transit", rounded(g.transit, 1e-3));
+        attribute("length", rounded(g.length, 1e-3));
+        if (g.duration)
+            attribute("duration", rounded(*g.duration, 1e-3));
+        attribute("min-z", formatNumber(g.minZ).toLatin1());
+        attribute("max-z", formatNumber(g.maxZ).toLatin1());
+        attribute("z-units", g.zUnits.toLatin1());
+        out += ">\n";
+        // A loiter's circle is its centre and radius: no target needs the polygon.
+        const bool circling = g.type == u"Loiter" || g.type == u"CompassCalibration";
+        QList<Waypoint> points = g.points;
+        if (circling) {
+            Waypoint centre = g.points.first();
+            centre.lat = m.number(u"lat"_s);
+            centre.lon = m.number(u"lon"_s);
+            centre.leg = centre.heading = 0;
+            if (previous) {
+                if (const auto leg = geo::inverse(geo::radians(previous->lat), geo::radians(previous->lon),
+                                                  geo::radians(centre.lat), geo::radians(centre.lon))) {
+                    centre.leg = leg->distance;
+                    centre.heading = leg->distance > 0 ? std::fmod(geo::degrees(leg->initialAzimuth) + 360, 360) : 0;
+                }
+            }
+            points = {centre};
+        }
+        for (const Waypoint &w : std::as_const(points)) {
+            if (detail != Translation::Geometry::Points)
+                break;
+            out += "<point";
+            attribute("lat", rounded(w.lat, 1e-8));
+            attribute("lon", rounded(w.lon, 1e-8));
+            attribute("z", rounded(w.z, 1e-3));
+            attribute("z-units", w.zUnits.toLatin1());
+            attribute("leg", rounded(w.leg, 1e-3));
+            attribute("heading", rounded(w.heading, 1e-3));
+            out += "/>\n";
+        }
+        previous = points.last();
+        if (g.type == u"ExpandingSquare")
+            squareCorners(m);
+        out += "</maneuver>\n";
+    }
+    out += "</geometry>\n";
+    return out;
 }
 
 } // namespace
@@ -102,7 +150,8 @@ QByteArray translationInput(const Mission &mission, const Plan &plan, const Vehi
              + vehicle.id.toHtmlEscaped().toUtf8() + "\">\n";
     input += body(writeMission(only));
     input += body(writeVehicle(definition));
-    input += geometryElement(plan, vehicle);
+    const Translation *translation = vehicle.translation(target);
+    input += geometryElement(plan, vehicle, translation ? translation->geometry : Translation::Geometry::Points);
     input += "</translation>\n";
     return input;
 }

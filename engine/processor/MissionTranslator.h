@@ -20,10 +20,11 @@ namespace neptus::processor {
 //   <translation target="…" plan="…" vehicle="…">
 //     <mission format="1" …>  the mission with only this plan (home, maps, checklists)
 //     <vehicle format="1" …>  the vehicle definition
-//     <geometry …>            what the plan implies, worked out by the engine:
-//       <maneuver id type speed transit length duration min-z max-z z-units>
-//         <point lat lon z z-units leg heading/>   (leg: metres from the previous point)
-//         <offset x y/>                            (ExpandingSquare corners, metres N/E)
+//     <geometry …>            what the plan implies, worked out by the engine, as
+//                             much as the translation asks (Translation::Geometry):
+//       <maneuver step id type speed transit length duration min-z max-z z-units>   (maneuvers, points)
+//         <point lat lon z z-units leg heading/>   (points; leg: metres from the previous point)
+//         <offset x y/>                            (always: ExpandingSquare corners, metres N/E)
 //
 // and gets as parameters the translation's own, plus plan_id, vehicle_id,
 // target, home_lat, home_lon, home_height.

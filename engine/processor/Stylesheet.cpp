@@ -148,7 +148,7 @@ std::expected<Stylesheet, xml::XmlError> Stylesheet::compile(xml::XmlDocument do
 std::expected<QByteArray, xml::XmlError> Stylesheet::apply(QByteArrayView input, const QString &inputName,
                                                            const QList<std::pair<QByteArray, QString>> &parameters) const
 {
-    auto doc = xml::XmlDocument::parse(input, inputName);
+    auto doc = xml::XmlDocument::parse(input, inputName, xml::XmlDocument::Blanks::Drop);
     if (!doc)
         return std::unexpected(doc.error());
     xsltStylesheetPtr style = m_compiled->style;

@@ -62,7 +62,7 @@ void rejectDoctype(void *context, const xmlChar *, const xmlChar *, const xmlCha
 
 } // namespace
 
-std::expected<XmlDocument, XmlError> XmlDocument::parse(QByteArrayView data, const QString &fileName)
+std::expected<XmlDocument, XmlError> XmlDocument::parse(QByteArrayView data, const QString &fileName, Blanks blanks)
 {
     if (data.size() > maxBytes)
         return std::unexpected(XmlError{fileName, 0, 0,
@@ -81,7 +81,12 @@ std::expected<XmlDocument, XmlError> XmlDocument::parse(QByteArrayView data, con
     parser->sax->warning = nullptr;
     // Without XML_PARSE_NOENT entities are not substituted, without DTDLOAD
     // nothing external is read, and NONET forbids the network in any case.
-    const int options = XML_PARSE_NONET | XML_PARSE_NOERROR | XML_PARSE_NOWARNING;
+    // COMPACT keeps short text inside its node (fewer allocations; nothing
+    // here edits a parsed tree's text); NOBLANKS, for documents whose
+    // whitespace-only text means nothing, halves the nodes of an indented file.
+    int options = XML_PARSE_NONET | XML_PARSE_NOERROR | XML_PARSE_NOWARNING | XML_PARSE_COMPACT;
+    if (blanks == Blanks::Drop)
+        options |= XML_PARSE_NOBLANKS;
     const QByteArray url = fileName.toUtf8();
     // Errors reach `state` through libxml2's per-thread structured error hook.
     xmlSetStructuredErrorFunc(&state, onError);
@@ -106,7 +111,7 @@ std::expected<XmlDocument, XmlError> XmlDocument::parse(QByteArrayView data, con
     return result;
 }
 
-std::expected<XmlDocument, XmlError> XmlDocument::load(const QString &path)
+std::expected<XmlDocument, XmlError> XmlDocument::load(const QString &path, Blanks blanks)
 {
     auto data = readFileMaybeGzip(path, maxBytes);
     if (!data) {
@@ -116,7 +121,7 @@ std::expected<XmlDocument, XmlError> XmlDocument::load(const QString &path)
             reason = reason.mid(path.size() + 2);
         return std::unexpected(XmlError{path, 0, 0, reason});
     }
-    return parse(*data, path);
+    return parse(*data, path, blanks);
 }
 
 XmlError XmlDocument::errorAt(const xmlNode *node, const QString &message) const
@@ -162,6 +167,17 @@ QString attribute(const xmlNode *node, const char *name)
 QString elementName(const xmlNode *node)
 {
     return QString::fromUtf8(reinterpret_cast<const char *>(node->name));
+}
+
+QString attributeValue(const xmlAttr *attribute)
+{
+    const xmlNode *text = attribute->children;
+    if (text && !text->next && text->type == XML_TEXT_NODE) // the usual case: one text node, no copy to free
+        return QString::fromUtf8(reinterpret_cast<const char *>(text->content));
+    xmlChar *value = xmlNodeListGetString(attribute->doc, attribute->children, 1);
+    QString result = QString::fromUtf8(reinterpret_cast<const char *>(value));
+    xmlFree(value);
+    return result;
 }
 
 QString textContent(const xmlNode *node)

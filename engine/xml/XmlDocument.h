@@ -31,10 +31,15 @@ class XmlDocument
 public:
     static constexpr qsizetype maxBytes = 64 * 1024 * 1024;
 
+    // Whitespace-only text: kept, or dropped where it means nothing (our
+    // mission and vehicle files, the mission processor's input).
+    enum class Blanks { Keep, Drop };
+
     // `fileName` names the input in errors; it is never opened.
-    static std::expected<XmlDocument, XmlError> parse(QByteArrayView data, const QString &fileName);
+    static std::expected<XmlDocument, XmlError> parse(QByteArrayView data, const QString &fileName,
+                                                      Blanks blanks = Blanks::Keep);
     // A file, gzip-compressed or not (IMC.xml.gz beside a vehicle's logs).
-    static std::expected<XmlDocument, XmlError> load(const QString &path);
+    static std::expected<XmlDocument, XmlError> load(const QString &path, Blanks blanks = Blanks::Keep);
 
     const xmlNode *root() const { return xmlDocGetRootElement(m_doc.get()); }
     xmlDoc *get() const { return m_doc.get(); }
@@ -57,6 +62,8 @@ const xmlNode *firstChildElement(const xmlNode *parent, const char *name);
 bool hasAttribute(const xmlNode *node, const char *name);
 QString attribute(const xmlNode *node, const char *name);
 QString elementName(const xmlNode *node);
+// An attribute's value, walking the node's attribute list (no second lookup).
+QString attributeValue(const xmlAttr *attribute);
 QString textContent(const xmlNode *node);
 
 } // namespace neptus::xml

@@ -27,8 +27,7 @@ Element readElement(const xmlNode *node)
     Element element;
     element.name = elementName(node);
     for (const xmlAttr *a = node->properties; a; a = a->next)
-        element.attributes.append({QString::fromUtf8(reinterpret_cast<const char *>(a->name)),
-                                   xml::attribute(node, reinterpret_cast<const char *>(a->name))});
+        element.attributes.append({QString::fromUtf8(reinterpret_cast<const char *>(a->name)), attributeValue(a)});
     for (const xmlNode *child : childElements(node))
         element.children.push_back(readElement(child));
     if (element.children.empty())

@@ -130,11 +130,14 @@ TEST(MissionXml, SchemaErrorsNameTheFileLineAndElement)
         {"unknown maneuver", withManeuvers("\n\n<Teleport id='a' lat='1' lon='1'/>"), 5, "Element 'Teleport': This element is not expected"},
         {"unknown parameter", withManeuvers("<Goto id='a' lat='1' lon='1' warp='9'/>"), 3, "The attribute 'warp' is not allowed"},
         {"bad enumeration", withManeuvers("<Goto id='a' lat='1' lon='1' z_units='FATHOMS'/>"), 3, "FATHOMS"},
-        {"duplicate maneuver", withManeuvers("<Goto id='a' lat='1' lon='1'/>\n<Goto id='a' lat='1' lon='1'/>"), 4, "Duplicate key-sequence ['a']"},
-        {"transition to nowhere", withManeuvers("<Goto id='a' lat='1' lon='1'/>", "\n<transition from='a' to='b'/>"), 4, "No match found for key-sequence ['b']"},
-        {"start nowhere", QByteArray(withManeuvers("<Goto id='b' lat='1' lon='1'/>")), 2, "No match found for key-sequence ['a']"},
-        {"plan for an unlisted vehicle", QByteArray(withManeuvers("<Goto id='a' lat='1' lon='1'/>")).replace("vehicle=\"v\" start", "vehicle=\"w\" start"), 2, "No match found for key-sequence ['w']"},
+        {"duplicate maneuver", withManeuvers("<Goto id='a' lat='1' lon='1'/>\n<Goto id='a' lat='1' lon='1'/>"), 4, "Element 'Goto': maneuver id 'a' is used twice (first at line 3)"},
+        {"transition to nowhere", withManeuvers("<Goto id='a' lat='1' lon='1'/>", "\n<transition from='a' to='b'/>"), 4, "Element 'transition': 'b' names no maneuver of plan 'p'"},
+        {"start nowhere", QByteArray(withManeuvers("<Goto id='b' lat='1' lon='1'/>")), 2, "Element 'plan': start 'a' names no maneuver of plan 'p'"},
+        {"plan for an unlisted vehicle", QByteArray(withManeuvers("<Goto id='a' lat='1' lon='1'/>")).replace("vehicle=\"v\" start", "vehicle=\"w\" start"), 2, "Element 'plan': vehicle 'w' does not take part in the mission"},
         {"not a number", withManeuvers("<Goto id='a' lat='1' lon='1' speed='NaN'/>"), 3, "'NaN' is not a finite number"},
+        {"duplicate plan", QByteArray(withManeuvers("<Goto id='a' lat='1' lon='1'/>")).replace("</mission>",
+             "\n<plan id=\"p\" vehicle=\"v\" start=\"a\"><maneuvers><Goto id='a' lat='1' lon='1'/></maneuvers></plan></mission>"),
+         4, "Element 'plan': plan id 'p' is used twice (first at line 2)"},
     };
     for (const Case &c : cases) {
         const auto result = read(c.text);

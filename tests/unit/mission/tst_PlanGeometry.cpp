@@ -32,7 +32,7 @@ constexpr double degreesPerMetreNorth = 1 / 111052.0;
 
 TEST(PlanGeometry, GotoIsItsTransit)
 {
-    const Waypoint from{41.0 - 1000 * degreesPerMetreNorth, -8.0, 0, u"DEPTH"_s};
+    const Waypoint from{41.0 - 1000 * degreesPerMetreNorth, -8.0, 0, u"DEPTH"_s, 0, 0};
     const auto g = maneuverGeometry(maneuver(u"Goto"_s, {{"speed", 2}, {"z", 3}}, {{"z_units", "DEPTH"}}), &from);
     ASSERT_EQ(g.points.size(), 1);
     EXPECT_NEAR(g.transit, 1000, 1.0);
@@ -106,7 +106,7 @@ TEST(PlanGeometry, PathsSquaresAndProfiles)
 
 TEST(PlanGeometry, SpeedsInRpmAndPercentUseTheVehicleFigures)
 {
-    const Waypoint from{41.0 - 100 * degreesPerMetreNorth, -8.0, 0, {}};
+    const Waypoint from{41.0 - 100 * degreesPerMetreNorth, -8.0, 0, {}, 0, 0};
     SpeedModel speeds;
     speeds.metresPerSecondPerRpm = 1.0 / 500;
     speeds.maxSpeed = 4;

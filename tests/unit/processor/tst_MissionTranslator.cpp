@@ -42,11 +42,11 @@ VehicleDefinition everyTarget(const QString &id, const QString &kind = u"UUV"_s)
     v.id = id;
     v.name = id;
     v.kind = kind;
-    v.translations = {{u"imc"_s, u"IMC"_s, u"imc-plan.xsl"_s, u"imc.xml"_s, {}},
-                      {u"iver"_s, u"Iver"_s, u"iver-mis.xsl"_s, u"mis"_s, {}},
-                      {u"qgc-plan"_s, u"QGC"_s, u"qgc-plan.xsl"_s, u"plan"_s, {}},
-                      {u"qgc-wpl"_s, u"WPL"_s, u"qgc-wpl.xsl"_s, u"waypoints"_s, {}},
-                      {u"sheet"_s, u"Sheet"_s, u"mission-sheet.xsl"_s, u"html"_s, {}}};
+    v.translations = {{u"imc"_s, u"IMC"_s, u"imc-plan.xsl"_s, u"imc.xml"_s, {}, Translation::Geometry::None},
+                      {u"iver"_s, u"Iver"_s, u"iver-mis.xsl"_s, u"mis"_s, {}, Translation::Geometry::Points},
+                      {u"qgc-plan"_s, u"QGC"_s, u"qgc-plan.xsl"_s, u"plan"_s, {}, Translation::Geometry::Points},
+                      {u"qgc-wpl"_s, u"WPL"_s, u"qgc-wpl.xsl"_s, u"waypoints"_s, {}, Translation::Geometry::Points},
+                      {u"sheet"_s, u"Sheet"_s, u"mission-sheet.xsl"_s, u"html"_s, {}, Translation::Geometry::Maneuvers}};
     return v;
 }
 
@@ -151,7 +151,9 @@ TEST(MissionTranslator, QgcPlanReadsBackAsAPlanWithEveryWaypoint)
         EXPECT_EQ(item[u"params"_s].toArray().size(), 7);
     }
     for (const ManeuverGeometry &g : geometry.maneuvers) {
-        if (g.type != u"Loiter" && g.type != u"StationKeeping" && g.type != u"Takeoff" && g.type != u"Land")
+        if (g.type == u"CompassCalibration")
+            expected += 1; // its centre (circles are their centre in the input)
+        else if (g.type != u"Loiter" && g.type != u"StationKeeping" && g.type != u"Takeoff" && g.type != u"Land")
             expected += static_cast<int>(g.points.size());
     }
     EXPECT_EQ(waypoints, expected);
@@ -205,8 +207,8 @@ TEST(MissionTranslator, IverMissionHasALinePerWaypointInFeetAndKnots)
     ASSERT_GT(end, start);
     const QStringList lines = text.mid(start + 7, end - start - 6).split(u'\n', Qt::SkipEmptyParts);
     int points = 0;
-    for (const ManeuverGeometry &g : planGeometry(m.plans[0]).maneuvers)
-        points += static_cast<int>(g.points.size());
+    for (const ManeuverGeometry &g : planGeometry(m.plans[0]).maneuvers) // a circle is its centre
+        points += g.type == u"Loiter" || g.type == u"CompassCalibration" ? 1 : static_cast<int>(g.points.size());
     ASSERT_EQ(lines.size(), points);
     // N; lat; lon; dist ft; heading; D|H|U… P… VC… S…; 0
     static const QRegularExpression line(uR"(^(\d+); (-?\d+\.\d{6}); (-?\d+\.\d{6}); (\d+\.\d\d); (\d+\.\d\d); ([DHU][-\d.,]+) P(\d+) VC1,0,0,1000,0,VC2,0,0,1000,0 S(\d+\.\d); 0$)"_s);
@@ -238,6 +240,32 @@ TEST(MissionTranslator, MissionSheetListsManeuversTransitionsAndChecklists)
     EXPECT_TRUE(html.contains(u"Battery above 80 %"_s));
     EXPECT_TRUE(html.contains(u"box done"_s)); // the checked item
     EXPECT_TRUE(html.contains(u"<td>Sends at the start</td><td>SetEntityParameters Sidescan</td>"_s));
+}
+
+TEST(MissionTranslator, ATranslationGetsTheGeometryItAsksFor)
+{
+    const Mission m = everything();
+    VehicleDefinition v = everyTarget(u"lauv-xplore-1"_s);
+    const auto input = [&](const QString &target) {
+        return QString::fromUtf8(processor::translationInput(m, m.plans[0], v, target));
+    };
+    const QString none = input(u"imc"_s), maneuvers = input(u"sheet"_s), points = input(u"iver"_s);
+    EXPECT_EQ(none.count(u"<maneuver "_s), 1) << "only the ExpandingSquare, for its corners";
+    EXPECT_EQ(none.count(u"<offset "_s), 7);
+    // (Geometry points have a leg; the map's points do not.)
+    EXPECT_EQ(none.count(u" leg="_s), 0);
+    EXPECT_EQ(maneuvers.count(u"<maneuver step"_s), 15);
+    EXPECT_EQ(maneuvers.count(u" leg="_s), 0);
+    EXPECT_EQ(points.count(u"<maneuver step"_s), 15);
+    EXPECT_GT(points.count(u" leg="_s), 15);
+    EXPECT_EQ(points.count(u"<offset "_s), 7);
+    // Every level is a well-formed document with the mission and the vehicle.
+    for (const QString &doc : {none, maneuvers, points}) {
+        const auto parsed = xml::XmlDocument::parse(doc.toUtf8(), u"input.xml"_s);
+        ASSERT_TRUE(parsed) << parsed.error().toString().toStdString();
+        EXPECT_TRUE(xml::firstChildElement(parsed->root(), "mission"));
+        EXPECT_TRUE(xml::firstChildElement(parsed->root(), "vehicle"));
+    }
 }
 
 // The promise of the design: a vehicle and a target are files, no rebuild.
@@ -303,7 +331,7 @@ TEST(MissionTranslator, AHostileVehicleStylesheetIsRefused)
 </xsl:stylesheet>)X");
     xsl.close();
     VehicleDefinition v = everyTarget(u"lauv-xplore-1"_s);
-    v.translations = {{u"evil"_s, u"Evil"_s, xsl.fileName(), u"txt"_s, {}}};
+    v.translations = {{u"evil"_s, u"Evil"_s, xsl.fileName(), u"txt"_s, {}, Translation::Geometry::Points}};
     const auto out = processor::translatePlan(everything(), u"survey"_s, v, u"evil"_s);
     ASSERT_FALSE(out);
     EXPECT_TRUE(out.error().first().toString().contains(u"evil.xsl"_s)) << out.error().first().toString().toStdString();

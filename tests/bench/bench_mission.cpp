@@ -1,0 +1,276 @@
+// Missions at scale: a 10,000-maneuver mission loaded and validated (XML
+// parse, XSD validation, model), checked against its vehicle, its geometry
+// worked out, and its plan translated to each shipped target (the whole
+// processor: input document, the neptus-xslt helper process, the stylesheet).
+// Goal (issue "Missions as files"): load + validate and each translation ≤ 100 ms.
+// Run: tools/bench mission --benchmark_min_time=2s   (figures in BENCHMARKS.md)
+#include "BenchMain.h"
+#include "mission/MissionXml.h"
+#include "mission/PlanGeometry.h"
+#include "mission/Vehicle.h"
+#include "core/DataFiles.h"
+#include "processor/MissionTranslator.h"
+#include "processor/Stylesheet.h"
+#include "xml/XmlDocument.h"
+
+#include <QFile>
+#include <QTemporaryDir>
+
+#include <benchmark/benchmark.h>
+
+#include <cstdio>
+
+using namespace neptus;
+using namespace neptus::mission;
+using namespace Qt::StringLiterals;
+
+namespace {
+
+constexpr int maneuverCount = 10000;
+
+// 10,000 maneuvers, a few hundred metres apart, chained by transitions:
+// "gotos" only (a plan comparable to what bare libxslt was measured on), or
+// "mixed", seven kinds in turn (Goto 4 in 10; Rows, Loiter, YoYo,
+// StationKeeping, FollowPath, PopUp 1 in 10 each).
+QByteArray bigMission(bool mixed)
+{
+    QByteArray xml = R"(<?xml version="1.0" encoding="UTF-8"?>
+<mission format="1" id="big" name="10,000 maneuvers"><home lat="41.18" lon="-8.70" height="0"/><vehicle id="auv"/>
+<plan id="big" vehicle="auv" start="m0"><maneuvers>
+)";
+    for (int i = 0; i < maneuverCount; ++i) {
+        const QByteArray id = "m" + QByteArray::number(i);
+        const QByteArray lat = QByteArray::number(41.18 + (i % 100) * 0.001, 'f', 6);
+        const QByteArray lon = QByteArray::number(-8.70 + (i / 100) * 0.001, 'f', 6);
+        const QByteArray at = " id=\"" + id + "\" lat=\"" + lat + "\" lon=\"" + lon + "\"";
+        switch (mixed ? i % 10 : 0) {
+        case 0: case 1: case 2: case 3:
+            xml += "<Goto" + at + " z=\"2\" z_units=\"DEPTH\" speed=\"1.5\" speed_units=\"METERS_PS\" timeout=\"600\"/>\n";
+            break;
+        case 4:
+            xml += "<Rows" + at + " z=\"3\" z_units=\"ALTITUDE\" speed=\"1.2\" bearing=\"45\" width=\"30\" length=\"60\" hstep=\"10\"/>\n";
+            break;
+        case 5:
+            xml += "<Loiter" + at + " z=\"2\" z_units=\"DEPTH\" speed=\"1\" duration=\"60\" type=\"CIRCULAR\" radius=\"15\" direction=\"CLOCKW\"/>\n";
+            break;
+        case 6:
+            xml += "<YoYo" + at + " z=\"8\" z_units=\"DEPTH\" amplitude=\"3\" pitch=\"15\" speed=\"1.3\"/>\n";
+            break;
+        case 7:
+            xml += "<StationKeeping" + at + " radius=\"10\" duration=\"30\" speed=\"1\"/>\n";
+            break;
+        case 8:
+            xml += "<FollowPath" + at + " z=\"2\" z_units=\"DEPTH\" speed=\"1\"><point x=\"0\" y=\"0\" z=\"0\"/>"
+                   "<point x=\"40\" y=\"0\" z=\"1\"/><point x=\"40\" y=\"40\" z=\"0\"/></FollowPath>\n";
+            break;
+        default:
+            xml += "<PopUp" + at + " z=\"0\" z_units=\"DEPTH\" speed=\"1.5\" duration=\"20\" radius=\"5\" flags=\"WAIT_AT_SURFACE\"/>\n";
+        }
+    }
+    xml += "</maneuvers>\n";
+    for (int i = 0; i + 1 < maneuverCount; ++i)
+        xml += "<transition from=\"m" + QByteArray::number(i) + "\" to=\"m" + QByteArray::number(i + 1) + "\"/>\n";
+    xml += "</plan></mission>\n";
+    return xml;
+}
+
+struct Fixture
+{
+    QTemporaryDir dir;
+    QString path;
+    Mission mission;
+    VehicleDefinition vehicle;
+
+    explicit Fixture(bool mixed)
+    {
+        path = dir.filePath(u"big.xml"_s);
+        QFile file(path);
+        if (file.open(QIODevice::WriteOnly))
+            file.write(bigMission(mixed));
+        file.close();
+        auto loaded = loadMission(path);
+        if (!loaded) {
+            std::fprintf(stderr, "bench_mission: %s\n", qPrintable(loaded.error().first().toString()));
+            std::exit(1);
+        }
+        mission = *loaded;
+        vehicle.id = u"auv"_s;
+        vehicle.name = u"AUV"_s;
+        vehicle.kind = u"UUV"_s;
+        vehicle.limits.zUnits = {u"DEPTH"_s, u"ALTITUDE"_s};
+        for (const char *type : {"Goto", "Rows", "Loiter", "YoYo", "StationKeeping", "FollowPath", "PopUp"})
+            vehicle.maneuvers.append(ManeuverSpec{QString::fromLatin1(type), {}});
+        vehicle.translations = {{u"imc"_s, u"IMC"_s, u"imc-plan.xsl"_s, u"imc.xml"_s, {}, Translation::Geometry::None},
+                                {u"iver"_s, u"Iver"_s, u"iver-mis.xsl"_s, u"mis"_s, {}, Translation::Geometry::Points},
+                                {u"qgc-plan"_s, u"QGC"_s, u"qgc-plan.xsl"_s, u"plan"_s, {}, Translation::Geometry::Points},
+                                {u"qgc-wpl"_s, u"WPL"_s, u"qgc-wpl.xsl"_s, u"waypoints"_s, {}, Translation::Geometry::Points},
+                                {u"sheet"_s, u"Sheet"_s, u"mission-sheet.xsl"_s, u"html"_s, {}, Translation::Geometry::Maneuvers}};
+    }
+};
+
+Fixture &fixture(bool mixed = true)
+{
+    static Fixture gotos(false), kinds(true);
+    return mixed ? kinds : gotos;
+}
+
+void LoadAndValidate(benchmark::State &state, bool mixed)
+{
+    const QString path = fixture(mixed).path;
+    state.counters["bytes"] = static_cast<double>(QFileInfo(path).size());
+    for (auto _ : state) {
+        auto mission = loadMission(path);
+        if (!mission)
+            state.SkipWithError("load failed");
+        benchmark::DoNotOptimize(mission);
+    }
+    state.counters["maneuvers"] = maneuverCount;
+}
+BENCHMARK_CAPTURE(LoadAndValidate, gotos, false)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(LoadAndValidate, mixed, true)->Unit(benchmark::kMillisecond);
+
+// Its parts: the hardened parse, then the schema validation.
+void MissionParse(benchmark::State &state)
+{
+    QFile file(fixture().path);
+    file.open(QIODevice::ReadOnly);
+    const QByteArray bytes = file.readAll();
+    for (auto _ : state)
+        benchmark::DoNotOptimize(xml::XmlDocument::parse(bytes, u"big.xml"_s));
+}
+BENCHMARK(MissionParse)->Unit(benchmark::kMillisecond);
+
+void MissionParseAndValidate(benchmark::State &state)
+{
+    QFile file(fixture().path);
+    file.open(QIODevice::ReadOnly);
+    const QByteArray bytes = file.readAll();
+    for (auto _ : state)
+        benchmark::DoNotOptimize(readValid(bytes, u"big.xml"_s, u"mission.xsd"_s));
+}
+BENCHMARK(MissionParseAndValidate)->Unit(benchmark::kMillisecond);
+
+void WriteMission(benchmark::State &state)
+{
+    const Mission &m = fixture().mission;
+    for (auto _ : state)
+        benchmark::DoNotOptimize(writeMission(m));
+}
+BENCHMARK(WriteMission)->Unit(benchmark::kMillisecond);
+
+void CheckAgainstVehicle(benchmark::State &state)
+{
+    const Plan &plan = fixture().mission.plans.first();
+    for (auto _ : state) {
+        const Errors errors = fixture().vehicle.check(plan, u"big.xml"_s);
+        if (!errors.isEmpty())
+            state.SkipWithError(qPrintable(errors.first().toString()));
+    }
+}
+BENCHMARK(CheckAgainstVehicle)->Unit(benchmark::kMillisecond);
+
+void Geometry(benchmark::State &state)
+{
+    const Plan &plan = fixture().mission.plans.first();
+    for (auto _ : state)
+        benchmark::DoNotOptimize(planGeometry(plan));
+}
+BENCHMARK(Geometry)->Unit(benchmark::kMillisecond);
+
+void TranslationInput(benchmark::State &state)
+{
+    const Fixture &f = fixture();
+    for (auto _ : state) {
+        const QByteArray input = processor::translationInput(f.mission, f.mission.plans.first(), f.vehicle, u"imc"_s);
+        state.counters["input_bytes"] = static_cast<double>(input.size());
+    }
+}
+BENCHMARK(TranslationInput)->Unit(benchmark::kMillisecond);
+
+void Translate(benchmark::State &state, const QString &target, bool mixed)
+{
+    const Fixture &f = fixture(mixed);
+    qsizetype size = 0;
+    for (auto _ : state) {
+        auto out = processor::translatePlan(f.mission, u"big"_s, f.vehicle, target);
+        if (!out) {
+            state.SkipWithError(qPrintable(out.error().first().toString()));
+            break;
+        }
+        size = out->size();
+    }
+    state.counters["output_bytes"] = static_cast<double>(size);
+}
+// Reading the input document alone (the hardened reader), and a stylesheet
+// that does nothing: the floor under every translation.
+void ParseInput(benchmark::State &state)
+{
+    const Fixture &f = fixture();
+    const QByteArray input = processor::translationInput(f.mission, f.mission.plans.first(), f.vehicle, u"imc"_s);
+    for (auto _ : state)
+        benchmark::DoNotOptimize(xml::XmlDocument::parse(input, u"big"_s));
+}
+BENCHMARK(ParseInput)->Unit(benchmark::kMillisecond);
+
+void EmptyStylesheet(benchmark::State &state)
+{
+    const Fixture &f = fixture();
+    const QByteArray input = processor::translationInput(f.mission, f.mission.plans.first(), f.vehicle, u"imc"_s);
+    const auto style = processor::Stylesheet::parse(
+        R"(<xsl:stylesheet version="1.0" xmlns:xsl="http://www.w3.org/1999/XSL/Transform"><xsl:template match="/"/></xsl:stylesheet>)",
+        u"empty.xsl"_s);
+    for (auto _ : state)
+        benchmark::DoNotOptimize(style->apply(input, u"big"_s));
+}
+BENCHMARK(EmptyStylesheet)->Unit(benchmark::kMillisecond);
+
+// The same stylesheets applied in this process to an input made once: what
+// libxslt itself costs, for the processor's overhead (input, helper process,
+// pipes) to be read against.
+void BareXslt(benchmark::State &state, const QString &target, bool mixed)
+{
+    const Fixture &f = fixture(mixed);
+    const QByteArray input = processor::translationInput(f.mission, f.mission.plans.first(), f.vehicle, target);
+    const auto style = processor::Stylesheet::load(f.vehicle.stylesheetPath(*f.vehicle.translation(target)));
+    if (!style) {
+        state.SkipWithError(qPrintable(style.error().toString()));
+        return;
+    }
+    for (auto _ : state) {
+        auto out = style->apply(input, u"big"_s);
+        if (!out) {
+            state.SkipWithError(qPrintable(out.error().toString()));
+            break;
+        }
+        benchmark::DoNotOptimize(out);
+    }
+    state.counters["input_bytes"] = static_cast<double>(input.size());
+}
+BENCHMARK_CAPTURE(BareXslt, gotos_imc, u"imc"_s, false)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BareXslt, mixed_imc, u"imc"_s, true)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BareXslt, gotos_iver, u"iver"_s, false)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BareXslt, mixed_iver, u"iver"_s, true)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BareXslt, gotos_qgc_plan, u"qgc-plan"_s, false)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BareXslt, mixed_qgc_plan, u"qgc-plan"_s, true)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BareXslt, gotos_qgc_wpl, u"qgc-wpl"_s, false)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BareXslt, mixed_qgc_wpl, u"qgc-wpl"_s, true)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BareXslt, gotos_sheet, u"sheet"_s, false)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BareXslt, mixed_sheet, u"sheet"_s, true)->Unit(benchmark::kMillisecond);
+
+BENCHMARK_CAPTURE(Translate, gotos_imc, u"imc"_s, false)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(Translate, mixed_imc, u"imc"_s, true)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(Translate, gotos_iver, u"iver"_s, false)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(Translate, mixed_iver, u"iver"_s, true)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(Translate, gotos_qgc_plan, u"qgc-plan"_s, false)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(Translate, mixed_qgc_plan, u"qgc-plan"_s, true)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(Translate, gotos_qgc_wpl, u"qgc-wpl"_s, false)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(Translate, mixed_qgc_wpl, u"qgc-wpl"_s, true)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(Translate, gotos_sheet, u"sheet"_s, false)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(Translate, mixed_sheet, u"sheet"_s, true)->Unit(benchmark::kMillisecond);
+
+} // namespace
+
+int main(int argc, char **argv)
+{
+    return neptus::test::runBenchmarks(argc, argv);
+}
