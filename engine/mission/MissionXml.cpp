@@ -472,11 +472,19 @@ std::expected<Mission, Errors> readMission(QByteArrayView data, const QString &f
     return mission;
 }
 
+std::expected<QByteArray, Errors> readFile(const QString &path, qsizetype maxBytes)
+{
+    auto data = readFileMaybeGzip(path, maxBytes);
+    if (!data) // the reason without the file name, which the error carries
+        return std::unexpected(Errors{XmlError{path, 0, 0, QString(data.error()).remove(path + u": "_s)}});
+    return *data;
+}
+
 std::expected<Mission, Errors> loadMission(const QString &path)
 {
-    auto data = readFileMaybeGzip(path, XmlDocument::maxBytes);
+    auto data = readFile(path);
     if (!data)
-        return std::unexpected(Errors{XmlError{path, 0, 0, QString(data.error()).remove(path + u": "_s)}});
+        return std::unexpected(data.error());
     return readMission(*data, path);
 }
 

@@ -31,6 +31,9 @@ QByteArray writeMission(const Mission &mission);
 // Atomic, keeping the previous version as path + ".bak" (core/SafeFile.h).
 std::expected<void, QString> saveMission(const Mission &mission, const QString &path);
 
+// A file's bytes (gzip-compressed or not), at most `maxBytes`; an error names the file.
+std::expected<QByteArray, Errors> readFile(const QString &path, qsizetype maxBytes = xml::XmlDocument::maxBytes);
+
 // A schema we ship (share/neptus-qt/schemas/<name>), compiled once per process.
 const std::expected<xml::XmlSchema, xml::XmlError> &shippedSchema(const QString &name);
 // Reads `data` and validates it against a shipped schema: the document, or every error.

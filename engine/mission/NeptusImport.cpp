@@ -997,17 +997,17 @@ std::expected<NeptusVehicleImport, Errors> importNeptusVehicle(QByteArrayView da
 
 std::expected<NeptusVehicleImport, Errors> importNeptusVehicle(const QString &path)
 {
-    const auto data = readFileMaybeGzip(path, XmlDocument::maxBytes);
+    const auto data = readFile(path);
     if (!data)
-        return std::unexpected(Errors{XmlError{path, 0, 0, QString(data.error()).remove(path + u": "_s)}});
+        return std::unexpected(data.error());
     return importNeptusVehicle(*data, path);
 }
 
 std::expected<NeptusImport, Errors> importNeptus(const QString &path)
 {
-    const auto data = readFileMaybeGzip(path, maxArchiveBytes);
+    const auto data = readFile(path, maxArchiveBytes);
     if (!data)
-        return std::unexpected(Errors{XmlError{path, 0, 0, QString(data.error()).remove(path + u": "_s)}});
+        return std::unexpected(data.error());
     if (path.endsWith(u".nmisz"_s, Qt::CaseInsensitive) || path.endsWith(u".nmap"_s, Qt::CaseInsensitive))
         return importNeptus(*data, path);
     const QDir folder = QFileInfo(path).dir();

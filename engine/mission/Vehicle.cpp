@@ -1,7 +1,6 @@
 #include "mission/Vehicle.h"
 
 #include "core/DataFiles.h"
-#include "core/Gzip.h"
 
 #include <QDir>
 #include <QFileInfo>
@@ -225,9 +224,9 @@ std::expected<VehicleDefinition, Errors> readVehicle(QByteArrayView data, const 
 
 std::expected<VehicleDefinition, Errors> loadVehicle(const QString &path)
 {
-    auto data = readFileMaybeGzip(path, XmlDocument::maxBytes);
+    auto data = readFile(path);
     if (!data)
-        return std::unexpected(Errors{XmlError{path, 0, 0, QString(data.error()).remove(path + u": "_s)}});
+        return std::unexpected(data.error());
     return readVehicle(*data, path);
 }
 

@@ -1,8 +1,21 @@
 #pragma once
 
-// Sample missions the tests share.
+// Sample missions and helpers the mission tests share.
+
+#include "mission/MissionXml.h"
+
+#include <QStringList>
 
 namespace neptus::test {
+
+// Errors one to a line, for test messages.
+inline QString errorsText(const mission::Errors &errors)
+{
+    QStringList lines;
+    for (const auto &e : errors)
+        lines << e.toString();
+    return lines.join(u'\n');
+}
 
 // Every maneuver type, a map with every feature kind and a checklist.
 inline const char *const everything = R"X(<?xml version="1.0" encoding="UTF-8"?>

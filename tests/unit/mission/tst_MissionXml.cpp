@@ -11,16 +11,9 @@
 using namespace neptus::mission;
 using neptus::test::everything;
 using namespace Qt::StringLiterals;
+using neptus::test::errorsText;
 
 namespace {
-
-QString errorsText(const Errors &errors)
-{
-    QStringList lines;
-    for (const auto &e : errors)
-        lines << e.toString();
-    return lines.join(u'\n');
-}
 
 std::expected<Mission, Errors> read(const QByteArray &text)
 {

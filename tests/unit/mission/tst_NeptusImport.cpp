@@ -9,21 +9,16 @@
 #include <archive.h>
 #include <archive_entry.h>
 
+#include "Missions.h"
+
 #include <gtest/gtest.h>
 
 using namespace neptus::mission;
 using namespace neptus::test;
 using namespace Qt::StringLiterals;
+using neptus::test::errorsText;
 
 namespace {
-
-QString errorsText(const Errors &errors)
-{
-    QStringList lines;
-    for (const auto &e : errors)
-        lines << e.toString();
-    return lines.join(u'\n');
-}
 
 struct Counts
 {

@@ -7,21 +7,16 @@
 #include <QFile>
 #include <QTemporaryDir>
 
+#include "Missions.h"
+
 #include <gtest/gtest.h>
 
 using namespace neptus::mission;
 using namespace neptus::test;
 using namespace Qt::StringLiterals;
+using neptus::test::errorsText;
 
 namespace {
-
-QString errorsText(const Errors &errors)
-{
-    QStringList lines;
-    for (const auto &e : errors)
-        lines << e.toString();
-    return lines.join(u'\n');
-}
 
 const QByteArray auv = R"(<?xml version="1.0"?>
 <vehicle format="1" id="test-auv" name="Test AUV" kind="UUV" imc-id="0x0042">

@@ -24,16 +24,9 @@
 using namespace neptus;
 using namespace neptus::mission;
 using namespace Qt::StringLiterals;
+using neptus::test::errorsText;
 
 namespace {
-
-QString errorsText(const Errors &errors)
-{
-    QStringList lines;
-    for (const auto &e : errors)
-        lines << e.toString();
-    return lines.join(u'\n');
-}
 
 // A vehicle offering every shipped target.
 VehicleDefinition everyTarget(const QString &id, const QString &kind = u"UUV"_s)
