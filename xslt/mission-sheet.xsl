@@ -72,7 +72,10 @@
               <td><xsl:value-of select="@id"/></td>
               <td><xsl:value-of select="@type"/></td>
               <td class="n"><xsl:value-of select="concat(format-number($m/@lat, '0.00000'), ', ', format-number($m/@lon, '0.00000'))"/></td>
-              <td class="n"><xsl:value-of select="concat(@max-z, ' ', @z-units)"/></td>
+              <td class="n">
+                <xsl:if test="@min-z != @max-z"><xsl:value-of select="concat(@min-z, '–')"/></xsl:if>
+                <xsl:value-of select="concat(@max-z, ' ', @z-units)"/>
+              </td>
               <td class="n"><xsl:value-of select="format-number(@speed, '0.0#')"/> m/s</td>
               <td class="n"><xsl:value-of select="format-number(@transit + @length, '#,##0')"/></td>
               <td class="n"><xsl:call-template name="duration"><xsl:with-param name="seconds" select="@duration"/></xsl:call-template></td>
@@ -100,7 +103,17 @@
           <h2>Vehicle limits</h2>
           <table class="facts">
             <xsl:for-each select="$vehicle/limits/@*">
-              <tr><td><xsl:value-of select="name()"/></td><td><xsl:value-of select="."/></td></tr>
+              <tr>
+                <td><xsl:value-of select="translate(name(), '-', ' ')"/></td>
+                <td>
+                  <xsl:choose>
+                    <xsl:when test="name() = 'endurance'"><xsl:call-template name="duration"><xsl:with-param name="seconds" select="."/></xsl:call-template></xsl:when>
+                    <xsl:when test="contains(name(), 'speed')"><xsl:value-of select="concat(., ' m/s')"/></xsl:when>
+                    <xsl:when test="name() = 'z-units' or name() = 'rpm-per-mps'"><xsl:value-of select="."/></xsl:when>
+                    <xsl:otherwise><xsl:value-of select="concat(., ' m')"/></xsl:otherwise>
+                  </xsl:choose>
+                </td>
+              </tr>
             </xsl:for-each>
           </table>
         </xsl:if>

@@ -186,6 +186,11 @@ ManeuverGeometry maneuverGeometry(const Maneuver &m, const Waypoint *previous, c
             g.maxZ = std::max(startZ, z);
         }
     }
+    // Depth, altitude and height stop at zero: a yo-yo 10 m either side of 5 m
+    // goes from the surface to 15 m (DUNE limits it so).
+    if (g.zUnits != u"NONE")
+        g.minZ = std::max(g.minZ, 0.0);
+
     // Legs inside the maneuver on its plane; the transit to it as a geodesic.
     double along = 0;
     for (qsizetype i = 1; i < g.points.size(); ++i) {

@@ -95,6 +95,9 @@ TEST(PlanGeometry, PathsSquaresAndProfiles)
     const auto yoyo = maneuverGeometry(maneuver(u"YoYo"_s, {{"z", 10}, {"amplitude", 4}}, {{"z_units", "DEPTH"}}));
     EXPECT_EQ(yoyo.minZ, 6);
     EXPECT_EQ(yoyo.maxZ, 14);
+    const auto shallow = maneuverGeometry(maneuver(u"YoYo"_s, {{"z", 5}, {"amplitude", 10}}, {{"z_units", "DEPTH"}}));
+    EXPECT_EQ(shallow.minZ, 0); // not 5 m above the surface
+    EXPECT_EQ(shallow.maxZ, 15);
     const auto elevator = maneuverGeometry(maneuver(u"Elevator"_s, {{"start_z", 2}, {"end_z", 20}},
                                                     {{"end_z_units", "DEPTH"}}));
     EXPECT_EQ(elevator.zUnits, u"DEPTH"_s);
