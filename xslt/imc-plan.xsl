@@ -7,6 +7,7 @@
   (the encoder turns them into radians, the one conversion the direct C++
   encoder uses too, so both give the same bytes); ExpandingSquare, which IMC
   lacks, becomes a FollowPath through the corners the engine worked out.
+  Empty lists are left out (an absent field is empty).
 -->
 <xsl:stylesheet version="1.0" xmlns:xsl="http://www.w3.org/1999/XSL/Transform">
   <!-- For the encoder, not for reading: no indentation (neptus-msg shows a message readably). -->
@@ -43,8 +44,8 @@
           <PlanManeuver>
             <maneuver_id><xsl:value-of select="@id"/></maneuver_id>
             <data><xsl:apply-templates select="." mode="maneuver"/></data>
-            <start_actions><xsl:copy-of select="start-actions/*"/></start_actions>
-            <end_actions><xsl:copy-of select="end-actions/*"/></end_actions>
+            <xsl:if test="start-actions/*"><start_actions><xsl:copy-of select="start-actions/*"/></start_actions></xsl:if>
+            <xsl:if test="end-actions/*"><end_actions><xsl:copy-of select="end-actions/*"/></end_actions></xsl:if>
           </PlanManeuver>
         </xsl:for-each>
       </maneuvers>
@@ -54,7 +55,7 @@
             <source_man><xsl:value-of select="@from"/></source_man>
             <dest_man><xsl:value-of select="@to"/></dest_man>
             <conditions><xsl:value-of select="@condition"/></conditions>
-            <actions><xsl:copy-of select="actions/*"/></actions>
+            <xsl:if test="actions/*"><actions><xsl:copy-of select="actions/*"/></actions></xsl:if>
           </PlanTransition>
         </xsl:for-each>
       </transitions>
