@@ -29,7 +29,7 @@ set(NEPTUS_LAYERS
   "neptus-model-import -           neptus-model-reader"
   "neptus-script-host  -           neptus-scripting"
   "neptus-xslt         -           neptus-processor"
-  "neptus-mission      -           neptus-processor"
+  "neptus-mission      -           neptus-processor neptus-models"
 )
 
 # neptus_layer(LIBRARY <folder-var> <uses-var> <allowed-var>): the table's

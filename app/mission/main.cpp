@@ -6,10 +6,12 @@
 #include "mission/NeptusImport.h"
 #include "mission/PlanGeometry.h"
 #include "mission/Vehicle.h"
+#include "models/ModelImport.h"
 #include "processor/MissionTranslator.h"
 
 #include <QCommandLineParser>
 #include <QCoreApplication>
+#include <QDir>
 #include <QFileInfo>
 #include <QTextStream>
 
@@ -60,6 +62,29 @@ bool isVehicleFile(const QString &path)
     return root >= 0 && head.indexOf("<mission") < 0;
 }
 
+// The files a mission's maps name: images must be there, 3D models must
+// read (through the model import helper, as the console reads them).
+Errors checkMapFiles(const Mission &mission, const QString &path)
+{
+    Errors problems;
+    const QDir folder = QFileInfo(path).dir();
+    for (const Map &map : mission.maps) {
+        for (const Feature &f : map.features) {
+            if (f.kind != u"image" && f.kind != u"model")
+                continue;
+            const QString file = folder.filePath(f.attributes.value(u"file"_s));
+            const QString what = u"map '%1', %2 '%3'"_s.arg(map.id, f.kind, f.id);
+            if (!QFileInfo(file).isFile()) {
+                problems.append(xml::XmlError{path, f.line.value, 0, u"%1: no file %2"_s.arg(what, file)});
+            } else if (f.kind == u"model") {
+                if (const auto mesh = models::importModel(file); !mesh)
+                    problems.append(xml::XmlError{path, f.line.value, 0, u"%1: %2"_s.arg(what, mesh.error())});
+            }
+        }
+    }
+    return problems;
+}
+
 int validate(const QStringList &files, const VehicleCatalog &vehicles)
 {
     int failures = 0;
@@ -81,7 +106,7 @@ int validate(const QStringList &files, const VehicleCatalog &vehicles)
             ++failures;
             continue;
         }
-        Errors problems;
+        Errors problems = checkMapFiles(*m, path);
         qsizetype maneuvers = 0;
         for (const Plan &plan : m->plans) {
             maneuvers += plan.maneuvers.size();
@@ -236,7 +261,8 @@ int main(int argc, char **argv)
     QCoreApplication::setApplicationName(u"neptus-mission"_s);
     QCommandLineParser parser;
     parser.setApplicationDescription(uR"(Missions from the command line:
-  validate FILE...                     check missions and vehicle definitions (schema, then each plan against its vehicle)
+  validate FILE...                     check missions and vehicle definitions (schema, each plan against its vehicle,
+                                       the images and 3D models its maps name)
   import FILE -o OUT                   LSTS Neptus .nmisz/.nmis/.nmap → our mission, .nvcl → our vehicle definition
   translate MISSION --plan ID --to TARGET -o FILE [--vehicle NAME]
                                        a plan in a vehicle's own format

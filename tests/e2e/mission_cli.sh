@@ -64,6 +64,23 @@ printf '<mission format="1" id="m">\n<home lat="91" lon="0"/></mission>\n' >"$wo
 "$tool" frobnicate 2>/dev/null
 [ $? = 2 ]; check "an unknown command is a usage error (2)" $?
 
+# The files a map names: a 3D model that reads (through the model import helper) passes, a missing one does not.
+printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n' >"$work/ship.obj"
+cat >"$work/models.xml" <<'EOF'
+<mission format="1" id="m"><home lat="41" lon="-8"/>
+<map id="harbour">
+<model id="ship" file="ship.obj" lat="41" lon="-8" yaw="90"/>
+<image id="chart" file="chart.png" lat="41" lon="-8" scale="0.5"/>
+</map></mission>
+EOF
+"$tool" validate "$work/models.xml" 2>"$work/err"
+[ $? = 1 ] && grep -q "models.xml:4: map 'harbour', image 'chart': no file" "$work/err" && ! grep -q "'ship'" "$work/err"
+check "validate reads the map's 3D model and names the missing image" $?
+printf 'this is not a model\n' >"$work/ship.obj"
+"$tool" validate "$work/models.xml" 2>"$work/err"
+[ $? = 1 ] && grep -q "models.xml:3: map 'harbour', model 'ship': .*could not be read" "$work/err"
+check "a model the helper cannot read is named with its line" $?
+
 # A vehicle and a target of one's own: files only.
 mkdir -p "$work/mine"
 cat >"$work/mine/glider.xml" <<'EOF'
