@@ -155,3 +155,59 @@ TEST(PlanGeometry, APlanFollowsItsTransitionsFromTheStart)
     EXPECT_NEAR(*bounded.duration, 200, 0.2);
     EXPECT_NEAR(bounded.length, 200, 0.2);
 }
+
+// Every maneuver type from 100 m south of its position: its points, length
+// (transit apart) and duration at 1 m/s.
+TEST(PlanGeometry, EveryManeuverTypeHasItsGeometry)
+{
+    const Waypoint from{41.0 - 100 * degreesPerMetreNorth, -8.0, 0, u"DEPTH"_s, 0, 0};
+    struct Case
+    {
+        Maneuver maneuver;
+        qsizetype points;
+        double length;
+        std::optional<double> seconds; // after the 100 s transit; empty: never ends
+    };
+    Maneuver path = maneuver(u"FollowPath"_s, {{"speed", 1}});
+    path.points = {{0, 0, 0, {}}, {0, 50, 0, {}}};
+    Maneuver trajectory = maneuver(u"FollowTrajectory"_s, {{"speed", 1}});
+    trajectory.points = {{0, 0, 0, 0.0}, {30, 40, 0, 60.0}};
+    const QList<Case> cases{
+        {maneuver(u"Goto"_s, {{"speed", 1}}), 1, 0, 0},
+        {maneuver(u"PopUp"_s, {{"speed", 1}, {"duration", 30}}), 1, 0, 30},
+        {maneuver(u"Loiter"_s, {{"speed", 1}, {"radius", 10}, {"duration", 120}}), 37, 120, 120},
+        {maneuver(u"Loiter"_s, {{"speed", 1}, {"radius", 10}}), 37, 2 * 36 * 10 * std::sin(std::numbers::pi / 36), std::nullopt},
+        {maneuver(u"StationKeeping"_s, {{"speed", 1}, {"duration", 90}}), 1, 0, 90},
+        {maneuver(u"YoYo"_s, {{"speed", 1}, {"z", 10}, {"amplitude", 2}}), 1, 0, 0},
+        {maneuver(u"Rows"_s, {{"speed", 1}, {"width", 20}, {"length", 50}, {"hstep", 10}}), 6, 3 * 50 + 2 * 10, 170},
+        {path, 2, 50, 50},
+        {trajectory, 2, 50, 50},
+        {maneuver(u"Elevator"_s, {{"speed", 1}, {"start_z", 0}, {"end_z", 10}}), 1, 0, 0},
+        {maneuver(u"ExpandingSquare"_s, {{"speed", 1}, {"width", 20}, {"hstep", 10}}), 5, 10 + 10 + 20 + 20, 60},
+        {maneuver(u"CompassCalibration"_s, {{"speed", 1}, {"radius", 15}, {"duration", 600}}), 37, 600, 600},
+        {maneuver(u"ScheduledGoto"_s, {{"arrival_time", 1.8e9}}), 1, 0, 0},
+        {maneuver(u"Launch"_s, {{"speed", 1}}), 1, 0, 0},
+        {maneuver(u"Takeoff"_s, {{"speed", 1}, {"z", 100}}, {{"z_units", "HEIGHT"}}), 1, 0, 0},
+        {maneuver(u"Land"_s, {{"speed", 1}}, {{"z_units", "HEIGHT"}}), 1, 0, 0},
+    };
+    for (const Case &c : cases) {
+        const auto g = maneuverGeometry(c.maneuver, &from);
+        const std::string type = c.maneuver.type.toStdString();
+        EXPECT_EQ(g.points.size(), c.points) << type;
+        // (A circle begins on its north side, its radius beyond the position.)
+        EXPECT_NEAR(g.transit, 100 + c.maneuver.number(u"radius"_s) * (c.points == 37), 0.2) << type;
+        EXPECT_NEAR(g.length, c.length, 0.01) << type;
+        ASSERT_EQ(g.duration.has_value(), c.seconds.has_value()) << type;
+        if (c.seconds) {
+            EXPECT_NEAR(*g.duration - g.transit, *c.seconds, 0.01) << type;
+        }
+        // Legs add up to the length (a timed loiter goes round more than once).
+        double legs = 0;
+        for (qsizetype i = 1; i < g.points.size(); ++i)
+            legs += g.points[i].leg;
+        if (c.maneuver.type != u"Loiter" && c.maneuver.type != u"CompassCalibration") {
+            EXPECT_NEAR(legs, g.length, 1e-6) << type;
+        }
+        EXPECT_NEAR(g.points.first().leg, g.transit, 1e-9) << type;
+    }
+}
