@@ -72,6 +72,9 @@ in_root test ! -e "$(cd "$(dirname "$0")/../.." && pwd)"; check "the source tree
 in_root neptus-msg list >"$work/list.txt" 2>&1
 grep -q "EstimatedState" "$work/list.txt"; check "neptus-msg list reads the installed definitions ($(wc -l <"$work/list.txt") lines)" $?
 in_root neptus-sim --help >/dev/null 2>&1; check "neptus-sim --help" $?
+in_root neptus-mission targets --vehicle x8-02 >"$work/targets.txt" 2>&1
+grep -q "^qgc-plan" "$work/targets.txt" && ! grep -q "missing" "$work/targets.txt"
+check "neptus-mission targets finds the installed vehicles and stylesheets" $?
 if [ -n "${DISPLAY:-}" ]; then
   in_root neptus --self-test >"$work/selftest.log" 2>&1; status=$?
   check "neptus --self-test from the package: $(grep -c ' ok$' "$work/selftest.log") types and consoles" $status
