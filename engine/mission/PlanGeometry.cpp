@@ -124,8 +124,17 @@ QList<PathPoint> expandingSquareOffsets(const Maneuver &m)
 
 double distance(const Waypoint &a, const Waypoint &b)
 {
-    const auto g = geo::inverse(geo::radians(a.lat), geo::radians(a.lon), geo::radians(b.lat), geo::radians(b.lon));
-    return g ? g->distance : 0;
+    return arriving(a, b).leg;
+}
+
+Waypoint arriving(const Waypoint &from, Waypoint to)
+{
+    to.leg = to.heading = 0;
+    if (const auto g = geo::inverse(geo::radians(from.lat), geo::radians(from.lon), geo::radians(to.lat), geo::radians(to.lon))) {
+        to.leg = g->distance;
+        to.heading = g->distance > 0 ? std::fmod(geo::degrees(g->initialAzimuth) + 360, 360) : 0;
+    }
+    return to;
 }
 
 ManeuverGeometry maneuverGeometry(const Maneuver &m, const Waypoint *previous, const SpeedModel &speeds)
@@ -200,12 +209,8 @@ ManeuverGeometry maneuverGeometry(const Maneuver &m, const Waypoint *previous, c
         along += g.points[i].leg;
     }
     if (previous) {
-        if (const auto transit = geo::inverse(geo::radians(previous->lat), geo::radians(previous->lon),
-                                              geo::radians(g.points.first().lat), geo::radians(g.points.first().lon))) {
-            g.transit = transit->distance;
-            g.points.first().leg = transit->distance;
-            g.points.first().heading = transit->distance > 0 ? std::fmod(geo::degrees(transit->initialAzimuth) + 360, 360) : 0;
-        }
+        g.points.first() = arriving(*previous, g.points.first());
+        g.transit = g.points.first().leg;
     }
     // A timed loiter covers its circle for as long as it lasts; an endless one, one lap at least.
     g.length = circling && hold > 0 ? hold * g.speed : along;

@@ -77,5 +77,7 @@ QList<PathPoint> expandingSquareOffsets(const Maneuver &maneuver);
 
 // Great-circle distance in metres (WGS84 geodesic).
 double distance(const Waypoint &a, const Waypoint &b);
+// `to` with its leg and heading set from `from` (geodesic; heading 0 for no distance).
+Waypoint arriving(const Waypoint &from, Waypoint to);
 
 } // namespace neptus::mission

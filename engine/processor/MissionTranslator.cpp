@@ -1,6 +1,5 @@
 #include "processor/MissionTranslator.h"
 
-#include "geo/Geodesy.h"
 #include "mission/PlanGeometry.h"
 
 
@@ -105,14 +104,7 @@ QByteArray geometryElement(const Plan &plan, const VehicleDefinition &vehicle, T
             centre.lat = m.number(u"lat"_s);
             centre.lon = m.number(u"lon"_s);
             centre.leg = centre.heading = 0;
-            if (previous) {
-                if (const auto leg = geo::inverse(geo::radians(previous->lat), geo::radians(previous->lon),
-                                                  geo::radians(centre.lat), geo::radians(centre.lon))) {
-                    centre.leg = leg->distance;
-                    centre.heading = leg->distance > 0 ? std::fmod(geo::degrees(leg->initialAzimuth) + 360, 360) : 0;
-                }
-            }
-            points = {centre};
+            points = {previous ? arriving(*previous, centre) : centre};
         }
         for (const Waypoint &w : std::as_const(points)) {
             if (detail != Translation::Geometry::Points)
