@@ -27,6 +27,7 @@
             <value><xsl:value-of select="@value"/></value>
             <type>
               <xsl:choose>
+                <xsl:when test="@type"><xsl:value-of select="@type"/></xsl:when>
                 <xsl:when test="translate(@value, '0123456789', '') = '' and @value != ''">NUMBER</xsl:when>
                 <xsl:when test="translate(@value, '0123456789', '') = '-' and starts-with(@value, '-') and string-length(@value) &gt; 1">NUMBER</xsl:when>
                 <xsl:when test="translate(@value, '0123456789', '') = '.' and not(starts-with(@value, '.')) and substring(@value, string-length(@value)) != '.'">NUMBER</xsl:when>
@@ -34,7 +35,12 @@
                 <xsl:otherwise>TEXT</xsl:otherwise>
               </xsl:choose>
             </type>
-            <access>LOCAL</access>
+            <access>
+              <xsl:choose>
+                <xsl:when test="@access"><xsl:value-of select="@access"/></xsl:when>
+                <xsl:otherwise>INPUT</xsl:otherwise>
+              </xsl:choose>
+            </access>
           </PlanVariable>
         </xsl:for-each>
       </variables>

@@ -5,6 +5,10 @@
 
 #include <QRegularExpression>
 
+#include <charconv>
+#include <cmath>
+#include <numbers>
+
 namespace neptus::mission {
 
 using namespace Qt::StringLiterals;
@@ -114,14 +118,17 @@ std::expected<msg::Message, QString> planSpecification(const Plan &plan, const m
     spec->setBytes(def->indexOf(u"description"), plan.description.toUtf8());
     spec->setBytes(def->indexOf(u"start_man_id"), plan.start.toUtf8());
     std::vector<msg::Message> variables;
-    for (const auto &[name, value] : plan.variables) {
+    for (const PlanVariable &variable : plan.variables) {
         auto v = b.make(u"PlanVariable"_s);
         if (!v)
             return v;
-        (void)b.set(*v, u"name"_s, name);
-        (void)b.set(*v, u"value"_s, value);
-        (void)b.set(*v, u"type"_s, isPlainDecimal(value) ? u"NUMBER"_s : u"TEXT"_s);
-        (void)b.set(*v, u"access"_s, u"LOCAL"_s);
+        (void)b.set(*v, u"name"_s, variable.name);
+        (void)b.set(*v, u"value"_s, variable.value);
+        const QString type = !variable.type.isEmpty() ? variable.type : isPlainDecimal(variable.value) ? u"NUMBER"_s : u"TEXT"_s;
+        if (auto ok = b.set(*v, u"type"_s, type); !ok)
+            return std::unexpected(u"plan variable '%1': %2"_s.arg(variable.name, ok.error()));
+        if (auto ok = b.set(*v, u"access"_s, variable.access.isEmpty() ? u"INPUT"_s : variable.access); !ok)
+            return std::unexpected(u"plan variable '%1': %2"_s.arg(variable.name, ok.error()));
         variables.push_back(std::move(*v));
     }
     spec->setMessages(def->indexOf(u"variables"), std::move(variables));
@@ -166,6 +173,132 @@ std::expected<msg::Message, QString> planSpecification(const Plan &plan, const m
     spec->setMessages(def->indexOf(u"start_actions"), std::move(*start));
     spec->setMessages(def->indexOf(u"end_actions"), std::move(*end));
     return spec;
+}
+
+namespace {
+
+// The shortest decimal degrees whose radians (as the encoders compute them)
+// are exactly `radians` at the field's precision.
+QString degreesFor(double radians, bool single)
+{
+    const double degrees = radians * (180 / std::numbers::pi);
+    const auto same = [&](double candidate) {
+        const double back = msg::radiansFromDegrees(candidate);
+        return single ? static_cast<float>(back) == static_cast<float>(radians) : back == radians;
+    };
+    for (int digits = 1; digits <= 17; ++digits) {
+        const QString text = QString::number(degrees, 'g', digits);
+        if (same(text.toDouble()))
+            return text;
+    }
+    // Rounding can leave the nearest degrees a step off: look at the neighbours.
+    double candidate = degrees;
+    for (int step = 0; step < 8 && !same(candidate); ++step)
+        candidate = std::nextafter(candidate, radians > msg::radiansFromDegrees(candidate) ? INFINITY : -INFINITY);
+    return formatNumber(candidate);
+}
+
+// A value as our text: shortest for its precision (1.2 for an fp32 1.2, not 1.2000000476837158).
+QString numberText(double value, bool single)
+{
+    if (!single)
+        return formatNumber(value);
+    char buffer[32];
+    const auto result = std::to_chars(buffer, buffer + sizeof buffer, static_cast<float>(value));
+    return QString::fromLatin1(buffer, result.ptr - buffer);
+}
+
+std::expected<Maneuver, QString> maneuverFrom(const QString &id, const msg::Message &data)
+{
+    Maneuver m;
+    m.id = id;
+    m.type = data.abbrev();
+    for (int i = 0; i < data.fieldCount(); ++i) {
+        const msg::FieldDef &field = data.field(i);
+        const bool position = field.abbrev == u"lat" || field.abbrev == u"lon";
+        switch (field.type) {
+        case msg::FieldType::MessageList:
+            if (field.abbrev != u"points")
+                return std::unexpected(u"maneuver '%1': %2.%3 has no place in a plan of ours"_s.arg(id, m.type, field.abbrev));
+            for (const msg::Message &p : data.messages(i)) {
+                PathPoint point;
+                point.x = p.number(u"x");
+                point.y = p.number(u"y");
+                point.z = p.number(u"z");
+                if (p.abbrev() == u"TrajectoryPoint")
+                    point.t = p.number(u"t");
+                m.points.append(point);
+            }
+            break;
+        case msg::FieldType::Message:
+            return std::unexpected(u"maneuver '%1': %2.%3 has no place in a plan of ours"_s.arg(id, m.type, field.abbrev));
+        case msg::FieldType::PlainText:
+        case msg::FieldType::RawData:
+            if (!data.bytes(i).isEmpty())
+                m.parameters.insert(field.abbrev, data.text(i));
+            break;
+        case msg::FieldType::Fp32:
+        case msg::FieldType::Fp64: {
+            const double value = data.number(i);
+            const bool single = field.type == msg::FieldType::Fp32;
+            if (value != 0 || position)
+                m.parameters.insert(field.abbrev, field.unit == u"rad" ? degreesFor(value, single) : numberText(value, single));
+            break;
+        }
+        default:
+            if (data.integer(i) != 0)
+                m.parameters.insert(field.abbrev, field.enumeration ? data.enumText(i) : QString::number(data.integer(i)));
+        }
+    }
+    return m;
+}
+
+QList<XmlElement> elements(std::span<const msg::Message> messages)
+{
+    QList<XmlElement> list;
+    for (const msg::Message &message : messages)
+        list.append(msg::toXml(message));
+    return list;
+}
+
+} // namespace
+
+std::expected<Plan, QString> planFromSpecification(const msg::Message &spec, const QString &vehicle)
+{
+    if (spec.abbrev() != u"PlanSpecification")
+        return std::unexpected(u"a %1 is not a PlanSpecification"_s.arg(spec.abbrev()));
+    const msg::MessageDef *def = spec.def();
+    Plan plan;
+    plan.id = spec.text(u"plan_id");
+    plan.vehicle = vehicle;
+    plan.description = spec.text(u"description");
+    plan.start = spec.text(u"start_man_id");
+    for (const msg::Message &v : spec.messages(def->indexOf(u"variables")))
+        plan.variables.append({v.text(u"name"), v.text(u"value"), v.enumText(v.def()->indexOf(u"type")),
+                               v.enumText(v.def()->indexOf(u"access"))});
+    for (const msg::Message &node : spec.messages(def->indexOf(u"maneuvers"))) {
+        const QString id = node.text(u"maneuver_id");
+        const msg::Message *data = node.inlineMessage(node.def()->indexOf(u"data"));
+        if (!data)
+            return std::unexpected(u"maneuver '%1' holds no maneuver"_s.arg(id));
+        auto m = maneuverFrom(id, *data);
+        if (!m)
+            return std::unexpected(m.error());
+        m->startActions = elements(node.messages(node.def()->indexOf(u"start_actions")));
+        m->endActions = elements(node.messages(node.def()->indexOf(u"end_actions")));
+        plan.maneuvers.append(*m);
+    }
+    for (const msg::Message &edge : spec.messages(def->indexOf(u"transitions"))) {
+        Transition t;
+        t.from = edge.text(u"source_man");
+        t.to = edge.text(u"dest_man");
+        t.condition = edge.text(u"conditions");
+        t.actions = elements(edge.messages(edge.def()->indexOf(u"actions")));
+        plan.transitions.append(t);
+    }
+    plan.startActions = elements(spec.messages(def->indexOf(u"start_actions")));
+    plan.endActions = elements(spec.messages(def->indexOf(u"end_actions")));
+    return plan;
 }
 
 } // namespace neptus::mission

@@ -77,13 +77,25 @@ struct Transition
     friend bool operator==(const Transition &, const Transition &) = default;
 };
 
+// A plan variable (IMC PlanVariable). `type` BOOLEAN, NUMBER, TEXT or
+// MESSAGE, empty for "NUMBER when the value is a plain decimal, else TEXT";
+// `access` INPUT (the default, IMC's zero), OUTPUT or LOCAL.
+struct PlanVariable
+{
+    QString name;
+    QString value;
+    QString type;
+    QString access;
+    friend bool operator==(const PlanVariable &, const PlanVariable &) = default;
+};
+
 struct Plan
 {
     QString id;
     QString vehicle;
     QString start;
     QString description;
-    QList<std::pair<QString, QString>> variables;
+    QList<PlanVariable> variables;
     QList<XmlElement> startActions;
     QList<XmlElement> endActions;
     QList<Maneuver> maneuvers;

@@ -189,7 +189,7 @@ Plan Reader::plan(const xmlNode *node)
     if (const xmlNode *d = firstChildElement(node, "description"))
         p.description = textContent(d);
     for (const xmlNode *v : childElements(node, "variable"))
-        p.variables.append({attribute(v, "name"), attribute(v, "value")});
+        p.variables.append({attribute(v, "name"), attribute(v, "value"), attribute(v, "type"), attribute(v, "access")});
     p.startActions = messages(node, "start-actions");
     p.endActions = messages(node, "end-actions");
     for (const xmlNode *m : childElements(firstChildElement(node, "maneuvers")))
@@ -378,10 +378,14 @@ void writePlan(QXmlStreamWriter &out, const Plan &p)
     out.writeAttribute(u"start"_s, p.start);
     if (!p.description.isEmpty())
         out.writeTextElement(u"description"_s, p.description);
-    for (const auto &[name, value] : p.variables) {
+    for (const PlanVariable &v : p.variables) {
         out.writeEmptyElement(u"variable"_s);
-        out.writeAttribute(u"name"_s, name);
-        out.writeAttribute(u"value"_s, value);
+        out.writeAttribute(u"name"_s, v.name);
+        out.writeAttribute(u"value"_s, v.value);
+        if (!v.type.isEmpty())
+            out.writeAttribute(u"type"_s, v.type);
+        if (!v.access.isEmpty())
+            out.writeAttribute(u"access"_s, v.access);
     }
     writeMessages(out, u"start-actions"_s, p.startActions);
     writeMessages(out, u"end-actions"_s, p.endActions);

@@ -33,8 +33,19 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
             std::fprintf(stderr, "fuzz_mission: plan %s has a negative length\n", qPrintable(plan.id));
             std::abort();
         }
-        if (schema)
-            (void)planSpecification(plan, *schema); // an error is fine (a bad action message); a crash is not
+        if (!schema)
+            continue;
+        // An error is fine (a bad action message); a crash is not. What encodes
+        // must come back as a plan of as many maneuvers.
+        const auto spec = planSpecification(plan, *schema);
+        if (!spec)
+            continue;
+        const auto back = planFromSpecification(*spec, plan.vehicle);
+        if (!back || back->maneuvers.size() != plan.maneuvers.size()) {
+            std::fprintf(stderr, "fuzz_mission: plan %s does not come back from its PlanSpecification%s%s\n", qPrintable(plan.id),
+                         back ? "" : ": ", back ? "" : qPrintable(back.error()));
+            std::abort();
+        }
     }
     return 0;
 }

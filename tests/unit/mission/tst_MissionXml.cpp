@@ -56,7 +56,10 @@ TEST(MissionXml, ReadsEveryElement)
     EXPECT_EQ(plan.transitions[1].actions[0].name, u"PlanControl"_s);
     ASSERT_EQ(plan.startActions.size(), 1);
     EXPECT_EQ(plan.startActions[0].children[0].text, u"Sidescan"_s);
-    EXPECT_EQ(plan.variables, (QList<std::pair<QString, QString>>{{u"target_depth"_s, u"5"_s}}));
+    ASSERT_EQ(plan.variables.size(), 1);
+    EXPECT_EQ(plan.variables[0].name, u"target_depth"_s);
+    EXPECT_EQ(plan.variables[0].value, u"5"_s);
+    EXPECT_TRUE(plan.variables[0].type.isEmpty());
     const Maneuver *rows = plan.maneuver(u"rows"_s);
     ASSERT_TRUE(rows);
     EXPECT_EQ(rows->number(u"hstep"_s), 10.0);

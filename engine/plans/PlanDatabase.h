@@ -1,0 +1,26 @@
+#pragma once
+
+#include "messages/Codec.h"
+
+#include <QByteArray>
+#include <QList>
+#include <QString>
+
+#include <expected>
+#include <utility>
+
+namespace neptus::plans {
+
+// How a vehicle's plan database (DUNE's Plan/DB) names the plans it holds,
+// so the console can tell whether a vehicle's plan is the one on screen:
+// each plan by the MD5 of its PlanSpecification's payload fields (no header,
+// no CRC), and the whole database (PlanDBState.md5) by the MD5 of those
+// per-plan MD5s in plan id order.
+
+// The 16-byte MD5 of `specification`'s payload as `codec` serializes it.
+std::expected<QByteArray, QString> planMd5(const msg::Codec &codec, const msg::Message &specification);
+
+// The database MD5 of (plan id, 16-byte MD5) pairs, in any order.
+QByteArray databaseMd5(QList<std::pair<QString, QByteArray>> plans);
+
+} // namespace neptus::plans
