@@ -228,8 +228,9 @@ int targets(const QString &vehicleId, const VehicleCatalog &vehicles)
     QTextStream out(stdout);
     for (const Translation &t : vehicle->translations) {
         const QString path = vehicle->stylesheetPath(t);
-        out << qSetFieldWidth(10) << Qt::left << t.target << qSetFieldWidth(0) << "  " << qSetFieldWidth(26) << t.name
-            << qSetFieldWidth(0) << "  ." << t.extension << "  " << path << (QFileInfo::exists(path) ? "" : "  (missing)") << "\n";
+        out << qSetFieldWidth(10) << Qt::left << t.target << qSetFieldWidth(0) << "  " << qSetFieldWidth(33) << t.name
+            << qSetFieldWidth(11) << (u'.' + t.extension) << qSetFieldWidth(0) << path
+            << (QFileInfo::exists(path) ? "" : "  (missing)") << "\n";
     }
     return 0;
 }
