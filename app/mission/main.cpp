@@ -14,6 +14,7 @@
 #include <QDir>
 #include <QFileInfo>
 #include <QTextStream>
+#include <QXmlStreamReader>
 
 #include <cstdio>
 
@@ -52,14 +53,15 @@ QString duration(const std::optional<double> &seconds)
     return u"%1:%2:%3"_s.arg(s / 3600).arg(s / 60 % 60, 2, 10, QChar(u'0')).arg(s % 60, 2, 10, QChar(u'0'));
 }
 
-bool isVehicleFile(const QString &path)
+// The name of a document's first element (no more of it is read).
+QString rootElement(const QByteArray &bytes)
 {
-    QFile file(path);
-    if (!file.open(QIODevice::ReadOnly))
-        return false;
-    const QByteArray head = file.read(4096);
-    const qsizetype root = head.indexOf("<vehicle");
-    return root >= 0 && head.indexOf("<mission") < 0;
+    QXmlStreamReader reader(bytes);
+    while (!reader.atEnd()) {
+        if (reader.readNext() == QXmlStreamReader::StartElement)
+            return reader.name().toString();
+    }
+    return {};
 }
 
 // The files a mission's maps name: images must be there, 3D models must
@@ -89,8 +91,14 @@ int validate(const QStringList &files, const VehicleCatalog &vehicles)
 {
     int failures = 0;
     for (const QString &path : files) {
-        if (isVehicleFile(path)) {
-            const auto v = loadVehicle(path);
+        const auto bytes = readFile(path);
+        if (!bytes) {
+            failAll(bytes.error());
+            ++failures;
+            continue;
+        }
+        if (rootElement(*bytes) == u"vehicle") {
+            const auto v = readVehicle(*bytes, path);
             if (!v) {
                 failAll(v.error());
                 ++failures;
@@ -100,7 +108,7 @@ int validate(const QStringList &files, const VehicleCatalog &vehicles)
                         qPrintable(v->kind), static_cast<long long>(v->maneuvers.size()), static_cast<long long>(v->translations.size()));
             continue;
         }
-        const auto m = loadMission(path);
+        const auto m = readMission(*bytes, path);
         if (!m) {
             failAll(m.error());
             ++failures;
@@ -288,14 +296,14 @@ int main(int argc, char **argv)
     }
     const QString command = args.first();
     const QStringList rest = args.mid(1);
+    if (command == u"import" && rest.size() == 1) // needs no vehicle definitions
+        return import(rest.first(), parser.value(output));
     const VehicleCatalog vehicles = loadVehicles(vehicleFolders() + parser.values(vehiclesDir));
     for (const auto &e : vehicles.errors)
         std::fprintf(stderr, "warning: vehicle definition not loaded: %s\n", qPrintable(e.toString()));
 
     if (command == u"validate" && !rest.isEmpty())
         return validate(rest, vehicles);
-    if (command == u"import" && rest.size() == 1)
-        return import(rest.first(), parser.value(output));
     if (command == u"translate" && rest.size() == 1)
         return translate(rest.first(), parser.value(plan), parser.value(vehicle), parser.value(to), parser.value(output), vehicles);
     if (command == u"input" && rest.size() == 1)

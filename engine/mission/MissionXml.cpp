@@ -130,21 +130,25 @@ void Reader::unique(QHash<QString, int> &seen, const xmlNode *node, const QStrin
         seen.insert(id, line);
 }
 
-// What identity constraints would say, as a hash lookup each.
+// What identity constraints would say, as a hash lookup each, on the plan as read.
 void Reader::references(const Plan &plan, const xmlNode *node)
 {
+    const auto fail = [&](int line, const QString &message) {
+        errors.append(XmlError{m_document.fileName(), line, 0, message});
+    };
     QHash<QString, int> ids;
-    const auto maneuverNodes = childElements(firstChildElement(node, "maneuvers"));
-    for (const xmlNode *m : maneuverNodes)
-        unique(ids, m, attribute(m, "id"), u"maneuver"_s);
+    for (const Maneuver &m : plan.maneuvers) {
+        if (const auto first = ids.constFind(m.id); first != ids.cend())
+            fail(m.line.value, u"Element '%1': maneuver id '%2' is used twice (first at line %3)"_s.arg(m.type, m.id).arg(*first));
+        else
+            ids.insert(m.id, m.line.value);
+    }
     if (!ids.contains(plan.start))
         error(node, u"Element 'plan': start '%1' names no maneuver of plan '%2'"_s.arg(plan.start, plan.id));
-    const auto transitionNodes = childElements(node, "transition");
-    for (qsizetype i = 0; i < plan.transitions.size(); ++i) {
-        const Transition &t = plan.transitions[i];
+    for (const Transition &t : plan.transitions) {
         for (const QString &end : {t.from, t.to}) {
             if (!ids.contains(end))
-                error(transitionNodes[i], u"Element 'transition': '%1' names no maneuver of plan '%2'"_s.arg(end, plan.id));
+                fail(t.line.value, u"Element 'transition': '%1' names no maneuver of plan '%2'"_s.arg(end, plan.id));
         }
     }
 }
@@ -404,14 +408,18 @@ void writePlan(QXmlStreamWriter &out, const Plan &p)
     out.writeEndElement();
 }
 
-void writeMap(QXmlStreamWriter &out, const Map &map, bool root)
+// <element id [name]>: a map or a checklist of a mission.
+void writeStart(QXmlStreamWriter &out, const QString &element, const QString &id, const QString &name)
 {
-    out.writeStartElement(u"map"_s);
-    if (root)
-        out.writeAttribute(u"format"_s, QString::number(Mission::format));
-    out.writeAttribute(u"id"_s, map.id);
-    if (!map.name.isEmpty())
-        out.writeAttribute(u"name"_s, map.name);
+    out.writeStartElement(element);
+    out.writeAttribute(u"id"_s, id);
+    if (!name.isEmpty())
+        out.writeAttribute(u"name"_s, name);
+}
+
+void writeMap(QXmlStreamWriter &out, const Map &map)
+{
+    writeStart(out, u"map"_s, map.id, map.name);
     for (const Feature &f : map.features) {
         out.writeStartElement(f.kind);
         out.writeAttribute(u"id"_s, f.id);
@@ -434,14 +442,9 @@ void writeMap(QXmlStreamWriter &out, const Map &map, bool root)
     out.writeEndElement();
 }
 
-void writeChecklist(QXmlStreamWriter &out, const Checklist &list, bool root)
+void writeChecklist(QXmlStreamWriter &out, const Checklist &list)
 {
-    out.writeStartElement(u"checklist"_s);
-    if (root)
-        out.writeAttribute(u"format"_s, QString::number(Mission::format));
-    out.writeAttribute(u"id"_s, list.id);
-    if (!list.name.isEmpty())
-        out.writeAttribute(u"name"_s, list.name);
+    writeStart(out, u"checklist"_s, list.id, list.name);
     for (const Checklist::Group &g : list.groups) {
         out.writeStartElement(u"group"_s);
         out.writeAttribute(u"name"_s, g.name);
@@ -515,11 +518,11 @@ QByteArray writeMission(const Mission &mission)
         out.writeAttribute(u"id"_s, v);
     }
     for (const Map &map : mission.maps)
-        writeMap(out, map, false);
+        writeMap(out, map);
     for (const Plan &plan : mission.plans)
         writePlan(out, plan);
     for (const Checklist &list : mission.checklists)
-        writeChecklist(out, list, false);
+        writeChecklist(out, list);
     out.writeEndElement();
     out.writeEndDocument();
     return bytes;

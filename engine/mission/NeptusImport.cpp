@@ -87,6 +87,15 @@ private:
             node = doc.root();
         warnings.append(doc.errorAt(node, u"Element '%1': %2"_s.arg(elementName(node), what)));
     }
+    // The document starts with `name`, else an error saying what the file should be.
+    bool expectRoot(const XmlDocument &doc, const char *name, const QString &what)
+    {
+        if (elementName(doc.root()) == QLatin1StringView(name))
+            return true;
+        errors.append(doc.errorAt(doc.root(), u"Element '%1': %2 starts with <%3>"_s.arg(elementName(doc.root()), what,
+                                                                                          QString::fromLatin1(name))));
+        return false;
+    }
     void notUnderstood(const XmlDocument &doc, const xmlNode *node)
     {
         warn(doc, node, u"not understood; left out"_s);
@@ -620,10 +629,8 @@ const QHash<QString, QStringList> &flagValues()
 std::optional<VehicleDefinition> Importer::vehicle(const XmlDocument &doc)
 {
     const xmlNode *root = doc.root();
-    if (elementName(root) != u"system") {
-        errors.append(doc.errorAt(root, u"Element '%1': a Neptus vehicle (.nvcl) starts with <system>"_s.arg(elementName(root))));
+    if (!expectRoot(doc, "system", u"a Neptus vehicle (.nvcl)"_s))
         return std::nullopt;
-    }
     VehicleDefinition v;
     const xmlNode *properties = firstChildElement(root, "properties");
     v.id = validId(textContent(firstChildElement(properties, "id")).trimmed());
@@ -751,10 +758,8 @@ std::optional<VehicleDefinition> Importer::vehicle(const XmlDocument &doc)
 std::optional<Map> Importer::map(const XmlDocument &doc)
 {
     const xmlNode *root = doc.root();
-    if (elementName(root) != u"map") {
-        errors.append(doc.errorAt(root, u"Element '%1': a Neptus map (.nmap) starts with <map>"_s.arg(elementName(root))));
+    if (!expectRoot(doc, "map", u"a Neptus map (.nmap)"_s))
         return std::nullopt;
-    }
     Map map;
     const xmlNode *header = firstChildElement(root, "header");
     const QString id = textContent(firstChildElement(header, "id")).trimmed();
@@ -781,10 +786,8 @@ std::optional<Map> Importer::map(const XmlDocument &doc)
 std::optional<Mission> Importer::mission(const XmlDocument &doc, const FileSource &files)
 {
     const xmlNode *root = doc.root();
-    if (elementName(root) != u"mission-def") {
-        errors.append(doc.errorAt(root, u"Element '%1': a Neptus mission starts with <mission-def>"_s.arg(elementName(root))));
+    if (!expectRoot(doc, "mission-def", u"a Neptus mission"_s))
         return std::nullopt;
-    }
     Mission m;
     for (const xmlNode *section : childElements(root)) {
         const QString name = elementName(section);

@@ -13,30 +13,6 @@ namespace {
 
 constexpr int circleSegments = 36;
 
-// Points in metres north/east/down of a maneuver's position.
-struct Local
-{
-    Local(const Maneuver &m, double z, QString units)
-        : lat(m.number(u"lat"_s)), lon(m.number(u"lon"_s)), origin{geo::radians(lat), geo::radians(lon), 0}, z(z),
-          units(std::move(units)) {}
-
-    // Also remembers the offset, for legs measured on the plane.
-    Waypoint at(double north, double east, double down = 0) const
-    {
-        offsets.append(Eigen::Vector2d(north, east));
-        if (north == 0 && east == 0) // the position as written, not as it comes back from the ellipsoid
-            return Waypoint{lat, lon, z + down, units, 0, 0};
-        const geo::Geodetic p = geo::fromNed(Eigen::Vector3d(north, east, 0), origin);
-        return Waypoint{geo::degrees(p.lat), geo::degrees(p.lon), z + down, units, 0, 0};
-    }
-
-    double lat, lon;
-    geo::Geodetic origin;
-    double z;
-    QString units;
-    mutable QList<Eigen::Vector2d> offsets;
-};
-
 double headingDegrees(double north, double east)
 {
     const double heading = geo::degrees(std::atan2(east, north));
@@ -55,12 +31,14 @@ double speedOf(const Maneuver &m, const SpeedModel &speeds)
     return speed > 0 ? speed : speeds.defaultSpeed;
 }
 
-void circle(QList<Waypoint> &points, const Local &local, double radius)
+QList<PathPoint> circle(double radius)
 {
+    QList<PathPoint> points;
     for (int i = 0; i <= circleSegments; ++i) {
         const double a = 2 * std::numbers::pi * i / circleSegments;
-        points.append(local.at(radius * std::cos(a), radius * std::sin(a)));
+        points.append(PathPoint{radius * std::cos(a), radius * std::sin(a), 0, {}});
     }
+    return points;
 }
 
 // Lawnmower: rows of `length` along `bearing`, `hstep` apart across a
@@ -68,8 +46,9 @@ void circle(QList<Waypoint> &points, const Local &local, double radius)
 // the curve offset at both ends; steps alternate between alternation % and
 // (200 − alternation) % of hstep (0 or 100: even rows); cross_angle slants
 // the step off the perpendicular.
-void rows(QList<Waypoint> &points, const Local &local, const Maneuver &m)
+QList<PathPoint> rows(const Maneuver &m)
 {
+    QList<PathPoint> points;
     const double bearing = geo::radians(m.number(u"bearing"_s));
     const double cross = geo::radians(m.number(u"cross_angle"_s));
     const double length = m.number(u"length"_s);
@@ -89,11 +68,12 @@ void rows(QList<Waypoint> &points, const Local &local, const Maneuver &m)
         const bool forward = row % 2 == 0;
         const Eigen::Vector2d a = start + along * (forward ? -offset : length + offset);
         const Eigen::Vector2d b = start + along * (forward ? length + offset : -offset);
-        points.append(local.at(a.x(), a.y()));
-        points.append(local.at(b.x(), b.y()));
+        points.append(PathPoint{a.x(), a.y(), 0, {}});
+        points.append(PathPoint{b.x(), b.y(), 0, {}});
         const double step = hstep * (row % 2 == 0 ? alternation : 200 - alternation) / 100;
         start += across * step;
     }
+    return points;
 }
 
 } // namespace
@@ -147,30 +127,26 @@ ManeuverGeometry maneuverGeometry(const Maneuver &m, const Waypoint *previous, c
     const double z = m.number(elevator ? u"end_z"_s : u"z"_s);
     g.zUnits = m.text(elevator ? u"end_z_units"_s : u"z_units"_s, u"NONE"_s);
     g.minZ = g.maxZ = z;
-    const Local local(m, z, g.zUnits);
     const double duration = m.number(u"duration"_s);
     // Once there: how long the maneuver lasts by its own clock (a loiter's laps
     // for `duration`, a station keeping, a pop-up's wait), and whether it ends.
     double hold = 0;
     bool circling = false;
     bool endless = false;
+    // The path it makes, in metres north, east and down of its position.
+    QList<PathPoint> offsets;
 
     if (m.type == u"Rows") {
-        rows(g.points, local, m);
+        offsets = rows(m);
     } else if (m.type == u"FollowPath" || m.type == u"FollowTrajectory" || m.type == u"ExpandingSquare") {
-        for (const PathPoint &p : m.type == u"ExpandingSquare" ? expandingSquareOffsets(m) : m.points)
-            g.points.append(local.at(p.x, p.y, p.z));
-        if (g.points.isEmpty())
-            g.points.append(local.at(0, 0));
-        for (const Waypoint &w : g.points) {
-            g.minZ = std::min(g.minZ, w.z);
-            g.maxZ = std::max(g.maxZ, w.z);
+        offsets = m.type == u"ExpandingSquare" ? expandingSquareOffsets(m) : m.points;
+        for (const PathPoint &p : std::as_const(offsets)) {
+            g.minZ = std::min(g.minZ, z + p.z);
+            g.maxZ = std::max(g.maxZ, z + p.z);
         }
     } else if (m.type == u"Loiter" || m.type == u"CompassCalibration") {
-        if (m.text(u"type"_s) == u"HOVER")
-            g.points.append(local.at(0, 0));
-        else
-            circle(g.points, local, m.number(u"radius"_s));
+        if (m.text(u"type"_s) != u"HOVER")
+            offsets = circle(m.number(u"radius"_s));
         circling = true;
         hold = duration;
         endless = duration <= 0;
@@ -180,7 +156,6 @@ ManeuverGeometry maneuverGeometry(const Maneuver &m, const Waypoint *previous, c
         }
     } else {
         // Goto, PopUp, StationKeeping, YoYo, Elevator, ScheduledGoto, Launch, Takeoff, Land: a point.
-        g.points.append(local.at(0, 0));
         if (m.type == u"StationKeeping") {
             hold = duration;
             endless = duration <= 0;
@@ -195,18 +170,32 @@ ManeuverGeometry maneuverGeometry(const Maneuver &m, const Waypoint *previous, c
             g.maxZ = std::max(startZ, z);
         }
     }
+    if (offsets.isEmpty())
+        offsets.append(PathPoint{});
     // Depth, altitude and height stop at zero: a yo-yo 10 m either side of 5 m
     // goes from the surface to 15 m (DUNE limits it so).
     if (g.zUnits != u"NONE")
         g.minZ = std::max(g.minZ, 0.0);
 
-    // Legs inside the maneuver on its plane; the transit to it as a geodesic.
+    // On the ellipsoid; legs inside the maneuver on its plane (the transit to it as a geodesic, below).
+    const double lat = m.number(u"lat"_s), lon = m.number(u"lon"_s);
+    const geo::Geodetic origin{geo::radians(lat), geo::radians(lon), 0};
     double along = 0;
-    for (qsizetype i = 1; i < g.points.size(); ++i) {
-        const Eigen::Vector2d step = local.offsets[i] - local.offsets[i - 1];
-        g.points[i].leg = step.norm();
-        g.points[i].heading = step.norm() > 0 ? headingDegrees(step.x(), step.y()) : g.points[i - 1].heading;
-        along += g.points[i].leg;
+    for (qsizetype i = 0; i < offsets.size(); ++i) {
+        const PathPoint &p = offsets[i];
+        Waypoint w{lat, lon, z + p.z, g.zUnits, 0, 0}; // an offset of zero is the position as written
+        if (p.x != 0 || p.y != 0) {
+            const geo::Geodetic at = geo::fromNed(Eigen::Vector3d(p.x, p.y, 0), origin);
+            w.lat = geo::degrees(at.lat);
+            w.lon = geo::degrees(at.lon);
+        }
+        if (i > 0) {
+            const Eigen::Vector2d step(p.x - offsets[i - 1].x, p.y - offsets[i - 1].y);
+            w.leg = step.norm();
+            w.heading = w.leg > 0 ? headingDegrees(step.x(), step.y()) : g.points.last().heading;
+            along += w.leg;
+        }
+        g.points.append(w);
     }
     if (previous) {
         g.points.first() = arriving(*previous, g.points.first());

@@ -111,7 +111,7 @@ std::expected<XmlDocument, XmlError> XmlDocument::parse(QByteArrayView data, con
     return result;
 }
 
-std::expected<XmlDocument, XmlError> XmlDocument::load(const QString &path, Blanks blanks)
+std::expected<XmlDocument, XmlError> XmlDocument::load(const QString &path)
 {
     auto data = readFileMaybeGzip(path, maxBytes);
     if (!data) {
@@ -121,7 +121,7 @@ std::expected<XmlDocument, XmlError> XmlDocument::load(const QString &path, Blan
             reason = reason.mid(path.size() + 2);
         return std::unexpected(XmlError{path, 0, 0, reason});
     }
-    return parse(*data, path, blanks);
+    return parse(*data, path);
 }
 
 XmlError XmlDocument::errorAt(const xmlNode *node, const QString &message) const

@@ -39,7 +39,7 @@ public:
     static std::expected<XmlDocument, XmlError> parse(QByteArrayView data, const QString &fileName,
                                                       Blanks blanks = Blanks::Keep);
     // A file, gzip-compressed or not (IMC.xml.gz beside a vehicle's logs).
-    static std::expected<XmlDocument, XmlError> load(const QString &path, Blanks blanks = Blanks::Keep);
+    static std::expected<XmlDocument, XmlError> load(const QString &path);
 
     const xmlNode *root() const { return xmlDocGetRootElement(m_doc.get()); }
     xmlDoc *get() const { return m_doc.get(); }
