@@ -71,10 +71,15 @@ std::expected<CommandLine, QString> CommandLine::parse(const QStringList &argume
         QStringLiteral("on|off"));
     const QCommandLineOption dumpTree(QStringLiteral("dump-tree"),
         QStringLiteral("On exit, write every variable of the tree (path, value, unit) to this file."), QStringLiteral("file"));
+    const QCommandLineOption forgetAfter(QStringLiteral("forget-after"),
+        QStringLiteral("Forget a system silent this long: its variables, alarms, track and statistics (default: "
+                       "the settings' systems/forgetAfter, else never; unnamed systems heard under 5 s go after "
+                       "10 min anyway). Heard again, it comes back."),
+        QStringLiteral("seconds"));
     const QCommandLineOption quitAfter(QStringLiteral("quit-after"),
         QStringLiteral("Exit after this many milliseconds."), QStringLiteral("ms"));
     parser.addOptions({console, screenshot, screenshotDelay, components, edit, select, system, palette, size, selfTest,
-                       imcPort, imcBind, imcPeer, ddsDomain, ddsConfig, ddsKeys, ddsIdentity, defs, defsFor, imcDiscovery, dumpTree, quitAfter});
+                       imcPort, imcBind, imcPeer, ddsDomain, ddsConfig, ddsKeys, ddsIdentity, defs, defsFor, imcDiscovery, dumpTree, quitAfter, forgetAfter});
     // "--defs-for SYSTEM FILE" (two words, as the documentation writes it) is
     // "--defs-for SYSTEM=FILE" to the parser, which takes one value per option.
     QStringList words = arguments;
@@ -187,6 +192,13 @@ std::expected<CommandLine, QString> CommandLine::parse(const QStringList &argume
         if (!ok || result.quitAfterMs <= 0)
             return std::unexpected(QStringLiteral("--quit-after must be a number of milliseconds, not '%1'")
                                        .arg(parser.value(quitAfter)));
+    }
+    if (parser.isSet(forgetAfter)) {
+        bool ok = false;
+        result.forgetAfterSeconds = parser.value(forgetAfter).toDouble(&ok);
+        if (!ok || !(result.forgetAfterSeconds > 0) || result.forgetAfterSeconds > 1e9)
+            return std::unexpected(QStringLiteral("--forget-after must be a number of seconds above 0, not '%1'")
+                                       .arg(parser.value(forgetAfter)));
     }
     if (parser.isSet(imcBind)) {
         auto address = localAddress(parser.value(imcBind));

@@ -28,6 +28,7 @@ struct CommandLine
     bool imcDiscovery = true;           // announce to and listen on 30100-30104
     QString dumpTreeFile;               // write the variable tree there on exit
     int quitAfterMs = 0;                // run this long, then exit (0: until closed)
+    double forgetAfterSeconds = 0;      // forget systems silent this long (0: the settings', else never)
     int ddsDomain = 0;                  // -1: no DDS
     QString ddsConfig;                  // Cyclone XML; empty: dds/loopback.xml
     QString ddsKeys, ddsIdentity;       // DDS Security; empty: none

@@ -103,6 +103,12 @@ int main(int argc, char *argv[])
             std::printf("neptus: IMC/UDP on %s:%u\n", qPrintable(config.bindAddress.toString()), session.console().imc()->port());
     }
 
+    // Silent systems are forgotten after --forget-after, or the settings'
+    // systems/forgetAfter (seconds); by default only short-lived ones are.
+    if (double forget = commandLine->forgetAfterSeconds; forget > 0
+        || (forget = QSettings().value(QStringLiteral("systems/forgetAfter")).toDouble()) > 0)
+        session.console().health().setForgetAfter(forget);
+
     // Cyclone DDS on the loopback configuration unless told otherwise.
     if (commandLine->ddsDomain >= 0) {
         neptus::transport::DdsConfig config{static_cast<dds_domainid_t>(commandLine->ddsDomain), commandLine->ddsConfig};

@@ -127,6 +127,28 @@ void AlarmGraph::raise(NodeId node, Level level, const QString &message)
     }
 }
 
+void AlarmGraph::forget(NodeId node)
+{
+    QMutexLocker lock(&m_mutex);
+    std::vector<NodeId> below{node};
+    for (size_t i = 0; i < below.size(); ++i) {
+        const auto &children = m_nodes[static_cast<size_t>(below[i])].children;
+        below.insert(below.end(), children.begin(), children.end());
+    }
+    const qint64 now = m_clock->now().toMSecsSinceEpoch();
+    for (auto it = below.rbegin(); it != below.rend(); ++it) { // children first
+        Node &n = m_nodes[static_cast<size_t>(*it)];
+        if (n.own == Unknown && n.message.isEmpty())
+            continue;
+        if (n.own != Unknown)
+            n.sinceMs = now;
+        n.own = Unknown;
+        n.message.clear();
+        propagateLocked(*it);
+    }
+    ++m_version;
+}
+
 Level AlarmGraph::level(NodeId node) const
 {
     QMutexLocker lock(&m_mutex);

@@ -48,6 +48,9 @@ public:
     // below announces once (onAnnounce); staying there does not repeat it.
     void raise(NodeId node, Level level, const QString &message = {});
     void clear(NodeId node) { raise(node, Normal); }
+    // Unknown, without a message, for a node and everything under it (a
+    // system forgotten): no alarm of it stays behind. The nodes stay.
+    void forget(NodeId node);
 
     Level level(NodeId node) const;     // max(own, children)
     Level ownLevel(NodeId node) const;

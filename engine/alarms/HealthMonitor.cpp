@@ -28,6 +28,28 @@ void HealthMonitor::setCommsTimeout(double seconds)
     m_timeoutMs = seconds * 1000;
 }
 
+void HealthMonitor::setForgetAfter(double seconds)
+{
+    QMutexLocker lock(&m_mutex);
+    m_forgetAfterMs = std::max<qint64>(0, static_cast<qint64>(seconds * 1000));
+}
+
+void HealthMonitor::forget(quint16 id)
+{
+    QMutexLocker lock(&m_mutex);
+    const auto it = m_systems.constFind(id);
+    if (it == m_systems.cend())
+        return;
+    m_graph.forget(it->node);
+    m_systems.erase(it);
+}
+
+double HealthMonitor::forgetAfter() const
+{
+    QMutexLocker lock(&m_mutex);
+    return static_cast<double>(m_forgetAfterMs) / 1000.0;
+}
+
 Level HealthMonitor::levelOfEntityState(qint64 state)
 {
     switch (state) {
@@ -129,11 +151,13 @@ void HealthMonitor::updateShortLivedLocked(const QList<quint16> &silent)
     m_graph.raise(m_shortLived, text.isEmpty() ? Normal : Warning, text);
 }
 
-void HealthMonitor::check()
+QList<quint16> HealthMonitor::check()
 {
     const qint64 now = m_clock->now().toMSecsSinceEpoch();
     QMutexLocker lock(&m_mutex);
     QList<quint16> shortLived;
+    QList<quint16> forgotten;
+    const qint64 shortLivedLimit = m_forgetAfterMs > 0 ? std::min(m_forgetAfterMs, forgetShortLivedMs) : forgetShortLivedMs;
     for (auto it = m_systems.begin(); it != m_systems.end();) {
         System &system = *it;
         if (system.lastMs == 0) {
@@ -160,12 +184,20 @@ void HealthMonitor::check()
             for (const Entity &entity : std::as_const(system.entities))
                 if (m_graph.ownLevel(entity.node) != Unknown)
                     m_graph.raise(entity.node, Unknown);
-            if (silent > forgetShortLivedMs) {
+            if (silent > static_cast<double>(shortLivedLimit)) {
+                m_graph.forget(system.node);
+                forgotten.append(it.key());
                 it = m_systems.erase(it);
                 continue;
             }
             shortLived.append(it.key());
             ++it;
+            continue;
+        }
+        if (m_forgetAfterMs > 0 && silent > static_cast<double>(m_forgetAfterMs)) {
+            m_graph.forget(system.node);
+            forgotten.append(it.key());
+            it = m_systems.erase(it);
             continue;
         }
         // The text follows the silence as it grows (once a second at most).
@@ -175,6 +207,7 @@ void HealthMonitor::check()
     }
     std::sort(shortLived.begin(), shortLived.end());
     updateShortLivedLocked(shortLived);
+    return forgotten;
 }
 
 } // namespace neptus::alarms

@@ -21,7 +21,10 @@ namespace neptus::alarms {
 //    heard for under 5 s gets no alarm of its own when it falls silent: one
 //    Warning on "links/short-lived systems" counts them all (a burst of
 //    forged ids must not bury the real vehicles' alarms), and they are
-//    forgotten after 10 min of silence;
+//    forgotten after 10 min of silence (or forgetAfter, if shorter);
+//  - any other system is forgotten after forgetAfter of silence, if set
+//    (0, the default, keeps them: an AUV may dive for hours); its alarms
+//    and its entities' go to Unknown;
 //  - entity alarms are renamed in place when the entity's label is learned.
 // Names come from the variable tree (Announce, EntityList, configuration).
 class HealthMonitor
@@ -32,8 +35,13 @@ public:
     // Every received message (any thread).
     void observe(const msg::Message &message);
     // Checks for silence; call a few times a second (the console does).
-    void check();
+    // Returns the systems it forgot, for the console to forget everywhere.
+    QList<quint16> check();
     void setCommsTimeout(double seconds);
+    void setForgetAfter(double seconds); // 0: only short-lived systems are forgotten
+    // Forgets a system now (its alarms to Unknown); heard again, it starts anew.
+    void forget(quint16 id);
+    double forgetAfter() const;
 
     static Level levelOfEntityState(qint64 state);
 
@@ -64,8 +72,9 @@ private:
     AlarmGraph &m_graph;
     const tree::VariableTree &m_tree;
     const Clock *m_clock;
-    QMutex m_mutex;
+    mutable QMutex m_mutex;
     double m_timeoutMs = 2000;
+    qint64 m_forgetAfterMs = 0;
     QHash<quint16, System> m_systems;
     AlarmGraph::NodeId m_shortLived = AlarmGraph::noNode;
     QString m_shortLivedText;

@@ -24,6 +24,14 @@ QString ConsoleSession::send(const QString &system, const QVariantMap &json)
     return {};
 }
 
+void ConsoleSession::forgetSystem(int systemId)
+{
+    if (systemId < 0 || systemId >= 0xFFFF)
+        return;
+    m_console.forget(static_cast<quint16>(systemId));
+    m_linksModel.refresh();
+}
+
 bool ConsoleSession::chooseSource(int systemId, const QString &host)
 {
     if (systemId < 0 || systemId >= 0xFFFF)

@@ -43,6 +43,9 @@ public:
     // The operator trusts `host` as the system with IMC id `systemId` (when
     // several hosts send as it): commands go there. "" goes back to automatic.
     Q_INVOKABLE bool chooseSource(int systemId, const QString &host);
+    // The operator forgets a system (gone for good): its rows, alarms,
+    // track and statistics go; heard again, it is met anew.
+    Q_INVOKABLE void forgetSystem(int systemId);
 
 private:
     neptus::session::Console m_console;

@@ -19,9 +19,16 @@ void LinkStatisticsModel::refresh()
 {
     const std::vector<LinkStatistics::System> rows = m_statistics->systems();
     const int before = count();
-    // Systems are only ever added, in id order: insert the new ones where they go.
+    // Both in id order: new systems are inserted where they go, forgotten ones removed.
+    const auto removeRow = [this](size_t i) {
+        beginRemoveRows({}, static_cast<int>(i), static_cast<int>(i));
+        m_rows.erase(m_rows.begin() + static_cast<qsizetype>(i));
+        endRemoveRows();
+    };
     size_t i = 0;
     for (const LinkStatistics::System &system : rows) {
+        while (i < m_rows.size() && m_rows[i].id < system.id)
+            removeRow(i);
         if (i < m_rows.size() && m_rows[i].id == system.id) {
             m_rows[i] = system;
         } else {
@@ -32,6 +39,8 @@ void LinkStatisticsModel::refresh()
         }
         ++i;
     }
+    while (i < m_rows.size())
+        removeRow(i);
     if (!m_rows.empty())
         emit dataChanged(index(0), index(static_cast<int>(m_rows.size()) - 1));
     if (count() != before)

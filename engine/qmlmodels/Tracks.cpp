@@ -206,17 +206,21 @@ void Tracks::forgetSilent()
     if (!m_model)
         return;
     const qint64 now = m_model->tree()->clock().now().toMSecsSinceEpoch();
-    const auto silent = [&](const Track &t) { return !t.named && now - t.heardMs > m_forgetAfterMs; };
-    if (std::none_of(m_tracks.begin(), m_tracks.end(), [&](const auto &t) { return silent(*t); }))
+    forget([&](const Track &t) { return !t.named && now - t.heardMs > m_forgetAfterMs; });
+}
+
+void Tracks::forget(const std::function<bool(const Track &)> &unwanted)
+{
+    if (std::none_of(m_tracks.begin(), m_tracks.end(), [&](const auto &t) { return unwanted(*t); }))
         return;
-    removeRows(silent); // before the tracks they point to go
+    removeRows(unwanted); // before the tracks they point to go
     for (const auto &t : m_tracks) {
-        if (silent(*t)) {
+        if (unwanted(*t)) {
             m_byId.remove(t->id);
             m_byName.remove(t->system);
         }
     }
-    std::erase_if(m_tracks, [&](const auto &t) { return silent(*t); });
+    std::erase_if(m_tracks, [&](const auto &t) { return unwanted(*t); });
     m_rowsDirty = true;
     updateRows(); // others may take the rows given back
     m_systemsChanged = true;
@@ -383,9 +387,18 @@ void Tracks::update()
     // New systems join a few per update: each brings a marker, a trail and
     // a 3D model, and a thousand at once froze the console for seconds.
     // The others wait for the next updates (one frame each), newest state first read then.
+    // Systems the tree forgot leave the map (named ones too).
+    if (!changes.removed.empty()) {
+        QSet<quint16> gone;
+        for (const auto &removed : changes.removed)
+            gone.insert(removed.system);
+        forget([&gone](const Track &t) { return gone.contains(t.id); });
+    }
     std::vector<tree::NodeId> nodes;
     nodes.swap(m_waiting);
     m_waitingSet.clear();
+    if (!changes.removed.empty()) // nodes of forgotten systems belong to no system now
+        std::erase_if(nodes, [&tree](tree::NodeId node) { return tree.systemOf(node) == 0xFFFF; });
     for (const tree::NodeId node : changes.changedNodes)
         if (tree.kind(node) == tree::VariableTree::Kind::Message && tree.name(node) == QLatin1String("EstimatedState"))
             nodes.push_back(node);

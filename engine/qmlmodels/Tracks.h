@@ -147,6 +147,8 @@ private:
     void setDrawLimit(int &limit, int systems);
     // Takes the rows of the tracks `unwanted` names from the views.
     void removeRows(const std::function<bool(const Track &)> &unwanted);
+    // Forgets the tracks `unwanted` picks, and their rows.
+    void forget(const std::function<bool(const Track &)> &unwanted);
     // Home is the first position heard, unless set.
     void homeOnce(double lat, double lon, double height);
     void add(Track &track, const Fix &fix);

@@ -45,7 +45,8 @@ QModelIndex VariableTreeModel::indexOfPath(const QString &path) const
     if (node == noNode || node == m_tree->root())
         return {};
     const NodeId parent = m_tree->parent(node);
-    if (static_cast<size_t>(parent) >= m_knownChildren.size() || m_tree->row(node) >= m_knownChildren[static_cast<size_t>(parent)])
+    const int row = rowOf(node);
+    if (static_cast<size_t>(parent) >= m_knownChildren.size() || row < 0 || row >= m_knownChildren[static_cast<size_t>(parent)])
         return {}; // not shown yet: the next frame will
     return indexOfNode(node);
 }
@@ -72,11 +73,12 @@ void VariableTreeModel::detach(Variable *variable)
     std::erase_if(m_variables, [variable](const QPointer<Variable> &v) { return v.isNull() || v == variable; });
 }
 
-void VariableTreeModel::resolvePending(bool relinked)
+void VariableTreeModel::resolvePending(bool relinked, bool removed)
 {
-    // After a relink, paths naming an entity ("Rpm@Motor") may lead elsewhere.
-    const auto pending = [relinked](NodeId node, const QString &path) {
-        return node == noNode || (relinked && path.contains(u'@'));
+    // After a relink, paths naming an entity ("Rpm@Motor") may lead elsewhere;
+    // after a removal, any path may lead nowhere.
+    const auto pending = [relinked, removed](NodeId node, const QString &path) {
+        return node == noNode || removed || (relinked && path.contains(u'@'));
     };
     for (Listener &listener : m_listeners) {
         if (pending(listener.node, listener.path))
@@ -94,25 +96,63 @@ void VariableTreeModel::sync()
     if (changes.isEmpty())
         return;
 
-    // New rows, in runs of siblings: one insertion per run.
-    if (m_knownChildren.size() < static_cast<size_t>(m_tree->nodeCount()))
-        m_knownChildren.resize(static_cast<size_t>(m_tree->nodeCount()), 0);
+    // Forgotten systems go first (nothing below names their nodes), in runs
+    // of neighbouring rows from the last: a thousand forged ids are one removal.
+    bool systems = false;
+    if (!changes.removed.empty()) {
+        std::vector<int> rows;
+        for (const VariableTree::Removed &removed : changes.removed)
+            if (const int r = m_systemRows.value(removed.node, -1); r >= 0)
+                rows.push_back(r);
+        std::sort(rows.begin(), rows.end(), std::greater<>());
+        for (size_t i = 0; i < rows.size();) {
+            size_t j = i + 1;
+            while (j < rows.size() && rows[j] == rows[j - 1] - 1)
+                ++j;
+            const int first = rows[j - 1], last = rows[i];
+            beginRemoveRows({}, first, last);
+            for (int r = first; r <= last; ++r)
+                m_systemRows.remove(m_systems[static_cast<size_t>(r)]);
+            m_systems.erase(m_systems.begin() + first, m_systems.begin() + last + 1);
+            for (size_t r = static_cast<size_t>(first); r < m_systems.size(); ++r)
+                m_systemRows.insert(m_systems[r], static_cast<int>(r));
+            m_knownChildren[0] = static_cast<int>(m_systems.size());
+            endRemoveRows();
+            i = j;
+        }
+        systems = !rows.empty();
+    }
+
+    // New rows, in runs of siblings: one insertion per run. An id may be
+    // one a removed node had: it starts with no children known.
+    if (m_knownChildren.size() < static_cast<size_t>(m_tree->nodeCapacity()))
+        m_knownChildren.resize(static_cast<size_t>(m_tree->nodeCapacity()), 0);
+    for (NodeId node : changes.newNodes) {
+        m_knownChildren[static_cast<size_t>(node)] = 0;
+        if (static_cast<size_t>(node) < m_readAt.size())
+            m_readAt[static_cast<size_t>(node)] = 0;
+    }
     for (size_t i = 0; i < changes.newNodes.size();) {
         const NodeId parent = m_tree->parent(changes.newNodes[i]);
-        const int first = m_tree->row(changes.newNodes[i]);
+        const bool top = parent == m_tree->root();
+        // Systems are rows in the order the model learned them (the tree's
+        // rows move up as soon as one is forgotten, before the model hears).
+        const int first = top ? static_cast<int>(m_systems.size()) : m_tree->row(changes.newNodes[i]);
         size_t j = i + 1;
         while (j < changes.newNodes.size() && m_tree->parent(changes.newNodes[j]) == parent
-               && m_tree->row(changes.newNodes[j]) == first + static_cast<int>(j - i))
+               && (top || m_tree->row(changes.newNodes[j]) == first + static_cast<int>(j - i)))
             ++j;
         const int last = first + static_cast<int>(j - i) - 1;
         beginInsertRows(indexOfNode(parent), first, last);
+        for (size_t k = i; top && k < j; ++k) {
+            m_systemRows.insert(changes.newNodes[k], static_cast<int>(m_systems.size()));
+            m_systems.push_back(changes.newNodes[k]);
+        }
         m_knownChildren[static_cast<size_t>(parent)] = last + 1;
         endInsertRows();
+        systems = systems || top;
         i = j;
     }
-    bool systems = false;
-    for (NodeId node : changes.newNodes)
-        systems = systems || m_tree->parent(node) == m_tree->root();
     for (NodeId node : changes.renamedNodes) {
         emit dataChanged(indexOfNode(node, NameColumn), indexOfNode(node, NameColumn), {Qt::DisplayRole, NameRole, PathRole});
         systems = systems || m_tree->parent(node) == m_tree->root();
@@ -136,8 +176,8 @@ void VariableTreeModel::sync()
         i = j;
     }
 
-    if (!changes.newNodes.empty() || !changes.renamedNodes.empty() || changes.relinked)
-        resolvePending(changes.relinked);
+    if (!changes.newNodes.empty() || !changes.renamedNodes.empty() || changes.relinked || !changes.removed.empty())
+        resolvePending(changes.relinked, !changes.removed.empty());
 
     // Listeners of a node or of any branch above a changed node.
     if (!m_listeners.empty() || !m_variables.empty()) {
@@ -197,7 +237,14 @@ QModelIndex VariableTreeModel::indexOfNode(NodeId node, int column) const
 {
     if (node == m_tree->root() || node == noNode)
         return {};
-    return createIndex(m_tree->row(node), column, static_cast<quintptr>(node));
+    return createIndex(rowOf(node), column, static_cast<quintptr>(node));
+}
+
+int VariableTreeModel::rowOf(NodeId node) const
+{
+    if (m_tree->parent(node) != m_tree->root())
+        return m_tree->row(node);
+    return m_systemRows.value(node, -1);
 }
 
 QModelIndex VariableTreeModel::index(int row, int column, const QModelIndex &parent) const
@@ -206,7 +253,8 @@ QModelIndex VariableTreeModel::index(int row, int column, const QModelIndex &par
     if (column < 0 || column >= ColumnCount || row < 0 || static_cast<size_t>(p) >= m_knownChildren.size()
         || row >= m_knownChildren[static_cast<size_t>(p)] || (parent.isValid() && parent.column() != 0))
         return {};
-    return createIndex(row, column, static_cast<quintptr>(m_tree->child(p, row)));
+    const NodeId node = p == m_tree->root() ? m_systems[static_cast<size_t>(row)] : m_tree->child(p, row);
+    return createIndex(row, column, static_cast<quintptr>(node));
 }
 
 QModelIndex VariableTreeModel::parent(const QModelIndex &child) const

@@ -96,13 +96,17 @@ private:
     NodeId nodeOf(const QModelIndex &index) const;
     QModelIndex indexOfNode(NodeId node, int column = 0) const;
     bool isStale(const VariableTree::Snapshot &snapshot) const;
-    void resolvePending(bool relinked);
+    void resolvePending(bool relinked, bool removed);
+    // A node's row as views know it (systems: in the order the model learned them).
+    int rowOf(NodeId node) const;
 
     VariableTree *m_tree;
     int m_consumer;
     double m_staleAfter = 5.0;
     // What views know: the number of children of each node they were told of.
     std::vector<int> m_knownChildren;
+    std::vector<NodeId> m_systems; // the root's rows, in the order the model learned them
+    QHash<NodeId, int> m_systemRows;
     // The age tick in which a view last read a row under each node: views
     // read only the rows they show, so refreshAges() signals only those
     // (every row of 1,000 systems, every second, was most of a core).

@@ -110,7 +110,7 @@ public:
     void tick()
     {
         const tree::VariableTree::Changes changes = m_tree.takeChanges(m_consumer);
-        if (changes.changedNodes.empty() || m_scripts.empty())
+        if ((changes.changedNodes.empty() && changes.removed.empty()) || m_scripts.empty())
             return;
         QSet<tree::NodeId> touched;
         for (tree::NodeId node : changes.changedNodes) {
@@ -119,8 +119,10 @@ public:
         }
         if (!ready())
             return;
+        // A forgotten system's values are gone: every script sees what is left.
+        const bool removed = !changes.removed.empty();
         for (auto &[name, script] : m_scripts) {
-            if (!script.stopped && script.reads.intersects(touched))
+            if (!script.stopped && (removed || script.reads.intersects(touched)))
                 run(script);
         }
     }

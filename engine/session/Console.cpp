@@ -224,8 +224,25 @@ void Console::updateSourcesAlarm(quint16 id)
 
 void Console::check()
 {
-    m_health.check();
+    for (const quint16 system : m_health.check())
+        forget(system);
     m_naming.check();
+}
+
+void Console::forget(quint16 system)
+{
+    if (const auto node = m_graph.find(QStringLiteral("systems/") + m_tree.systemName(system)); node != alarms::AlarmGraph::noNode)
+        m_graph.forget(node);
+    m_health.forget(system);
+    m_tree.forget(system);
+    m_naming.forget(system);
+    m_linkStatistics.forget(system);
+    m_router.forget(system);
+    m_linkAlarmText.remove(system);
+    m_definitionsAlarmText.remove(system);
+    m_announcedVersions.remove(system);
+    m_digestNotes.remove(system);
+    m_sources.remove(system);
 }
 
 void Console::tick()

@@ -90,6 +90,12 @@ public:
     // not heard from that host.
     bool chooseSource(quint16 system, const QString &host);
 
+    // Forgets a system everywhere: its tree branch, its alarms (to Unknown),
+    // its link statistics and route, what was asked of it. Heard again, it
+    // is met anew. check() does it for systems silent past
+    // health().forgetAfter() (and short-lived ones after 10 min).
+    void forget(quint16 system);
+
     // A few times a second: silence, entity queries. Once a second: rates and
     // link alarms. Timers call them; tests call them after moving their clock.
     void check();

@@ -13,6 +13,12 @@ EntityNaming::EntityNaming(const tree::VariableTree &tree, std::shared_ptr<const
 {
 }
 
+void EntityNaming::forget(quint16 system)
+{
+    QMutexLocker lock(&m_mutex);
+    m_systems.remove(system);
+}
+
 void EntityNaming::observe(const msg::Message &message)
 {
     QMutexLocker lock(&m_mutex);

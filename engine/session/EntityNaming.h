@@ -35,6 +35,8 @@ public:
 
     // Every received message (any thread).
     void observe(const msg::Message &message);
+    // A system forgotten: met again, it is asked again.
+    void forget(quint16 system);
     // Sends what is due; call a few times a second on the thread that sends.
     void check();
 

@@ -18,6 +18,12 @@ void LinkRouter::heard(quint16 system, const QString &link)
     m_systems.insert(system, link);
 }
 
+void LinkRouter::forget(quint16 system)
+{
+    QMutexLocker lock(&m_mutex);
+    m_systems.remove(system);
+}
+
 QString LinkRouter::linkOf(quint16 system) const
 {
     QMutexLocker lock(&m_mutex);

@@ -19,6 +19,7 @@ public:
     void addLink(const QString &name, OutputSink *sink);
     // `system` was heard on `link` (any thread).
     void heard(quint16 system, const QString &link);
+    void forget(quint16 system); // a system forgotten: never heard, until it is again
     QString linkOf(quint16 system) const;
 
     // Over the system's link; an error when it was never heard or the link cannot reach it.

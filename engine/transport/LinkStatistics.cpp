@@ -68,6 +68,13 @@ void LinkStatistics::setSources(quint16 system, const QStringList &sources, cons
     counter.system.destination = destination;
 }
 
+void LinkStatistics::forget(quint16 system)
+{
+    QMutexLocker lock(&m_mutex);
+    if (m_counters.remove(system))
+        ++m_version;
+}
+
 void LinkStatistics::tick()
 {
     const qint64 now = m_clock->now().toMSecsSinceEpoch();

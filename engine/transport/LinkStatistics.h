@@ -59,6 +59,8 @@ public:
     void decodeFailed(quint16 system, const QString &link, const QString &peer, const QString &reason);
     // Who sends as `system`, and where commands to it go (from the link).
     void setSources(quint16 system, const QStringList &sources, const QString &destination);
+    // A system forgotten (silent too long): its counts go with it.
+    void forget(quint16 system);
     // Computes rates over the time since the last tick.
     void tick();
 

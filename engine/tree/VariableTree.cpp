@@ -1,6 +1,7 @@
 #include "tree/VariableTree.h"
 
 #include <QMutexLocker>
+#include <QSet>
 
 #include <algorithm>
 
@@ -29,6 +30,7 @@ struct VariableTree::Node
     // For a branch of a nested message: the type whose fields it has nodes
     // for, so an unchanged type costs no lookups on the next message.
     const MessageDef *fieldsOf = nullptr;
+    bool removed = false; // its system was forgotten; the id is not reused yet
 };
 
 struct VariableTree::Binding
@@ -121,9 +123,16 @@ NodeId VariableTree::addNode(NodeId parent, const QString &name, Kind kind, int 
         node.field = path[0];
         node.item = path.size() > 1 ? path[1] : -1;
     }
-    const auto id = static_cast<NodeId>(m_nodes.size());
     node.row = static_cast<int>(m_nodes[static_cast<size_t>(parent)].children.size());
-    m_nodes.push_back(std::move(node));
+    NodeId id;
+    if (!m_freeNodes.empty()) {
+        id = m_freeNodes.back();
+        m_freeNodes.pop_back();
+        m_nodes[static_cast<size_t>(id)] = std::move(node);
+    } else {
+        id = static_cast<NodeId>(m_nodes.size());
+        m_nodes.push_back(std::move(node));
+    }
     m_nodes[static_cast<size_t>(parent)].children.push_back(id);
     ++m_structureVersion;
     if (binding >= 0)
@@ -156,7 +165,7 @@ NodeId VariableTree::resolveChildLocked(NodeId parent, QStringView name) const
 {
     const NodeId found = childNamed(parent, name);
     const Node &p = m_nodes[static_cast<size_t>(parent)];
-    if (found != noNode || p.kind != Kind::System)
+    if (found != noNode || p.kind != Kind::System || p.removed)
         return found;
     const qsizetype at = name.indexOf(u'@'); // an abbrev has none; a label may
     if (at <= 0)
@@ -206,6 +215,21 @@ QString VariableTree::entityName(const SystemInfo &system, quint8 entity) const
     return label.isEmpty() ? QString::number(entity) : label;
 }
 
+int VariableTree::newBindingLocked(quint64 key)
+{
+    int index;
+    if (!m_freeBindings.empty()) {
+        index = m_freeBindings.back();
+        m_freeBindings.pop_back();
+        m_bindings[static_cast<size_t>(index)] = std::make_unique<Binding>();
+    } else {
+        index = static_cast<int>(m_bindings.size());
+        m_bindings.push_back(std::make_unique<Binding>());
+    }
+    m_bindingIndex.insert(key, index);
+    return index;
+}
+
 int VariableTree::bindingLocked(quint16 system, quint8 entity, const Message &message, bool perEntity)
 {
     const quint64 key = bindingKey(system, entity, message.id(), perEntity);
@@ -215,16 +239,13 @@ int VariableTree::bindingLocked(quint16 system, quint8 entity, const Message &me
 
     SystemInfo &info = systemLocked(system);
     const MessageDef *def = message.def();
-    const int index = static_cast<int>(m_bindings.size());
-    auto binding = std::make_unique<Binding>();
-    binding->system = system;
-    binding->entity = entity;
-    binding->perEntity = perEntity;
-    binding->id = message.id();
-    binding->def = def;
-    m_bindings.push_back(std::move(binding));
-    m_bindingIndex.insert(key, index);
-    Binding &b = *m_bindings.back();
+    const int index = newBindingLocked(key);
+    Binding &b = *m_bindings[static_cast<size_t>(index)];
+    b.system = system;
+    b.entity = entity;
+    b.perEntity = perEntity;
+    b.id = message.id();
+    b.def = def;
 
     const QString abbrev = message.abbrev();
     const QString name = perEntity ? abbrev + u'@' + entityName(info, entity) : abbrev;
@@ -334,6 +355,85 @@ void VariableTree::setSystemLink(quint16 id, const QString &link)
     info.link = link;
     for (Consumer &consumer : m_consumers)
         consumer.structure.renamedNodes.push_back(info.node); // its shown text changed
+}
+
+bool VariableTree::forget(quint16 id)
+{
+    QMutexLocker lock(&m_mutex);
+    const auto found = m_systemIndex.constFind(id);
+    if (found == m_systemIndex.cend())
+        return false;
+    const int slot = *found;
+    const NodeId top = m_systems[static_cast<size_t>(slot)]->node;
+
+    // The system's nodes and the bindings they read from.
+    std::vector<NodeId> nodes{top};
+    QSet<int> bindings;
+    for (size_t i = 0; i < nodes.size(); ++i) {
+        Node &node = m_nodes[static_cast<size_t>(nodes[i])];
+        node.removed = true;
+        if (node.binding >= 0)
+            bindings.insert(node.binding);
+        nodes.insert(nodes.end(), node.children.begin(), node.children.end());
+    }
+    for (const int index : std::as_const(bindings)) {
+        const Binding &b = *m_bindings[static_cast<size_t>(index)];
+        m_bindingIndex.remove(bindingKey(b.system, b.entity, b.id, b.perEntity));
+        m_bindings[static_cast<size_t>(index)].reset();
+        m_freeBindings.push_back(index);
+    }
+
+    // Out of the root's children; the siblings after it move up a row.
+    auto &systems = m_nodes[static_cast<size_t>(root())].children;
+    const int row = m_nodes[static_cast<size_t>(top)].row;
+    systems.erase(systems.begin() + row);
+    for (size_t r = static_cast<size_t>(row); r < systems.size(); ++r)
+        m_nodes[static_cast<size_t>(systems[r])].row = static_cast<int>(r);
+
+    // Consumers forget what they were about to hear of it; those that knew
+    // the system hear that it went.
+    const QSet<NodeId> gone(nodes.begin(), nodes.end());
+    const auto isGone = [&gone](NodeId node) { return gone.contains(node); };
+    for (Consumer &consumer : m_consumers) {
+        std::erase_if(consumer.changedBindings, [&bindings](int index) { return bindings.contains(index); });
+        Changes &pending = consumer.structure;
+        const bool knew = std::find(pending.newNodes.begin(), pending.newNodes.end(), top) == pending.newNodes.end();
+        std::erase_if(pending.newNodes, isGone);
+        std::erase_if(pending.renamedNodes, isGone);
+        std::erase_if(pending.changedNodes, isGone);
+        if (knew)
+            pending.removed.push_back({top, id});
+    }
+
+    // The system's slot goes to the last one.
+    if (slot + 1 != static_cast<int>(m_systems.size())) {
+        m_systems[static_cast<size_t>(slot)] = std::move(m_systems.back());
+        m_systemIndex.insert(m_systems[static_cast<size_t>(slot)]->id, slot);
+    }
+    m_systems.pop_back();
+    m_systemIndex.remove(id);
+
+    ++m_structureVersion;
+    m_removedNodes += static_cast<int>(nodes.size());
+    m_removals.push_back({++m_removalSerial, std::move(nodes)});
+    releaseRemovedLocked();
+    return true;
+}
+
+// Gives the ids of removed nodes back once no consumer can hold them.
+void VariableTree::releaseRemovedLocked()
+{
+    quint64 done = m_removalSerial;
+    for (const Consumer &consumer : m_consumers)
+        done = std::min(done, consumer.done);
+    while (!m_removals.empty() && m_removals.front().serial <= done) {
+        for (const NodeId node : m_removals.front().nodes) {
+            m_nodes[static_cast<size_t>(node)] = Node{};
+            m_freeNodes.push_back(node);
+        }
+        m_removedNodes -= static_cast<int>(m_removals.front().nodes.size());
+        m_removals.erase(m_removals.begin());
+    }
 }
 
 void VariableTree::learnNamesLocked(const Message &message, SystemInfo &system)
@@ -472,15 +572,12 @@ void VariableTree::recordSent(quint16 id, Message message)
     if (const auto it = m_bindingIndex.constFind(key); it != m_bindingIndex.cend()) {
         index = *it;
     } else {
-        index = static_cast<int>(m_bindings.size());
-        auto binding = std::make_unique<Binding>();
-        binding->system = id;
-        binding->entity = 0xFE;
-        binding->id = message.id();
-        binding->def = message.def();
-        m_bindings.push_back(std::move(binding));
-        m_bindingIndex.insert(key, index);
-        Binding &b = *m_bindings.back();
+        index = newBindingLocked(key);
+        Binding &b = *m_bindings[static_cast<size_t>(index)];
+        b.system = id;
+        b.entity = 0xFE;
+        b.id = message.id();
+        b.def = message.def();
         b.branch = addNode(info.out, message.abbrev(), Kind::Message, index, {});
         m_nodes[static_cast<size_t>(b.branch)].ownerDef = message.def();
         addFieldNodesLocked(b.branch, *message.def(), index);
@@ -577,7 +674,23 @@ quint64 VariableTree::structureVersion() const
 int VariableTree::nodeCount() const
 {
     QMutexLocker lock(&m_mutex);
+    return static_cast<int>(m_nodes.size() - m_freeNodes.size()) - m_removedNodes;
+}
+
+int VariableTree::nodeCapacity() const
+{
+    QMutexLocker lock(&m_mutex);
     return static_cast<int>(m_nodes.size());
+}
+
+std::vector<quint16> VariableTree::systemIds() const
+{
+    QMutexLocker lock(&m_mutex);
+    std::vector<quint16> ids;
+    for (const auto &info : m_systems)
+        ids.push_back(info->id);
+    std::sort(ids.begin(), ids.end());
+    return ids;
 }
 
 bool VariableTree::isNamed(quint16 id) const
@@ -705,7 +818,7 @@ VariableTree::Snapshot VariableTree::snapshot(NodeId id) const
     QMutexLocker lock(&m_mutex);
     Snapshot s;
     const Node &node = m_nodes[static_cast<size_t>(id)];
-    if (node.kind == Kind::Root)
+    if (node.kind == Kind::Root || node.removed)
         return s;
     if (node.kind == Kind::System) {
         for (const auto &info : m_systems) {
@@ -802,6 +915,7 @@ int VariableTree::addConsumer()
     QMutexLocker lock(&m_mutex);
     Q_ASSERT(m_consumers.size() < 32);
     m_consumers.emplace_back();
+    m_consumers.back().taken = m_consumers.back().done = m_removalSerial; // it knows nothing removed before
     return static_cast<int>(m_consumers.size()) - 1;
 }
 
@@ -811,6 +925,9 @@ VariableTree::Changes VariableTree::takeChanges(int consumer)
     Consumer &c = m_consumers[static_cast<size_t>(consumer)];
     Changes changes = std::move(c.structure);
     c.structure = {};
+    c.done = c.taken;
+    c.taken = m_removalSerial;
+    releaseRemovedLocked();
     const quint32 bit = 1u << consumer;
     for (int index : c.changedBindings) {
         Binding &b = *m_bindings[static_cast<size_t>(index)];

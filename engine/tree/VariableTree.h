@@ -30,8 +30,11 @@ constexpr NodeId noNode = -1;
 //   system / Message / list / 3 / field  a message-list has indexed children
 // System names come from Announce (sys_name) or a configured id map, else
 // "0x001f"; entity labels from EntityList/EntityInfo, else the number. Nodes
-// are renamed in place when a name becomes known; nodes are never removed (a
-// list that shrinks leaves its extra children absent).
+// are renamed in place when a name becomes known; a list that shrinks leaves
+// its extra children absent. A system is removed whole, with forget(): its
+// node ids stay valid (reading as absent) until every consumer has taken its
+// changes twice since, and only then are they given to new nodes, so no
+// consumer mistakes a new node for one it knew.
 //
 // The hot path stores each decoded message once, in a binding resolved once
 // per (system, entity, message type); leaves read their value from it by
@@ -57,8 +60,16 @@ public:
         bool present = false;      // false before any value, or for a list item past the end
     };
 
+    // A system the consumer knew, removed with everything under it.
+    struct Removed
+    {
+        NodeId node = noNode;
+        quint16 system = 0xFFFF;
+    };
+
     struct Changes
     {
+        std::vector<Removed> removed;     // handle first: the other lists never name their nodes
         std::vector<NodeId> newNodes;     // in creation order: parents before children
         std::vector<NodeId> renamedNodes;
         std::vector<NodeId> changedNodes; // nodes whose values changed (leaves and their branches)
@@ -67,7 +78,7 @@ public:
         bool relinked = false;
         bool isEmpty() const
         {
-            return newNodes.empty() && renamedNodes.empty() && changedNodes.empty() && !relinked;
+            return removed.empty() && newNodes.empty() && renamedNodes.empty() && changedNodes.empty() && !relinked;
         }
     };
 
@@ -86,6 +97,9 @@ public:
     void setSystemName(quint16 id, const QString &name); // "/" and control characters become "_"; "" forgets it
     // The link a system was last heard on ("IMC/UDP", "DDS"), shown beside its id.
     void setSystemLink(quint16 id, const QString &link);
+    // Removes a system and everything under it (a silent one, forgotten);
+    // false if the tree has no such system. It comes back if heard again.
+    bool forget(quint16 id);
 
     // --- Output ----------------------------------------------------------------
     // Records `message`, sent to `system`, under "system/out/Message/..." so
@@ -107,7 +121,9 @@ public:
     NodeId childByName(NodeId node, QStringView name) const; // noNode if absent
     int row(NodeId node) const;           // index among its parent's children
     QStringList childNames(QStringView path) const; // for path completion
-    int nodeCount() const;
+    int nodeCount() const;    // nodes in the tree now
+    int nodeCapacity() const; // every node id is below this (removed ones read as absent)
+    std::vector<quint16> systemIds() const;
     // Grows whenever a node is added or renamed: caches of names check it.
     quint64 structureVersion() const;
     Snapshot snapshot(NodeId node) const;
@@ -139,6 +155,7 @@ private:
     void addFieldNodesLocked(NodeId branch, const msg::MessageDef &def, int binding);
     NodeId childNamed(NodeId parent, QStringView name) const;
     SystemInfo &systemLocked(quint16 id);
+    int newBindingLocked(quint64 key); // an empty binding, indexed under `key`
     // The binding of `message`'s type from (system, entity), made with its nodes if new.
     int bindingLocked(quint16 system, quint8 entity, const msg::Message &message, bool perEntity);
     void commitLocked(int binding, const msg::Message &message, qint64 receivedMs);
@@ -147,6 +164,7 @@ private:
     void ensureStructureLocked(NodeId branch, const msg::Message &message);
     void markChangedLocked(int binding);
     void renameLocked(NodeId node, const QString &name);
+    void releaseRemovedLocked();
     void learnNamesLocked(const msg::Message &message, SystemInfo &system);
     QString entityName(const SystemInfo &system, quint8 entity) const;
     QString describeLocked(const Binding &binding) const;
@@ -165,9 +183,25 @@ private:
     {
         std::vector<int> changedBindings;
         Changes structure;
+        // Removals up to `taken` are in changes it took; up to `done`, it
+        // has handled them (it took changes again since).
+        quint64 taken = 0;
+        quint64 done = 0;
     };
     std::vector<Consumer> m_consumers;
     quint64 m_structureVersion = 0;
+
+    // Removed nodes wait until every consumer is done with their removal.
+    struct Removal
+    {
+        quint64 serial = 0;
+        std::vector<NodeId> nodes;
+    };
+    std::vector<Removal> m_removals;
+    quint64 m_removalSerial = 0;
+    std::vector<NodeId> m_freeNodes;
+    std::vector<int> m_freeBindings;
+    int m_removedNodes = 0; // waiting in m_removals
 };
 
 } // namespace neptus::tree

@@ -97,7 +97,7 @@ Rectangle {
 
             Column {
                 id: details
-                anchors { left: parent.left; right: parent.right; verticalCenter: parent.verticalCenter; margins: Theme.spacing }
+                anchors { left: parent.left; right: forget.visible ? forget.left : parent.right; verticalCenter: parent.verticalCenter; margins: Theme.spacing }
                 Text {
                     width: parent.width
                     text: row.system + (row.link ? "  ·  " + row.link : "")
@@ -174,6 +174,15 @@ Rectangle {
                         onClicked: Session.session.chooseSource(row.systemId, "")
                     }
                 }
+            }
+            TouchButton {
+                id: forget
+                objectName: "forget"
+                anchors { right: parent.right; top: parent.top; margins: Theme.spacing }
+                visible: panel.selectedId === row.systemId
+                text: qsTr("Forget")
+                toolTip: qsTr("Forget %1: its variables, alarms, track and statistics go. Heard again, it comes back.").arg(row.system)
+                onClicked: Session.session.forgetSystem(row.systemId)
             }
             TapHandler { onTapped: panel.selectedId = row.systemId }
         }

@@ -5,6 +5,7 @@
 //   2 find   [u8 length][UTF-8]     a path, as a layout or script names one
 //   3 node   [u16 index]            reads a node every way a view does
 //   4 model                         the model syncs and is read, as a view would
+//   5 forget [u16 id]               a system falls silent and is forgotten
 // Beyond "no crash, no sanitizer report", it checks that every node's path
 // leads back to a node of that same path, and that every packet that
 // decodes lands in the tree under its system and type.
@@ -43,6 +44,8 @@ const msg::Codec &codec()
 
 void checkPath(const tree::VariableTree &tree, tree::NodeId node)
 {
+    if (node != tree.root() && tree.systemOf(node) == 0xFFFF)
+        return; // a forgotten system's node (or a free id): no path leads there
     const QString path = tree.path(node);
     const tree::NodeId found = tree.find(path);
     if (found == tree::noNode)
@@ -72,7 +75,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         return p ? QString::fromUtf8(reinterpret_cast<const char *>(p), static_cast<qsizetype>(n)) : QString();
     };
     while (const uint8_t *op = take(1)) {
-        switch (*op % 5) {
+        switch (*op % 6) {
         case 0: {
             const uint8_t *l = take(2);
             if (!l)
@@ -106,9 +109,9 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         }
         case 3: {
             const uint8_t *i = take(2);
-            if (!i || tree.nodeCount() == 0)
+            if (!i || tree.nodeCapacity() == 0)
                 break;
-            const tree::NodeId node = ((i[0] << 8) | i[1]) % tree.nodeCount();
+            const tree::NodeId node = ((i[0] << 8) | i[1]) % tree.nodeCapacity();
             checkPath(tree, node);
             tree.snapshot(node);
             tree.childNames(tree.path(node));
@@ -117,12 +120,27 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         }
         case 4:
             model.sync();
-            for (int row = 0; row < model.rowCount({}); ++row)
-                model.data(model.index(row, 0, {}), Qt::DisplayRole);
+            for (int row = 0; row < model.rowCount({}); ++row) {
+                const QModelIndex system = model.index(row, 0, {});
+                model.data(system, Qt::DisplayRole);
+                if (model.rowCount(system) > 0)
+                    model.data(model.index(0, 1, system), Qt::DisplayRole);
+            }
+            break;
+        case 5: {
+            const uint8_t *id = take(2);
+            if (!id)
+                break;
+            const quint16 system = quint16((id[0] << 8) | id[1]) % 8; // the ids a short input sends from
+            const QString name = tree.systemName(system);
+            tree.forget(system);
+            if (tree.find(name) != tree::noNode && !tree.systemId(name))
+                fail("a forgotten system is still found", name);
             break;
         }
+        }
     }
-    for (tree::NodeId node = 0; node < std::min(tree.nodeCount(), 4000); ++node)
+    for (tree::NodeId node = 0; node < std::min(tree.nodeCapacity(), 4000); ++node)
         checkPath(tree, node);
     return 0;
 }

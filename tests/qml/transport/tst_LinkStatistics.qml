@@ -51,4 +51,20 @@ TestCase {
         keyClick(Qt.Key_Space)
         tryVerify(() => sources.text.indexOf("commands are held") >= 0, 1000, sources.text)
     }
+
+    // The operator forgets a system gone for good: a tap on the row offers
+    // Forget, and the system leaves the panel, the tree and the alarms.
+    function test_2_aSelectedSystemCanBeForgotten() {
+        Fixtures.receiveFrom("127.0.0.1", "EstimatedState", 0x72)
+        const row = rowOf("0x0072")
+        const forget = findChild(row, "forget")
+        verify(!forget.visible, "only the selected row offers it")
+        mouseClick(row, 10, 10)
+        tryVerify(() => forget.visible)
+        verify(Fixtures.session.tree.children("").indexOf("0x0072") >= 0)
+        mouseClick(forget)
+        tryVerify(() => findChild(panel, "link-0x0072") === null, 1000, "its row is gone")
+        tryVerify(() => Fixtures.session.tree.children("").indexOf("0x0072") < 0, 1000, "and its variables")
+        verify(Fixtures.session.send("0x0072", { abbrev: "Abort" }).indexOf("no system") >= 0)
+    }
 }

@@ -247,3 +247,23 @@ TEST_F(TrackRecording, SilentUnnamedSystemsAreForgottenNamedOnesStay)
     EXPECT_EQ(tracks.rowCount(), 2);
     EXPECT_EQ(tracks.count(QStringLiteral("0x4000")), 1);
 }
+
+// A system the console forgets (silent past the configured time) leaves the
+// map too, named or not; heard again, it starts a new track.
+TEST_F(TrackRecording, SystemsTheTreeForgetsLeaveTheMap)
+{
+    QAbstractItemModelTester tester(&tracks, QAbstractItemModelTester::FailureReportingMode::Fatal);
+    tree.setSystemName(0x1f, QStringLiteral("lauv-xplore-1"));
+    tree.ingest(state(0x1f, 41.0, -8.0, 0, 0, 3));
+    tree.ingest(state(0x20, 41.0, -8.0, 50, 0, 0));
+    model.sync();
+    ASSERT_EQ(tracks.rowCount(), 2);
+    tree.ingest(state(0x1f, 41.0, -8.0, 100, 0, 3)); // pending when it is forgotten
+    tree.forget(0x1f);
+    model.sync();
+    EXPECT_EQ(tracks.systems(), QStringList{QStringLiteral("0x0020")});
+    EXPECT_EQ(tracks.rowCount(), 1);
+    tree.ingest(state(0x1f, 41.0, -8.0, 200, 0, 3));
+    model.sync();
+    EXPECT_EQ(tracks.count(QStringLiteral("lauv-xplore-1")), 1) << "a new track";
+}

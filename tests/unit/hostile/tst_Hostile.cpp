@@ -408,10 +408,57 @@ TEST_F(ClockedConsole, ForgedIdsThatFallSilentShareOneAlarm)
     EXPECT_TRUE(graph.message(summary).startsWith(QStringLiteral("1000 unnamed system(s)"))) << graph.message(summary).toStdString();
     EXPECT_TRUE(graph.message(summary).contains(QStringLiteral("0x3000, 0x3001"))) << graph.message(summary).toStdString();
 
+    EXPECT_EQ(session.tree().systemIds().size(), 1001u);
+    const int flooded = session.tree().nodeCount();
     clock.advance(10 * 60 * 1000); // forgotten after 10 min
     session.check();
     EXPECT_EQ(graph.ownLevel(summary), alarms::Normal);
     EXPECT_EQ(graph.ownLevel(real), alarms::Error) << "the real vehicle is not forgotten";
+    // Forgotten everywhere: the tree, the link statistics, their alarms.
+    EXPECT_EQ(session.tree().systemIds(), std::vector<quint16>{0x1f});
+    EXPECT_LT(session.tree().nodeCount() * 100, flooded) << "from " << flooded << " nodes";
+    EXPECT_EQ(session.linkStatistics().systems().size(), 1u);
+    EXPECT_EQ(graph.level(graph.find(QStringLiteral("systems/0x3000"))), alarms::Unknown);
+    EXPECT_NE(session.tree().find(u"lauv-real/Heartbeat"), tree::noNode);
+}
+
+// Systems named or long heard are kept while silent (an AUV dives for
+// hours), unless the console is told to forget after a time.
+TEST_F(ClockedConsole, SilentSystemsAreForgottenAfterTheConfiguredTimeAndMetAnewWhenHeard)
+{
+    session.health().setForgetAfter(3600);
+    imc->receive(announce(0x1f, "lauv-real", QStringLiteral("imc+udp://127.0.0.1:6002/")), QHostAddress::LocalHost, 6002);
+    for (int i = 0; i < 10; ++i) {
+        imc->receive(packet("Heartbeat", 0x1f), QHostAddress::LocalHost, 6002);
+        imc->receive(packet("EstimatedState", 0x22), QHostAddress::LocalHost, 6003); // long heard, never named
+        clock.advance(1000);
+        session.check();
+    }
+    const alarms::AlarmGraph &graph = session.alarmGraph();
+    clock.advance(59 * 60 * 1000);
+    session.check();
+    EXPECT_EQ(graph.activeAlarms().size(), 2u) << "both lost, both still known after 59 min";
+    EXPECT_EQ(session.tree().systemIds().size(), 2u);
+
+    clock.advance(2 * 60 * 1000);
+    session.check();
+    EXPECT_TRUE(graph.activeAlarms().empty()) << "their alarms go with them";
+    EXPECT_EQ(graph.rootLevel(), alarms::Unknown);
+    EXPECT_TRUE(session.tree().systemIds().empty());
+    EXPECT_TRUE(session.linkStatistics().systems().empty());
+    const auto refused = session.send(0x1f, abortCommand());
+    ASSERT_FALSE(refused);
+    EXPECT_TRUE(refused.error().contains(QStringLiteral("never heard"))) << refused.error().toStdString();
+
+    imc->receive(packet("Heartbeat", 0x1f), QHostAddress::LocalHost, 6002);
+    session.check();
+    EXPECT_EQ(session.tree().systemIds(), std::vector<quint16>{0x1f});
+    const auto sent = session.send(0x1f, abortCommand()); // this link is not started: it gets as far as the link
+    ASSERT_FALSE(sent);
+    EXPECT_FALSE(sent.error().contains(QStringLiteral("never heard"))) << "met anew: " << sent.error().toStdString();
+    clock.advance(10'000);
+    session.check();
+    EXPECT_EQ(graph.activeAlarms().size(), 1u) << "and watched anew";
 }
 
 // Forged ids that reported an entity failure before falling silent left one

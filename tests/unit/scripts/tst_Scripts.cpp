@@ -190,3 +190,17 @@ TEST_F(Scripts, EditorApiChecksAndTestRuns)
     EXPECT_EQ(run.value(QStringLiteral("reads")).toStringList(), QStringList{QStringLiteral("lauv/EstimatedState/depth")});
     EXPECT_EQ(graph.find(QStringLiteral("scripts/test")), AlarmGraph::noNode) << "a test run leaves no alarm";
 }
+
+TEST_F(Scripts, AScriptSeesAForgottenSystemGoAndCome)
+{
+    tree.ingest(message("EstimatedState", 0x1f, "depth", 25));
+    ASSERT_TRUE(set(QStringLiteral("depth"), depthScript));
+    EXPECT_EQ(levelOf("depth"), alarms::Error);
+    tree.forget(0x1f);
+    host.runPending();
+    EXPECT_EQ(levelOf("depth"), alarms::Normal) << "its value is gone: a missing value compares false";
+    tree.ingest(message("EstimatedState", 0x1f, "depth", 30)); // in other node ids, maybe
+    host.runPending();
+    EXPECT_EQ(levelOf("depth"), alarms::Error);
+    EXPECT_EQ(messageOf("depth"), QStringLiteral("too deep: 30"));
+}

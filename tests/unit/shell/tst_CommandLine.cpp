@@ -119,6 +119,12 @@ TEST(CommandLine, DefinitionsPerSystemInBothSpellings)
     EXPECT_TRUE(shapeless.error().contains(QStringLiteral("--defs-for"))) << shapeless.error().toStdString();
     EXPECT_FALSE(parse({QStringLiteral("--imc-discovery"), QStringLiteral("maybe")}));
     EXPECT_FALSE(parse({QStringLiteral("--quit-after"), QStringLiteral("-1")}));
+    EXPECT_EQ(parse({})->forgetAfterSeconds, 0) << "never, unless told";
+    EXPECT_EQ(parse({QStringLiteral("--forget-after"), QStringLiteral("7200")})->forgetAfterSeconds, 7200);
+    const auto forget = parse({QStringLiteral("--forget-after"), QStringLiteral("soon")});
+    ASSERT_FALSE(forget);
+    EXPECT_TRUE(forget.error().contains(QStringLiteral("--forget-after"))) << forget.error().toStdString();
+    EXPECT_FALSE(parse({QStringLiteral("--forget-after"), QStringLiteral("0")}));
 }
 
 TEST(CommandLine, ImcBindTakesAnAddressOrAnInterfaceOfThisMachine)

@@ -4,6 +4,7 @@
 #include "messages/Schema.h"
 
 #include <QDir>
+#include <QSet>
 
 #include <thread>
 
@@ -277,4 +278,126 @@ TEST(VariableTree, IngestFromManyThreads)
         const QString path = QStringLiteral("0x%1/EstimatedState/depth").arg(0x10 + t, 4, 16, QLatin1Char('0'));
         EXPECT_DOUBLE_EQ(tree.snapshot(tree.find(path)).value.toDouble(), 1999);
     }
+}
+
+TEST(VariableTree, AForgottenSystemGoesWholeAndComesBackWhenHeard)
+{
+    ManualClock clock(QDateTime::fromMSecsSinceEpoch(5000, QTimeZone::UTC));
+    VariableTree tree(&clock);
+    tree.setSystemName(0x1f, QStringLiteral("lauv"));
+    tree.ingest(state(0x1f, 3));
+    tree.ingest(state(0x22, 7));
+    tree.recordSent(0x22, make("Abort", 0));
+    const int both = tree.nodeCount();
+    const NodeId oldDepth = tree.find(u"0x0022/EstimatedState/depth");
+    ASSERT_NE(oldDepth, noNode);
+
+    EXPECT_TRUE(tree.forget(0x22));
+    EXPECT_FALSE(tree.forget(0x22)) << "nothing left to forget";
+    EXPECT_EQ(tree.find(u"0x0022"), noNode);
+    EXPECT_EQ(tree.find(u"0x0022/EstimatedState/depth"), noNode);
+    EXPECT_EQ(tree.systemIds(), std::vector<quint16>{0x1f});
+    EXPECT_EQ(tree.childNames(u""), QStringList{QStringLiteral("lauv")});
+    EXPECT_EQ(tree.row(tree.find(u"lauv")), 0);
+    EXPECT_LT(tree.nodeCount(), both) << "its nodes are gone";
+    EXPECT_EQ(tree.nodeCount(), both - (1 + 1 + 20 + 1 + 1)) << "system, message and its 20 fields, out, Abort";
+    EXPECT_FALSE(tree.snapshot(oldDepth).present) << "an id a consumer may still hold reads as absent";
+    EXPECT_EQ(tree.systemOf(oldDepth), 0xFFFF);
+    EXPECT_EQ(tree.lastReceivedMs(0x22), 0);
+    EXPECT_EQ(tree.snapshot(tree.find(u"lauv/EstimatedState/depth")).value.toDouble(), 3.0) << "others untouched";
+
+    tree.ingest(state(0x22, 9));
+    const NodeId depth = tree.find(u"0x0022/EstimatedState/depth");
+    ASSERT_NE(depth, noNode);
+    EXPECT_EQ(tree.snapshot(depth).value.toDouble(), 9.0);
+    EXPECT_EQ(tree.find(u"0x0022/out"), noNode) << "met anew: nothing of before";
+}
+
+TEST(VariableTree, ConsumersHearOfARemovalAndItsIdsWaitUntilEveryConsumerIsDone)
+{
+    VariableTree tree;
+    const int model = tree.addConsumer();
+    const int scripts = tree.addConsumer();
+    tree.ingest(state(0x22, 7));
+    tree.takeChanges(model);
+    tree.takeChanges(scripts);
+    const NodeId system = tree.find(u"0x0022");
+    QSet<NodeId> old;
+    for (NodeId n = 0; n < tree.nodeCapacity(); ++n)
+        if (n != tree.root())
+            old.insert(n);
+
+    tree.ingest(state(0x22, 8)); // a change pending when it goes: dropped with it
+    ASSERT_TRUE(tree.forget(0x22));
+    const auto freshIds = [&] {
+        std::vector<NodeId> clash;
+        for (NodeId n = 0; n < tree.nodeCapacity(); ++n)
+            if (old.contains(n) && tree.systemOf(n) != 0xFFFF)
+                clash.push_back(n);
+        return clash;
+    };
+
+    tree.ingest(state(0x33, 1)); // new nodes while consumers may hold the old ids
+    EXPECT_TRUE(freshIds().empty()) << "no id reused before any consumer heard";
+    VariableTree::Changes changes = tree.takeChanges(model);
+    ASSERT_EQ(changes.removed.size(), 1u);
+    EXPECT_EQ(changes.removed[0].node, system);
+    EXPECT_EQ(changes.removed[0].system, 0x22);
+    for (NodeId n : changes.changedNodes)
+        EXPECT_FALSE(old.contains(n)) << "no change names a removed node";
+    EXPECT_EQ(tree.takeChanges(model).removed.size(), 0u) << "once";
+
+    tree.forget(0x33);
+    tree.ingest(state(0x44, 1));
+    EXPECT_TRUE(freshIds().empty()) << "the script consumer has not taken its changes yet";
+    EXPECT_EQ(tree.takeChanges(scripts).removed.size(), 1u) << "0x33 came and went unseen by it";
+    tree.forget(0x44);
+    tree.ingest(state(0x55, 1));
+    EXPECT_TRUE(freshIds().empty()) << "taken, but not yet handled (it handles them until it takes again)";
+    tree.takeChanges(scripts);
+    tree.takeChanges(model);
+    tree.forget(0x55);
+    tree.takeChanges(scripts);
+    tree.takeChanges(model);
+    tree.takeChanges(scripts);
+    tree.takeChanges(model);
+    const int before = tree.nodeCapacity();
+    tree.ingest(state(0x66, 1));
+    EXPECT_EQ(tree.nodeCapacity(), before) << "every consumer done: the ids are given to new nodes";
+    EXPECT_EQ(tree.snapshot(tree.find(u"0x0066/EstimatedState/depth")).value.toDouble(), 1.0);
+}
+
+TEST(VariableTree, ASystemMadeAndForgottenBetweenTwoLooksIsNeverSeen)
+{
+    VariableTree tree;
+    const int consumer = tree.addConsumer();
+    tree.ingest(state(0x1f, 1));
+    tree.takeChanges(consumer);
+    tree.ingest(state(0x22, 7));
+    tree.forget(0x22);
+    const VariableTree::Changes changes = tree.takeChanges(consumer);
+    EXPECT_TRUE(changes.removed.empty());
+    EXPECT_TRUE(changes.newNodes.empty());
+    EXPECT_TRUE(changes.changedNodes.empty());
+}
+
+TEST(VariableTree, ForgettingKeepsMemoryBoundedUnderChangingForgedIds)
+{
+    // Forged ids come and go for hours: each wave is forgotten, and the
+    // next one lives in the same node ids.
+    VariableTree tree;
+    const int consumer = tree.addConsumer();
+    int peak = 0;
+    for (int wave = 0; wave < 50; ++wave) {
+        for (quint16 id = 0; id < 100; ++id)
+            tree.ingest(state(quint16(0x1000 + wave * 100 + id), id));
+        tree.takeChanges(consumer);
+        if (wave == 1)
+            peak = tree.nodeCapacity();
+        for (quint16 id = 0; id < 100; ++id)
+            tree.forget(quint16(0x1000 + wave * 100 + id));
+        tree.takeChanges(consumer);
+    }
+    EXPECT_EQ(tree.nodeCount(), 1) << "the root only";
+    EXPECT_LE(tree.nodeCapacity(), peak) << "5,000 systems in waves of 100 need the nodes of two waves";
 }

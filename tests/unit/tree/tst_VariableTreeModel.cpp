@@ -264,3 +264,89 @@ TEST(VariableTreeModelAges, OnlyRowsAViewReadAreRefreshed)
     clock.advance(10'000);
     EXPECT_TRUE(model.data(depth, VariableTreeModel::StaleRole).toBool()) << "read again, it is up to date";
 }
+
+TEST_F(Fixture, AForgottenSystemsRowGoesAndViewsKeepAConsistentPicture)
+{
+    tree.setSystemName(0x1f, QStringLiteral("lauv"));
+    tree.ingest(state(0x1f, 3));
+    tree.ingest(state(0x22, 7));
+    tree.ingest(state(0x33, 9));
+    model.sync();
+    ASSERT_EQ(model.rowCount(), 3);
+    Variable depth;
+    depth.setTree(&model);
+    depth.setPath(QStringLiteral("0x0022/EstimatedState/depth"));
+    EXPECT_EQ(depth.value().toDouble(), 7.0);
+    const QPersistentModelIndex held = model.indexOfPath(QStringLiteral("0x0022/EstimatedState/depth"));
+    ASSERT_TRUE(held.isValid());
+    QSignalSpy systems(&model, &VariableTreeModel::systemsChanged);
+
+    tree.forget(0x22);
+    // Until the frame, views see the rows they were told of, whole.
+    EXPECT_EQ(model.rowCount(), 3);
+    EXPECT_EQ(model.data(model.index(1, 0)).toString(), QStringLiteral("0x0022"));
+    EXPECT_EQ(model.data(model.index(2, 0)).toString(), QStringLiteral("0x0033"));
+    EXPECT_FALSE(model.data(held, VariableTreeModel::PresentRole).toBool()) << "its values read as absent";
+
+    QSignalSpy removed(&model, &QAbstractItemModel::rowsRemoved);
+    model.sync();
+    EXPECT_EQ(removed.count(), 1);
+    EXPECT_EQ(systems.count(), 1);
+    ASSERT_EQ(model.rowCount(), 2);
+    EXPECT_EQ(model.data(model.index(0, 0)).toString(), QStringLiteral("lauv"));
+    EXPECT_EQ(model.data(model.index(1, 0)).toString(), QStringLiteral("0x0033"));
+    EXPECT_FALSE(held.isValid()) << "views' persistent indexes into it are dropped";
+    EXPECT_EQ(model.indexOfPath(QStringLiteral("0x0033/EstimatedState/depth")).parent().parent().row(), 1);
+    EXPECT_FALSE(depth.present()) << "a variable of it is absent, not left showing 7";
+
+    // Heard again: a new row at the end, with the variable following it.
+    tree.ingest(state(0x22, 5));
+    tree.ingest(state(0x44, 1));
+    model.sync();
+    ASSERT_EQ(model.rowCount(), 4);
+    EXPECT_EQ(model.data(model.index(2, 0)).toString(), QStringLiteral("0x0022"));
+    EXPECT_EQ(model.data(model.index(3, 0)).toString(), QStringLiteral("0x0044"));
+    EXPECT_EQ(model.data(model.indexOfPath(QStringLiteral("0x0022/EstimatedState/depth")), VariableTreeModel::ValueRole).toDouble(), 5.0);
+    EXPECT_EQ(depth.value().toDouble(), 5.0);
+    EXPECT_EQ(model.rowCount(model.indexOfPath(QStringLiteral("0x0022/EstimatedState"))), 20);
+}
+
+TEST_F(Fixture, IdsGivenToNewNodesStartWithoutChildren)
+{
+    // The same ids come back for other systems: the model must not think
+    // the new nodes have the children the old ones had.
+    for (int wave = 0; wave < 6; ++wave) {
+        const quint16 id = quint16(0x100 + wave);
+        tree.ingest(wave % 2 ? heartbeat(id) : state(id, wave));
+        model.sync();
+        ASSERT_EQ(model.rowCount(), 1);
+        const QModelIndex message = model.index(0, 0, model.index(0, 0));
+        EXPECT_EQ(model.rowCount(message), wave % 2 ? 0 : 20) << "wave " << wave;
+        tree.forget(id);
+        model.sync();
+        EXPECT_EQ(model.rowCount(), 0);
+    }
+}
+
+TEST_F(Fixture, ManyForgottenSystemsGoInRunsOfRows)
+{
+    for (quint16 id = 0x100; id < 0x100 + 300; ++id)
+        tree.ingest(state(id, 1));
+    model.sync();
+    ASSERT_EQ(model.rowCount(), 300);
+    for (quint16 id = 0x100; id < 0x100 + 300; ++id)
+        if (id < 0x100 + 100 || id % 3 == 0) // rows 0..99 and every third after
+            tree.forget(id);
+    QSignalSpy removed(&model, &QAbstractItemModel::rowsRemoved);
+    model.sync();
+    EXPECT_LT(removed.count(), 80) << "one removal per run of rows, not per system";
+    QStringList names;
+    for (int row = 0; row < model.rowCount(); ++row)
+        names << model.data(model.index(row, 0)).toString();
+    QStringList expected;
+    for (quint16 id = 0x100 + 100; id < 0x100 + 300; ++id)
+        if (id % 3 != 0)
+            expected << msg::systemLabel(id);
+    EXPECT_EQ(names, expected);
+    EXPECT_EQ(model.indexOfPath(expected.last() + QStringLiteral("/EstimatedState")).parent().row(), int(expected.size()) - 1);
+}
