@@ -21,7 +21,7 @@ set(NEPTUS_LAYERS
   "neptus-plans        plans       neptus-mission-model"
   "neptus-models       models      neptus-core"
   "neptus-model-reader models      neptus-models"
-  "neptus-simulation   sim         neptus-messages neptus-geo"
+  "neptus-simulation   sim         neptus-messages neptus-geo neptus-plans"
   "neptus-session      session     neptus-scripting neptus-transport"
   "neptus-engine       qmlmodels   neptus-session neptus-geo"
   # Programs: the command-line tools link no QML.

@@ -1,9 +1,11 @@
 // neptus-sim: one simulated vehicle speaking IMC over UDP on loopback, as a
 // DUNE vehicle does: it streams to the consoles it hears a Heartbeat from,
 // announces itself, answers EntityList and EntityInfo queries, and prints
-// every command addressed to it. With --like-dune it is as strict as a stock
-// DUNE vehicle (IMC discovery only, unknown senders ignored). Faults and a
-// communications drop can be switched on from the command line.
+// every command addressed to it, and runs plans (PlanDB, PlanControl; see
+// sim::PlanEngine). With --like-dune it is as strict as a stock DUNE vehicle
+// (IMC discovery only, unknown senders ignored, the first transition out of
+// each maneuver whatever its condition). Faults and a communications drop
+// can be switched on from the command line.
 #include "core/DataFiles.h"
 #include "messages/Codec.h"
 #include "transport/dds/DdsTransport.h"
@@ -71,7 +73,8 @@ int main(int argc, char *argv[])
     const QCommandLineOption dune(QStringLiteral("like-dune"),
         QStringLiteral("Behave as a stock DUNE vehicle: announce only to the IMC discovery ports (127.0.0.1:30100-30104) "
                        "and listen there, take messages only from systems that announced themselves, stream to those "
-                       "heard from in the last 30 s, send the EntityList only when asked."));
+                       "heard from in the last 30 s, send the EntityList only when asked, follow the first transition "
+                       "out of each maneuver whatever its condition."));
     parser.addOptions({id, name, kind, port, host, console, announcePort, phase, fault, drop, defs, dds, domain, ddsKeys, ddsIdentity, dune});
     if (!parser.parse(QCoreApplication::arguments()))
         return usage(parser.errorText());
@@ -136,6 +139,8 @@ int main(int argc, char *argv[])
     config.periodicEntityList = !likeDune;
     sim::SimulatedVehicle vehicle(*schema, config);
     vehicle.setFaults(faults);
+    if (likeDune)
+        vehicle.plans().setTransitions(sim::PlanEngine::Transitions::FirstOnly);
     const msg::Codec codec(*schema);
     QUdpSocket socket;
     if (!socket.bind(address, static_cast<quint16>(portValue))) {

@@ -17,9 +17,22 @@ bool due(double previous, double t, double period)
 }
 } // namespace
 
+namespace {
+Limits limitsOf(SimulatedVehicle::Kind kind)
+{
+    switch (kind) {
+    case SimulatedVehicle::Kind::Asv: return Limits::asv();
+    case SimulatedVehicle::Kind::Uav: return Limits::uav();
+    case SimulatedVehicle::Kind::Auv: break;
+    }
+    return Limits::auv();
+}
+} // namespace
+
 SimulatedVehicle::SimulatedVehicle(std::shared_ptr<const msg::Schema> schema, Config config)
-    : m_schema(std::move(schema))
+    : m_schema(schema)
     , m_config(std::move(config))
+    , m_plans(schema, m_config.id, m_config.name, limitsOf(m_config.kind), m_config.latDeg, m_config.lonDeg)
 {
 }
 
@@ -43,30 +56,58 @@ msg::Message SimulatedVehicle::make(const char *abbrev, double wallTime, quint8 
     return m;
 }
 
-std::vector<msg::Message> SimulatedVehicle::step(double previous, double t, double wallTime) const
+msg::Message SimulatedVehicle::estimatedState(double t, double wallTime) const
+{
+    Pose p = pose(t);
+    double speed = m_faults & MotorJammed ? 0 : m_config.speedMps;
+    if (m_driven) {
+        p = {m_motion.ned.x(), m_motion.ned.y(), m_motion.ned.z(), m_motion.psi};
+        speed = m_motion.speed;
+    }
+    msg::Message s = make("EstimatedState", wallTime, navigationEntity);
+    const auto set = [&](const char16_t *field, double value) { s.setNumber(s.def()->indexOf(field), value); };
+    set(u"lat", m_config.latDeg * std::numbers::pi / 180);
+    set(u"lon", m_config.lonDeg * std::numbers::pi / 180);
+    set(u"x", p.x);
+    set(u"y", p.y);
+    set(u"z", p.z);
+    set(u"depth", m_config.kind == Kind::Auv ? std::max(0.0, p.z) : 0);
+    set(u"alt", m_config.kind == Kind::Uav ? -p.z : 20 - p.z);
+    set(u"psi", p.psi);
+    set(u"phi", 0.05 * std::sin(t));
+    set(u"theta", 0.03 * std::cos(t / 3));
+    set(u"u", speed);
+    set(u"vx", speed * std::cos(p.psi));
+    set(u"vy", speed * std::sin(p.psi));
+    return s;
+}
+
+std::vector<msg::Message> SimulatedVehicle::step(double previous, double t, double wallTime)
 {
     std::vector<msg::Message> out;
-    if (due(previous, t, 0.1)) {
-        const Pose p = pose(t);
-        msg::Message s = make("EstimatedState", wallTime, navigationEntity);
-        const auto set = [&](const char16_t *field, double value) { s.setNumber(s.def()->indexOf(field), value); };
-        set(u"lat", m_config.latDeg * std::numbers::pi / 180);
-        set(u"lon", m_config.lonDeg * std::numbers::pi / 180);
-        set(u"x", p.x);
-        set(u"y", p.y);
-        set(u"z", p.z);
-        set(u"depth", m_config.kind == Kind::Auv ? p.z : 0);
-        set(u"alt", m_config.kind == Kind::Uav ? -p.z : 20 - p.z);
-        set(u"psi", p.psi);
-        set(u"phi", 0.05 * std::sin(t));
-        set(u"theta", 0.03 * std::cos(t / 3));
-        set(u"u", m_faults & MotorJammed ? 0 : m_config.speedMps);
-        set(u"vx", (m_faults & MotorJammed ? 0 : m_config.speedMps) * std::cos(p.psi));
-        set(u"vy", (m_faults & MotorJammed ? 0 : m_config.speedMps) * std::sin(p.psi));
-        out.push_back(std::move(s));
+    if (!m_driven && m_plans.executing()) { // the first plan takes it from where it is on its circle
+        const Pose p = pose(std::max(previous, 0.0));
+        m_motion.ned = {p.x, p.y, p.z};
+        m_motion.psi = p.psi;
+        m_motion.speed = m_config.speedMps;
+        m_driven = true;
     }
+    if (m_driven && previous >= 0) {
+        // Steps of at most 0.1 s: a late timer does not make it cut corners.
+        for (double from = previous; from < t;) {
+            const double dt = std::min(0.1, t - from);
+            for (msg::Message &m : m_plans.advance(m_motion, m_faults & MotorJammed ? 0 : dt, wallTime))
+                out.push_back(std::move(m));
+            from += dt;
+        }
+    }
+    if (due(previous, t, 0.1))
+        out.push_back(estimatedState(t, wallTime));
     if (due(previous, t, 1.0)) {
         out.push_back(make("Heartbeat", wallTime));
+        out.push_back(m_plans.controlState(wallTime));
+        out.push_back(m_plans.maneuverState(wallTime));
+        out.push_back(m_plans.vehicleState(wallTime));
         const bool batteryLow = m_faults & BatteryLow;
         const bool jammed = m_faults & MotorJammed;
         struct Entity { quint8 id; int state; const char *description; };
@@ -108,11 +149,13 @@ std::vector<msg::Message> SimulatedVehicle::step(double previous, double t, doub
     return out;
 }
 
-std::vector<msg::Message> SimulatedVehicle::answer(const msg::Message &request, double wallTime) const
+std::vector<msg::Message> SimulatedVehicle::answer(const msg::Message &request, double wallTime)
 {
-    std::vector<msg::Message> out;
+    std::vector<msg::Message> out = m_plans.handle(request, wallTime);
     if (!request.def() || request.header.dst != m_config.id)
         return out;
+    if (!out.empty()) // its plan state changed: say so at once, as DUNE does
+        out.push_back(m_plans.controlState(wallTime));
     const auto reply = [&](msg::Message m) {
         m.header.dst = request.header.src;
         m.header.dstEnt = request.header.srcEnt;

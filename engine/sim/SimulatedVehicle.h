@@ -1,6 +1,8 @@
 #pragma once
 
 #include "messages/Message.h"
+#include "sim/Kinematics.h"
+#include "sim/PlanEngine.h"
 
 #include <QString>
 
@@ -15,7 +17,10 @@ namespace neptus::sim {
 // its navigation, motor and batteries, EstimatedState (IMC's lat/lon
 // reference plus x/y/z offsets, attitude and speeds), Voltage, Rpm and the
 // paper's Motor message. Faults can be switched on to make alarms happen.
-// Plan execution comes with the missions work.
+// It runs plans as a DUNE vehicle does (PlanEngine: PlanDB, PlanControl,
+// PlanControlState, ManeuverControlState, VehicleState): from the first
+// plan started, it moves as its plans and its kind's limits say (and holds,
+// surfaces or circles between plans) instead of following its circle.
 class SimulatedVehicle
 {
 public:
@@ -38,15 +43,18 @@ public:
     enum Fault { None = 0, BatteryLow = 1, MotorJammed = 2 };
 
     SimulatedVehicle(std::shared_ptr<const msg::Schema> schema, Config config);
+    SimulatedVehicle(const SimulatedVehicle &) = delete;
+    SimulatedVehicle &operator=(const SimulatedVehicle &) = delete;
 
     const Config &config() const { return m_config; }
     void setFaults(int faults) { m_faults = faults; }
     int faults() const { return m_faults; }
 
-    // Messages due at simulation time `t` seconds since start, given that
-    // the last call was at `previous` (10 Hz state, 1 Hz the rest, 0.1 Hz
-    // Announce and EntityList). `wallTime` is the header timestamp.
-    std::vector<msg::Message> step(double previous, double t, double wallTime) const;
+    // Moves on to simulation time `t` seconds since start (the last call
+    // was at `previous`) and returns the messages due (10 Hz state, 1 Hz the
+    // rest, 0.1 Hz Announce and EntityList, a plan's end when it ends).
+    // `wallTime` is the header timestamp.
+    std::vector<msg::Message> step(double previous, double t, double wallTime);
 
     // Announce and EntityList: who it is, sent every 10 s by step() and at
     // once to a console that appears.
@@ -54,8 +62,13 @@ public:
 
     // The replies a DUNE vehicle gives to a request addressed to it: an
     // EntityList for an EntityList query, an EntityInfo for a
-    // QueryEntityInfo; none for anything else.
-    std::vector<msg::Message> answer(const msg::Message &request, double wallTime) const;
+    // QueryEntityInfo, PlanDB and PlanControl replies (PlanEngine); none
+    // for anything else.
+    std::vector<msg::Message> answer(const msg::Message &request, double wallTime);
+    PlanEngine &plans() { return m_plans; }
+    const PlanEngine &plans() const { return m_plans; }
+    // Where it is: north, east, down of its reference point, heading, speed.
+    const Motion &motion() const { return m_motion; }
 
     // Position on the track at time t: north and east offsets (m) and heading (rad).
     struct Pose { double x, y, z, psi; };
@@ -66,10 +79,14 @@ private:
     static std::vector<std::pair<quint8, QByteArray>> entities();
     static QByteArray entityList(); // "Navigation=1;Motor=2;Batteries=3"
     msg::Message make(const char *abbrev, double wallTime, quint8 entity = 0) const;
+    msg::Message estimatedState(double t, double wallTime) const;
 
     std::shared_ptr<const msg::Schema> m_schema;
     Config m_config;
     int m_faults = None;
+    PlanEngine m_plans;
+    Motion m_motion;
+    bool m_driven = false; // a plan has moved it: no more circle
 };
 
 } // namespace neptus::sim

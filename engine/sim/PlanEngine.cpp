@@ -1,0 +1,542 @@
+#include "sim/PlanEngine.h"
+
+#include "geo/Geodesy.h"
+#include "mission/ImcPlan.h"
+#include "plans/PlanDatabase.h"
+
+#include <cmath>
+#include <limits>
+
+namespace neptus::sim {
+
+using namespace Qt::StringLiterals;
+
+namespace {
+
+const QStringList executable = {u"Goto"_s,          u"Loiter"_s, u"StationKeeping"_s, u"YoYo"_s, u"PopUp"_s,
+                                u"Rows"_s,          u"FollowPath"_s, u"FollowTrajectory"_s, u"Elevator"_s,
+                                u"CompassCalibration"_s, u"ScheduledGoto"_s, u"Launch"_s, u"Takeoff"_s, u"Land"_s};
+
+// Maneuvers that, once there, wait or circle for their duration (for ever at 0, but a pop-up).
+bool timed(const QString &type)
+{
+    return type == u"StationKeeping" || type == u"PopUp" || type == u"Loiter" || type == u"CompassCalibration";
+}
+
+void setEnum(msg::Message &m, const char *field, const char *name)
+{
+    const int index = m.def()->indexOf(QString::fromLatin1(field));
+    m.setInteger(index, m.field(index).enumeration->parse(QString::fromLatin1(name)).value_or(0));
+}
+
+QString enumOf(const msg::Message &m, const char *field)
+{
+    return m.enumText(m.def()->indexOf(QString::fromLatin1(field)));
+}
+
+void setText(msg::Message &m, const char *field, const QString &text)
+{
+    m.setBytes(m.def()->indexOf(QString::fromLatin1(field)), text.toUtf8());
+}
+
+void setNumber(msg::Message &m, const char *field, double value)
+{
+    m.setNumber(m.def()->indexOf(QString::fromLatin1(field)), value);
+}
+
+void setInteger(msg::Message &m, const char *field, qint64 value)
+{
+    m.setInteger(m.def()->indexOf(QString::fromLatin1(field)), value);
+}
+
+qint64 clampedSeconds(double seconds, qint64 max)
+{
+    return seconds < 0 ? -1 : static_cast<qint64>(std::min(std::round(seconds), static_cast<double>(max)));
+}
+
+} // namespace
+
+PlanEngine::PlanEngine(std::shared_ptr<const msg::Schema> schema, quint16 self, QString name, Limits limits,
+                       double latDeg, double lonDeg)
+    : m_schema(schema)
+    , m_codec(schema)
+    , m_self(self)
+    , m_name(std::move(name))
+    , m_limits(limits)
+    , m_latDeg(latDeg)
+    , m_lonDeg(lonDeg)
+{
+}
+
+msg::Message PlanEngine::make(const char *abbrev, double wallTime) const
+{
+    msg::Message m(m_schema->byAbbrev(QString::fromLatin1(abbrev)));
+    m.header.src = m_self;
+    m.header.srcEnt = 0xFF;
+    m.header.timestamp = wallTime;
+    return m;
+}
+
+msg::Message PlanEngine::reply(const msg::Message &request, const char *type, const QString &info, double wallTime) const
+{
+    msg::Message m = make(qPrintable(request.abbrev()), wallTime);
+    setEnum(m, "type", type);
+    m.setInteger(m.def()->indexOf(u"op"), request.integer(u"op"));
+    m.setInteger(m.def()->indexOf(u"request_id"), request.integer(u"request_id"));
+    setText(m, "plan_id", request.text(u"plan_id"));
+    setText(m, "info", info);
+    m.header.dst = request.header.src;
+    m.header.dstEnt = request.header.srcEnt;
+    return m;
+}
+
+std::vector<msg::Message> PlanEngine::handle(const msg::Message &message, double wallTime)
+{
+    m_now = wallTime;
+    if (!message.def() || message.header.dst != m_self)
+        return {};
+    const QString &abbrev = message.def()->abbrev;
+    if (abbrev == u"PlanDB" && enumOf(message, "type") == u"REQUEST")
+        return planDb(message, wallTime);
+    if (abbrev == u"PlanControl" && enumOf(message, "type") == u"REQUEST")
+        return planControl(message, wallTime);
+    if (abbrev == u"Abort" && m_run)
+        return {finish(false, u"plan aborted by 0x%1"_s.arg(message.header.src, 4, 16, QChar(u'0')), wallTime)};
+    return {};
+}
+
+// --- Plan database -------------------------------------------------------------------
+
+std::vector<msg::Message> PlanEngine::planDb(const msg::Message &request, double wallTime)
+{
+    const QString op = enumOf(request, "op");
+    const QString id = request.text(u"plan_id");
+    const auto found = m_database.find(id);
+    const auto failure = [&](const QString &info) { return std::vector{reply(request, "FAILURE", info, wallTime)}; };
+    msg::Message answer = reply(request, "SUCCESS", {}, wallTime);
+    const int arg = answer.def()->indexOf(u"arg");
+    const auto changed = [&] {
+        m_databaseChange = wallTime;
+        m_databaseChangeSource = request.header.src;
+    };
+
+    if (op == u"SET") {
+        const msg::Message *spec = request.inlineMessage(request.def()->indexOf(u"arg"));
+        if (!spec || spec->abbrev() != u"PlanSpecification")
+            return failure(u"no plan specification given"_s);
+        if (spec->text(u"plan_id") != id || id.isEmpty())
+            return failure(u"the plan id '%1' is not the specification's '%2'"_s.arg(id, spec->text(u"plan_id")));
+        const auto md5 = plans::planMd5(m_codec, *spec);
+        if (!md5)
+            return failure(md5.error());
+        const auto packet = m_codec.encode(*spec);
+        Stored &stored = m_database[id];
+        stored = {*spec, *md5, static_cast<int>(packet ? packet->size() - msg::Codec::headerSize - msg::Codec::footerSize : 0),
+                  wallTime, request.header.src};
+        changed();
+    } else if (op == u"DEL") {
+        if (found == m_database.end())
+            return failure(u"undefined plan '%1'"_s.arg(id));
+        m_database.erase(found);
+        changed();
+    } else if (op == u"GET") {
+        if (found == m_database.end())
+            return failure(u"undefined plan '%1'"_s.arg(id));
+        answer.setInlineMessage(arg, found->second.specification);
+    } else if (op == u"GET_INFO") {
+        if (found == m_database.end())
+            return failure(u"undefined plan '%1'"_s.arg(id));
+        msg::Message info = make("PlanDBInformation", wallTime);
+        setText(info, "plan_id", id);
+        setInteger(info, "plan_size", std::min(found->second.size, 65535));
+        setNumber(info, "change_time", found->second.changeTime);
+        setInteger(info, "change_sid", found->second.changeSource);
+        info.setBytes(info.def()->indexOf(u"md5"), found->second.md5);
+        answer.setInlineMessage(arg, info);
+    } else if (op == u"CLEAR") {
+        m_database.clear();
+        changed();
+    } else if (op == u"GET_STATE" || op == u"GET_DSTATE") {
+        answer.setInlineMessage(arg, planDbState(op == u"GET_DSTATE", wallTime));
+    } else {
+        return failure(u"operation %1 is not supported"_s.arg(op));
+    }
+    return {answer};
+}
+
+std::vector<QString> PlanEngine::planIds() const
+{
+    std::vector<QString> ids;
+    for (const auto &[id, stored] : m_database)
+        ids.push_back(id);
+    return ids;
+}
+
+QByteArray PlanEngine::databaseMd5() const
+{
+    QList<std::pair<QString, QByteArray>> hashes;
+    for (const auto &[id, stored] : m_database)
+        hashes.append({id, stored.md5});
+    return plans::databaseMd5(hashes);
+}
+
+msg::Message PlanEngine::planDbState(bool detailed, double wallTime) const
+{
+    msg::Message state = make("PlanDBState", wallTime);
+    qint64 size = 0;
+    std::vector<msg::Message> infos;
+    for (const auto &[id, stored] : m_database) {
+        size += stored.size;
+        if (!detailed)
+            continue;
+        msg::Message info = make("PlanDBInformation", wallTime);
+        setText(info, "plan_id", id);
+        setInteger(info, "plan_size", std::min(stored.size, 65535));
+        setNumber(info, "change_time", stored.changeTime);
+        setInteger(info, "change_sid", stored.changeSource);
+        info.setBytes(info.def()->indexOf(u"md5"), stored.md5);
+        infos.push_back(std::move(info));
+    }
+    setInteger(state, "plan_count", static_cast<qint64>(m_database.size()));
+    setInteger(state, "plan_size", size);
+    setNumber(state, "change_time", m_databaseChange);
+    setInteger(state, "change_sid", m_databaseChangeSource);
+    state.setBytes(state.def()->indexOf(u"md5"), databaseMd5());
+    state.setMessages(state.def()->indexOf(u"plans_info"), std::move(infos));
+    return state;
+}
+
+// --- Plan control --------------------------------------------------------------------
+
+std::vector<msg::Message> PlanEngine::planControl(const msg::Message &request, double wallTime)
+{
+    const QString op = enumOf(request, "op");
+    const QString id = request.text(u"plan_id");
+    const msg::Message *arg = request.inlineMessage(request.def()->indexOf(u"arg"));
+    std::vector<msg::Message> out;
+
+    // The plan a START or LOAD names: given whole, one maneuver, or stored.
+    const auto planOf = [&]() -> std::expected<msg::Message, QString> {
+        if (arg && arg->abbrev() == u"PlanSpecification")
+            return *arg;
+        if (arg) { // a quick plan of one maneuver, named after its type as DUNE does
+            msg::Message spec = make("PlanSpecification", wallTime);
+            msg::Message step = make("PlanManeuver", wallTime);
+            setText(step, "maneuver_id", arg->abbrev());
+            step.setInlineMessage(step.def()->indexOf(u"data"), *arg);
+            setText(spec, "plan_id", id);
+            setText(spec, "start_man_id", arg->abbrev());
+            spec.setMessages(spec.def()->indexOf(u"maneuvers"), {step});
+            return spec;
+        }
+        if (const auto found = m_database.find(id); found != m_database.end())
+            return found->second.specification;
+        if (m_loaded && m_loaded->text(u"plan_id") == id)
+            return *m_loaded;
+        return std::unexpected(u"undefined plan '%1'"_s.arg(id));
+    };
+
+    if (op == u"START") {
+        auto spec = planOf();
+        if (!spec)
+            return {reply(request, "FAILURE", u"plan load failed: "_s + spec.error(), wallTime)};
+        if (m_run) // a new plan replaces the one running
+            out.push_back(finish(false, u"plan stopped: %1 started"_s.arg(id), wallTime));
+        if (const auto error = start(std::move(*spec), request, &m_lastMotion)) {
+            out.push_back(reply(request, "FAILURE", u"plan validation failed: "_s + *error, wallTime));
+            return out;
+        }
+        out.push_back(reply(request, "SUCCESS", u"plan started"_s, wallTime));
+    } else if (op == u"STOP") {
+        const bool running = m_run.has_value();
+        if (running)
+            out.push_back(finish(false, u"plan stopped"_s, wallTime));
+        out.push_back(reply(request, "SUCCESS", running ? u"plan stopped"_s : u"no plan was running"_s, wallTime));
+    } else if (op == u"LOAD") {
+        auto spec = planOf();
+        if (!spec)
+            return {reply(request, "FAILURE", u"plan load failed: "_s + spec.error(), wallTime)};
+        m_loaded = *spec;
+        out.push_back(reply(request, "SUCCESS", u"plan loaded"_s, wallTime));
+    } else if (op == u"GET") {
+        if (!m_run)
+            return {reply(request, "FAILURE", u"no plan is running"_s, wallTime)};
+        msg::Message answer = reply(request, "SUCCESS", {}, wallTime);
+        answer.setInlineMessage(answer.def()->indexOf(u"arg"), m_run->specification);
+        setText(answer, "plan_id", m_run->plan.id);
+        out.push_back(std::move(answer));
+    } else {
+        out.push_back(reply(request, "FAILURE", u"operation %1 is not supported"_s.arg(op), wallTime));
+    }
+    return out;
+}
+
+std::optional<QString> PlanEngine::start(msg::Message specification, const msg::Message &request, const Motion *motion)
+{
+    auto plan = mission::planFromSpecification(specification, m_name);
+    if (!plan)
+        return plan.error();
+    for (const mission::Maneuver &m : std::as_const(plan->maneuvers)) {
+        if (!executable.contains(m.type))
+            return u"maneuver '%1' is a %2, which this vehicle cannot do"_s.arg(m.id, m.type);
+    }
+    if (!plan->maneuver(plan->start))
+        return u"the start maneuver '%1' is not in the plan"_s.arg(plan->start);
+    Run run;
+    run.plan = std::move(*plan);
+    run.specification = std::move(specification);
+    run.requester = request.header.src;
+    run.requesterEntity = request.header.srcEnt;
+    run.requestId = static_cast<quint16>(request.integer(u"request_id"));
+    run.total = static_cast<int>(run.plan.executionOrder().size());
+    m_run = std::move(run);
+    m_lastPlan = m_run->plan.id;
+    startManeuver(m_run->plan.start, *motion);
+    return std::nullopt;
+}
+
+std::optional<double> PlanEngine::downOf(double z, const QString &units) const
+{
+    if (units == u"DEPTH")
+        return z;
+    if (units == u"ALTITUDE")
+        return std::max(0.0, m_limits.bottomDepth - z);
+    if (units == u"HEIGHT")
+        return -z;
+    return std::nullopt;
+}
+
+void PlanEngine::startManeuver(const QString &id, const Motion &motion)
+{
+    Run &r = *m_run;
+    const mission::Maneuver &m = *r.plan.maneuver(id);
+    const geo::Geodetic origin{geo::radians(m_latDeg), geo::radians(m_lonDeg), 0};
+    const geo::Geodetic here = geo::fromNed(Eigen::Vector3d(motion.ned.x(), motion.ned.y(), 0), origin);
+    const mission::Waypoint from{geo::degrees(here.lat), geo::degrees(here.lon), 0, {}, 0, 0};
+    r.maneuver = id;
+    r.geometry = mission::maneuverGeometry(m, &from, speeds());
+    r.points.clear();
+    for (const mission::Waypoint &w : std::as_const(r.geometry.points)) {
+        const Eigen::Vector3d ned = geo::toNed({geo::radians(w.lat), geo::radians(w.lon), 0}, origin);
+        r.points.emplace_back(ned.x(), ned.y(), downOf(w.z, w.zUnits).value_or(std::numeric_limits<double>::quiet_NaN()));
+    }
+    r.next = 0;
+    r.stage = Stage::Going;
+    r.holdLeft = m.number(u"duration"_s);
+    r.endless = r.holdLeft <= 0 && (m.type == u"Loiter" || m.type == u"StationKeeping" || m.type == u"CompassCalibration");
+    r.yoyoDown = true;
+    r.maneuverStart = m_now;
+}
+
+std::expected<std::optional<QString>, QString> PlanEngine::nextManeuver()
+{
+    const Run &r = *m_run;
+    bool any = false;
+    for (const mission::Transition &t : std::as_const(r.plan.transitions)) {
+        if (t.from != r.maneuver)
+            continue;
+        any = true;
+        const QString condition = t.condition.trimmed();
+        if (m_transitions == Transitions::FirstOnly || condition.isEmpty() || condition == u"ManeuverIsDone"
+            || condition == u"true")
+            return std::optional<QString>(t.to);
+        const std::optional<bool> holds = m_evaluator ? m_evaluator(condition) : std::nullopt;
+        if (!holds)
+            return std::unexpected(u"cannot evaluate the condition '%1' (%2 to %3)"_s.arg(condition, t.from, t.to));
+        if (*holds)
+            return std::optional<QString>(t.to);
+    }
+    return any ? std::optional<QString>() : std::optional<QString>(QString());
+}
+
+msg::Message PlanEngine::finish(bool success, const QString &info, double wallTime)
+{
+    msg::Message m = make("PlanControl", wallTime);
+    setEnum(m, "type", success ? "SUCCESS" : "FAILURE");
+    setEnum(m, "op", "START");
+    setInteger(m, "request_id", m_run ? m_run->requestId : 0);
+    setText(m, "plan_id", m_run ? m_run->plan.id : m_lastPlan);
+    setText(m, "info", info);
+    if (m_run) {
+        m.header.dst = m_run->requester;
+        m.header.dstEnt = m_run->requesterEntity;
+    }
+    m_lastOutcome = success ? 1 : 2;
+    m_lastInfo = info;
+    m_run.reset();
+    return m;
+}
+
+std::vector<msg::Message> PlanEngine::advance(Motion &motion, double dt, double wallTime)
+{
+    m_now = wallTime;
+    std::vector<msg::Message> out;
+    if (!m_run) {
+        const double surface = 0; // idle: an AUV floats up, a boat stops, a UAV circles where it is
+        hold(motion, m_limits.minSpeed > 0 ? nullptr : &surface, dt, m_limits);
+        m_lastMotion = motion;
+        return out;
+    }
+    Run &r = *m_run;
+    const mission::Maneuver &m = *r.plan.maneuver(r.maneuver);
+    const double speed = r.geometry.speed;
+    bool done = false;
+    const auto downAt = [&](size_t i) -> std::optional<double> {
+        const double z = r.points[i].z();
+        return std::isnan(z) ? std::nullopt : std::optional<double>(z);
+    };
+    switch (r.stage) {
+    case Stage::Going: {
+        std::optional<double> down = downAt(r.next);
+        if (m.type == u"YoYo") { // up and down between its depths on the way
+            const auto top = downOf(r.geometry.minZ, r.geometry.zUnits), bottom = downOf(r.geometry.maxZ, r.geometry.zUnits);
+            if (top && bottom) {
+                const double aim = r.yoyoDown ? std::max(*top, *bottom) : std::min(*top, *bottom);
+                if (std::abs(motion.ned.z() - aim) < 0.3)
+                    r.yoyoDown = !r.yoyoDown;
+                down = aim;
+            }
+        } else if (m.type == u"PopUp" && r.next + 1 == r.points.size()) {
+            down = downAt(r.next);
+        }
+        const double *target = down ? &*down : nullptr;
+        if (steer(motion, r.points[r.next].head<2>(), speed, target, dt, m_limits) && ++r.next == r.points.size()) {
+            const bool circling = (m.type == u"Loiter" || m.type == u"CompassCalibration") && r.points.size() > 1;
+            if (circling) {
+                r.stage = Stage::Looping;
+                r.next = 0;
+            } else if (timed(m.type)) {
+                r.stage = Stage::Holding;
+            } else {
+                done = true;
+            }
+        }
+        break;
+    }
+    case Stage::Looping: {
+        const std::optional<double> down = downAt(r.next);
+        if (steer(motion, r.points[r.next].head<2>(), speed, down ? &*down : nullptr, dt, m_limits))
+            r.next = (r.next + 1) % r.points.size();
+        r.holdLeft -= dt;
+        done = !r.endless && r.holdLeft <= 0;
+        break;
+    }
+    case Stage::Holding: {
+        const double surface = 0;
+        const std::optional<double> down = downAt(r.points.size() - 1);
+        hold(motion, m.type == u"PopUp" ? &surface : down ? &*down : nullptr, dt, m_limits);
+        r.holdLeft -= dt;
+        done = !r.endless && r.holdLeft <= 0;
+        break;
+    }
+    case Stage::Waiting:
+        hold(motion, nullptr, dt, m_limits);
+        done = true; // look at the transitions again
+        break;
+    }
+    m_lastMotion = motion;
+    if (!done)
+        return out;
+    if (r.stage != Stage::Waiting)
+        ++r.done;
+    const auto next = nextManeuver();
+    if (!next) {
+        out.push_back(finish(false, next.error(), wallTime));
+    } else if (!*next) {
+        r.stage = Stage::Waiting; // no condition holds yet
+    } else if ((*next)->isEmpty()) {
+        out.push_back(finish(true, u"plan completed"_s, wallTime));
+    } else {
+        startManeuver(**next, motion);
+    }
+    return out;
+}
+
+// --- Reports -------------------------------------------------------------------------
+
+mission::SpeedModel PlanEngine::speeds() const
+{
+    mission::SpeedModel speeds;
+    speeds.maxSpeed = m_limits.maxSpeed;
+    speeds.defaultSpeed = std::clamp(speeds.defaultSpeed, m_limits.minSpeed, m_limits.maxSpeed);
+    return speeds;
+}
+
+double PlanEngine::maneuverEta(const Motion &motion) const
+{
+    const Run &r = *m_run;
+    if (r.endless || r.stage == Stage::Waiting)
+        return -1;
+    if (r.stage != Stage::Going)
+        return std::max(0.0, r.holdLeft);
+    double length = (r.points[r.next].head<2>() - motion.ned.head<2>()).norm();
+    for (size_t i = r.next + 1; i < r.points.size(); ++i)
+        length += (r.points[i].head<2>() - r.points[i - 1].head<2>()).norm();
+    return length / std::max(r.geometry.speed, 0.1) + (timed(r.plan.maneuver(r.maneuver)->type) ? std::max(0.0, r.holdLeft) : 0);
+}
+
+msg::Message PlanEngine::controlState(double wallTime) const
+{
+    msg::Message s = make("PlanControlState", wallTime);
+    setEnum(s, "state", m_run ? "EXECUTING" : "READY");
+    setText(s, "plan_id", m_run ? m_run->plan.id : m_lastPlan);
+    setInteger(s, "last_outcome", m_lastOutcome);
+    if (!m_run)
+        return s;
+    const Run &r = *m_run;
+    const double manEta = maneuverEta(m_lastMotion);
+    // The plan's ETA: this maneuver's and those after it along the first transitions.
+    double planEta = manEta;
+    const QList<const mission::Maneuver *> order = r.plan.executionOrder();
+    std::optional<mission::Waypoint> previous; // set once past the current maneuver
+    for (const mission::Maneuver *m : order) {
+        if (previous && planEta >= 0) {
+            const mission::ManeuverGeometry g = mission::maneuverGeometry(*m, &*previous, speeds());
+            previous = g.points.last();
+            planEta = g.duration ? planEta + *g.duration : -1;
+        }
+        if (m->id == r.maneuver)
+            previous = r.geometry.points.last();
+    }
+    // How far into this maneuver: along its points, then (if it waits or
+    // circles for a time) through that time, each half of it.
+    const mission::Maneuver &current = *r.plan.maneuver(r.maneuver);
+    const double along = static_cast<double>(r.next) / static_cast<double>(std::max<size_t>(1, r.points.size()));
+    const double waited = r.endless ? 0 : 1.0 - std::max(0.0, r.holdLeft) / std::max(1.0, current.number(u"duration"_s));
+    const double fraction = r.stage == Stage::Waiting ? 0.0 // counted done already
+                            : !timed(current.type)    ? along
+                            : r.stage == Stage::Going ? 0.5 * along
+                                                      : 0.5 + 0.5 * waited;
+    setNumber(s, "plan_progress", std::min(100.0, 100.0 * (r.done + fraction) / std::max(1, r.total)));
+    setInteger(s, "plan_eta", clampedSeconds(planEta, std::numeric_limits<qint32>::max()));
+    setText(s, "man_id", r.maneuver);
+    if (const msg::MessageDef *type = m_schema->byAbbrev(r.plan.maneuver(r.maneuver)->type))
+        setInteger(s, "man_type", type->id);
+    setInteger(s, "man_eta", clampedSeconds(manEta, std::numeric_limits<qint32>::max()));
+    return s;
+}
+
+msg::Message PlanEngine::maneuverState(double wallTime) const
+{
+    msg::Message s = make("ManeuverControlState", wallTime);
+    setEnum(s, "state", m_run ? "EXECUTING" : m_lastOutcome == 1 ? "DONE" : "STOPPED");
+    if (m_run)
+        setInteger(s, "eta", std::max<qint64>(0, clampedSeconds(maneuverEta(m_lastMotion), 65535)));
+    setText(s, "info", m_run ? u"executing %1"_s.arg(m_run->maneuver) : m_lastInfo);
+    return s;
+}
+
+msg::Message PlanEngine::vehicleState(double wallTime) const
+{
+    msg::Message s = make("VehicleState", wallTime);
+    setEnum(s, "op_mode", m_run ? "MANEUVER" : "SERVICE");
+    if (m_run) {
+        if (const msg::MessageDef *type = m_schema->byAbbrev(m_run->plan.maneuver(m_run->maneuver)->type))
+            setInteger(s, "maneuver_type", type->id);
+        setNumber(s, "maneuver_stime", m_run->maneuverStart);
+        setInteger(s, "maneuver_eta", std::max<qint64>(0, clampedSeconds(maneuverEta(m_lastMotion), 65535)));
+    }
+    return s;
+}
+
+} // namespace neptus::sim

@@ -1,0 +1,126 @@
+#pragma once
+
+#include "messages/Codec.h"
+#include "mission/Mission.h"
+#include "mission/PlanGeometry.h"
+#include "sim/Kinematics.h"
+
+#include <QString>
+
+#include <functional>
+#include <map>
+#include <memory>
+#include <optional>
+#include <vector>
+
+namespace neptus::sim {
+
+// A simulated vehicle's plan engine, answering as a DUNE vehicle does:
+//  - a plan database (PlanDB SET, DEL, GET, GET_INFO, CLEAR, GET_STATE,
+//    GET_DSTATE) keeping DUNE's MD5s per plan and for the whole database;
+//  - plan control (PlanControl START with a stored plan id, with a
+//    PlanSpecification or with one maneuver; STOP; LOAD; GET), and Abort;
+//  - execution, maneuver by maneuver, moving the vehicle within its
+//    Limits: every maneuver type the shipped vehicle definitions list;
+//  - PlanControlState, ManeuverControlState and VehicleState for reports,
+//    and a PlanControl SUCCESS ("plan completed") or FAILURE (with the
+//    reason) to whoever started the plan when it ends.
+// After a maneuver it takes the first transition whose condition holds
+// ("ManeuverIsDone" always does; others go to the condition evaluator, and
+// it waits where it is while none holds), or, like DUNE, the first
+// transition whatever its condition (Transitions::FirstOnly).
+class PlanEngine
+{
+public:
+    enum class Transitions { Conditions, FirstOnly };
+    // True or false for a transition's condition; empty when it cannot be evaluated (the plan fails).
+    using Evaluator = std::function<std::optional<bool>(const QString &condition)>;
+
+    // `latDeg`, `lonDeg`: the vehicle's reference point (its EstimatedState's lat/lon).
+    PlanEngine(std::shared_ptr<const msg::Schema> schema, quint16 self, QString name, Limits limits, double latDeg,
+               double lonDeg);
+
+    void setTransitions(Transitions mode) { m_transitions = mode; }
+    void setEvaluator(Evaluator evaluator) { m_evaluator = std::move(evaluator); }
+
+    // A message addressed to this vehicle: the replies (none for others).
+    std::vector<msg::Message> handle(const msg::Message &message, double wallTime);
+    // Moves the vehicle `dt` seconds along the running plan (holding still
+    // without one). Returns what to send now (a plan's end).
+    std::vector<msg::Message> advance(Motion &motion, double dt, double wallTime);
+
+    bool executing() const { return m_run.has_value(); }
+    QString currentManeuver() const { return m_run ? m_run->maneuver : QString(); }
+    std::vector<QString> planIds() const;
+    QByteArray databaseMd5() const;
+
+    msg::Message controlState(double wallTime) const;  // PlanControlState
+    msg::Message maneuverState(double wallTime) const; // ManeuverControlState
+    msg::Message vehicleState(double wallTime) const;  // VehicleState
+
+private:
+    struct Stored
+    {
+        msg::Message specification;
+        QByteArray md5;
+        int size = 0;
+        double changeTime = 0;
+        quint16 changeSource = 0;
+    };
+    enum class Stage { Going, Looping, Holding, Waiting };
+    struct Run
+    {
+        mission::Plan plan;
+        msg::Message specification;
+        quint16 requester = 0xFFFF;
+        quint8 requesterEntity = 0xFF;
+        quint16 requestId = 0;
+        QString maneuver;
+        mission::ManeuverGeometry geometry;
+        std::vector<Eigen::Vector3d> points; // north, east, down (NaN: keep the depth it has)
+        size_t next = 0;
+        Stage stage = Stage::Going;
+        double holdLeft = 0;
+        bool endless = false;
+        bool yoyoDown = true;
+        int done = 0;     // maneuvers finished
+        int total = 1;    // in the plan's execution order
+        double maneuverStart = 0;
+    };
+
+    msg::Message make(const char *abbrev, double wallTime) const;
+    msg::Message reply(const msg::Message &request, const char *type, const QString &info, double wallTime) const;
+    std::vector<msg::Message> planDb(const msg::Message &request, double wallTime);
+    std::vector<msg::Message> planControl(const msg::Message &request, double wallTime);
+    std::optional<QString> start(msg::Message specification, const msg::Message &request, const Motion *motion);
+    void startManeuver(const QString &id, const Motion &motion);
+    // The maneuver after the current one, "" at the plan's end, nullopt to wait; an error fails the plan.
+    std::expected<std::optional<QString>, QString> nextManeuver();
+    // The plan ends: the PlanControl that says so to whoever started it.
+    msg::Message finish(bool success, const QString &info, double wallTime);
+    msg::Message planDbState(bool detailed, double wallTime) const;
+    double maneuverEta(const Motion &motion) const;
+    mission::SpeedModel speeds() const; // its limits' (100 % is its top speed)
+    std::optional<double> downOf(double z, const QString &units) const;
+
+    std::shared_ptr<const msg::Schema> m_schema;
+    msg::Codec m_codec;
+    quint16 m_self;
+    QString m_name;
+    Limits m_limits;
+    double m_latDeg, m_lonDeg;
+    Transitions m_transitions = Transitions::Conditions;
+    Evaluator m_evaluator;
+    std::map<QString, Stored> m_database;
+    double m_databaseChange = 0;
+    quint16 m_databaseChangeSource = 0;
+    std::optional<msg::Message> m_loaded; // LOAD: ready to start
+    std::optional<Run> m_run;
+    Motion m_lastMotion;
+    QString m_lastPlan;
+    int m_lastOutcome = 0; // PlanControlState.last_outcome: NONE, SUCCESS, FAILURE
+    QString m_lastInfo;
+    double m_now = 0;
+};
+
+} // namespace neptus::sim

@@ -1,0 +1,369 @@
+// The simulator's plan engine, driven as a console drives a DUNE vehicle:
+// PlanDB (with DUNE's MD5s), PlanControl, and plans executed maneuver by
+// maneuver within the vehicle's limits, on simulated time.
+#include "mission/ImcPlan.h"
+#include "mission/MissionXml.h"
+#include "plans/PlanDatabase.h"
+#include "plans/PlanDbClient.h"
+#include "sim/SimulatedVehicle.h"
+
+#include "Fixtures.h"
+#include "Missions.h"
+#include "Schemas.h"
+
+#include <QCoreApplication>
+#include <QFile>
+
+#include <gtest/gtest.h>
+
+// QStrings in gtest's messages as text.
+QT_BEGIN_NAMESPACE
+inline void PrintTo(const QString &s, std::ostream *out) { *out << '"' << s.toStdString() << '"'; }
+QT_END_NAMESPACE
+
+using namespace neptus;
+using namespace Qt::StringLiterals;
+
+namespace {
+
+constexpr quint16 console = 0x4001;
+
+const char *const missionText = R"X(<?xml version="1.0" encoding="UTF-8"?>
+<mission format="1" id="sim" name="Sim">
+  <home lat="41.1405" lon="-8.6110" height="0"/>
+  <vehicle id="lauv-sim-1"/>
+  <plan id="survey" vehicle="lauv-sim-1" start="go">
+    <maneuvers>
+      <Goto id="go" lat="41.1415" lon="-8.6110" z="3" z_units="DEPTH" speed="1.5" speed_units="METERS_PS"/>
+      <Loiter id="circle" lat="41.1415" lon="-8.6110" z="2" z_units="DEPTH" speed="1.5" speed_units="METERS_PS"
+              duration="60" radius="20" type="CIRCULAR" direction="CLOCKW"/>
+      <Rows id="rows" lat="41.1420" lon="-8.6100" z="4" z_units="DEPTH" speed="1.5" speed_units="METERS_PS"
+            width="60" length="80" hstep="30" bearing="0"/>
+    </maneuvers>
+    <transition from="go" to="circle"/>
+    <transition from="circle" to="rows"/>
+  </plan>
+  <plan id="choice" vehicle="lauv-sim-1" start="a">
+    <maneuvers>
+      <Goto id="a" lat="41.1407" lon="-8.6110" z="0" z_units="DEPTH" speed="1.5" speed_units="METERS_PS"/>
+      <Goto id="b" lat="41.1409" lon="-8.6110" z="0" z_units="DEPTH" speed="1.5" speed_units="METERS_PS"/>
+      <Goto id="c" lat="41.1407" lon="-8.6113" z="0" z_units="DEPTH" speed="1.5" speed_units="METERS_PS"/>
+    </maneuvers>
+    <transition from="a" to="b" condition="sea.EstimatedState.depth &lt; 2"/>
+    <transition from="a" to="c"/>
+  </plan>
+</mission>
+)X";
+
+struct Sim : ::testing::Test
+{
+    std::shared_ptr<const msg::Schema> schema = test::shippedSchema();
+    sim::SimulatedVehicle vehicle{schema, [] {
+                                      sim::SimulatedVehicle::Config c;
+                                      c.id = 0x1f;
+                                      return c;
+                                  }()};
+    double t = 0;
+    quint16 nextRequest = 1;
+    std::vector<msg::Message> heard; // everything the vehicle said
+
+    mission::Plan plan(const QString &id)
+    {
+        auto m = mission::readMission(missionText, u"sim.xml"_s);
+        EXPECT_TRUE(m) << test::errorsText(m.error()).toStdString();
+        for (const mission::Plan &p : m->plans)
+            if (p.id == id)
+                return p;
+        ADD_FAILURE() << "no plan " << id.toStdString();
+        return {};
+    }
+    msg::Message specification(const QString &id)
+    {
+        auto spec = mission::planSpecification(plan(id), *schema);
+        EXPECT_TRUE(spec) << spec.error().toStdString();
+        return *spec;
+    }
+    msg::Message request(const char *abbrev, const char *op, const QString &planId = {},
+                         std::optional<msg::Message> arg = std::nullopt)
+    {
+        msg::Message m(schema->byAbbrev(QString::fromLatin1(abbrev)));
+        const auto set = [&](const char *field, const char *name) {
+            const int i = m.def()->indexOf(QString::fromLatin1(field));
+            m.setInteger(i, *m.field(i).enumeration->parse(QString::fromLatin1(name)));
+        };
+        set("type", "REQUEST");
+        set("op", op);
+        m.setInteger(m.def()->indexOf(u"request_id"), nextRequest++);
+        m.setBytes(m.def()->indexOf(u"plan_id"), planId.toUtf8());
+        m.setInlineMessage(m.def()->indexOf(u"arg"), std::move(arg));
+        m.header.src = console;
+        m.header.dst = 0x1f;
+        return m;
+    }
+    std::vector<msg::Message> send(const msg::Message &m)
+    {
+        auto replies = vehicle.answer(m, 1.7e9 + t);
+        heard.insert(heard.end(), replies.begin(), replies.end());
+        return replies;
+    }
+    // Runs simulated time on, in the 20 ms steps neptus-sim takes.
+    void run(double seconds)
+    {
+        for (const double end = t + seconds; t < end;) {
+            const double previous = t;
+            t += 0.02;
+            auto said = vehicle.step(previous, t, 1.7e9 + t);
+            heard.insert(heard.end(), said.begin(), said.end());
+        }
+    }
+    // Runs until `done`, at most `limit` simulated seconds; the time it took.
+    double runUntil(const std::function<bool()> &done, double limit)
+    {
+        const double start = t;
+        while (!done() && t - start < limit)
+            run(1);
+        return t - start;
+    }
+    static QString enumOf(const msg::Message &m, const char *field)
+    {
+        return m.enumText(m.def()->indexOf(QString::fromLatin1(field)));
+    }
+    std::optional<msg::Message> last(const char *abbrev) const
+    {
+        for (auto it = heard.rbegin(); it != heard.rend(); ++it)
+            if (it->abbrev() == QLatin1StringView(abbrev))
+                return *it;
+        return std::nullopt;
+    }
+    Eigen::Vector2d north(double lat, double lon) const
+    {
+        return {(lat - 41.1405) * 111'100, (lon + 8.6110) * 111'100 * std::cos(41.1405 * M_PI / 180)};
+    }
+};
+
+} // namespace
+
+TEST_F(Sim, RunsGotoLoiterAndRowsToTheEndAndSaysSo)
+{
+    const auto replies = send(request("PlanControl", "START", u"survey"_s, specification(u"survey"_s)));
+    ASSERT_FALSE(replies.empty());
+    EXPECT_EQ(enumOf(replies.front(), "type"), u"SUCCESS") << replies.front().text(u"info").toStdString();
+    EXPECT_EQ(replies.front().header.dst, console);
+    EXPECT_EQ(replies.front().integer(u"request_id"), 1);
+
+    std::vector<QString> maneuvers;
+    double lastProgress = 0;
+    bool progressFell = false;
+    const double took = runUntil([&] {
+        const auto state = last("PlanControlState");
+        if (state && enumOf(*state, "state") == u"EXECUTING") {
+            const QString man = state->text(u"man_id");
+            if (maneuvers.empty() || maneuvers.back() != man)
+                maneuvers.push_back(man);
+            progressFell = progressFell || state->number(u"plan_progress") < lastProgress - 1e-6;
+            lastProgress = state->number(u"plan_progress");
+        }
+        return !vehicle.plans().executing();
+    }, 1200);
+    EXPECT_FALSE(vehicle.plans().executing()) << "still running after " << took << " s";
+    EXPECT_EQ(maneuvers, (std::vector<QString>{u"go"_s, u"circle"_s, u"rows"_s}));
+    EXPECT_FALSE(progressFell);
+    EXPECT_GT(lastProgress, 60);
+    // Goto ~111 m + a 60 s loiter + rows (3 × 80 m + 2 × 30 m + the way there) at 1.5 m/s.
+    EXPECT_GT(took, 60 + 300 / 1.5);
+    EXPECT_LT(took, 60 + 700 / 1.5);
+
+    const auto end = last("PlanControl");
+    ASSERT_TRUE(end);
+    EXPECT_EQ(enumOf(*end, "type"), u"SUCCESS");
+    EXPECT_EQ(end->text(u"info"), u"plan completed"_s);
+    EXPECT_EQ(end->integer(u"request_id"), 1) << "the START it answers";
+    EXPECT_EQ(end->header.dst, console);
+    run(1);
+    const auto state = last("PlanControlState");
+    EXPECT_EQ(enumOf(*state, "state"), u"READY");
+    EXPECT_EQ(enumOf(*state, "last_outcome"), u"SUCCESS");
+    EXPECT_EQ(state->text(u"plan_id"), u"survey"_s);
+
+    // It ended where the rows end: 60 m east and 80 m north of the corner, or near it.
+    const Eigen::Vector2d corner = north(41.1420, -8.6100);
+    EXPECT_LT((vehicle.motion().ned.head<2>() - corner).norm(), 140);
+    EXPECT_LT(vehicle.motion().ned.z(), 4.5);
+}
+
+TEST_F(Sim, ItsDepthFollowsThePlan)
+{
+    send(request("PlanControl", "START", u"survey"_s, specification(u"survey"_s)));
+    double deepest = 0;
+    runUntil([&] {
+        deepest = std::max(deepest, vehicle.motion().ned.z());
+        return vehicle.plans().currentManeuver() == u"circle";
+    }, 600);
+    EXPECT_NEAR(deepest, 3, 0.5) << "the Goto's 3 m";
+    run(40);
+    EXPECT_NEAR(vehicle.motion().ned.z(), 2, 0.3) << "the loiter's 2 m";
+    EXPECT_LE(vehicle.motion().speed, 1.5 + 1e-9);
+}
+
+TEST_F(Sim, TheDatabaseKeepsPlansAndAnswersWithDunesMd5s)
+{
+    plans::PlanDbClient client(schema, 0x1f, [&](const msg::Message &m) {
+        msg::Message request = m;
+        request.header.src = console;
+        for (const msg::Message &reply : send(request))
+            client.receive(reply);
+    });
+    std::vector<plans::PlanDbClient::Reply> replies;
+    QObject::connect(&client, &plans::PlanDbClient::replied, [&](const auto &r) { replies.push_back(r); });
+    const msg::Message survey = specification(u"survey"_s), choice = specification(u"choice"_s);
+    client.set(survey);
+    client.set(choice);
+    client.getState();
+    client.get(u"survey"_s);
+    client.remove(u"nothing"_s);
+    ASSERT_EQ(replies.size(), 5u);
+    EXPECT_TRUE(replies[0].ok && replies[1].ok);
+    ASSERT_TRUE(replies[2].ok && replies[2].arg);
+    const msg::Codec codec(schema);
+    const QByteArray md5 = plans::databaseMd5({{u"survey"_s, *plans::planMd5(codec, survey)},
+                                                {u"choice"_s, *plans::planMd5(codec, choice)}});
+    EXPECT_EQ(replies[2].arg->bytes(replies[2].arg->def()->indexOf(u"md5")), md5);
+    EXPECT_EQ(replies[2].arg->integer(u"plan_count"), 2);
+    ASSERT_TRUE(replies[3].ok && replies[3].arg);
+    EXPECT_EQ(*plans::planMd5(codec, *replies[3].arg), *plans::planMd5(codec, survey)) << "the very plan back";
+    EXPECT_FALSE(replies[4].ok);
+    EXPECT_EQ(replies[4].info, u"undefined plan 'nothing'"_s);
+
+    // A stored plan starts by its id alone.
+    const auto started = send(request("PlanControl", "START", u"choice"_s));
+    EXPECT_EQ(enumOf(started.front(), "type"), u"SUCCESS");
+    EXPECT_TRUE(vehicle.plans().executing());
+    const auto unknown = send(request("PlanControl", "START", u"nothing"_s));
+    EXPECT_EQ(enumOf(unknown.front(), "type"), u"FAILURE");
+    EXPECT_TRUE(unknown.front().text(u"info").contains(u"undefined plan 'nothing'"_s));
+}
+
+TEST_F(Sim, DatabaseMd5sMatchDunesForTheFixturePlans)
+{
+    const auto imc = test::imcSchema();
+    if (!imc)
+        GTEST_SKIP() << "../shared/fixtures/imc is absent (a user's clone); CI and developer machines have it";
+    QFile file(test::fixturePath("imc/plans-md5.txt"));
+    ASSERT_TRUE(file.open(QIODevice::ReadOnly | QIODevice::Text));
+    sim::PlanEngine engine(imc, 0x1f, u"lauv"_s, sim::Limits::auv(), 41, -8);
+    const msg::Codec codec(imc);
+    QByteArray expected;
+    int stored = 0;
+    quint16 id = 1;
+    while (!file.atEnd()) {
+        const QByteArray line = file.readLine().trimmed();
+        if (line.startsWith("# plan database md5"))
+            expected = line.split(' ').last();
+        const QList<QByteArray> parts = line.split(' ');
+        if (line.startsWith('#') || parts.size() != 4)
+            continue;
+        const auto spec = codec.decode(QByteArray::fromHex(parts[3]));
+        ASSERT_TRUE(spec);
+        msg::Message set(imc->byAbbrev(u"PlanDB"));
+        set.setInteger(set.def()->indexOf(u"op"), 0); // SET
+        set.setInteger(set.def()->indexOf(u"request_id"), id++);
+        set.setBytes(set.def()->indexOf(u"plan_id"), spec->bytes(spec->def()->indexOf(u"plan_id")));
+        set.setInlineMessage(set.def()->indexOf(u"arg"), *spec);
+        set.header.dst = 0x1f;
+        const auto reply = engine.handle(set, 0);
+        ASSERT_EQ(reply.size(), 1u);
+        EXPECT_EQ(reply[0].enumText(reply[0].def()->indexOf(u"type")), u"SUCCESS") << reply[0].text(u"info").toStdString();
+        ++stored;
+    }
+    EXPECT_EQ(stored, 3);
+    EXPECT_EQ(engine.databaseMd5().toHex(), expected);
+}
+
+TEST_F(Sim, StopAndAbortEndThePlanAndSayWhy)
+{
+    send(request("PlanControl", "START", u"survey"_s, specification(u"survey"_s)));
+    run(5);
+    const auto stopped = send(request("PlanControl", "STOP", u"survey"_s));
+    ASSERT_GE(stopped.size(), 2u);
+    EXPECT_EQ(enumOf(stopped[0], "type"), u"FAILURE") << "to who started it: the plan did not complete";
+    EXPECT_EQ(stopped[0].text(u"info"), u"plan stopped"_s);
+    EXPECT_EQ(stopped[0].integer(u"request_id"), 1);
+    EXPECT_EQ(enumOf(stopped[1], "type"), u"SUCCESS") << "the STOP itself worked";
+    EXPECT_EQ(stopped[1].integer(u"request_id"), 2);
+    EXPECT_FALSE(vehicle.plans().executing());
+    EXPECT_EQ(enumOf(*last("PlanControlState"), "last_outcome"), u"FAILURE");
+
+    send(request("PlanControl", "START", u"survey"_s, specification(u"survey"_s)));
+    run(5);
+    msg::Message abort(schema->byAbbrev(u"Abort"));
+    abort.header.src = console;
+    abort.header.dst = 0x1f;
+    const auto aborted = send(abort);
+    ASSERT_FALSE(aborted.empty());
+    EXPECT_EQ(aborted[0].text(u"info"), u"plan aborted by 0x4001"_s);
+    EXPECT_FALSE(vehicle.plans().executing());
+    const double depth = vehicle.motion().ned.z();
+    run(10);
+    EXPECT_LT(vehicle.motion().ned.z(), depth) << "an AUV with no plan floats up";
+}
+
+TEST_F(Sim, TransitionsFollowTheirConditionsOrTheFirstOneLikeDune)
+{
+    // Conditions honoured: "depth < 2" does not hold, so the next true one (c).
+    vehicle.plans().setEvaluator([](const QString &condition) -> std::optional<bool> {
+        return condition == u"sea.EstimatedState.depth < 2" ? std::optional<bool>(false) : std::nullopt;
+    });
+    send(request("PlanControl", "START", u"choice"_s, specification(u"choice"_s)));
+    runUntil([&] { return vehicle.plans().currentManeuver() != u"a"; }, 200);
+    EXPECT_EQ(vehicle.plans().currentManeuver(), u"c"_s);
+
+    // Like DUNE: the first transition, whatever it says.
+    vehicle.plans().setTransitions(sim::PlanEngine::Transitions::FirstOnly);
+    send(request("PlanControl", "START", u"choice"_s, specification(u"choice"_s)));
+    runUntil([&] { return vehicle.plans().currentManeuver() != u"a"; }, 200);
+    EXPECT_EQ(vehicle.plans().currentManeuver(), u"b"_s);
+
+    // A condition nobody can evaluate fails the plan, saying which.
+    vehicle.plans().setTransitions(sim::PlanEngine::Transitions::Conditions);
+    vehicle.plans().setEvaluator({});
+    send(request("PlanControl", "START", u"choice"_s, specification(u"choice"_s)));
+    runUntil([&] { return !vehicle.plans().executing(); }, 200);
+    const auto end = last("PlanControl");
+    EXPECT_EQ(enumOf(*end, "type"), u"FAILURE");
+    EXPECT_TRUE(end->text(u"info").contains(u"sea.EstimatedState.depth < 2"_s)) << end->text(u"info").toStdString();
+}
+
+TEST_F(Sim, OneManeuverStartsAsAPlanAndUnknownManeuversAreRefused)
+{
+    const mission::Plan survey = plan(u"survey"_s);
+    const msg::Message spec = specification(u"survey"_s);
+    const msg::Message goTo = *spec.messages(spec.def()->indexOf(u"maneuvers"))[0].inlineMessage(
+        schema->byAbbrev(u"PlanManeuver")->indexOf(u"data"));
+    const auto replies = send(request("PlanControl", "START", u"quick"_s, goTo));
+    EXPECT_EQ(enumOf(replies.front(), "type"), u"SUCCESS");
+    EXPECT_EQ(vehicle.plans().currentManeuver(), u"Goto"_s) << "named after its type, as DUNE does";
+
+    msg::Message teleop(schema->byAbbrev(u"Teleoperation"));
+    const auto refused = send(request("PlanControl", "START", u"quick"_s, teleop));
+    EXPECT_EQ(enumOf(refused.back().abbrev() == u"PlanControl" ? refused.back() : refused.front(), "type"), u"FAILURE");
+    bool said = false;
+    for (const msg::Message &m : refused)
+        said = said || m.text(u"info").contains(u"cannot do"_s);
+    EXPECT_TRUE(said);
+}
+
+TEST(SimKinematics, AUavNeverStallsAndABoatStaysAtTheSurface)
+{
+    sim::Motion uav;
+    uav.speed = 18;
+    const double below = 100;
+    for (int i = 0; i < 600; ++i)
+        sim::hold(uav, &below, 0.1, sim::Limits::uav());
+    EXPECT_GE(uav.speed, sim::Limits::uav().minSpeed);
+    sim::Motion boat;
+    const double deep = 10;
+    for (int i = 0; i < 100; ++i)
+        sim::steer(boat, {100, 0}, 2, &deep, 0.1, sim::Limits::asv());
+    EXPECT_EQ(boat.ned.z(), 0);
+    EXPECT_GT(boat.ned.x(), 10);
+}
