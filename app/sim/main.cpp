@@ -75,7 +75,15 @@ int main(int argc, char *argv[])
                        "and listen there, take messages only from systems that announced themselves, stream to those "
                        "heard from in the last 30 s, send the EntityList only when asked, follow the first transition "
                        "out of each maneuver whatever its condition."));
-    parser.addOptions({id, name, kind, port, host, console, announcePort, phase, fault, drop, defs, dds, domain, ddsKeys, ddsIdentity, dune});
+    const QCommandLineOption timeFactor(QStringLiteral("time-factor"),
+        QStringLiteral("Simulated seconds per real second (default 1; 20 runs a 10-minute plan in 30 s). Messages "
+                       "still go out at their usual rates in real time."), QStringLiteral("factor"), QStringLiteral("1"));
+    const QCommandLineOption transitions(QStringLiteral("transitions"),
+        QStringLiteral("conditions (default): after a maneuver, the first transition whose condition holds; first: "
+                       "the first transition whatever its condition, as DUNE does (also with --like-dune)."),
+        QStringLiteral("conditions|first"), QStringLiteral("conditions"));
+    parser.addOptions({id, name, kind, port, host, console, announcePort, phase, fault, drop, defs, dds, domain, ddsKeys,
+                       ddsIdentity, dune, timeFactor, transitions});
     if (!parser.parse(QCoreApplication::arguments()))
         return usage(parser.errorText());
     if (parser.isSet(QStringLiteral("help")))
@@ -135,11 +143,18 @@ int main(int argc, char *argv[])
     if (parser.isSet(announcePort))
         announceTo.append({QHostAddress::LocalHost, static_cast<quint16>(parser.value(announcePort).toUInt())});
 
+    const double factor = parser.value(timeFactor).toDouble(&ok);
+    if (!ok || !(factor > 0) || factor > 1000)
+        return usage(QStringLiteral("--time-factor must be a number above 0 and at most 1000, not '%1'").arg(parser.value(timeFactor)));
+    const QString transitionMode = parser.value(transitions);
+    if (transitionMode != u"conditions" && transitionMode != u"first")
+        return usage(QStringLiteral("--transitions must be conditions or first, not '%1'").arg(transitionMode));
     const bool likeDune = parser.isSet(dune);
     config.periodicEntityList = !likeDune;
     sim::SimulatedVehicle vehicle(*schema, config);
     vehicle.setFaults(faults);
-    if (likeDune)
+    vehicle.setTimeFactor(factor);
+    if (likeDune || transitionMode == u"first")
         vehicle.plans().setTransitions(sim::PlanEngine::Transitions::FirstOnly);
     const msg::Codec codec(*schema);
     QUdpSocket socket;

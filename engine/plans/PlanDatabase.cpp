@@ -28,4 +28,18 @@ QByteArray databaseMd5(QList<std::pair<QString, QByteArray>> plans)
     return md5.result();
 }
 
+Sync compare(const msg::Codec &codec, const msg::Message &specification, const msg::Message &databaseState)
+{
+    const QString id = specification.text(u"plan_id");
+    const auto md5 = planMd5(codec, specification);
+    const int list = databaseState.def() ? databaseState.def()->indexOf(u"plans_info") : -1;
+    if (list < 0)
+        return Sync::Absent;
+    for (const msg::Message &info : databaseState.messages(list)) {
+        if (info.text(u"plan_id") == id)
+            return md5 && info.bytes(info.def()->indexOf(u"md5")) == *md5 ? Sync::Same : Sync::Differs;
+    }
+    return Sync::Absent;
+}
+
 } // namespace neptus::plans

@@ -23,4 +23,9 @@ std::expected<QByteArray, QString> planMd5(const msg::Codec &codec, const msg::M
 // The database MD5 of (plan id, 16-byte MD5) pairs, in any order.
 QByteArray databaseMd5(QList<std::pair<QString, QByteArray>> plans);
 
+// Whether a vehicle holds the plan on screen, from its detailed database
+// state (PlanDB GET_DSTATE's PlanDBState, with a PlanDBInformation per plan).
+enum class Sync { Same, Differs, Absent };
+Sync compare(const msg::Codec &codec, const msg::Message &specification, const msg::Message &databaseState);
+
 } // namespace neptus::plans

@@ -169,6 +169,8 @@ void Console::ingest(const msg::Message &message, const QString &link, qsizetype
     m_health.observe(message);
     m_naming.observe(message);
     m_linkStatistics.received(source, link, message.id(), message.abbrev(), !message.isOpaque(), bytes);
+    if (const msg::MessageDef *def = message.def(); def && (def->abbrev == u"PlanDB" || def->abbrev == u"PlanControl"))
+        emit planMessageReceived(message);
 }
 
 void Console::heardOn(quint16 system, const QString &link)

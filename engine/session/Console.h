@@ -105,6 +105,11 @@ public:
     // in tree order: what the console knows, for tests and bug reports.
     QString dumpTree() const;
 
+signals:
+    // A vehicle's plan database or plan control spoke (PlanDB, PlanControl):
+    // for plans::PlanClient. Emitted from the thread that received it.
+    void planMessageReceived(const neptus::msg::Message &message);
+
 private:
     // Link health: decode errors in the last few seconds, and message types
     // the definitions lack, as alarms on "systems/<system>/link" and ".../definitions".

@@ -93,12 +93,13 @@ std::vector<msg::Message> SimulatedVehicle::step(double previous, double t, doub
         m_driven = true;
     }
     if (m_driven && previous >= 0) {
-        // Steps of at most 0.1 s: a late timer does not make it cut corners.
-        for (double from = previous; from < t;) {
-            const double dt = std::min(0.1, t - from);
+        // Steps of at most 0.1 simulated s: a late timer does not make it cut corners.
+        const double simulated = (t - previous) * m_timeFactor;
+        for (double done = 0; done < simulated;) {
+            const double dt = std::min(0.1, simulated - done);
             for (msg::Message &m : m_plans.advance(m_motion, m_faults & MotorJammed ? 0 : dt, wallTime))
                 out.push_back(std::move(m));
-            from += dt;
+            done += dt;
         }
     }
     if (due(previous, t, 0.1))

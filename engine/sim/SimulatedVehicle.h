@@ -48,6 +48,9 @@ public:
 
     const Config &config() const { return m_config; }
     void setFaults(int faults) { m_faults = faults; }
+    // Simulated seconds per second of step() time: plans run that much faster
+    // while messages keep their rates.
+    void setTimeFactor(double factor) { m_timeFactor = factor; }
     int faults() const { return m_faults; }
 
     // Moves on to simulation time `t` seconds since start (the last call
@@ -87,6 +90,7 @@ private:
     PlanEngine m_plans;
     Motion m_motion;
     bool m_driven = false; // a plan has moved it: no more circle
+    double m_timeFactor = 1;
 };
 
 } // namespace neptus::sim

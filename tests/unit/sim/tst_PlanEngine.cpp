@@ -4,7 +4,7 @@
 #include "mission/ImcPlan.h"
 #include "mission/MissionXml.h"
 #include "plans/PlanDatabase.h"
-#include "plans/PlanDbClient.h"
+#include "plans/PlanClient.h"
 #include "sim/SimulatedVehicle.h"
 
 #include "Fixtures.h"
@@ -207,14 +207,14 @@ TEST_F(Sim, ItsDepthFollowsThePlan)
 
 TEST_F(Sim, TheDatabaseKeepsPlansAndAnswersWithDunesMd5s)
 {
-    plans::PlanDbClient client(schema, 0x1f, [&](const msg::Message &m) {
+    plans::PlanClient client(schema, 0x1f, [&](const msg::Message &m) {
         msg::Message request = m;
         request.header.src = console;
         for (const msg::Message &reply : send(request))
             client.receive(reply);
     });
-    std::vector<plans::PlanDbClient::Reply> replies;
-    QObject::connect(&client, &plans::PlanDbClient::replied, [&](const auto &r) { replies.push_back(r); });
+    std::vector<plans::PlanClient::Reply> replies;
+    QObject::connect(&client, &plans::PlanClient::replied, [&](const auto &r) { replies.push_back(r); });
     const msg::Message survey = specification(u"survey"_s), choice = specification(u"choice"_s);
     client.set(survey);
     client.set(choice);

@@ -1,7 +1,7 @@
 // The PlanDB protocol on an in-process link: a fake vehicle answers (or
 // not) the requests the client sends; every request ends, answered or
 // given up after its tries, and only the right replies are taken.
-#include "plans/PlanDbClient.h"
+#include "plans/PlanClient.h"
 
 #include "Schemas.h"
 
@@ -13,7 +13,7 @@
 using namespace neptus;
 using namespace std::chrono_literals;
 using namespace Qt::StringLiterals;
-using Reply = plans::PlanDbClient::Reply;
+using Reply = plans::PlanClient::Reply;
 
 namespace {
 
@@ -28,7 +28,7 @@ struct Link
 
     msg::Message answer(const msg::Message &request, const char *type, const QString &info = {}) const
     {
-        msg::Message reply(schema->byAbbrev(u"PlanDB"));
+        msg::Message reply(request.def()); // PlanDB or PlanControl
         const auto set = [&](const char *field, const QString &name) {
             const int i = reply.def()->indexOf(QString::fromLatin1(field));
             reply.setInteger(i, *reply.field(i).enumeration->parse(name));
@@ -61,11 +61,11 @@ bool waitFor(const std::function<bool()> &done, int ms = 3000)
 
 } // namespace
 
-TEST(PlanDbClient, ARequestIsAnsweredByItsOwnReply)
+TEST(PlanClient, ARequestIsAnsweredByItsOwnReply)
 {
     Link link;
-    plans::PlanDbClient client(link.schema, vehicle, [&](const msg::Message &m) { link.sent.push_back(m); });
-    QObject::connect(&client, &plans::PlanDbClient::replied, [&](const Reply &r) { link.replies.push_back(r); });
+    plans::PlanClient client(link.schema, vehicle, [&](const msg::Message &m) { link.sent.push_back(m); });
+    QObject::connect(&client, &plans::PlanClient::replied, [&](const Reply &r) { link.replies.push_back(r); });
     const quint16 a = client.set(spec(*link.schema, "survey"));
     const quint16 b = client.get(u"survey"_s);
     ASSERT_EQ(link.sent.size(), 2u);
@@ -103,11 +103,11 @@ TEST(PlanDbClient, ARequestIsAnsweredByItsOwnReply)
     EXPECT_FALSE(client.receive(got)); // a late duplicate is nobody's
 }
 
-TEST(PlanDbClient, AnUnansweredRequestIsSentAgainThenGivenUp)
+TEST(PlanClient, AnUnansweredRequestIsSentAgainThenGivenUp)
 {
     Link link;
-    plans::PlanDbClient client(link.schema, vehicle, [&](const msg::Message &m) { link.sent.push_back(m); });
-    QObject::connect(&client, &plans::PlanDbClient::replied, [&](const Reply &r) { link.replies.push_back(r); });
+    plans::PlanClient client(link.schema, vehicle, [&](const msg::Message &m) { link.sent.push_back(m); });
+    QObject::connect(&client, &plans::PlanClient::replied, [&](const Reply &r) { link.replies.push_back(r); });
     client.setTimeout(30ms);
     client.setAttempts(3);
     const quint16 id = client.remove(u"old"_s);
@@ -121,11 +121,11 @@ TEST(PlanDbClient, AnUnansweredRequestIsSentAgainThenGivenUp)
     EXPECT_EQ(client.pending(), 0);
 }
 
-TEST(PlanDbClient, ALostRequestIsRetriedAndInProgressWaits)
+TEST(PlanClient, ALostRequestIsRetriedAndInProgressWaits)
 {
     Link link;
     int dropped = 0;
-    plans::PlanDbClient client(link.schema, vehicle, [&](const msg::Message &m) {
+    plans::PlanClient client(link.schema, vehicle, [&](const msg::Message &m) {
         link.sent.push_back(m);
         if (dropped++ == 0)
             return; // the first send is lost on the way
@@ -135,7 +135,7 @@ TEST(PlanDbClient, ALostRequestIsRetriedAndInProgressWaits)
             QTimer::singleShot(at, &client, [&, m] { client.receive(link.answer(m, "IN_PROGRESS")); });
         QTimer::singleShot(600, &client, [&, m] { client.receive(link.answer(m, "SUCCESS", u"stored"_s)); });
     });
-    QObject::connect(&client, &plans::PlanDbClient::replied, [&](const Reply &r) { link.replies.push_back(r); });
+    QObject::connect(&client, &plans::PlanClient::replied, [&](const Reply &r) { link.replies.push_back(r); });
     client.setTimeout(200ms);
     client.setAttempts(2);
     client.getState();
@@ -144,4 +144,54 @@ TEST(PlanDbClient, ALostRequestIsRetriedAndInProgressWaits)
     EXPECT_EQ(link.replies[0].attempts, 2);
     EXPECT_EQ(link.replies[0].info, u"stored"_s);
     EXPECT_EQ(link.sent.size(), 2u); // IN_PROGRESS did not make it send again
+}
+
+// PlanControl: the START's answer ends the request; the vehicle's later
+// word to that START says how the plan ended; the same answer again (to a
+// START sent twice) is not an end.
+TEST(PlanClient, AStartIsAnsweredAndThePlansEndReported)
+{
+    Link link;
+    plans::PlanClient client(link.schema, vehicle, [&](const msg::Message &m) { link.sent.push_back(m); });
+    QObject::connect(&client, &plans::PlanClient::replied, [&](const Reply &r) { link.replies.push_back(r); });
+    std::vector<std::tuple<QString, bool, QString>> ended;
+    QObject::connect(&client, &plans::PlanClient::planEnded,
+                     [&](const QString &plan, bool ok, const QString &info) { ended.emplace_back(plan, ok, info); });
+
+    const quint16 id = client.start(spec(*link.schema, "survey"), u"survey"_s, 2);
+    ASSERT_EQ(link.sent.size(), 1u);
+    const msg::Message &start = link.sent[0];
+    EXPECT_EQ(start.abbrev(), u"PlanControl"_s);
+    EXPECT_EQ(start.enumText(start.def()->indexOf(u"op")), u"START"_s);
+    EXPECT_EQ(start.integer(u"flags"), 2) << "IGNORE_ERRORS";
+    EXPECT_EQ(start.header.dst, vehicle);
+    ASSERT_NE(start.inlineMessage(start.def()->indexOf(u"arg")), nullptr);
+
+    msg::Message wrongKind(link.schema->byAbbrev(u"PlanDB"));
+    wrongKind.setInteger(wrongKind.def()->indexOf(u"request_id"), id);
+    wrongKind.setInteger(wrongKind.def()->indexOf(u"type"), 1);
+    wrongKind.header.src = vehicle;
+    EXPECT_FALSE(client.receive(wrongKind)) << "a PlanDB reply with the same id answers nothing of ours";
+
+    EXPECT_TRUE(client.receive(link.answer(start, "SUCCESS", u"plan started"_s)));
+    ASSERT_EQ(link.replies.size(), 1u);
+    EXPECT_TRUE(link.replies[0].ok);
+    EXPECT_EQ(link.replies[0].message, u"PlanControl"_s);
+    EXPECT_EQ(link.replies[0].op, u"START"_s);
+    EXPECT_EQ(link.replies[0].planId, u"survey"_s);
+    EXPECT_EQ(client.pending(), 0);
+
+    EXPECT_TRUE(client.receive(link.answer(start, "SUCCESS", u"plan started"_s)));
+    EXPECT_TRUE(ended.empty()) << "the same answer twice is not the plan's end";
+    EXPECT_TRUE(client.receive(link.answer(start, "FAILURE", u"plan stopped"_s)));
+    ASSERT_EQ(ended.size(), 1u);
+    EXPECT_EQ(std::get<0>(ended[0]), u"survey"_s);
+    EXPECT_FALSE(std::get<1>(ended[0]));
+    EXPECT_EQ(std::get<2>(ended[0]), u"plan stopped"_s);
+    EXPECT_FALSE(client.receive(link.answer(start, "SUCCESS", u"plan completed"_s))) << "one end per start";
+
+    client.stop(u"survey"_s);
+    EXPECT_EQ(link.sent.back().enumText(link.sent.back().def()->indexOf(u"op")), u"STOP"_s);
+    EXPECT_TRUE(client.receive(link.answer(link.sent.back(), "SUCCESS", u"no plan was running"_s)));
+    EXPECT_TRUE(link.replies.back().ok);
 }
