@@ -76,10 +76,13 @@ std::expected<CommandLine, QString> CommandLine::parse(const QStringList &argume
                        "the settings' systems/forgetAfter, else never; unnamed systems heard under 5 s go after "
                        "10 min anyway). Heard again, it comes back."),
         QStringLiteral("seconds"));
+    const QCommandLineOption mission(QStringLiteral("mission"),
+        QStringLiteral("A mission file (docs/missions.md) whose plans the plan panel offers to send and start."),
+        QStringLiteral("file"));
     const QCommandLineOption quitAfter(QStringLiteral("quit-after"),
         QStringLiteral("Exit after this many milliseconds."), QStringLiteral("ms"));
     parser.addOptions({console, screenshot, screenshotDelay, components, edit, select, system, palette, size, selfTest,
-                       imcPort, imcBind, imcPeer, ddsDomain, ddsConfig, ddsKeys, ddsIdentity, defs, defsFor, imcDiscovery, dumpTree, quitAfter, forgetAfter});
+                       imcPort, imcBind, imcPeer, ddsDomain, ddsConfig, ddsKeys, ddsIdentity, defs, defsFor, imcDiscovery, dumpTree, quitAfter, forgetAfter, mission});
     // "--defs-for SYSTEM FILE" (two words, as the documentation writes it) is
     // "--defs-for SYSTEM=FILE" to the parser, which takes one value per option.
     QStringList words = arguments;
@@ -192,6 +195,11 @@ std::expected<CommandLine, QString> CommandLine::parse(const QStringList &argume
         if (!ok || result.quitAfterMs <= 0)
             return std::unexpected(QStringLiteral("--quit-after must be a number of milliseconds, not '%1'")
                                        .arg(parser.value(quitAfter)));
+    }
+    if (parser.isSet(mission)) {
+        result.missionFile = QFileInfo(parser.value(mission)).absoluteFilePath();
+        if (!QFileInfo(result.missionFile).isFile())
+            return std::unexpected(QStringLiteral("--mission: no file %1").arg(result.missionFile));
     }
     if (parser.isSet(forgetAfter)) {
         bool ok = false;

@@ -12,6 +12,7 @@
 struct CommandLine
 {
     QString consoleFile;     // layout to open
+    QString missionFile;     // mission whose plans are offered (--mission)
     QString screenshotFile;  // render, save a PNG, exit
     int screenshotDelayMs = 0; // wait this long after the first frame
     QString palette;         // day, dusk or night; empty = as last time

@@ -103,6 +103,14 @@ int main(int argc, char *argv[])
             std::printf("neptus: IMC/UDP on %s:%u\n", qPrintable(config.bindAddress.toString()), session.console().imc()->port());
     }
 
+    // The mission whose plans the plan panel offers; a bad file is said, and the console carries on.
+    if (!commandLine->missionFile.isEmpty()) {
+        if (auto opened = session.planDesk().openMission(commandLine->missionFile); !opened)
+            std::fprintf(stderr, "neptus: %s; no mission open\n", qPrintable(opened.error()));
+        else
+            std::printf("neptus: mission %s\n", qPrintable(commandLine->missionFile));
+    }
+
     // Silent systems are forgotten after --forget-after, or the settings'
     // systems/forgetAfter (seconds); by default only short-lived ones are.
     if (double forget = commandLine->forgetAfterSeconds; forget > 0

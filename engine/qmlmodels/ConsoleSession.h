@@ -2,6 +2,7 @@
 
 #include "qmlmodels/AlarmListModel.h"
 #include "qmlmodels/LinkStatisticsModel.h"
+#include "qmlmodels/PlanDeskModel.h"
 #include "qmlmodels/Tracks.h"
 #include "qmlmodels/VariableTreeModel.h"
 #include "session/Console.h"
@@ -23,6 +24,7 @@ class ConsoleSession : public QObject
     Q_PROPERTY(neptus::scripting::ScriptHost *scripts READ scripts CONSTANT)
     Q_PROPERTY(neptus::geo::Tracks *tracks READ tracks CONSTANT)
     Q_PROPERTY(neptus::transport::LinkStatisticsModel *links READ linksModel CONSTANT)
+    Q_PROPERTY(PlanDeskModel *plans READ plansModel CONSTANT)
 
 public:
     explicit ConsoleSession(std::shared_ptr<const neptus::msg::Schema> schema,
@@ -35,6 +37,8 @@ public:
     neptus::transport::LinkStatisticsModel *linksModel() { return &m_linksModel; }
     neptus::scripting::ScriptHost *scripts() { return m_console.scripts(); }
     neptus::geo::Tracks *tracks() { return &m_tracks; }
+    neptus::plans::PlanDesk &planDesk() { return m_planDesk; }
+    PlanDeskModel *plansModel() { return &m_plansModel; }
 
     // For components (a joystick, a command button): sends a message, given
     // as JSON ({"abbrev": "Abort", "fields": {...}}), to a system. Returns ""
@@ -53,4 +57,6 @@ private:
     neptus::geo::Tracks m_tracks{&m_treeModel};
     neptus::alarms::AlarmListModel m_alarmModel{&m_console.alarmGraph()};
     neptus::transport::LinkStatisticsModel m_linksModel{&m_console.linkStatistics(), &m_console.tree()};
+    neptus::plans::PlanDesk m_planDesk;
+    PlanDeskModel m_plansModel{&m_planDesk};
 };

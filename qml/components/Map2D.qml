@@ -254,6 +254,17 @@ Rectangle {
         }
     }
 
+    // Plans running, one layer per system drawn (its own reports say which).
+    Repeater {
+        model: root.tracks
+        MapPlanPath {
+            required system // the row's
+            anchors.fill: parent
+            map: root
+            tint: root.colorOf(system)
+        }
+    }
+
     // Systems: a row of the console's tracks each.
     Repeater {
         model: root.tracks

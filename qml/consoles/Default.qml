@@ -2,8 +2,8 @@ import QtQuick
 import Neptus.Components
 
 // The generic console: where every system is (map and 3D scene, with
-// trails), the main system's instruments and depth over time, every system
-// heard and the alarms. Tap a system on the map or in the list to make it
+// trails, and the plans running), the main system's plans, instruments and
+// depth over time, every system heard and the alarms. Tap a system on the map or in the list to make it
 // the main one.
 Console {
     id: layout
@@ -23,9 +23,17 @@ Console {
         id: scene3D1
         x: 640
         y: 8
-        width: 632
+        width: 300
         height: 440
         vehicleScale: 2
+    }
+
+    PlanPanel {
+        id: planPanel1
+        x: 948
+        y: 8
+        width: 324
+        height: 440
     }
 
     Compass {

@@ -8,6 +8,7 @@
 #include "messages/MessageJson.h"
 #include "messages/Schema.h"
 #include "qmlmodels/ConsoleSession.h"
+#include "sim/SimulatedVehicle.h"
 
 #include <QDir>
 #include <QFile>
@@ -26,6 +27,7 @@
 #include <QtQml/qqmlextensionplugin.h>
 #include <QtQuickTest>
 
+#include <functional>
 #include <memory>
 
 Q_IMPORT_QML_PLUGIN(Neptus_EnginePlugin)
@@ -44,6 +46,12 @@ public:
     {
         if (!failure.isEmpty())
             return std::unexpected(failure);
+        if (vehicle && system == vehicle->config().id) { // a simulated vehicle answers, a moment later
+            msg::Message request = message;
+            request.header.dst = system;
+            QTimer::singleShot(0, [this, request] { answered(vehicle->answer(request, 1.7e9)); });
+            return {};
+        }
         if (message.abbrev() == u"EntityList" || message.abbrev() == u"QueryEntityInfo")
             return {};
         sent.append(QVariantMap{{QStringLiteral("system"), system},
@@ -53,6 +61,9 @@ public:
     }
     QVariantList sent;
     QString failure;
+    // A vehicle on this link (Fixtures.simulateVehicle), and where its words go.
+    std::unique_ptr<sim::SimulatedVehicle> vehicle;
+    std::function<void(const std::vector<msg::Message> &)> answered;
 };
 
 class Fixtures : public QObject
@@ -139,6 +150,28 @@ public:
         graph.raise(graph.ensure(path), static_cast<alarms::Level>(level), message);
     }
     Q_INVOKABLE void advanceClock(int milliseconds) { m_clock.advance(milliseconds); }
+    // A simulated vehicle (sim::SimulatedVehicle: it runs plans) on the test
+    // link; its simulated time runs only when runVehicle says.
+    Q_INVOKABLE void simulateVehicle(int id, const QString &name)
+    {
+        sim::SimulatedVehicle::Config config;
+        config.id = static_cast<quint16>(id);
+        config.name = name;
+        m_link.vehicle = std::make_unique<sim::SimulatedVehicle>(m_schema, config);
+        m_link.answered = [this](const std::vector<msg::Message> &messages) {
+            for (const msg::Message &m : messages)
+                m_session.console().ingest(m, testLink);
+        };
+        nameSystem(id, name);
+    }
+    Q_INVOKABLE void runVehicle(double seconds)
+    {
+        for (const double end = m_vehicleTime + seconds; m_vehicleTime < end;) {
+            const double previous = m_vehicleTime;
+            m_vehicleTime += 0.1;
+            m_link.answered(m_link.vehicle->step(previous, m_vehicleTime, 1.7e9 + m_vehicleTime));
+        }
+    }
     // A message `abbrev` from system `src`, as the IMC/UDP link receives it
     // from `host` (the link is attached on first use, never bound).
     Q_INVOKABLE void receiveFrom(const QString &host, const QString &abbrev, int src)
@@ -236,6 +269,7 @@ private:
     std::shared_ptr<const msg::Schema> m_schema;
     RecordingLink m_link;
     ConsoleSession m_session;
+    double m_vehicleTime = 0;
     std::vector<std::unique_ptr<QTemporaryDir>> m_dirs;
 };
 

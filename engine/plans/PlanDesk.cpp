@@ -1,0 +1,293 @@
+#include "plans/PlanDesk.h"
+
+#include "mission/ImcPlan.h"
+#include "mission/MissionXml.h"
+
+namespace neptus::plans {
+
+using namespace Qt::StringLiterals;
+
+namespace {
+constexpr qsizetype logLines = 200;
+} // namespace
+
+PlanDesk::PlanDesk(std::shared_ptr<const msg::Schema> schema, const tree::VariableTree &tree, alarms::AlarmGraph &graph,
+                   Sender send, const Clock *clock, QObject *parent)
+    : QObject(parent)
+    , m_schema(schema)
+    , m_codec(schema)
+    , m_tree(tree)
+    , m_graph(graph)
+    , m_send(std::move(send))
+    , m_clock(clock)
+{
+}
+
+std::expected<void, QString> PlanDesk::openMission(const QString &path)
+{
+    auto mission = mission::loadMission(path);
+    if (!mission) {
+        QStringList lines;
+        for (const auto &e : mission.error())
+            lines << e.toString();
+        return std::unexpected(lines.join(u'\n'));
+    }
+    setMission(std::move(*mission), path);
+    return {};
+}
+
+void PlanDesk::setMission(mission::Mission mission, const QString &path)
+{
+    m_mission = std::move(mission);
+    m_missionPath = path;
+    for (const auto &[id, vehicle] : m_vehicles)
+        emit changed(m_tree.systemName(id));
+}
+
+QList<const mission::Plan *> PlanDesk::missionPlans(const QString &system) const
+{
+    QList<const mission::Plan *> plans;
+    for (const mission::Plan &p : m_mission.plans)
+        if (p.vehicle == system)
+            plans.append(&p);
+    return plans;
+}
+
+PlanDesk::Vehicle *PlanDesk::known(const QString &system)
+{
+    const auto id = m_tree.systemId(system);
+    const auto found = id ? m_vehicles.find(*id) : m_vehicles.end();
+    return found == m_vehicles.end() ? nullptr : &found->second;
+}
+
+const PlanDesk::Vehicle *PlanDesk::known(const QString &system) const
+{
+    return const_cast<PlanDesk *>(this)->known(system);
+}
+
+std::expected<PlanDesk::Vehicle *, QString> PlanDesk::vehicle(const QString &system)
+{
+    const auto id = m_tree.systemId(system);
+    if (!id)
+        return std::unexpected(u"no system is called '%1'"_s.arg(system));
+    Vehicle &v = m_vehicles[*id];
+    if (!v.client) {
+        const quint16 to = *id;
+        v.client = std::make_unique<PlanClient>(m_schema, to, [this, to](const msg::Message &m) {
+            if (auto sent = m_send(to, m); !sent)
+                note(to, u"%1 %2 not sent: %3"_s.arg(m.abbrev(), m.enumText(m.def()->indexOf(u"op")), sent.error()));
+        });
+        v.client->setTimeout(m_timeout);
+        connect(v.client.get(), &PlanClient::replied, this, [this, to](const PlanClient::Reply &r) { replied(to, r); });
+        connect(v.client.get(), &PlanClient::planEnded, this,
+                [this, to](const QString &plan, bool ok, const QString &info) { ended(to, plan, ok, info); });
+    }
+    return &v;
+}
+
+std::optional<mission::Plan> PlanDesk::plan(const QString &system, const QString &planId)
+{
+    for (const mission::Plan *p : missionPlans(system))
+        if (p->id == planId)
+            return *p;
+    Vehicle *v = known(system);
+    if (!v)
+        return std::nullopt;
+    if (const auto copy = v->copies.find(planId); copy != v->copies.end())
+        return copy->second;
+    // Fetched once: an empty copy marks the question asked.
+    v->copies[planId] = mission::Plan{};
+    v->client->get(planId);
+    return std::nullopt;
+}
+
+std::vector<PlanDesk::StoredPlan> PlanDesk::storedPlans(const QString &system) const
+{
+    const Vehicle *v = known(system);
+    return v ? v->stored : std::vector<StoredPlan>{};
+}
+
+bool PlanDesk::fetched(const QString &system) const
+{
+    const Vehicle *v = known(system);
+    return v && v->fetched;
+}
+
+std::expected<msg::Message, QString> PlanDesk::specification(const QString &system, const QString &planId) const
+{
+    for (const mission::Plan *p : missionPlans(system))
+        if (p->id == planId)
+            return mission::planSpecification(*p, *m_schema);
+    return std::unexpected(u"the mission has no plan '%1' for %2"_s.arg(planId, system));
+}
+
+Sync PlanDesk::sync(const QString &system, const QString &planId) const
+{
+    const Vehicle *v = known(system);
+    if (!v)
+        return Sync::Absent;
+    const auto stored = std::find_if(v->stored.begin(), v->stored.end(), [&](const StoredPlan &p) { return p.id == planId; });
+    if (stored == v->stored.end())
+        return Sync::Absent;
+    const auto spec = specification(system, planId);
+    if (!spec)
+        return Sync::Same; // the vehicle's own plan: nothing here to differ from
+    const auto md5 = planMd5(m_codec, *spec);
+    return md5 && *md5 == stored->md5 ? Sync::Same : Sync::Differs;
+}
+
+QStringList PlanDesk::log(const QString &system) const
+{
+    const Vehicle *v = known(system);
+    return v ? v->log : QStringList{};
+}
+
+void PlanDesk::note(quint16 id, const QString &line)
+{
+    Vehicle &v = m_vehicles[id];
+    v.log.append(m_clock->now().toUTC().toString(u"HH:mm:ss"_s) + u"  "_s + line);
+    if (v.log.size() > logLines)
+        v.log.removeFirst();
+    emit changed(m_tree.systemName(id));
+}
+
+// --- Commands ------------------------------------------------------------------------
+
+std::expected<void, QString> PlanDesk::refresh(const QString &system)
+{
+    auto v = vehicle(system);
+    if (!v)
+        return std::unexpected(v.error());
+    (*v)->client->getState(true);
+    return {};
+}
+
+std::expected<void, QString> PlanDesk::send(const QString &system, const QString &planId)
+{
+    auto v = vehicle(system);
+    if (!v)
+        return std::unexpected(v.error());
+    auto spec = specification(system, planId);
+    if (!spec)
+        return std::unexpected(spec.error());
+    // Said before it goes: an answer may come at once.
+    note((*v)->client->vehicle(), u"sending %1"_s.arg(planId));
+    (*v)->client->set(*spec);
+    return {};
+}
+
+std::expected<void, QString> PlanDesk::remove(const QString &system, const QString &planId)
+{
+    auto v = vehicle(system);
+    if (!v)
+        return std::unexpected(v.error());
+    note((*v)->client->vehicle(), u"removing %1"_s.arg(planId));
+    (*v)->client->remove(planId);
+    return {};
+}
+
+std::expected<void, QString> PlanDesk::start(const QString &system, const QString &planId)
+{
+    auto v = vehicle(system);
+    if (!v)
+        return std::unexpected(v.error());
+    if (!(*v)->fetched) {
+        refresh(system);
+        return std::unexpected(u"%1 has not said which plans it holds yet: try again in a moment"_s.arg(system));
+    }
+    switch (sync(system, planId)) {
+    case Sync::Absent:
+        return std::unexpected(u"%1 does not hold %2: send it first"_s.arg(system, planId));
+    case Sync::Differs:
+        return std::unexpected(u"%1's copy of %2 differs from the mission's: send it again first"_s.arg(system, planId));
+    case Sync::Same:
+        break;
+    }
+    note((*v)->client->vehicle(), u"starting %1"_s.arg(planId));
+    (*v)->client->start(planId);
+    return {};
+}
+
+std::expected<void, QString> PlanDesk::stop(const QString &system)
+{
+    auto v = vehicle(system);
+    if (!v)
+        return std::unexpected(v.error());
+    note((*v)->client->vehicle(), u"stopping"_s);
+    (*v)->client->stop();
+    return {};
+}
+
+std::expected<void, QString> PlanDesk::abort(const QString &system)
+{
+    auto v = vehicle(system);
+    if (!v)
+        return std::unexpected(v.error());
+    const quint16 id = (*v)->client->vehicle();
+    note(id, u"sending Abort"_s);
+    if (auto sent = m_send(id, msg::Message(m_schema->byAbbrev(u"Abort"))); !sent) {
+        note(id, u"Abort not sent: "_s + sent.error());
+        return std::unexpected(sent.error());
+    }
+    return {};
+}
+
+// --- What vehicles say ---------------------------------------------------------------
+
+void PlanDesk::receive(const msg::Message &message)
+{
+    const auto found = m_vehicles.find(message.header.src);
+    if (found != m_vehicles.end() && found->second.client)
+        found->second.client->receive(message);
+}
+
+void PlanDesk::replied(quint16 id, const PlanClient::Reply &r)
+{
+    Vehicle &v = m_vehicles[id];
+    const QString what = r.planId.isEmpty() ? r.op : r.op + u' ' + r.planId;
+    if (!r.ok) {
+        note(id, u"%1 failed: %2"_s.arg(what, r.info));
+        if (r.message == u"PlanControl" && r.op == u"START") {
+            const auto node = m_graph.ensure(u"systems/%1/plan"_s.arg(m_tree.systemName(id)));
+            m_graph.raise(node, alarms::Warning, u"plan %1 did not start: %2"_s.arg(r.planId, r.info));
+        }
+        return;
+    }
+    if (r.message == u"PlanDB" && (r.op == u"GET_DSTATE" || r.op == u"GET_STATE")) {
+        v.stored.clear();
+        if (r.arg && r.arg->def()) {
+            for (const msg::Message &info : r.arg->messages(r.arg->def()->indexOf(u"plans_info")))
+                v.stored.push_back({info.text(u"plan_id"), info.bytes(info.def()->indexOf(u"md5")),
+                                    static_cast<int>(info.integer(u"plan_size")), info.number(u"change_time")});
+        }
+        v.fetched = true;
+        emit changed(m_tree.systemName(id));
+        return;
+    }
+    if (r.message == u"PlanDB" && r.op == u"GET") {
+        if (r.arg)
+            if (auto copy = mission::planFromSpecification(*r.arg, m_tree.systemName(id)))
+                v.copies[r.planId] = std::move(*copy);
+        emit changed(m_tree.systemName(id));
+        return;
+    }
+    note(id, r.info.isEmpty() ? what + u": done"_s : u"%1: %2"_s.arg(what, r.info));
+    if (r.message == u"PlanDB" && (r.op == u"SET" || r.op == u"DEL")) {
+        v.copies.erase(r.planId);
+        v.client->getState(true); // what it holds now, with the new MD5s
+    }
+}
+
+void PlanDesk::ended(quint16 id, const QString &planId, bool ok, const QString &info)
+{
+    const QString name = m_tree.systemName(id);
+    const bool stoppedHere = !ok && info.contains(u"stopped"_s);
+    note(id, ok ? u"%1 completed"_s.arg(planId) : u"%1 ended: %2"_s.arg(planId, info));
+    const auto node = m_graph.ensure(u"systems/%1/plan"_s.arg(name));
+    if (ok || stoppedHere)
+        m_graph.raise(node, alarms::Info, u"plan %1 %2"_s.arg(planId, ok ? u"completed"_s : info));
+    else
+        m_graph.raise(node, alarms::Warning, u"plan %1 failed: %2"_s.arg(planId, info));
+}
+
+} // namespace neptus::plans

@@ -1,0 +1,112 @@
+#pragma once
+
+#include "alarms/AlarmGraph.h"
+#include "messages/Codec.h"
+#include "mission/Mission.h"
+#include "plans/PlanClient.h"
+#include "plans/PlanDatabase.h"
+#include "tree/VariableTree.h"
+
+#include <QObject>
+
+#include <expected>
+#include <functional>
+#include <map>
+#include <memory>
+
+namespace neptus::plans {
+
+// The console's desk for plans on vehicles. For each vehicle (by the name
+// the tree shows it by): what its plan database holds (PlanDB GET_DSTATE,
+// fetched on first look and after every change), whether each plan of the
+// open mission is there exactly as here (the MD5s DUNE keeps), and the
+// commands — send, remove, start, stop, abort. START is refused while the
+// vehicle's copy differs from the mission's or is missing: the operator
+// sends it first. Every command, reply and end of a plan is a line of the
+// vehicle's log; a plan's end is also an event on the alarm node
+// "systems/<vehicle>/plan" (Warning when it failed, with the vehicle's
+// reason; Info when it completed or this console stopped it).
+class PlanDesk : public QObject
+{
+    Q_OBJECT
+
+public:
+    using Sender = std::function<std::expected<void, QString>(quint16 system, const msg::Message &message)>;
+
+    struct StoredPlan
+    {
+        QString id;
+        QByteArray md5;
+        int size = 0;
+        double changeTime = 0;
+    };
+
+    PlanDesk(std::shared_ptr<const msg::Schema> schema, const tree::VariableTree &tree, alarms::AlarmGraph &graph,
+             Sender send, const Clock *clock = &Clock::system(), QObject *parent = nullptr);
+
+    // The mission whose plans are offered; an error names the file and line.
+    std::expected<void, QString> openMission(const QString &path);
+    void setMission(mission::Mission mission, const QString &path = {});
+    const mission::Mission &mission() const { return m_mission; }
+    QString missionPath() const { return m_missionPath; }
+
+    // The mission's plans for a vehicle (each plan names its vehicle).
+    QList<const mission::Plan *> missionPlans(const QString &system) const;
+    // A plan by id: the mission's, else the vehicle's own copy once fetched (GET).
+    std::optional<mission::Plan> plan(const QString &system, const QString &planId);
+    // What the vehicle's database held when last asked; empty until it answers.
+    std::vector<StoredPlan> storedPlans(const QString &system) const;
+    bool fetched(const QString &system) const;
+    // The mission's plan against the vehicle's copy.
+    Sync sync(const QString &system, const QString &planId) const;
+    QStringList log(const QString &system) const;
+
+    // Commands. An error says why nothing was sent; what the vehicle answers
+    // (or its silence, after retries) comes to the log.
+    std::expected<void, QString> refresh(const QString &system);
+    std::expected<void, QString> send(const QString &system, const QString &planId);
+    std::expected<void, QString> remove(const QString &system, const QString &planId);
+    std::expected<void, QString> start(const QString &system, const QString &planId);
+    std::expected<void, QString> stop(const QString &system);
+    std::expected<void, QString> abort(const QString &system);
+
+    // A PlanDB or PlanControl from the links (Console::planMessageReceived).
+    void receive(const msg::Message &message);
+    // Replies come within this or are asked again (tests shorten it).
+    void setTimeout(std::chrono::milliseconds timeout) { m_timeout = timeout; }
+
+signals:
+    // A vehicle's stored plans, sync or log changed.
+    void changed(const QString &system);
+
+private:
+    struct Vehicle
+    {
+        std::unique_ptr<PlanClient> client;
+        std::vector<StoredPlan> stored;
+        bool fetched = false;
+        std::map<QString, mission::Plan> copies; // its plans, fetched with GET
+        QStringList log;
+    };
+
+    std::expected<Vehicle *, QString> vehicle(const QString &system);
+    Vehicle *known(const QString &system);
+    const Vehicle *known(const QString &system) const;
+    std::expected<msg::Message, QString> specification(const QString &system, const QString &planId) const;
+    void note(quint16 id, const QString &line);
+    void replied(quint16 id, const PlanClient::Reply &reply);
+    void ended(quint16 id, const QString &planId, bool ok, const QString &info);
+
+    std::shared_ptr<const msg::Schema> m_schema;
+    msg::Codec m_codec;
+    const tree::VariableTree &m_tree;
+    alarms::AlarmGraph &m_graph;
+    Sender m_send;
+    const Clock *m_clock;
+    mission::Mission m_mission;
+    QString m_missionPath;
+    std::map<quint16, Vehicle> m_vehicles;
+    std::chrono::milliseconds m_timeout{3000};
+};
+
+} // namespace neptus::plans

@@ -1,0 +1,73 @@
+#include "qmlmodels/PlanDeskModel.h"
+
+#include "mission/PlanGeometry.h"
+
+#include <QVariantMap>
+
+using namespace Qt::StringLiterals;
+using neptus::plans::Sync;
+
+PlanDeskModel::PlanDeskModel(neptus::plans::PlanDesk *desk, QObject *parent)
+    : QObject(parent)
+    , m_desk(desk)
+{
+    connect(desk, &neptus::plans::PlanDesk::changed, this, &PlanDeskModel::changed);
+}
+
+QString PlanDeskModel::missionName() const
+{
+    const auto &mission = m_desk->mission();
+    return mission.name.isEmpty() ? mission.id : mission.name;
+}
+
+QString PlanDeskModel::openMission(const QString &path)
+{
+    const QString why = said(m_desk->openMission(path));
+    if (why.isEmpty())
+        emit missionChanged();
+    return why;
+}
+
+QVariantList PlanDeskModel::plansFor(const QString &system)
+{
+    if (!m_desk->fetched(system))
+        m_desk->refresh(system); // its answer comes as changed(system)
+    QVariantList plans;
+    QStringList listed;
+    for (const neptus::mission::Plan *p : m_desk->missionPlans(system)) {
+        const auto geometry = neptus::mission::planGeometry(*p);
+        const Sync sync = m_desk->sync(system, p->id);
+        plans.append(QVariantMap{
+            {u"id"_s, p->id},
+            {u"description"_s, p->description},
+            {u"maneuvers"_s, static_cast<int>(p->maneuvers.size())},
+            {u"length"_s, geometry.length},
+            {u"duration"_s, geometry.duration.value_or(-1)},
+            {u"sync"_s, !m_desk->fetched(system) ? u"unknown"_s
+                        : sync == Sync::Same     ? u"same"_s
+                        : sync == Sync::Differs  ? u"differs"_s
+                                                 : u"absent"_s},
+        });
+        listed << p->id;
+    }
+    for (const auto &stored : m_desk->storedPlans(system)) {
+        if (!listed.contains(stored.id))
+            plans.append(QVariantMap{{u"id"_s, stored.id}, {u"sync"_s, u"vehicle"_s}});
+    }
+    return plans;
+}
+
+QVariantList PlanDeskModel::pathOf(const QString &system, const QString &planId)
+{
+    const auto plan = m_desk->plan(system, planId);
+    QVariantList maneuvers;
+    if (!plan)
+        return maneuvers;
+    for (const auto &g : neptus::mission::planGeometry(*plan).maneuvers) {
+        QVariantList points;
+        for (const auto &w : g.points)
+            points.append(QVariantMap{{u"lat"_s, w.lat}, {u"lon"_s, w.lon}});
+        maneuvers.append(QVariantMap{{u"id"_s, g.id}, {u"type"_s, g.type}, {u"points"_s, points}});
+    }
+    return maneuvers;
+}

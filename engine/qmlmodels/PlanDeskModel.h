@@ -1,0 +1,53 @@
+#pragma once
+
+#include "plans/PlanDesk.h"
+
+#include <QObject>
+#include <QVariantList>
+#include <QtQml/qqmlregistration.h>
+
+// The console's plan desk (plans::PlanDesk) as the plan panel and the map
+// see it: plans as lists of maps, commands answering "" when sent or why
+// not, and changed(system) when a vehicle's plans, sync or log change.
+class PlanDeskModel : public QObject
+{
+    Q_OBJECT
+    QML_ELEMENT
+    QML_UNCREATABLE("made by the console session")
+    Q_PROPERTY(QString missionName READ missionName NOTIFY missionChanged)
+    Q_PROPERTY(QString missionPath READ missionPath NOTIFY missionChanged)
+
+public:
+    explicit PlanDeskModel(neptus::plans::PlanDesk *desk, QObject *parent = nullptr);
+
+    QString missionName() const;
+    QString missionPath() const { return m_desk->missionPath(); }
+
+    // "" when opened, else why not (file and line).
+    Q_INVOKABLE QString openMission(const QString &path);
+    // The mission's plans for `system`, then those only the vehicle holds:
+    // {id, description, maneuvers, length (m), duration (s, -1: no end),
+    // sync: "same" | "differs" | "absent" | "unknown" (not asked yet) | "vehicle" (only there)}.
+    // The first look at a vehicle asks it which plans it holds.
+    Q_INVOKABLE QVariantList plansFor(const QString &system);
+    // What a plan makes the vehicle do, for the map: [{id, type, points: [{lat, lon}]}]
+    // in execution order; [] while the vehicle's own copy is being fetched.
+    Q_INVOKABLE QVariantList pathOf(const QString &system, const QString &planId);
+    Q_INVOKABLE QStringList logOf(const QString &system) const { return m_desk->log(system); }
+
+    Q_INVOKABLE QString refresh(const QString &system) { return said(m_desk->refresh(system)); }
+    Q_INVOKABLE QString send(const QString &system, const QString &planId) { return said(m_desk->send(system, planId)); }
+    Q_INVOKABLE QString remove(const QString &system, const QString &planId) { return said(m_desk->remove(system, planId)); }
+    Q_INVOKABLE QString start(const QString &system, const QString &planId) { return said(m_desk->start(system, planId)); }
+    Q_INVOKABLE QString stop(const QString &system) { return said(m_desk->stop(system)); }
+    Q_INVOKABLE QString abort(const QString &system) { return said(m_desk->abort(system)); }
+
+signals:
+    void changed(const QString &system);
+    void missionChanged();
+
+private:
+    static QString said(const std::expected<void, QString> &result) { return result ? QString() : result.error(); }
+
+    neptus::plans::PlanDesk *m_desk;
+};

@@ -1,0 +1,295 @@
+pragma ComponentBehavior: Bound
+import QtQuick
+import Neptus.Engine
+
+// A vehicle's plans: what it is doing (state, plan, maneuver, progress, ETA,
+// the last outcome, from its own PlanControlState, so a second console sees
+// what the first started), the open mission's plans for it with whether the
+// vehicle holds each exactly as here, and the commands. Send stores a plan
+// on the vehicle; Start and Abort need slide-to-confirm; Start is offered
+// only while the vehicle's copy is the mission's. The last lines of the
+// vehicle's plan log at the bottom.
+Rectangle {
+    id: panel
+
+    // The vehicle: a name or "$main".
+    property string system: "$main"
+    readonly property string target: Session.resolve(system)
+    readonly property bool hasTarget: target !== "" && !target.startsWith("$main")
+    readonly property PlanDeskModel desk: Session.session ? Session.session.plans : null
+    // The plan picked in the list.
+    property string selected: ""
+    // What the last command said: "" when it was sent, else why not.
+    property string outcome: ""
+
+    // Re-read when the desk says this vehicle changed.
+    property int revision: 0
+    readonly property var plans: desk && hasTarget ? (revision, desk.plansFor(target)) : []
+    readonly property var log: desk && hasTarget ? (revision, desk.logOf(target)) : []
+    readonly property var selectedPlan: plans.find(p => p.id === selected)
+
+    implicitWidth: Theme.mm(95)
+    implicitHeight: Theme.mm(120)
+    color: Theme.background
+    border.color: Theme.border
+    border.width: Math.max(1, Theme.mm(0.3))
+    radius: Theme.radius
+    clip: true
+
+    Connections {
+        target: panel.desk
+        function onChanged(system) {
+            if (system === panel.target)
+                panel.revision++
+        }
+    }
+    onTargetChanged: { selected = ""; outcome = "" }
+
+    function run(why) { panel.outcome = why }
+    function formatSeconds(s) {
+        if (s === undefined || s < 0)
+            return "—"
+        s = Math.round(s)
+        return s < 60 ? qsTr("%1 s").arg(s)
+             : s < 3600 ? qsTr("%1 min %2 s").arg(Math.floor(s / 60)).arg(s % 60)
+             : qsTr("%1 h %2 min").arg(Math.floor(s / 3600)).arg(Math.floor(s % 3600 / 60))
+    }
+    function formatDistance(m) {
+        return m >= 1000 ? qsTr("%1 km").arg((m / 1000).toFixed(1)) : qsTr("%1 m").arg(Math.round(m))
+    }
+
+    Variable { id: state; tree: Session.tree; path: panel.target + "/PlanControlState/state" }
+    Variable { id: planId; tree: Session.tree; path: panel.target + "/PlanControlState/plan_id" }
+    Variable { id: maneuver; tree: Session.tree; path: panel.target + "/PlanControlState/man_id" }
+    Variable { id: progress; tree: Session.tree; path: panel.target + "/PlanControlState/plan_progress" }
+    Variable { id: eta; tree: Session.tree; path: panel.target + "/PlanControlState/plan_eta" }
+    Variable { id: lastOutcome; tree: Session.tree; path: panel.target + "/PlanControlState/last_outcome" }
+    readonly property bool executing: state.present && state.text === "EXECUTING"
+
+    Column {
+        id: content
+        anchors { left: parent.left; right: parent.right; top: parent.top; margins: Theme.spacing * 1.5 }
+        spacing: Theme.spacing
+
+        Row {
+            width: parent.width
+            spacing: Theme.spacing
+            Text {
+                width: parent.width - refresh.width - parent.spacing
+                anchors.verticalCenter: parent.verticalCenter
+                text: panel.hasTarget ? qsTr("Plans · %1").arg(panel.target) : qsTr("Plans · no vehicle chosen")
+                color: Theme.text
+                font.pixelSize: Theme.fontPixelSize
+                font.bold: true
+                elide: Text.ElideRight
+            }
+            TouchButton {
+                id: refresh
+                objectName: "refresh"
+                text: qsTr("Ask")
+                toolTip: qsTr("Ask the vehicle again which plans it holds")
+                enabled: panel.hasTarget && panel.desk !== null
+                onClicked: panel.run(panel.desk.refresh(panel.target))
+            }
+        }
+        Text {
+            width: parent.width
+            text: panel.desk && panel.desk.missionName !== "" ? qsTr("Mission: %1").arg(panel.desk.missionName)
+                                                             : qsTr("No mission open (--mission FILE)")
+            color: Theme.textDim
+            font.pixelSize: Theme.smallFontPixelSize
+            elide: Text.ElideMiddle
+        }
+
+        // What the vehicle is doing, in its own words.
+        Rectangle {
+            objectName: "status"
+            width: parent.width
+            height: statusColumn.implicitHeight + Theme.spacing * 2
+            radius: Theme.radius
+            color: Theme.surface
+            border.color: panel.executing ? Theme.accent : Theme.border
+            Column {
+                id: statusColumn
+                anchors { left: parent.left; right: parent.right; verticalCenter: parent.verticalCenter; margins: Theme.spacing }
+                spacing: Theme.spacing / 2
+                Text {
+                    objectName: "state"
+                    width: parent.width
+                    text: !state.present ? qsTr("No plan state heard yet")
+                        : panel.executing ? qsTr("Executing %1 · maneuver %2").arg(planId.text).arg(maneuver.text)
+                        : qsTr("%1 · last plan %2: %3").arg(state.text).arg(planId.text || "—").arg(lastOutcome.text)
+                    color: Theme.text
+                    font.pixelSize: Theme.fontPixelSize
+                    elide: Text.ElideRight
+                }
+                Rectangle {
+                    width: parent.width
+                    height: Theme.mm(3)
+                    radius: height / 2
+                    visible: panel.executing
+                    color: Theme.background
+                    Rectangle {
+                        objectName: "progressBar"
+                        width: parent.width * Math.max(0, Math.min(1, (progress.value || 0) / 100))
+                        height: parent.height
+                        radius: parent.radius
+                        color: Theme.accent
+                    }
+                }
+                Text {
+                    objectName: "progress"
+                    visible: panel.executing
+                    text: qsTr("%1 % · ETA %2").arg(Math.round(progress.value || 0)).arg(panel.formatSeconds(eta.value))
+                    color: Theme.textDim
+                    font.pixelSize: Theme.smallFontPixelSize
+                    font.family: Theme.monospaceFont
+                }
+            }
+        }
+
+        // The plans: the mission's for this vehicle, and the vehicle's own.
+        ListView {
+            id: list
+            objectName: "plans"
+            width: parent.width
+            height: Math.min(contentHeight, Theme.touchTarget * 1.6 * 4)
+            spacing: Theme.spacing / 2
+            clip: true
+            model: panel.plans
+            delegate: Rectangle {
+                id: row
+                required property var modelData
+                objectName: "plan-" + modelData.id
+                width: ListView.view.width
+                height: Math.max(Theme.touchTarget, rowText.implicitHeight + Theme.spacing * 2)
+                radius: Theme.radius
+                color: panel.selected === row.modelData.id ? Qt.rgba(Theme.accent.r, Theme.accent.g, Theme.accent.b, 0.18) : Theme.surface
+                border.color: panel.selected === row.modelData.id ? Theme.accent : Theme.border
+                Column {
+                    id: rowText
+                    anchors { left: parent.left; right: badge.left; verticalCenter: parent.verticalCenter; margins: Theme.spacing }
+                    Text {
+                        width: parent.width
+                        text: row.modelData.id
+                        color: Theme.text
+                        font.pixelSize: Theme.fontPixelSize
+                        font.bold: true
+                        elide: Text.ElideRight
+                    }
+                    Text {
+                        width: parent.width
+                        text: row.modelData.maneuvers !== undefined
+                              ? qsTr("%n maneuver(s)", "", row.modelData.maneuvers) + " · " + panel.formatDistance(row.modelData.length)
+                                + " · " + (row.modelData.duration >= 0 ? panel.formatSeconds(row.modelData.duration) : qsTr("no end"))
+                              : qsTr("only on the vehicle")
+                        color: Theme.textDim
+                        font.pixelSize: Theme.smallFontPixelSize
+                        elide: Text.ElideRight
+                    }
+                }
+                Rectangle {
+                    id: badge
+                    objectName: "sync"
+                    anchors { right: parent.right; verticalCenter: parent.verticalCenter; margins: Theme.spacing }
+                    width: badgeText.implicitWidth + Theme.spacing * 2
+                    height: badgeText.implicitHeight + Theme.spacing
+                    radius: height / 2
+                    readonly property string sync: row.modelData.sync
+                    color: sync === "same" || sync === "vehicle" ? Qt.alpha(Theme.levelColor(AlarmLevel.Normal), 0.25)
+                         : sync === "differs" ? Qt.alpha(Theme.levelColor(AlarmLevel.Warning), 0.35)
+                         : Qt.alpha(Theme.textDim, 0.2)
+                    Text {
+                        id: badgeText
+                        anchors.centerIn: parent
+                        text: badge.sync === "same" ? qsTr("on vehicle ✓")
+                            : badge.sync === "vehicle" ? qsTr("on vehicle")
+                            : badge.sync === "differs" ? qsTr("differs ≠")
+                            : badge.sync === "absent" ? qsTr("not on vehicle")
+                            : qsTr("asking…")
+                        color: Theme.text
+                        font.pixelSize: Theme.smallFontPixelSize
+                    }
+                }
+                TapHandler { onTapped: { panel.selected = row.modelData.id; panel.outcome = "" } }
+            }
+        }
+        Text {
+            visible: panel.plans.length === 0
+            width: parent.width
+            text: panel.hasTarget ? qsTr("No plans for %1").arg(panel.target) : qsTr("Choose a vehicle in the systems list")
+            color: Theme.textDim
+            font.pixelSize: Theme.smallFontPixelSize
+            wrapMode: Text.Wrap
+        }
+
+        // Commands for the plan picked.
+        Row {
+            width: parent.width
+            spacing: Theme.spacing
+            TouchButton {
+                id: sendButton
+                objectName: "send"
+                width: (parent.width - parent.spacing) / 2
+                text: panel.selectedPlan && panel.selectedPlan.sync === "same" ? qsTr("Send again") : qsTr("Send")
+                enabled: panel.selectedPlan !== undefined && panel.selectedPlan.sync !== "vehicle"
+                toolTip: qsTr("Store the mission's plan on the vehicle")
+                onClicked: panel.run(panel.desk.send(panel.target, panel.selected))
+            }
+            TouchButton {
+                objectName: "stop"
+                width: (parent.width - parent.spacing) / 2
+                text: qsTr("Stop")
+                enabled: panel.hasTarget && panel.desk !== null
+                toolTip: qsTr("Stop the plan the vehicle is running")
+                onClicked: panel.run(panel.desk.stop(panel.target))
+            }
+        }
+        SlideToConfirm {
+            id: startSlide
+            objectName: "start"
+            width: parent.width
+            enabled: panel.selectedPlan !== undefined && (panel.selectedPlan.sync === "same" || panel.selectedPlan.sync === "vehicle")
+            opacity: enabled ? 1 : 0.45
+            tint: Theme.accent
+            text: panel.selectedPlan === undefined ? qsTr("Pick a plan to start")
+                : enabled ? qsTr("Start %1 · %2").arg(panel.selected).arg(panel.target)
+                : qsTr("Send %1 before starting it").arg(panel.selected)
+            onConfirmed: { panel.run(panel.desk.start(panel.target, panel.selected)); reset() }
+        }
+        SlideToConfirm {
+            objectName: "abort"
+            width: parent.width
+            enabled: panel.hasTarget && panel.desk !== null
+            text: qsTr("Abort · %1").arg(panel.target)
+            onConfirmed: { panel.run(panel.desk.abort(panel.target)); reset() }
+        }
+        Text {
+            objectName: "outcome"
+            width: parent.width
+            visible: panel.outcome !== ""
+            text: panel.outcome
+            color: Theme.levelColor(AlarmLevel.Warning)
+            font.pixelSize: Theme.smallFontPixelSize
+            wrapMode: Text.Wrap
+        }
+    }
+
+    // The vehicle's plan log, newest last.
+    ListView {
+        objectName: "log"
+        anchors { left: parent.left; right: parent.right; top: content.bottom; bottom: parent.bottom; margins: Theme.spacing * 1.5 }
+        clip: true
+        model: panel.log
+        onCountChanged: positionViewAtEnd()
+        delegate: Text {
+            required property string modelData
+            width: ListView.view.width
+            text: modelData
+            color: Theme.textDim
+            font.pixelSize: Theme.smallFontPixelSize
+            font.family: Theme.monospaceFont
+            elide: Text.ElideRight
+        }
+    }
+}

@@ -1,0 +1,84 @@
+import QtQuick
+import QtTest
+import Neptus.Components
+import Neptus.Engine
+import Neptus.Testing
+
+// The plan panel as an operator uses it, against a simulated vehicle on the
+// test link: the mission's plan shows "not on vehicle" and cannot be started;
+// Send stores it (✓); Start and Abort need the slide (here from the
+// keyboard, four Right arrows); the vehicle's own reports show what it runs;
+// the plan's end is logged and raised on "systems/lauv-sim-1/plan".
+TestCase {
+    id: test
+    name: "PlanPanel"
+    when: windowShown
+    visible: true
+    width: 420
+    height: 640
+
+    PlanPanel { id: panel; anchors.fill: parent; system: "lauv-sim-1" }
+
+    readonly property string mission: '<?xml version="1.0" encoding="UTF-8"?>
+<mission format="1" id="panel" name="Panel test">
+  <home lat="41.1405" lon="-8.6110" height="0"/>
+  <vehicle id="lauv-sim-1"/>
+  <plan id="survey" vehicle="lauv-sim-1" start="go">
+    <maneuvers>
+      <Goto id="go" lat="41.1409" lon="-8.6110" z="2" z_units="DEPTH" speed="1.5" speed_units="METERS_PS"/>
+      <Goto id="back" lat="41.1405" lon="-8.6110" z="0" z_units="DEPTH" speed="1.5" speed_units="METERS_PS"/>
+    </maneuvers>
+    <transition from="go" to="back"/>
+  </plan>
+</mission>'
+
+    function initTestCase() {
+        Session.session = Fixtures.session
+        const file = Fixtures.makeTempDir() + "/panel.xml"
+        verify(Fixtures.writeFile(file, mission))
+        compare(Fixtures.session.plans.openMission(file), "")
+        Fixtures.simulateVehicle(0x1f, "lauv-sim-1")
+    }
+    function cleanupTestCase() { Session.session = null }
+
+    function slide(name) {
+        const slider = findChild(panel, name)
+        slider.forceActiveFocus()
+        for (let i = 0; i < 4; ++i)
+            keyClick(Qt.Key_Right)
+    }
+
+    // The plan's row says (rows are made again when the vehicle's answer comes).
+    function syncOf(plan) {
+        const row = findChild(panel, "plan-" + plan)
+        return row ? findChild(row, "sync").sync : ""
+    }
+
+    function test_1_sendThenStartThenAbort() {
+        panel.revision++ // the first look asks the vehicle
+        tryVerify(() => syncOf("survey") === "absent", 2000, "the mission's plan, not on the vehicle: " + syncOf("survey"))
+        mouseClick(findChild(panel, "plan-survey"))
+        compare(panel.selected, "survey")
+        const start = findChild(panel, "start")
+        verify(!start.enabled, "not startable before it is sent")
+        verify(start.text.indexOf("Send survey before starting it") >= 0, start.text)
+
+        mouseClick(findChild(panel, "send"))
+        tryVerify(() => syncOf("survey") === "same", 2000, syncOf("survey"))
+        verify(start.enabled)
+
+        slide("start")
+        tryVerify(() => panel.log.join("\n").indexOf("START survey: plan started") >= 0, 2000, panel.log.join("\n"))
+        Fixtures.runVehicle(3)
+        tryVerify(() => findChild(panel, "state").text.indexOf("Executing survey · maneuver go") >= 0, 2000,
+                  findChild(panel, "state").text)
+        verify(findChild(panel, "progress").visible)
+
+        slide("abort")
+        tryVerify(() => panel.log.join("\n").indexOf("survey ended: plan aborted") >= 0, 2000, panel.log.join("\n"))
+        compare(Fixtures.alarmLevel("systems/lauv-sim-1/plan"), AlarmLevel.Warning)
+        Fixtures.runVehicle(2)
+        tryVerify(() => findChild(panel, "state").text.indexOf("READY · last plan survey: FAILURE") >= 0, 2000,
+                  findChild(panel, "state").text)
+    }
+}

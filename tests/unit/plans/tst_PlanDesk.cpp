@@ -1,0 +1,181 @@
+// The console's plan desk against a simulated vehicle in-process: plans
+// offered from the mission, sent, checked against the vehicle's MD5s before
+// START, started, stopped, aborted; a log line for each, and the plan's end
+// as an alarm event.
+#include "plans/PlanDesk.h"
+
+#include "mission/MissionXml.h"
+#include "sim/SimulatedVehicle.h"
+
+#include "Missions.h"
+#include "Schemas.h"
+
+#include <QTest>
+
+#include <gtest/gtest.h>
+
+using namespace neptus;
+using namespace Qt::StringLiterals;
+
+QT_BEGIN_NAMESPACE
+inline void PrintTo(const QString &s, std::ostream *out) { *out << '"' << s.toStdString() << '"'; }
+QT_END_NAMESPACE
+
+namespace {
+
+constexpr quint16 console = 0x4001;
+
+const char *const missionText = R"X(<?xml version="1.0" encoding="UTF-8"?>
+<mission format="1" id="desk" name="Desk">
+  <home lat="41.1405" lon="-8.6110" height="0"/>
+  <vehicle id="lauv-sim-1"/>
+  <vehicle id="x8-02"/>
+  <plan id="survey" vehicle="lauv-sim-1" start="go">
+    <maneuvers>
+      <Goto id="go" lat="41.1409" lon="-8.6110" z="2" z_units="DEPTH" speed="1.5" speed_units="METERS_PS"/>
+      <Goto id="back" lat="41.1405" lon="-8.6110" z="0" z_units="DEPTH" speed="1.5" speed_units="METERS_PS"/>
+    </maneuvers>
+    <transition from="go" to="back"/>
+  </plan>
+  <plan id="other" vehicle="x8-02" start="up">
+    <maneuvers><Takeoff id="up" lat="41.14" lon="-8.61" z="100" z_units="HEIGHT" speed="17"/></maneuvers>
+  </plan>
+</mission>
+)X";
+
+struct Desk : ::testing::Test
+{
+    std::shared_ptr<const msg::Schema> schema = test::shippedSchema();
+    ManualClock clock{QDateTime::fromMSecsSinceEpoch(1'700'000'000'000, QTimeZone::UTC)};
+    tree::VariableTree tree{&clock};
+    alarms::AlarmGraph graph{&clock};
+    sim::SimulatedVehicle vehicle{schema, sim::SimulatedVehicle::Config{}};
+    double t = 0;
+    bool linkUp = true;
+    plans::PlanDesk desk{schema, tree, graph,
+                         [this](quint16 to, const msg::Message &m) -> std::expected<void, QString> {
+                             if (to != 0x1f)
+                                 return std::unexpected(u"no link"_s);
+                             msg::Message request = m;
+                             request.header.src = console;
+                             request.header.dst = to;
+                             if (linkUp)
+                                 for (const msg::Message &reply : vehicle.answer(request, t))
+                                     hear(reply);
+                             return {};
+                         },
+                         &clock};
+
+    Desk()
+    {
+        tree.setSystemName(0x1f, u"lauv-sim-1"_s);
+        auto m = mission::readMission(missionText, u"desk.xml"_s);
+        if (m)
+            desk.setMission(std::move(*m), u"desk.xml"_s);
+        else
+            ADD_FAILURE() << test::errorsText(m.error()).toStdString();
+    }
+    void hear(const msg::Message &m)
+    {
+        tree.ingest(m);
+        if (m.abbrev() == u"PlanDB" || m.abbrev() == u"PlanControl")
+            desk.receive(m);
+    }
+    void run(double seconds)
+    {
+        for (const double end = t + seconds; t < end;) {
+            const double previous = t;
+            t += 0.05;
+            for (const msg::Message &m : vehicle.step(previous, t, 1.7e9 + t))
+                hear(m);
+        }
+    }
+    QString lastLog() const
+    {
+        const QStringList log = desk.log(u"lauv-sim-1"_s);
+        return log.isEmpty() ? QString() : log.last().mid(10); // after "HH:mm:ss  "
+    }
+    alarms::Level planAlarm() const
+    {
+        const auto node = graph.find(u"systems/lauv-sim-1/plan"_s);
+        return node == alarms::AlarmGraph::noNode ? alarms::Unknown : graph.ownLevel(node);
+    }
+};
+
+} // namespace
+
+TEST_F(Desk, AMissionsPlansAreOfferedToTheirVehicles)
+{
+    QStringList ids;
+    for (const mission::Plan *p : desk.missionPlans(u"lauv-sim-1"_s))
+        ids << p->id;
+    EXPECT_EQ(ids, QStringList{u"survey"_s}) << "its own, not x8-02's";
+}
+
+TEST_F(Desk, StartWaitsForTheVehiclesCopyToBeTheMissions)
+{
+    EXPECT_FALSE(desk.fetched(u"lauv-sim-1"_s));
+    const auto early = desk.start(u"lauv-sim-1"_s, u"survey"_s);
+    ASSERT_FALSE(early);
+    EXPECT_TRUE(early.error().contains(u"has not said which plans it holds"_s)) << early.error().toStdString();
+    EXPECT_TRUE(desk.fetched(u"lauv-sim-1"_s)) << "asking fetched them";
+    const auto absent = desk.start(u"lauv-sim-1"_s, u"survey"_s);
+    ASSERT_FALSE(absent);
+    EXPECT_EQ(absent.error(), u"lauv-sim-1 does not hold survey: send it first"_s);
+
+    ASSERT_TRUE(desk.send(u"lauv-sim-1"_s, u"survey"_s));
+    EXPECT_EQ(desk.sync(u"lauv-sim-1"_s, u"survey"_s), plans::Sync::Same);
+    ASSERT_EQ(desk.storedPlans(u"lauv-sim-1"_s).size(), 1u);
+    EXPECT_EQ(desk.storedPlans(u"lauv-sim-1"_s)[0].id, u"survey"_s);
+
+    // Edited here after sending: refused until sent again.
+    mission::Mission edited = desk.mission();
+    edited.plans[0].maneuvers[0].set(u"speed"_s, 1.2);
+    desk.setMission(edited);
+    EXPECT_EQ(desk.sync(u"lauv-sim-1"_s, u"survey"_s), plans::Sync::Differs);
+    const auto differs = desk.start(u"lauv-sim-1"_s, u"survey"_s);
+    ASSERT_FALSE(differs);
+    EXPECT_TRUE(differs.error().contains(u"differs from the mission's"_s)) << differs.error().toStdString();
+    ASSERT_TRUE(desk.send(u"lauv-sim-1"_s, u"survey"_s));
+    EXPECT_EQ(desk.sync(u"lauv-sim-1"_s, u"survey"_s), plans::Sync::Same);
+
+    ASSERT_TRUE(desk.start(u"lauv-sim-1"_s, u"survey"_s));
+    EXPECT_EQ(lastLog(), u"START survey: plan started"_s);
+    EXPECT_TRUE(vehicle.plans().executing());
+    run(400);
+    EXPECT_FALSE(vehicle.plans().executing());
+    EXPECT_EQ(lastLog(), u"survey completed"_s);
+    EXPECT_EQ(planAlarm(), alarms::Info);
+    EXPECT_EQ(graph.message(graph.find(u"systems/lauv-sim-1/plan"_s)), u"plan survey completed"_s);
+}
+
+TEST_F(Desk, StopIsAnInfoAbortAWarningWithTheVehiclesReason)
+{
+    desk.refresh(u"lauv-sim-1"_s);
+    desk.send(u"lauv-sim-1"_s, u"survey"_s);
+    ASSERT_TRUE(desk.start(u"lauv-sim-1"_s, u"survey"_s));
+    run(5);
+    ASSERT_TRUE(desk.stop(u"lauv-sim-1"_s));
+    EXPECT_FALSE(vehicle.plans().executing());
+    EXPECT_TRUE(desk.log(u"lauv-sim-1"_s).join(u'\n').contains(u"survey ended: plan stopped"_s));
+    EXPECT_EQ(planAlarm(), alarms::Info);
+
+    ASSERT_TRUE(desk.start(u"lauv-sim-1"_s, u"survey"_s));
+    run(5);
+    ASSERT_TRUE(desk.abort(u"lauv-sim-1"_s));
+    EXPECT_FALSE(vehicle.plans().executing());
+    EXPECT_EQ(planAlarm(), alarms::Warning);
+    EXPECT_EQ(graph.message(graph.find(u"systems/lauv-sim-1/plan"_s)), u"plan survey failed: plan aborted by 0x4001"_s);
+    EXPECT_EQ(graph.activeAlarms().size(), 1u) << "a line in the alarm window";
+}
+
+TEST_F(Desk, SilenceAndUnknownSystemsAreSaid)
+{
+    desk.setTimeout(std::chrono::milliseconds(20));
+    EXPECT_EQ(desk.send(u"nobody"_s, u"survey"_s).error(), u"no system is called 'nobody'"_s);
+    EXPECT_EQ(desk.send(u"lauv-sim-1"_s, u"nothing"_s).error(), u"the mission has no plan 'nothing' for lauv-sim-1"_s);
+    linkUp = false;
+    ASSERT_TRUE(desk.refresh(u"lauv-sim-1"_s));
+    ASSERT_TRUE(QTest::qWaitFor([&] { return lastLog().contains(u"failed"_s); }, 3000));
+    EXPECT_TRUE(lastLog().contains(u"no answer from 0x001f after 3 tries"_s)) << lastLog().toStdString();
+}
