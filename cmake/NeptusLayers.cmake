@@ -18,7 +18,7 @@ set(NEPTUS_LAYERS
   "neptus-geo          geo         neptus-core"
   "neptus-mission-model mission    neptus-messages neptus-geo"
   "neptus-processor    processor   neptus-mission-model"
-  "neptus-plans        plans       neptus-mission-model neptus-alarms"
+  "neptus-plans        plans       neptus-mission-model neptus-scripting"
   "neptus-models       models      neptus-core"
   "neptus-model-reader models      neptus-models"
   "neptus-simulation   sim         neptus-messages neptus-geo neptus-plans"

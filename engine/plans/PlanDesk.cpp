@@ -12,15 +12,46 @@ constexpr qsizetype logLines = 200;
 } // namespace
 
 PlanDesk::PlanDesk(std::shared_ptr<const msg::Schema> schema, const tree::VariableTree &tree, alarms::AlarmGraph &graph,
-                   Sender send, const Clock *clock, QObject *parent)
+                   Sender send, Scripts scripts, const Clock *clock, QObject *parent)
     : QObject(parent)
     , m_schema(schema)
     , m_codec(schema)
     , m_tree(tree)
     , m_graph(graph)
     , m_send(std::move(send))
+    , m_scripts(std::move(scripts))
     , m_clock(clock)
 {
+    m_supervision.setInterval(1000);
+    connect(&m_supervision, &QTimer::timeout, this, &PlanDesk::supervise);
+}
+
+void PlanDesk::setHonoursConditions(const QString &system, bool honours)
+{
+    if (auto v = vehicle(system))
+        (*v)->honours = honours;
+}
+
+bool PlanDesk::supervising(const QString &system) const
+{
+    const Vehicle *v = known(system);
+    return v && v->supervisor && !v->supervisor->finished();
+}
+
+void PlanDesk::supervise()
+{
+    bool any = false;
+    for (auto &[id, v] : m_vehicles) {
+        if (!v.supervisor)
+            continue;
+        v.supervisor->check();
+        if (v.supervisor->finished())
+            v.supervisor.reset();
+        else
+            any = true;
+    }
+    if (!any)
+        m_supervision.stop();
 }
 
 std::expected<void, QString> PlanDesk::openMission(const QString &path)
@@ -191,6 +222,22 @@ std::expected<void, QString> PlanDesk::start(const QString &system, const QStrin
     auto v = vehicle(system);
     if (!v)
         return std::unexpected(v.error());
+    // Conditions the vehicle would ignore: carried out from here.
+    const mission::Plan *conditional = nullptr;
+    for (const mission::Plan *p : missionPlans(system))
+        if (p->id == planId && Supervisor::needed(*p) && !(*v)->honours)
+            conditional = p;
+    if (conditional) {
+        const quint16 id = (*v)->client->vehicle();
+        (*v)->supervisor = std::make_unique<Supervisor>(*(*v)->client, m_tree, m_scripts ? m_scripts() : nullptr, m_graph,
+                                                        m_mission, *conditional, m_schema,
+                                                        [this, id](const QString &line) { note(id, line); }, m_clock);
+        auto begun = (*v)->supervisor->begin();
+        if (!begun)
+            return std::unexpected(begun.error());
+        m_supervision.start();
+        return {};
+    }
     if (!(*v)->fetched) {
         refresh(system);
         return std::unexpected(u"%1 has not said which plans it holds yet: try again in a moment"_s.arg(system));
@@ -213,6 +260,7 @@ std::expected<void, QString> PlanDesk::stop(const QString &system)
     auto v = vehicle(system);
     if (!v)
         return std::unexpected(v.error());
+    (*v)->supervisor.reset();
     note((*v)->client->vehicle(), u"stopping"_s);
     (*v)->client->stop();
     return {};
@@ -224,6 +272,7 @@ std::expected<void, QString> PlanDesk::abort(const QString &system)
     if (!v)
         return std::unexpected(v.error());
     const quint16 id = (*v)->client->vehicle();
+    (*v)->supervisor.reset();
     note(id, u"sending Abort"_s);
     if (auto sent = m_send(id, msg::Message(m_schema->byAbbrev(u"Abort"))); !sent) {
         note(id, u"Abort not sent: "_s + sent.error());
@@ -280,6 +329,13 @@ void PlanDesk::replied(quint16 id, const PlanClient::Reply &r)
 
 void PlanDesk::ended(quint16 id, const QString &planId, bool ok, const QString &info)
 {
+    Vehicle &v = m_vehicles[id];
+    if (v.supervisor) {
+        v.supervisor->ended(planId, ok, info);
+        // A stretch replaced by the next is not the plan's end.
+        if (!ok && info.contains(u"started"_s))
+            return;
+    }
     const QString name = m_tree.systemName(id);
     const bool stoppedHere = !ok && info.contains(u"stopped"_s);
     note(id, ok ? u"%1 completed"_s.arg(planId) : u"%1 ended: %2"_s.arg(planId, info));

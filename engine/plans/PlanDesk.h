@@ -5,9 +5,11 @@
 #include "mission/Mission.h"
 #include "plans/PlanClient.h"
 #include "plans/PlanDatabase.h"
+#include "plans/Supervisor.h"
 #include "tree/VariableTree.h"
 
 #include <QObject>
+#include <QTimer>
 
 #include <expected>
 #include <functional>
@@ -25,13 +27,18 @@ namespace neptus::plans {
 // sends it first. Every command, reply and end of a plan is a line of the
 // vehicle's log; a plan's end is also an event on the alarm node
 // "systems/<vehicle>/plan" (Warning when it failed, with the vehicle's
-// reason; Info when it completed or this console stopped it).
+// reason; Info when it completed or this console stopped it). A plan with
+// conditions on its transitions is carried out by a Supervisor, one stretch
+// at a time, unless the vehicle is known to honour conditions itself.
+// Since DUNE ignores them, by default every vehicle is supervised.
 class PlanDesk : public QObject
 {
     Q_OBJECT
 
 public:
     using Sender = std::function<std::expected<void, QString>(quint16 system, const msg::Message &message)>;
+    // The console's script host, made on first use (conditions run there).
+    using Scripts = std::function<scripting::ScriptHost *()>;
 
     struct StoredPlan
     {
@@ -42,7 +49,7 @@ public:
     };
 
     PlanDesk(std::shared_ptr<const msg::Schema> schema, const tree::VariableTree &tree, alarms::AlarmGraph &graph,
-             Sender send, const Clock *clock = &Clock::system(), QObject *parent = nullptr);
+             Sender send, Scripts scripts = {}, const Clock *clock = &Clock::system(), QObject *parent = nullptr);
 
     // The mission whose plans are offered; an error names the file and line.
     std::expected<void, QString> openMission(const QString &path);
@@ -72,6 +79,13 @@ public:
 
     // A PlanDB or PlanControl from the links (Console::planMessageReceived).
     void receive(const msg::Message &message);
+    // A vehicle whose plan engine evaluates transition conditions itself
+    // gets conditional plans whole (the simulator in its default mode).
+    void setHonoursConditions(const QString &system, bool honours);
+    // Whether a plan of this vehicle's runs under supervision now.
+    bool supervising(const QString &system) const;
+    // Supervisors look at their vehicles and decide (a timer does it every second).
+    void supervise();
     // Replies come within this or are asked again (tests shorten it).
     void setTimeout(std::chrono::milliseconds timeout) { m_timeout = timeout; }
 
@@ -87,6 +101,8 @@ private:
         bool fetched = false;
         std::map<QString, mission::Plan> copies; // its plans, fetched with GET
         QStringList log;
+        bool honours = false;
+        std::unique_ptr<Supervisor> supervisor;
     };
 
     std::expected<Vehicle *, QString> vehicle(const QString &system);
@@ -102,7 +118,9 @@ private:
     const tree::VariableTree &m_tree;
     alarms::AlarmGraph &m_graph;
     Sender m_send;
+    Scripts m_scripts;
     const Clock *m_clock;
+    QTimer m_supervision;
     mission::Mission m_mission;
     QString m_missionPath;
     std::map<quint16, Vehicle> m_vehicles;

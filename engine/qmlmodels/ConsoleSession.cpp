@@ -10,7 +10,8 @@ ConsoleSession::ConsoleSession(std::shared_ptr<const msg::Schema> schema, const 
     : QObject(parent)
     , m_console(std::move(schema), clock)
     , m_planDesk(m_console.sharedSchema(), m_console.tree(), m_console.alarmGraph(),
-                 [this](quint16 system, const msg::Message &message) { return m_console.send(system, message); }, clock)
+                 [this](quint16 system, const msg::Message &message) { return m_console.send(system, message); },
+                 [this] { return m_console.scripts(); }, clock)
 {
     connect(&m_console, &session::Console::planMessageReceived, &m_planDesk, &plans::PlanDesk::receive);
 }

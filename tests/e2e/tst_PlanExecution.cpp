@@ -7,6 +7,7 @@
 #include "mission/MissionXml.h"
 #include "plans/PlanClient.h"
 #include "plans/PlanDatabase.h"
+#include "plans/PlanDesk.h"
 #include "session/Console.h"
 
 #include "Missions.h"
@@ -155,4 +156,72 @@ TEST(PlanExecution, AUsvOverDdsRunsGotoLoiterRowsToTheEnd)
                    u"--kind"_s, u"asv"_s, u"--port"_s, u"16121"_s, u"--time-factor"_s, u"30"_s});
     ASSERT_TRUE(QTest::qWaitFor([&] { return heard(console.tree(), u"caravela-sim"_s); }, 20000));
     runPlan(console, 0x42, u"caravela-sim"_s, missionFor("caravela-sim", 0, "DEPTH"));
+}
+
+// A vehicle that takes only the first transition (as DUNE does) is given a
+// plan whose second maneuver may start only when another vehicle is within
+// 50 m of a mark: the console carries it out, stretch by stretch. The other
+// vehicle (over DDS) gets there by a plan of its own, later.
+TEST(PlanExecution, AConditionalTransitionIsCarriedOutByTheConsoleForAFirstTransitionVehicle)
+{
+    test::SimProcess auv, usv;
+    auv.start({u"--id"_s, u"0x1f"_s, u"--name"_s, u"lauv-sim-1"_s, u"--port"_s, u"16122"_s, u"--time-factor"_s, u"30"_s,
+               u"--transitions"_s, u"first"_s});
+    session::Console console(test::shippedSchema());
+    transport::ImcUdpConfig config;
+    config.port = 0;
+    config.discoveryPort = 0;
+    config.heartbeatMs = 200;
+    config.destinations = {{QHostAddress::LocalHost, 16122}};
+    ASSERT_TRUE(console.startImc(config));
+    ASSERT_TRUE(console.startDds({11, {}, 0x4001}));
+    usv.start({u"--dds"_s, u"--dds-domain"_s, u"11"_s, u"--id"_s, u"0x42"_s, u"--name"_s, u"caravela-sim"_s,
+               u"--kind"_s, u"asv"_s, u"--port"_s, u"16123"_s, u"--time-factor"_s, u"30"_s});
+    ASSERT_TRUE(QTest::qWaitFor([&] { return heard(console.tree(), u"lauv-sim-1"_s) && heard(console.tree(), u"caravela-sim"_s); }, 20000));
+
+    plans::PlanDesk desk(test::shippedSchema(), console.tree(), console.alarmGraph(),
+                         [&](quint16 id, const msg::Message &m) { return console.send(id, m); },
+                         [&] { return console.scripts(); });
+    QObject::connect(&console, &session::Console::planMessageReceived, &desk, &plans::PlanDesk::receive);
+    auto mission = mission::readMission(QByteArrayLiteral(R"X(<?xml version="1.0" encoding="UTF-8"?>
+<mission format="1" id="meet" name="Meet at the buoy">
+  <home lat="41.1405" lon="-8.6110" height="0"/>
+  <vehicle id="lauv-sim-1"/>
+  <vehicle id="caravela-sim"/>
+  <map id="m"><mark id="buoy" lat="41.1400" lon="-8.6100"/></map>
+  <plan id="meet" vehicle="lauv-sim-1" start="out">
+    <maneuvers>
+      <Goto id="out" lat="41.1410" lon="-8.6110" z="0" z_units="DEPTH" speed="1.5" speed_units="METERS_PS"/>
+      <Goto id="dive" lat="41.1412" lon="-8.6105" z="3" z_units="DEPTH" speed="1.5" speed_units="METERS_PS"/>
+    </maneuvers>
+    <transition from="out" to="dive" condition="distance(&quot;caravela-sim&quot;, &quot;buoy&quot;) &lt; 50"/>
+  </plan>
+  <plan id="later" vehicle="caravela-sim" start="away">
+    <maneuvers>
+      <StationKeeping id="away" lat="41.1390" lon="-8.6125" z="0" z_units="DEPTH" speed="2" speed_units="METERS_PS" duration="300" radius="10"/>
+      <Goto id="buoy" lat="41.1400" lon="-8.6100" z="0" z_units="DEPTH" speed="2" speed_units="METERS_PS"/>
+    </maneuvers>
+    <transition from="away" to="buoy"/>
+  </plan>
+</mission>
+)X"), u"meet.xml"_s);
+    ASSERT_TRUE(mission) << test::errorsText(mission.error()).toStdString();
+    desk.setMission(*mission);
+    const QString auvName = u"lauv-sim-1"_s;
+    const auto log = [&] { return desk.log(auvName).join(u'\n'); };
+    ASSERT_TRUE(desk.start(auvName, u"meet"_s));
+    ASSERT_TRUE(QTest::qWaitFor([&] { return log().contains(u"out done: waiting for"_s); }, 30000)) << log().toStdString();
+
+    // The other vehicle: held away for 300 simulated seconds, then to the buoy.
+    ASSERT_TRUE(desk.refresh(u"caravela-sim"_s));
+    ASSERT_TRUE(QTest::qWaitFor([&] { return desk.fetched(u"caravela-sim"_s); }, 10000));
+    ASSERT_TRUE(desk.send(u"caravela-sim"_s, u"later"_s));
+    ASSERT_TRUE(QTest::qWaitFor([&] { return desk.sync(u"caravela-sim"_s, u"later"_s) == plans::Sync::Same; }, 10000));
+    ASSERT_TRUE(desk.start(u"caravela-sim"_s, u"later"_s));
+    QTest::qWait(3000); // 90 simulated seconds: the other vehicle is still away
+    EXPECT_FALSE(log().contains(u"decided"_s)) << log().toStdString();
+
+    ASSERT_TRUE(QTest::qWaitFor([&] { return log().contains(u"meet completed (supervised)"_s); }, 40000)) << log().toStdString();
+    EXPECT_TRUE(log().contains(u"decided out → dive: distance(\"caravela-sim\", \"buoy\") < 50 (distance(\"caravela-sim\", \"buoy\") = "_s))
+        << log().toStdString();
 }

@@ -30,12 +30,24 @@ const char *const missionText = R"X(<?xml version="1.0" encoding="UTF-8"?>
   <home lat="41.1405" lon="-8.6110" height="0"/>
   <vehicle id="lauv-sim-1"/>
   <vehicle id="x8-02"/>
+  <map id="m">
+    <mark id="buoy" name="Buoy" lat="41.1409" lon="-8.6115"/>
+  </map>
   <plan id="survey" vehicle="lauv-sim-1" start="go">
     <maneuvers>
       <Goto id="go" lat="41.1409" lon="-8.6110" z="2" z_units="DEPTH" speed="1.5" speed_units="METERS_PS"/>
       <Goto id="back" lat="41.1405" lon="-8.6110" z="0" z_units="DEPTH" speed="1.5" speed_units="METERS_PS"/>
     </maneuvers>
     <transition from="go" to="back"/>
+  </plan>
+  <plan id="choice" vehicle="lauv-sim-1" start="a">
+    <maneuvers>
+      <Goto id="a" lat="41.1407" lon="-8.6110" z="0" z_units="DEPTH" speed="1.5" speed_units="METERS_PS"/>
+      <Goto id="b" lat="41.1409" lon="-8.6112" z="0" z_units="DEPTH" speed="1.5" speed_units="METERS_PS"/>
+      <Goto id="c" lat="41.1407" lon="-8.6114" z="0" z_units="DEPTH" speed="1.5" speed_units="METERS_PS"/>
+    </maneuvers>
+    <transition from="a" to="b" condition="distance(&quot;caravela-sim&quot;, &quot;buoy&quot;) &lt; 50"/>
+    <transition from="b" to="c"/>
   </plan>
   <plan id="other" vehicle="x8-02" start="up">
     <maneuvers><Takeoff id="up" lat="41.14" lon="-8.61" z="100" z_units="HEIGHT" speed="17"/></maneuvers>
@@ -49,6 +61,7 @@ struct Desk : ::testing::Test
     ManualClock clock{QDateTime::fromMSecsSinceEpoch(1'700'000'000'000, QTimeZone::UTC)};
     tree::VariableTree tree{&clock};
     alarms::AlarmGraph graph{&clock};
+    scripting::ScriptHost scripts{tree, graph};
     sim::SimulatedVehicle vehicle{schema, sim::SimulatedVehicle::Config{}};
     double t = 0;
     bool linkUp = true;
@@ -64,11 +77,13 @@ struct Desk : ::testing::Test
                                      hear(reply);
                              return {};
                          },
-                         &clock};
+                         [this] { return &scripts; }, &clock};
 
     Desk()
     {
+        scripts.setFrameInterval(0);
         tree.setSystemName(0x1f, u"lauv-sim-1"_s);
+        tree.setSystemName(0x20, u"caravela-sim"_s);
         auto m = mission::readMission(missionText, u"desk.xml"_s);
         if (m)
             desk.setMission(std::move(*m), u"desk.xml"_s);
@@ -81,14 +96,30 @@ struct Desk : ::testing::Test
         if (m.abbrev() == u"PlanDB" || m.abbrev() == u"PlanControl")
             desk.receive(m);
     }
+    // Simulated time on; conditions and supervision once a simulated second, as the console's timers do.
     void run(double seconds)
     {
         for (const double end = t + seconds; t < end;) {
             const double previous = t;
             t += 0.05;
+            clock.advance(50);
             for (const msg::Message &m : vehicle.step(previous, t, 1.7e9 + t))
                 hear(m);
+            if (std::floor(t) > std::floor(previous)) {
+                scripts.runPending();
+                desk.supervise();
+            }
         }
+    }
+    // The other vehicle, `north` metres north of the buoy.
+    void other(double north)
+    {
+        msg::Message s(schema->byAbbrev(u"EstimatedState"));
+        s.header.src = 0x20;
+        s.setNumber(s.def()->indexOf(u"lat"), 41.1409 * M_PI / 180);
+        s.setNumber(s.def()->indexOf(u"lon"), -8.6115 * M_PI / 180);
+        s.setNumber(s.def()->indexOf(u"x"), north);
+        tree.ingest(s);
     }
     QString lastLog() const
     {
@@ -109,7 +140,7 @@ TEST_F(Desk, AMissionsPlansAreOfferedToTheirVehicles)
     QStringList ids;
     for (const mission::Plan *p : desk.missionPlans(u"lauv-sim-1"_s))
         ids << p->id;
-    EXPECT_EQ(ids, QStringList{u"survey"_s}) << "its own, not x8-02's";
+    EXPECT_EQ(ids, (QStringList{u"survey"_s, u"choice"_s})) << "its own, not x8-02's";
 }
 
 TEST_F(Desk, StartWaitsForTheVehiclesCopyToBeTheMissions)
@@ -178,4 +209,63 @@ TEST_F(Desk, SilenceAndUnknownSystemsAreSaid)
     ASSERT_TRUE(desk.refresh(u"lauv-sim-1"_s));
     ASSERT_TRUE(QTest::qWaitFor([&] { return lastLog().contains(u"failed"_s); }, 3000));
     EXPECT_TRUE(lastLog().contains(u"no answer from 0x001f after 3 tries"_s)) << lastLog().toStdString();
+}
+
+TEST(Supervisor, APlanIsCutWhereConditionsAre)
+{
+    auto m = mission::readMission(missionText, u"desk.xml"_s);
+    ASSERT_TRUE(m);
+    const mission::Plan *survey = &m->plans[0], *choice = &m->plans[1];
+    EXPECT_FALSE(plans::Supervisor::needed(*survey));
+    EXPECT_EQ(plans::Supervisor::stretch(*survey, u"go"_s), (QStringList{u"go"_s, u"back"_s}));
+    EXPECT_TRUE(plans::Supervisor::needed(*choice));
+    EXPECT_EQ(plans::Supervisor::stretch(*choice, u"a"_s), QStringList{u"a"_s}) << "a condition ends a stretch";
+    EXPECT_EQ(plans::Supervisor::stretch(*choice, u"b"_s), (QStringList{u"b"_s, u"c"_s}));
+}
+
+// A DUNE-like vehicle (first transition only) given a conditional plan: the
+// console sends it a stretch at a time, keeps it waiting until the other
+// vehicle is within 50 m of the buoy, then sends the rest.
+TEST_F(Desk, AConditionalPlanIsCarriedOutByTheConsoleForAFirstTransitionVehicle)
+{
+    vehicle.plans().setTransitions(sim::PlanEngine::Transitions::FirstOnly);
+    other(200);
+    ASSERT_TRUE(desk.start(u"lauv-sim-1"_s, u"choice"_s)) << "no need to send it first: stretches go whole";
+    EXPECT_TRUE(desk.supervising(u"lauv-sim-1"_s));
+    run(120);
+    EXPECT_EQ(vehicle.plans().currentManeuver(), u"wait"_s) << "a done, the vehicle waits for the condition";
+    const QString log = desk.log(u"lauv-sim-1"_s).join(u'\n');
+    EXPECT_TRUE(log.contains(u"starting choice.1: a → wait"_s)) << log.toStdString();
+    EXPECT_TRUE(log.contains(u"a done: waiting for distance(\"caravela-sim\", \"buoy\") < 50 (→ b)"_s)) << log.toStdString();
+    EXPECT_FALSE(log.contains(u"decided"_s));
+
+    other(30);
+    run(3);
+    const QString decided = desk.log(u"lauv-sim-1"_s).join(u'\n');
+    EXPECT_TRUE(decided.contains(u"decided a → b: distance(\"caravela-sim\", \"buoy\") < 50 (distance(\"caravela-sim\", \"buoy\") = 30.0 m, position heard"_s))
+        << decided.toStdString();
+    EXPECT_TRUE(decided.contains(u"starting choice.2: b → c"_s)) << decided.toStdString();
+    run(200);
+    EXPECT_FALSE(vehicle.plans().executing());
+    EXPECT_TRUE(desk.log(u"lauv-sim-1"_s).join(u'\n').contains(u"choice completed (supervised)"_s))
+        << desk.log(u"lauv-sim-1"_s).join(u'\n').toStdString();
+    EXPECT_FALSE(desk.supervising(u"lauv-sim-1"_s));
+    if (qEnvironmentVariableIsSet("NEPTUS_SHOW_LOG"))
+        std::printf("%s\n", qPrintable(desk.log(u"lauv-sim-1"_s).join(u'\n')));
+}
+
+TEST_F(Desk, AConditionThatFailsIsSaidAndTheVehicleWaits)
+{
+    mission::Mission broken = desk.mission();
+    broken.plans[1].transitions[0].condition = u"sys[\"caravela-sim\"].EstimatedState.depth <"_s;
+    desk.setMission(broken);
+    vehicle.plans().setTransitions(sim::PlanEngine::Transitions::FirstOnly);
+    ASSERT_TRUE(desk.start(u"lauv-sim-1"_s, u"choice"_s));
+    run(120);
+    EXPECT_EQ(vehicle.plans().currentManeuver(), u"wait"_s);
+    const QString log = desk.log(u"lauv-sim-1"_s).join(u'\n');
+    EXPECT_TRUE(log.contains(u"fails"_s)) << log.toStdString();
+    EXPECT_TRUE(desk.supervising(u"lauv-sim-1"_s));
+    ASSERT_TRUE(desk.stop(u"lauv-sim-1"_s));
+    EXPECT_FALSE(desk.supervising(u"lauv-sim-1"_s));
 }
