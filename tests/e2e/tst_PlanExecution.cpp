@@ -61,8 +61,10 @@ struct Replies
     }
 };
 
-// Sends a plan, checks it is held, starts it and follows it to its end.
-void runPlan(session::Console &console, quint16 id, const QString &name, const QByteArray &mission)
+// Sends a plan, checks it is held, starts it and follows it to its end;
+// `watcher`, another console, sees it run too (from the vehicle's reports).
+void runPlan(session::Console &console, quint16 id, const QString &name, const QByteArray &mission,
+             session::Console *watcher = nullptr)
 {
     const auto schema = test::shippedSchema();
     auto m = mission::readMission(mission, u"e2e.xml"_s);
@@ -118,6 +120,15 @@ void runPlan(session::Console &console, quint16 id, const QString &name, const Q
         return ended.has_value();
     }, 40000)) << "maneuvers seen: " << QStringList(maneuvers.begin(), maneuvers.end()).join(u", "_s).toStdString();
     EXPECT_EQ(maneuvers, (std::vector<QString>{u"go"_s, u"circle"_s, u"rows"_s}));
+    if (watcher) {
+        const tree::VariableTree &other = watcher->tree();
+        const auto seen = [&](const char *field) {
+            const tree::NodeId node = other.find(name + u"/PlanControlState/"_s + QLatin1StringView(field));
+            return node == tree::noNode ? QString() : other.snapshot(node).text;
+        };
+        EXPECT_EQ(seen("plan_id"), u"survey"_s) << "the second console knows which plan runs";
+        EXPECT_TRUE(QTest::qWaitFor([&] { return seen("last_outcome") == u"SUCCESS"; }, 5000)) << "and how it ended";
+    }
     EXPECT_GT(progress, 50);
     EXPECT_TRUE(ended->first);
     EXPECT_EQ(ended->second, u"plan completed"_s);
@@ -132,7 +143,7 @@ bool heard(const tree::VariableTree &tree, const QString &system)
 
 } // namespace
 
-TEST(PlanExecution, AnAuvOverImcRunsGotoLoiterRowsToTheEnd)
+TEST(PlanExecution, AnAuvOverImcRunsGotoLoiterRowsToTheEndWhileASecondConsoleWatches)
 {
     test::SimProcess vehicle;
     vehicle.start({u"--id"_s, u"0x1f"_s, u"--name"_s, u"lauv-sim-1"_s, u"--port"_s, u"16120"_s, u"--time-factor"_s, u"30"_s});
@@ -141,10 +152,11 @@ TEST(PlanExecution, AnAuvOverImcRunsGotoLoiterRowsToTheEnd)
     config.discoveryPort = 0;
     config.heartbeatMs = 200;
     config.destinations = {{QHostAddress::LocalHost, 16120}};
-    session::Console console(test::shippedSchema());
+    session::Console console(test::shippedSchema()), watcher(test::shippedSchema());
     ASSERT_TRUE(console.startImc(config));
-    ASSERT_TRUE(QTest::qWaitFor([&] { return heard(console.tree(), u"lauv-sim-1"_s); }, 15000));
-    runPlan(console, 0x1f, u"lauv-sim-1"_s, missionFor("lauv-sim-1", 2, "DEPTH"));
+    ASSERT_TRUE(watcher.startImc(config));
+    ASSERT_TRUE(QTest::qWaitFor([&] { return heard(console.tree(), u"lauv-sim-1"_s) && heard(watcher.tree(), u"lauv-sim-1"_s); }, 15000));
+    runPlan(console, 0x1f, u"lauv-sim-1"_s, missionFor("lauv-sim-1", 2, "DEPTH"), &watcher);
 }
 
 TEST(PlanExecution, AUsvOverDdsRunsGotoLoiterRowsToTheEnd)
