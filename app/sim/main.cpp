@@ -63,8 +63,13 @@ int main(int argc, char *argv[])
     const QCommandLineOption console(QStringLiteral("console"), QStringLiteral("A console to announce to, host:port (repeatable)."), QStringLiteral("host:port"));
     const QCommandLineOption announcePort(QStringLiteral("announce-port"), QStringLiteral("Also announce to this port on 127.0.0.1 (IMC discovery uses 30100)."), QStringLiteral("port"));
     const QCommandLineOption phase(QStringLiteral("phase"), QStringLiteral("Start angle on the track, degrees."), QStringLiteral("degrees"), QStringLiteral("0"));
-    const QCommandLineOption fault(QStringLiteral("fault"), QStringLiteral("battery-low or motor-jammed (repeatable)."), QStringLiteral("fault"));
-    const QCommandLineOption drop(QStringLiteral("comms-drop"), QStringLiteral("Say nothing from second START for DURATION seconds."), QStringLiteral("START:DURATION"));
+    const QCommandLineOption fault(QStringLiteral("fault"),
+        QStringLiteral("A fault: %1; from the start, or @SECONDS after it, for :SECONDS (navigation-loss@60:20). "
+                       "Repeatable. At run time: SetEntityParameters to entity Simulation, parameter Fault = "
+                       "battery-drain, comms-loss:20 (for 20 s) or none.")
+            .arg(sim::SimulatedVehicle::faultNames().join(QStringLiteral(", "))),
+        QStringLiteral("fault[@start[:duration]]"));
+    const QCommandLineOption drop(QStringLiteral("comms-drop"), QStringLiteral("Say nothing from second START for DURATION seconds (--fault comms-loss@START:DURATION)."), QStringLiteral("START:DURATION"));
     const QCommandLineOption defs(QStringLiteral("defs"), QStringLiteral("Message definition file (repeatable; default msgdefs/)."), QStringLiteral("file"));
     const QCommandLineOption dds(QStringLiteral("dds"), QStringLiteral("Also publish over Cyclone DDS (loopback configuration)."));
     const QCommandLineOption domain(QStringLiteral("dds-domain"), QStringLiteral("DDS domain id (default 0)."), QStringLiteral("id"), QStringLiteral("0"));
@@ -119,19 +124,18 @@ int main(int argc, char *argv[])
                          .arg(parser.value(host)));
     config.phase = parser.value(phase).toDouble() * 3.14159265358979 / 180;
     config.services = QStringLiteral("imc+udp://%1:%2/").arg(address.toString()).arg(portValue);
-    int faults = 0;
+    std::vector<sim::SimulatedVehicle::TimedFault> faults;
     for (const QString &f : parser.values(fault)) {
-        if (f == u"battery-low") faults |= sim::SimulatedVehicle::BatteryLow;
-        else if (f == u"motor-jammed") faults |= sim::SimulatedVehicle::MotorJammed;
-        else return usage(QStringLiteral("--fault must be battery-low or motor-jammed, not '%1'").arg(f));
+        auto timed = sim::SimulatedVehicle::parseFault(f);
+        if (!timed)
+            return usage(QStringLiteral("--fault: ") + timed.error());
+        faults.push_back(*timed);
     }
-    double dropStart = -1, dropLength = 0;
     if (parser.isSet(drop)) {
-        const QStringList parts = parser.value(drop).split(u':');
-        if (parts.size() != 2)
+        auto timed = sim::SimulatedVehicle::parseFault(QStringLiteral("comms-loss@") + parser.value(drop));
+        if (!timed || parser.value(drop).count(u':') != 1)
             return usage(QStringLiteral("--comms-drop must look like 30:10"));
-        dropStart = parts[0].toDouble();
-        dropLength = parts[1].toDouble();
+        faults.push_back(*timed);
     }
     QList<std::pair<QHostAddress, quint16>> announceTo;
     for (const QString &c : parser.values(console)) {
@@ -152,7 +156,8 @@ int main(int argc, char *argv[])
     const bool likeDune = parser.isSet(dune);
     config.periodicEntityList = !likeDune;
     sim::SimulatedVehicle vehicle(*schema, config);
-    vehicle.setFaults(faults);
+    for (const auto &f : faults)
+        vehicle.scheduleFault(f);
     vehicle.setTimeFactor(factor);
     if (likeDune || transitionMode == u"first")
         vehicle.plans().setTransitions(sim::PlanEngine::Transitions::FirstOnly);
@@ -280,11 +285,8 @@ int main(int argc, char *argv[])
     QTimer timer;
     QObject::connect(&timer, &QTimer::timeout, [&] {
         const double t = clock.elapsed() / 1000.0;
-        const bool silent = dropStart >= 0 && t >= dropStart && t < dropStart + dropLength;
         const auto messages = vehicle.step(previous, t, QDateTime::currentMSecsSinceEpoch() / 1000.0);
         previous = t;
-        if (silent)
-            return;
         if (ddsLink)
             ddsLink->broadcast(messages);
         for (const msg::Message &m : messages) {

@@ -9,6 +9,13 @@ namespace {
 constexpr quint8 navigationEntity = 1;
 constexpr quint8 motorEntity = 2;
 constexpr quint8 batteryEntity = 3;
+constexpr quint8 payloadEntity = 4;
+
+const std::pair<SimulatedVehicle::Fault, const char *> faultTable[] = {
+    {SimulatedVehicle::BatteryLow, "battery-low"},         {SimulatedVehicle::MotorJammed, "motor-jammed"},
+    {SimulatedVehicle::BatteryDrain, "battery-drain"},     {SimulatedVehicle::NavigationLoss, "navigation-loss"},
+    {SimulatedVehicle::PayloadFailure, "payload-failure"}, {SimulatedVehicle::CommsLoss, "comms-loss"},
+};
 
 // Did a period boundary fall in (previous, t]?
 bool due(double previous, double t, double period)
@@ -36,6 +43,52 @@ SimulatedVehicle::SimulatedVehicle(std::shared_ptr<const msg::Schema> schema, Co
 {
 }
 
+std::optional<SimulatedVehicle::Fault> SimulatedVehicle::faultNamed(QStringView name)
+{
+    for (const auto &[fault, text] : faultTable)
+        if (name == QLatin1StringView(text))
+            return fault;
+    return std::nullopt;
+}
+
+QStringList SimulatedVehicle::faultNames()
+{
+    QStringList names;
+    for (const auto &[fault, text] : faultTable)
+        names << QString::fromLatin1(text);
+    return names;
+}
+
+std::expected<SimulatedVehicle::TimedFault, QString> SimulatedVehicle::parseFault(const QString &text)
+{
+    const qsizetype at = text.indexOf(u'@');
+    const auto fault = faultNamed(QStringView(text).left(at < 0 ? text.size() : at));
+    if (!fault)
+        return std::unexpected(QStringLiteral("'%1' is not a fault (%2)").arg(text, faultNames().join(QStringLiteral(", "))));
+    TimedFault timed{*fault, 0, 0};
+    if (at >= 0) {
+        const QStringList when = text.mid(at + 1).split(u':');
+        bool ok = when.size() <= 2;
+        timed.start = when.value(0).toDouble(&ok);
+        bool durationOk = true;
+        if (when.size() == 2)
+            timed.duration = when[1].toDouble(&durationOk);
+        if (!ok || !durationOk || timed.start < 0 || timed.duration < 0 || when.size() > 2)
+            return std::unexpected(QStringLiteral("'%1': after @ give seconds from the start, and :seconds it lasts "
+                                                  "(navigation-loss@60:20)").arg(text));
+    }
+    return timed;
+}
+
+int SimulatedVehicle::faultsAt(double t) const
+{
+    int faults = m_faults;
+    for (const TimedFault &f : m_schedule)
+        if (t >= f.start && (f.duration <= 0 || t < f.start + f.duration))
+            faults |= f.fault;
+    return faults;
+}
+
 SimulatedVehicle::Pose SimulatedVehicle::pose(double t) const
 {
     const double omega = m_config.speedMps / m_config.radiusM;
@@ -59,7 +112,7 @@ msg::Message SimulatedVehicle::make(const char *abbrev, double wallTime, quint8 
 msg::Message SimulatedVehicle::estimatedState(double t, double wallTime) const
 {
     Pose p = pose(t);
-    double speed = m_faults & MotorJammed ? 0 : m_config.speedMps;
+    double speed = faultsAt(m_now) & MotorJammed ? 0 : m_config.speedMps;
     if (m_driven) {
         p = {m_motion.ned.x(), m_motion.ned.y(), m_motion.ned.z(), m_motion.psi};
         speed = m_motion.speed;
@@ -85,6 +138,12 @@ msg::Message SimulatedVehicle::estimatedState(double t, double wallTime) const
 std::vector<msg::Message> SimulatedVehicle::step(double previous, double t, double wallTime)
 {
     std::vector<msg::Message> out;
+    m_now = t;
+    const int faults = faultsAt(t);
+    if (faults & BatteryDrain && m_drainFrom < 0)
+        m_drainFrom = t;
+    if (!(faults & BatteryDrain))
+        m_drainFrom = -1;
     if (!m_driven && m_plans.executing()) { // the first plan takes it from where it is on its circle
         const Pose p = pose(std::max(previous, 0.0));
         m_motion.ned = {p.x, p.y, p.z};
@@ -97,25 +156,33 @@ std::vector<msg::Message> SimulatedVehicle::step(double previous, double t, doub
         const double simulated = (t - previous) * m_timeFactor;
         for (double done = 0; done < simulated;) {
             const double dt = std::min(0.1, simulated - done);
-            for (msg::Message &m : m_plans.advance(m_motion, m_faults & MotorJammed ? 0 : dt, wallTime))
+            for (msg::Message &m : m_plans.advance(m_motion, faults & MotorJammed ? 0 : dt, wallTime))
                 out.push_back(std::move(m));
             done += dt;
         }
     }
-    if (due(previous, t, 0.1))
+    if (faults & CommsLoss)
+        return {}; // it moves on, saying nothing
+    if (due(previous, t, 0.1) && !(faults & NavigationLoss))
         out.push_back(estimatedState(t, wallTime));
     if (due(previous, t, 1.0)) {
         out.push_back(make("Heartbeat", wallTime));
         out.push_back(m_plans.controlState(wallTime));
         out.push_back(m_plans.maneuverState(wallTime));
         out.push_back(m_plans.vehicleState(wallTime));
-        const bool batteryLow = m_faults & BatteryLow;
-        const bool jammed = m_faults & MotorJammed;
+        const bool jammed = faults & MotorJammed;
+        const bool lost = faults & NavigationLoss;
+        const bool payload = faults & PayloadFailure;
+        const double volts = faults & BatteryLow ? 21.2
+                             : m_drainFrom >= 0 ? std::max(18.0, 24.6 - 0.001 * t - 0.05 * m_timeFactor * (t - m_drainFrom))
+                                                : 24.6 - 0.001 * t;
+        const int battery = volts < 21 ? 3 : volts < 22 ? 2 : 1;
         struct Entity { quint8 id; int state; const char *description; };
         const Entity entities[] = {
-            {navigationEntity, 1, "active"},
+            {navigationEntity, lost ? 3 : 1, lost ? "navigation lost: no position fix" : "active"},
             {motorEntity, jammed ? 3 : 1, jammed ? "motor jammed" : "active"},
-            {batteryEntity, batteryLow ? 2 : 1, batteryLow ? "battery low" : "active"},
+            {batteryEntity, battery, battery == 3 ? "battery critical" : battery == 2 ? "battery low" : "active"},
+            {payloadEntity, payload ? 4 : 1, payload ? "sidescan not responding" : "active"},
         };
         for (const Entity &e : entities) {
             msg::Message state = make("EntityState", wallTime, e.id);
@@ -124,7 +191,7 @@ std::vector<msg::Message> SimulatedVehicle::step(double previous, double t, doub
             out.push_back(std::move(state));
         }
         msg::Message voltage = make("Voltage", wallTime, batteryEntity);
-        voltage.setNumber(voltage.def()->indexOf(u"value"), batteryLow ? 21.2 : 24.6 - 0.001 * t);
+        voltage.setNumber(voltage.def()->indexOf(u"value"), volts);
         out.push_back(std::move(voltage));
         const double rpm = jammed ? 0 : 1000 + 50 * std::sin(t / 5);
         msg::Message rpmMessage = make("Rpm", wallTime, motorEntity);
@@ -134,7 +201,7 @@ std::vector<msg::Message> SimulatedVehicle::step(double previous, double t, doub
             msg::Message motor(motorDef);
             motor.header = out.back().header;
             motor.setNumber(motorDef->indexOf(u"speed"), rpm);
-            motor.setNumber(motorDef->indexOf(u"voltage"), batteryLow ? 21.2 : 24.5);
+            motor.setNumber(motorDef->indexOf(u"voltage"), volts - 0.1);
             motor.setNumber(motorDef->indexOf(u"current"), jammed ? 9.5 : 2.1);
             motor.setNumber(motorDef->indexOf(u"temperature"), jammed ? 78 : 35);
             motor.setInteger(motorDef->indexOf(u"state"), jammed ? 3 : 1);
@@ -152,9 +219,29 @@ std::vector<msg::Message> SimulatedVehicle::step(double previous, double t, doub
 
 std::vector<msg::Message> SimulatedVehicle::answer(const msg::Message &request, double wallTime)
 {
+    if (faultsAt(m_now) & CommsLoss)
+        return {}; // it hears nothing either
     std::vector<msg::Message> out = m_plans.handle(request, wallTime);
     if (!request.def() || request.header.dst != m_config.id)
         return out;
+    // Faults at run time: SetEntityParameters to entity "Simulation",
+    // parameter "Fault" = "battery-drain", "comms-loss:20" (for 20 s) or "none".
+    if (request.def()->abbrev == u"SetEntityParameters" && request.text(u"name") == u"Simulation") {
+        for (const msg::Message &p : request.messages(request.def()->indexOf(u"params"))) {
+            if (p.text(u"name") != u"Fault")
+                continue;
+            const QString value = p.text(u"value").trimmed();
+            if (value == u"none") {
+                m_faults = None;
+                m_schedule.clear();
+                continue;
+            }
+            const qsizetype colon = value.indexOf(u':');
+            if (auto fault = parseFault(colon < 0 ? value : value.left(colon) + u'@' + QString::number(m_now) + value.mid(colon)))
+                m_schedule.push_back(colon < 0 ? TimedFault{fault->fault, m_now, 0} : *fault);
+        }
+        return out;
+    }
     if (!out.empty()) // its plan state changed: say so at once, as DUNE does
         out.push_back(m_plans.controlState(wallTime));
     const auto reply = [&](msg::Message m) {
@@ -184,7 +271,7 @@ std::vector<msg::Message> SimulatedVehicle::answer(const msg::Message &request, 
 
 std::vector<std::pair<quint8, QByteArray>> SimulatedVehicle::entities()
 {
-    return {{navigationEntity, "Navigation"}, {motorEntity, "Motor"}, {batteryEntity, "Batteries"}};
+    return {{navigationEntity, "Navigation"}, {motorEntity, "Motor"}, {batteryEntity, "Batteries"}, {payloadEntity, "Sidescan"}};
 }
 
 QByteArray SimulatedVehicle::entityList()

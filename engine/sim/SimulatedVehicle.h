@@ -5,6 +5,10 @@
 #include "sim/PlanEngine.h"
 
 #include <QString>
+#include <QStringList>
+
+#include <expected>
+#include <optional>
 
 #include <memory>
 #include <vector>
@@ -40,7 +44,27 @@ public:
         // sends it only when asked: answer() does that).
         bool periodicEntityList = true;
     };
-    enum Fault { None = 0, BatteryLow = 1, MotorJammed = 2 };
+    // What can go wrong, each with the alarm an operator expects:
+    //  battery-low      Batteries FAULT "battery low" (21.2 V)
+    //  motor-jammed     a stuck actuator: Motor ERROR "motor jammed", no thrust, the vehicle stops
+    //  battery-drain    the voltage falls 0.05 V per simulated second: Batteries FAULT
+    //                   "battery low" under 22 V, ERROR "battery critical" under 21 V
+    //  navigation-loss  Navigation ERROR "navigation lost: no position fix", no EstimatedState
+    //  payload-failure  Sidescan FAILURE "sidescan not responding"
+    //  comms-loss       says nothing at all (the console: "communications lost")
+    enum Fault { None = 0, BatteryLow = 1, MotorJammed = 2, BatteryDrain = 4, NavigationLoss = 8, PayloadFailure = 16,
+                 CommsLoss = 32 };
+    static std::optional<Fault> faultNamed(QStringView name);
+    static QStringList faultNames();
+    // A fault from `start` simulated seconds for `duration` (0: for good).
+    struct TimedFault
+    {
+        Fault fault = None;
+        double start = 0;
+        double duration = 0;
+    };
+    // "battery-drain", "navigation-loss@60", "comms-loss@30:10" (from 30 s, for 10 s).
+    static std::expected<TimedFault, QString> parseFault(const QString &text);
 
     SimulatedVehicle(std::shared_ptr<const msg::Schema> schema, Config config);
     SimulatedVehicle(const SimulatedVehicle &) = delete;
@@ -48,6 +72,9 @@ public:
 
     const Config &config() const { return m_config; }
     void setFaults(int faults) { m_faults = faults; }
+    void scheduleFault(const TimedFault &fault) { m_schedule.push_back(fault); }
+    // Faults on at simulated time t (set ones and scheduled ones).
+    int faultsAt(double t) const;
     // Simulated seconds per second of step() time: plans run that much faster
     // while messages keep their rates.
     void setTimeFactor(double factor) { m_timeFactor = factor; }
@@ -87,6 +114,9 @@ private:
     std::shared_ptr<const msg::Schema> m_schema;
     Config m_config;
     int m_faults = None;
+    std::vector<TimedFault> m_schedule;
+    double m_now = 0;         // the simulated time of the last step
+    double m_drainFrom = -1;  // when the battery began to drain
     PlanEngine m_plans;
     Motion m_motion;
     bool m_driven = false; // a plan has moved it: no more circle

@@ -237,3 +237,41 @@ TEST(PlanExecution, AConditionalTransitionIsCarriedOutByTheConsoleForAFirstTrans
     EXPECT_TRUE(log().contains(u"decided out → dive: distance(\"caravela-sim\", \"buoy\") < 50 (distance(\"caravela-sim\", \"buoy\") = "_s))
         << log().toStdString();
 }
+
+// Faults injected into a simulated vehicle (from its command line, at set
+// times) raise the alarms an operator expects, and comms come back.
+TEST(PlanExecution, EachInjectedFaultRaisesItsAlarm)
+{
+    test::SimProcess vehicle;
+    vehicle.start({u"--id"_s, u"0x1f"_s, u"--name"_s, u"lauv-sim-1"_s, u"--port"_s, u"16124"_s, u"--time-factor"_s, u"30"_s,
+                   u"--fault"_s, u"navigation-loss@5"_s, u"--fault"_s, u"payload-failure@5"_s, u"--fault"_s,
+                   u"motor-jammed@5"_s, u"--fault"_s, u"battery-drain@5"_s, u"--fault"_s, u"comms-loss@11:6"_s});
+    transport::ImcUdpConfig config;
+    config.port = 0;
+    config.discoveryPort = 0;
+    config.heartbeatMs = 200;
+    config.destinations = {{QHostAddress::LocalHost, 16124}};
+    session::Console console(test::shippedSchema());
+    ASSERT_TRUE(console.startImc(config));
+    ASSERT_TRUE(QTest::qWaitFor([&] { return heard(console.tree(), u"lauv-sim-1"_s); }, 15000));
+    alarms::AlarmGraph &graph = console.alarmGraph();
+    const auto level = [&](const QString &path) {
+        const auto node = graph.find(u"systems/lauv-sim-1"_s + path);
+        return node == alarms::AlarmGraph::noNode ? alarms::Unknown : graph.ownLevel(node);
+    };
+    const auto message = [&](const QString &path) { return graph.message(graph.find(u"systems/lauv-sim-1"_s + path)); };
+    const auto check = [&](const QString &path, alarms::Level expected, const QString &text) {
+        EXPECT_TRUE(QTest::qWaitFor([&] { return level(path) == expected; }, 8000))
+            << path.toStdString() << " is " << int(level(path)) << ": " << message(path).toStdString();
+        EXPECT_EQ(message(path), text) << path.toStdString();
+    };
+    check(u"/Navigation"_s, alarms::Normal, u"active"_s); // before the faults, 5 s in
+    check(u"/Navigation"_s, alarms::Error, u"navigation lost: no position fix"_s);
+    check(u"/Sidescan"_s, alarms::Failure, u"sidescan not responding"_s);
+    check(u"/Motor"_s, alarms::Error, u"motor jammed"_s);
+    check(u"/Batteries"_s, alarms::Error, u"battery critical"_s); // drained at 30x: 3.6 V in under 3 s
+    // Nothing heard for 6 s: communications lost, then back.
+    EXPECT_TRUE(QTest::qWaitFor([&] { console.check(); return level({}) >= alarms::Warning; }, 10000));
+    EXPECT_TRUE(message({}).startsWith(u"communications lost"_s)) << message({}).toStdString();
+    EXPECT_TRUE(QTest::qWaitFor([&] { console.check(); return level({}) == alarms::Normal; }, 10000)) << message({}).toStdString();
+}

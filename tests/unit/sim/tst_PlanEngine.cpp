@@ -367,3 +367,68 @@ TEST(SimKinematics, AUavNeverStallsAndABoatStaysAtTheSurface)
     EXPECT_EQ(boat.ned.z(), 0);
     EXPECT_GT(boat.ned.x(), 10);
 }
+
+// Each fault says what an operator's console must show.
+TEST_F(Sim, FaultsSayWhatAnOperatorExpects)
+{
+    const auto entityState = [&](const char *label) -> std::optional<std::pair<QString, QString>> {
+        const quint8 entity = QByteArray("?NavMotBatSid").indexOf(QByteArray(label).left(3)) / 3 + 1;
+        for (auto it = heard.rbegin(); it != heard.rend(); ++it)
+            if (it->abbrev() == u"EntityState" && it->header.srcEnt == entity)
+                return std::pair(enumOf(*it, "state"), it->text(u"description"));
+        return std::nullopt;
+    };
+    const auto estimatedStates = [&] {
+        return std::count_if(heard.begin(), heard.end(), [](const msg::Message &m) { return m.abbrev() == u"EstimatedState"; });
+    };
+    for (const QString &text : {u"navigation-loss@2"_s, u"payload-failure@2"_s, u"motor-jammed@2"_s, u"battery-drain@2"_s,
+                               u"comms-loss@75:10"_s}) {
+        auto fault = sim::SimulatedVehicle::parseFault(text);
+        ASSERT_TRUE(fault) << fault.error().toStdString();
+        vehicle.scheduleFault(*fault);
+    }
+    run(1.5);
+    EXPECT_EQ(entityState("Navigation")->first, u"NORMAL"_s);
+    run(1.5);
+    EXPECT_EQ(*entityState("Navigation"), std::pair(u"ERROR"_s, u"navigation lost: no position fix"_s));
+    EXPECT_EQ(*entityState("Sidescan"), std::pair(u"FAILURE"_s, u"sidescan not responding"_s));
+    EXPECT_EQ(*entityState("Motor"), std::pair(u"ERROR"_s, u"motor jammed"_s));
+    const auto states = estimatedStates();
+    run(2);
+    EXPECT_EQ(estimatedStates(), states) << "no position without navigation";
+    run(50); // 0.05 V/s from 24.6 V
+    EXPECT_EQ(entityState("Batteries")->first, u"FAULT"_s);
+    run(20);
+    EXPECT_EQ(*entityState("Batteries"), std::pair(u"ERROR"_s, u"battery critical"_s));
+
+    const std::size_t before = heard.size();
+    run(5); // t = 80: inside the comms loss
+    EXPECT_EQ(heard.size(), before) << "nothing said";
+    EXPECT_TRUE(send(request("PlanControl", "GET")).empty()) << "nothing heard";
+    run(10);
+    EXPECT_GT(heard.size(), before) << "and back after 10 s";
+
+    // At run time, from a console: SetEntityParameters to entity Simulation.
+    msg::Message set(schema->byAbbrev(u"SetEntityParameters"));
+    msg::Message parameter(schema->byAbbrev(u"EntityParameter"));
+    parameter.setBytes(parameter.def()->indexOf(u"name"), "Fault");
+    parameter.setBytes(parameter.def()->indexOf(u"value"), "none");
+    set.setBytes(set.def()->indexOf(u"name"), "Simulation");
+    set.setMessages(set.def()->indexOf(u"params"), {parameter});
+    set.header.dst = 0x1f;
+    send(set);
+    run(2);
+    EXPECT_EQ(entityState("Navigation")->first, u"NORMAL"_s);
+    parameter.setBytes(parameter.def()->indexOf(u"value"), "comms-loss:5");
+    set.setMessages(set.def()->indexOf(u"params"), {parameter});
+    send(set);
+    const std::size_t quiet = heard.size();
+    run(4);
+    EXPECT_EQ(heard.size(), quiet) << "comms lost for 5 s from now";
+    run(3);
+    EXPECT_GT(heard.size(), quiet);
+
+    EXPECT_FALSE(sim::SimulatedVehicle::parseFault(u"gremlins"_s));
+    EXPECT_FALSE(sim::SimulatedVehicle::parseFault(u"comms-loss@x"_s));
+    EXPECT_FALSE(sim::SimulatedVehicle::parseFault(u"comms-loss@1:2:3"_s));
+}
