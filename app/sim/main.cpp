@@ -1,42 +1,26 @@
-// neptus-sim: one simulated vehicle speaking IMC over UDP on loopback, as a
-// DUNE vehicle does: it streams to the consoles it hears a Heartbeat from,
-// announces itself, answers EntityList and EntityInfo queries, and prints
+// neptus-sim: simulated vehicles speaking IMC over UDP on loopback (and DDS),
+// as DUNE vehicles do: each streams to the consoles it hears a Heartbeat
+// from, announces itself, answers EntityList and EntityInfo queries, prints
 // every command addressed to it, and runs plans (PlanDB, PlanControl; see
 // sim::PlanEngine). With --like-dune it is as strict as a stock DUNE vehicle
 // (IMC discovery only, unknown senders ignored, the first transition out of
-// each maneuver whatever its condition). Faults and a communications drop
-// can be switched on from the command line.
+// each maneuver whatever its condition). Faults can be switched on from the
+// command line. One vehicle from the options, or several from --scenario.
+#include "SimNode.h"
+
 #include "core/DataFiles.h"
-#include "messages/Codec.h"
-#include "transport/dds/DdsTransport.h"
-#include "sim/SimulatedVehicle.h"
+#include "sim/Scenario.h"
 
 #include <QCommandLineParser>
 #include <QCoreApplication>
-#include <QDateTime>
-#include <QElapsedTimer>
-#include <QHash>
-#include <QNetworkDatagram>
-#include <QRegularExpression>
-#include <QSet>
+#include <QFile>
 #include <QNetworkInterface>
-#include <QTimer>
-#include <QUdpSocket>
 
 #include <cstdio>
 
 using namespace neptus;
 
 namespace {
-
-// IMC's discovery ports on loopback.
-QList<std::pair<QHostAddress, quint16>> imcDiscoveryPorts()
-{
-    QList<std::pair<QHostAddress, quint16>> ports;
-    for (quint16 port = 30100; port <= 30104; ++port)
-        ports.append({QHostAddress::LocalHost, port});
-    return ports;
-}
 
 int usage(const QString &why)
 {
@@ -87,8 +71,12 @@ int main(int argc, char *argv[])
         QStringLiteral("conditions (default): after a maneuver, the first transition whose condition holds; first: "
                        "the first transition whatever its condition, as DUNE does (also with --like-dune)."),
         QStringLiteral("conditions|first"), QStringLiteral("conditions"));
+    const QCommandLineOption scenario(QStringLiteral("scenario"),
+        QStringLiteral("Several vehicles in this process, from a JSON file (see engine/sim/Scenario.h and docs/plans.md): "
+                       "ids, names, kinds, ports, positions, DDS, transitions, faults."),
+        QStringLiteral("file"));
     parser.addOptions({id, name, kind, port, host, console, announcePort, phase, fault, drop, defs, dds, domain, ddsKeys,
-                       ddsIdentity, dune, timeFactor, transitions});
+                       ddsIdentity, dune, timeFactor, transitions, scenario});
     if (!parser.parse(QCoreApplication::arguments()))
         return usage(parser.errorText());
     if (parser.isSet(QStringLiteral("help")))
@@ -102,41 +90,18 @@ int main(int argc, char *argv[])
         std::fprintf(stderr, "neptus-sim: %s\n", qPrintable(schema.error().toString()));
         return 1;
     }
-    sim::SimulatedVehicle::Config config;
+    if (parser.isSet(scenario)) {
+        for (const QCommandLineOption *single : {&id, &name, &kind, &port, &host, &phase, &fault, &drop, &dune, &transitions})
+            if (parser.isSet(*single))
+                return usage(QStringLiteral("--%1 is for one vehicle; with --scenario, say it in the scenario file")
+                                 .arg(single->names().constFirst()));
+    }
+
+    std::vector<SimNode::Options> nodes;
     bool ok = false;
-    const uint idValue = parser.value(id).toUInt(&ok, 0);
-    if (!ok || idValue == 0 || idValue >= 0xFFFF)
-        return usage(QStringLiteral("--id must be a number from 1 to 65534, not '%1'").arg(parser.value(id)));
-    config.id = static_cast<quint16>(idValue);
-    config.name = parser.value(name);
-    const QString kindName = parser.value(kind).toLower();
-    if (kindName == u"auv") config.kind = sim::SimulatedVehicle::Kind::Auv;
-    else if (kindName == u"asv") config.kind = sim::SimulatedVehicle::Kind::Asv;
-    else if (kindName == u"uav") config.kind = sim::SimulatedVehicle::Kind::Uav;
-    else return usage(QStringLiteral("--kind must be auv, asv or uav, not '%1'").arg(parser.value(kind)));
-    const uint portValue = parser.value(port).toUInt(&ok);
-    if (!ok || portValue == 0 || portValue > 65535)
-        return usage(QStringLiteral("--port must be a port number, not '%1'").arg(parser.value(port)));
-    const QHostAddress address(parser.value(host));
-    if (address.protocol() != QAbstractSocket::IPv4Protocol
-        || (!address.isLoopback() && !QNetworkInterface::allAddresses().contains(address)))
-        return usage(QStringLiteral("--host must be a 127.x.x.x address or an IPv4 address of this machine, not '%1'")
-                         .arg(parser.value(host)));
-    config.phase = parser.value(phase).toDouble() * 3.14159265358979 / 180;
-    config.services = QStringLiteral("imc+udp://%1:%2/").arg(address.toString()).arg(portValue);
-    std::vector<sim::SimulatedVehicle::TimedFault> faults;
-    for (const QString &f : parser.values(fault)) {
-        auto timed = sim::SimulatedVehicle::parseFault(f);
-        if (!timed)
-            return usage(QStringLiteral("--fault: ") + timed.error());
-        faults.push_back(*timed);
-    }
-    if (parser.isSet(drop)) {
-        auto timed = sim::SimulatedVehicle::parseFault(QStringLiteral("comms-loss@") + parser.value(drop));
-        if (!timed || parser.value(drop).count(u':') != 1)
-            return usage(QStringLiteral("--comms-drop must look like 30:10"));
-        faults.push_back(*timed);
-    }
+    const double factor = parser.value(timeFactor).toDouble(&ok);
+    if (!ok || !(factor > 0) || factor > 1000)
+        return usage(QStringLiteral("--time-factor must be a number above 0 and at most 1000, not '%1'").arg(parser.value(timeFactor)));
     QList<std::pair<QHostAddress, quint16>> announceTo;
     for (const QString &c : parser.values(console)) {
         const qsizetype colon = c.lastIndexOf(u':');
@@ -146,166 +111,80 @@ int main(int argc, char *argv[])
     }
     if (parser.isSet(announcePort))
         announceTo.append({QHostAddress::LocalHost, static_cast<quint16>(parser.value(announcePort).toUInt())});
+    const auto options = [&](sim::ScenarioVehicle vehicle) {
+        return SimNode::Options{std::move(vehicle), announceTo, static_cast<int>(parser.value(domain).toUInt()),
+                                parser.value(ddsKeys), parser.value(ddsIdentity), factor};
+    };
 
-    const double factor = parser.value(timeFactor).toDouble(&ok);
-    if (!ok || !(factor > 0) || factor > 1000)
-        return usage(QStringLiteral("--time-factor must be a number above 0 and at most 1000, not '%1'").arg(parser.value(timeFactor)));
-    const QString transitionMode = parser.value(transitions);
-    if (transitionMode != u"conditions" && transitionMode != u"first")
-        return usage(QStringLiteral("--transitions must be conditions or first, not '%1'").arg(transitionMode));
-    const bool likeDune = parser.isSet(dune);
-    config.periodicEntityList = !likeDune;
-    sim::SimulatedVehicle vehicle(*schema, config);
-    for (const auto &f : faults)
-        vehicle.scheduleFault(f);
-    vehicle.setTimeFactor(factor);
-    if (likeDune || transitionMode == u"first")
-        vehicle.plans().setTransitions(sim::PlanEngine::Transitions::FirstOnly);
-    const msg::Codec codec(*schema);
-    QUdpSocket socket;
-    if (!socket.bind(address, static_cast<quint16>(portValue))) {
-        std::fprintf(stderr, "neptus-sim: cannot listen on %s:%u: %s\n", qPrintable(address.toString()), portValue,
-                     qPrintable(socket.errorString()));
-        return 1;
-    }
-    // Like DUNE: listen for announcements on the first free IMC discovery
-    // port and announce to all of them.
-    QUdpSocket discovery;
-    if (likeDune) {
-        for (const auto &[address, to] : imcDiscoveryPorts()) {
-            if (discovery.bind(address, to))
-                break;
-            discovery.close();
-        }
-        if (discovery.state() != QAbstractSocket::BoundState) {
-            std::fprintf(stderr, "neptus-sim: no IMC discovery port (30100-30104) is free on 127.0.0.1\n");
+    if (parser.isSet(scenario)) {
+        QFile file(parser.value(scenario));
+        if (!file.open(QIODevice::ReadOnly))
+            return usage(QStringLiteral("--scenario: cannot read %1: %2").arg(file.fileName(), file.errorString()));
+        auto read = sim::readScenario(file.read(16 << 20), file.fileName());
+        if (!read) {
+            std::fprintf(stderr, "neptus-sim: %s\n", qPrintable(read.error()));
             return 1;
         }
-        announceTo = imcDiscoveryPorts();
+        for (auto &v : read->vehicles) {
+            nodes.push_back(options(std::move(v)));
+            if (!parser.isSet(timeFactor))
+                nodes.back().timeFactor = read->timeFactor;
+        }
+    } else {
+        sim::ScenarioVehicle v;
+        const uint idValue = parser.value(id).toUInt(&ok, 0);
+        if (!ok || idValue == 0 || idValue >= 0xFFFF)
+            return usage(QStringLiteral("--id must be a number from 1 to 65534, not '%1'").arg(parser.value(id)));
+        v.config.id = static_cast<quint16>(idValue);
+        v.config.name = parser.value(name);
+        const QString kindName = parser.value(kind).toLower();
+        if (kindName == u"auv") v.config.kind = sim::SimulatedVehicle::Kind::Auv;
+        else if (kindName == u"asv") v.config.kind = sim::SimulatedVehicle::Kind::Asv;
+        else if (kindName == u"uav") v.config.kind = sim::SimulatedVehicle::Kind::Uav;
+        else return usage(QStringLiteral("--kind must be auv, asv or uav, not '%1'").arg(parser.value(kind)));
+        const uint portValue = parser.value(port).toUInt(&ok);
+        if (!ok || portValue == 0 || portValue > 65535)
+            return usage(QStringLiteral("--port must be a port number, not '%1'").arg(parser.value(port)));
+        v.port = static_cast<quint16>(portValue);
+        v.host = parser.value(host);
+        v.config.services = QStringLiteral("imc+udp://%1:%2/").arg(v.host).arg(v.port);
+        v.config.phase = parser.value(phase).toDouble() * 3.14159265358979 / 180;
+        for (const QString &f : parser.values(fault)) {
+            auto timed = sim::SimulatedVehicle::parseFault(f);
+            if (!timed)
+                return usage(QStringLiteral("--fault: ") + timed.error());
+            v.faults.push_back(*timed);
+        }
+        if (parser.isSet(drop)) {
+            auto timed = sim::SimulatedVehicle::parseFault(QStringLiteral("comms-loss@") + parser.value(drop));
+            if (!timed || parser.value(drop).count(u':') != 1)
+                return usage(QStringLiteral("--comms-drop must look like 30:10"));
+            v.faults.push_back(*timed);
+        }
+        const QString transitionMode = parser.value(transitions);
+        if (transitionMode != u"conditions" && transitionMode != u"first")
+            return usage(QStringLiteral("--transitions must be conditions or first, not '%1'").arg(transitionMode));
+        v.likeDune = parser.isSet(dune);
+        v.firstTransitionOnly = v.likeDune || transitionMode == u"first";
+        v.config.periodicEntityList = !v.likeDune;
+        v.dds = parser.isSet(dds);
+        nodes.push_back(options(std::move(v)));
     }
-    std::printf("neptus-sim: %s (id 0x%04x) on %s:%u\n", qPrintable(config.name), config.id,
-                qPrintable(address.toString()), portValue);
-    std::fflush(stdout);
+    for (const SimNode::Options &n : nodes) {
+        const QHostAddress address(n.vehicle.host);
+        if (address.protocol() != QAbstractSocket::IPv4Protocol
+            || (!address.isLoopback() && !QNetworkInterface::allAddresses().contains(address)))
+            return usage(QStringLiteral("%1: the host must be a 127.x.x.x address or an IPv4 address of this machine, not '%2'")
+                             .arg(n.vehicle.config.name, n.vehicle.host));
+    }
 
-    QElapsedTimer clock;
-    clock.start();
-    const auto wallTime = [] { return QDateTime::currentMSecsSinceEpoch() / 1000.0; };
-    const auto sendTo = [&](const msg::Message &m, const QHostAddress &address, quint16 to) {
-        QByteArray packet;
-        if (codec.encode(m, packet))
-            socket.writeDatagram(packet, address, to);
-    };
-    // Plain mode: consoles heard from, and when: it streams to them for 5 s after each Heartbeat.
-    QHash<QPair<QString, quint16>, qint64> consoles;
-    // Like DUNE: systems that announced an imc+udp service, and when they were
-    // last heard; it streams to those heard in the last 30 s and ignores the rest.
-    struct Peer
-    {
-        QHostAddress address;
-        quint16 port = 0;
-        qint64 heardMs = -1;
-    };
-    QHash<quint16, Peer> peers;
-    QSet<quint16> ignored;
-    const auto handle = [&](const QNetworkDatagram &datagram) {
-        auto message = codec.decode(datagram.data());
-        if (!message)
-            return;
-        const quint16 from = message->header.src;
-        if (from == config.id)
-            return; // our own Announce on the discovery ports
-        if (likeDune) {
-            if (message->abbrev() == u"Announce") {
-                static const QRegularExpression service(QStringLiteral(R"(imc\+udp://([^:/;]+):(\d+))"));
-                const auto match = service.match(message->text(u"services"));
-                if (match.hasMatch()) {
-                    Peer &peer = peers[from];
-                    peer.address = QHostAddress(match.captured(1));
-                    peer.port = static_cast<quint16>(match.captured(2).toUInt());
-                }
-                return;
-            }
-            if (!peers.contains(from)) {
-                if (!ignored.contains(from)) {
-                    ignored.insert(from);
-                    std::printf("neptus-sim: ignoring 0x%04x: it has not announced itself\n", from);
-                    std::fflush(stdout);
-                }
-                return;
-            }
-            peers[from].heardMs = clock.elapsed();
-        } else if (message->abbrev() == u"Heartbeat") {
-            const QPair<QString, quint16> console{datagram.senderAddress().toString(), static_cast<quint16>(datagram.senderPort())};
-            if (!consoles.contains(console)) { // a new console: say who we are at once
-                for (const msg::Message &m : vehicle.introduction(wallTime()))
-                    sendTo(m, datagram.senderAddress(), static_cast<quint16>(datagram.senderPort()));
-            }
-            consoles[console] = clock.elapsed();
-        }
-        if (message->header.dst == config.id && message->abbrev() != u"Announce" && message->abbrev() != u"Heartbeat") {
-            std::printf("neptus-sim: received %s from 0x%04x\n", qPrintable(message->abbrev()), from);
-            std::fflush(stdout);
-        }
-        for (const msg::Message &reply : vehicle.answer(*message, wallTime())) {
-            if (likeDune)
-                sendTo(reply, peers[from].address, peers[from].port);
-            else
-                sendTo(reply, datagram.senderAddress(), static_cast<quint16>(datagram.senderPort()));
-        }
-    };
-    QObject::connect(&socket, &QUdpSocket::readyRead, [&] {
-        while (socket.hasPendingDatagrams())
-            handle(socket.receiveDatagram());
-    });
-    QObject::connect(&discovery, &QUdpSocket::readyRead, [&] {
-        while (discovery.hasPendingDatagrams())
-            handle(discovery.receiveDatagram());
-    });
-    // Over DDS there is no heartbeat handshake: publish to whoever subscribes.
-    std::unique_ptr<transport::DdsTransport> ddsLink;
-    if (parser.isSet(dds)) {
-        transport::DdsConfig ddsConfig{static_cast<dds_domainid_t>(parser.value(domain).toUInt()), {}, config.id};
-        ddsConfig.security = {parser.value(ddsKeys), parser.value(ddsIdentity)};
-        ddsLink = std::make_unique<transport::DdsTransport>(*schema, ddsConfig);
-        if (auto started = ddsLink->start(); !started) {
+    std::vector<std::unique_ptr<SimNode>> running;
+    for (SimNode::Options &n : nodes) {
+        running.push_back(std::make_unique<SimNode>(*schema, std::move(n)));
+        if (auto started = running.back()->start(); !started) {
             std::fprintf(stderr, "neptus-sim: %s\n", qPrintable(started.error()));
             return 1;
         }
-        QObject::connect(ddsLink.get(), &transport::DdsTransport::received, [&](const msg::Message &m) {
-            if (m.header.dst == config.id) {
-                std::printf("neptus-sim: received %s from 0x%04x over DDS\n", qPrintable(m.abbrev()), m.header.src);
-                std::fflush(stdout);
-            }
-            for (const msg::Message &reply : vehicle.answer(m, wallTime()))
-                ddsLink->publish(m.header.src, reply);
-        });
     }
-    double previous = -1;
-    QByteArray buffer;
-    QTimer timer;
-    QObject::connect(&timer, &QTimer::timeout, [&] {
-        const double t = clock.elapsed() / 1000.0;
-        const auto messages = vehicle.step(previous, t, QDateTime::currentMSecsSinceEpoch() / 1000.0);
-        previous = t;
-        if (ddsLink)
-            ddsLink->broadcast(messages);
-        for (const msg::Message &m : messages) {
-            if (!codec.encode(m, buffer))
-                continue;
-            for (auto it = consoles.cbegin(); it != consoles.cend(); ++it) {
-                if (clock.elapsed() - it.value() < 5000)
-                    socket.writeDatagram(buffer, QHostAddress(it.key().first), it.key().second);
-            }
-            for (const Peer &peer : std::as_const(peers)) {
-                if (peer.heardMs >= 0 && clock.elapsed() - peer.heardMs < 30000)
-                    socket.writeDatagram(buffer, peer.address, peer.port);
-            }
-            if (m.abbrev() == u"Announce") {
-                for (const auto &[address, to] : announceTo)
-                    socket.writeDatagram(buffer, address, to);
-            }
-        }
-    });
-    timer.start(20);
     return QCoreApplication::exec();
 }

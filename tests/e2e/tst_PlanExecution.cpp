@@ -14,6 +14,8 @@
 #include "Schemas.h"
 #include "SimProcess.h"
 
+#include <QFile>
+#include <QTemporaryDir>
 #include <QTest>
 
 #include <gtest/gtest.h>
@@ -274,4 +276,35 @@ TEST(PlanExecution, EachInjectedFaultRaisesItsAlarm)
     EXPECT_TRUE(QTest::qWaitFor([&] { console.check(); return level({}) >= alarms::Warning; }, 10000));
     EXPECT_TRUE(message({}).startsWith(u"communications lost"_s)) << message({}).toStdString();
     EXPECT_TRUE(QTest::qWaitFor([&] { console.check(); return level({}) == alarms::Normal; }, 10000)) << message({}).toStdString();
+}
+
+// Several vehicles of several kinds from one scenario file, in one process,
+// over IMC/UDP and DDS; each runs the plan it is given.
+TEST(PlanExecution, AScenarioRunsSeveralVehiclesInOneProcess)
+{
+    QTemporaryDir dir;
+    const QString file = dir.filePath(u"scenario.json"_s);
+    QFile out(file);
+    ASSERT_TRUE(out.open(QIODevice::WriteOnly));
+    out.write(R"({"timeFactor": 30, "vehicles": [
+        {"id": "0x31", "name": "auv-a", "kind": "auv", "port": 16130},
+        {"id": "0x32", "name": "asv-b", "kind": "asv", "port": 16131, "dds": true, "phase": 120},
+        {"id": "0x33", "name": "uav-c", "kind": "uav", "port": 16132, "phase": 240, "radius": 300, "speed": 18}]})");
+    out.close();
+    test::SimProcess sims;
+    sims.start({u"--scenario"_s, file, u"--dds-domain"_s, u"12"_s});
+    transport::ImcUdpConfig config;
+    config.port = 0;
+    config.discoveryPort = 0;
+    config.heartbeatMs = 200;
+    config.destinations = {{QHostAddress::LocalHost, 16130}, {QHostAddress::LocalHost, 16132}};
+    session::Console console(test::shippedSchema());
+    ASSERT_TRUE(console.startImc(config));
+    ASSERT_TRUE(console.startDds({12, {}, 0x4001}));
+    ASSERT_TRUE(QTest::qWaitFor([&] {
+        return heard(console.tree(), u"auv-a"_s) && heard(console.tree(), u"asv-b"_s) && heard(console.tree(), u"uav-c"_s);
+    }, 20000)) << console.tree().childNames(u""_s).join(u", "_s).toStdString() << "\n" << sims.output.constData();
+    EXPECT_EQ(console.tree().snapshot(console.tree().find(u"asv-b"_s)).text, u"0x0032 via DDS"_s);
+    EXPECT_EQ(console.tree().snapshot(console.tree().find(u"uav-c/EstimatedState/height"_s)).present, true);
+    runPlan(console, 0x32, u"asv-b"_s, missionFor("asv-b", 0, "DEPTH"));
 }

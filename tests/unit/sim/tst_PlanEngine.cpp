@@ -5,6 +5,7 @@
 #include "mission/MissionXml.h"
 #include "plans/PlanDatabase.h"
 #include "plans/PlanClient.h"
+#include "sim/Scenario.h"
 #include "sim/SimulatedVehicle.h"
 
 #include "Fixtures.h"
@@ -431,4 +432,53 @@ TEST_F(Sim, FaultsSayWhatAnOperatorExpects)
     EXPECT_FALSE(sim::SimulatedVehicle::parseFault(u"gremlins"_s));
     EXPECT_FALSE(sim::SimulatedVehicle::parseFault(u"comms-loss@x"_s));
     EXPECT_FALSE(sim::SimulatedVehicle::parseFault(u"comms-loss@1:2:3"_s));
+}
+
+TEST(Scenario, SeveralVehiclesOfSeveralKindsFromOneFile)
+{
+    const auto scenario = sim::readScenario(R"({"timeFactor": 5, "vehicles": [
+        {"id": "0x1f", "name": "lauv-sim-1", "kind": "auv", "port": 6002, "transitions": "first",
+         "faults": ["battery-drain@300", "comms-loss@600:30"]},
+        {"id": 32, "name": "caravela-sim", "kind": "asv", "port": 6003, "phase": 180, "dds": true},
+        {"id": 33, "name": "x8-sim", "kind": "uav", "port": 6004, "radius": 400, "speed": 18, "likeDune": true}]})",
+                                            u"s.json"_s);
+    ASSERT_TRUE(scenario) << scenario.error().toStdString();
+    EXPECT_EQ(scenario->timeFactor, 5);
+    ASSERT_EQ(scenario->vehicles.size(), 3u);
+    const sim::ScenarioVehicle &auv = scenario->vehicles[0], &asv = scenario->vehicles[1], &uav = scenario->vehicles[2];
+    EXPECT_EQ(auv.config.id, 0x1f);
+    EXPECT_TRUE(auv.firstTransitionOnly);
+    ASSERT_EQ(auv.faults.size(), 2u);
+    EXPECT_EQ(auv.faults[1].fault, sim::SimulatedVehicle::CommsLoss);
+    EXPECT_EQ(auv.faults[1].duration, 30);
+    EXPECT_EQ(auv.config.services, u"imc+udp://127.0.0.1:6002/"_s);
+    EXPECT_TRUE(asv.dds);
+    EXPECT_EQ(asv.config.kind, sim::SimulatedVehicle::Kind::Asv);
+    EXPECT_NEAR(asv.config.phase, M_PI, 1e-12);
+    EXPECT_EQ(uav.config.kind, sim::SimulatedVehicle::Kind::Uav);
+    EXPECT_EQ(uav.config.radiusM, 400);
+    EXPECT_TRUE(uav.likeDune && uav.firstTransitionOnly && !uav.config.periodicEntityList);
+}
+
+TEST(Scenario, MistakesAreNamedByFileLineOrVehicleAndKey)
+{
+    const auto error = [](const char *json) {
+        const auto s = sim::readScenario(json, u"s.json"_s);
+        return s ? QString() : s.error();
+    };
+    EXPECT_EQ(error("{\n\"vehicles\": [\n{\"id\": 1,,}]}"), u"s.json:3: unterminated object"_s);
+    EXPECT_EQ(error("[]"), u"s.json: a scenario is a JSON object with \"vehicles\""_s);
+    EXPECT_EQ(error(R"({"vehicles": []})"), u"s.json: \"vehicles\" must list one vehicle or more"_s);
+    EXPECT_EQ(error(R"({"vehicles": [{"id": 1, "name": "a", "port": 1, "kind": "boat"}]})"),
+              u"s.json: vehicles[0] (a): kind 'boat' is not auv, asv or uav"_s);
+    EXPECT_EQ(error(R"({"vehicles": [{"id": 1, "name": "a", "port": 1}, {"id": "0x1", "name": "b", "port": 2}]})"),
+              u"s.json: vehicles[1] (b): id 0x0001 is another vehicle's too"_s);
+    EXPECT_EQ(error(R"({"vehicles": [{"id": 1, "name": "a", "port": 1}, {"id": 2, "name": "b", "port": 1}]})"),
+              u"s.json: vehicles[1] (b): port 1 is another vehicle's too"_s);
+    EXPECT_TRUE(error(R"({"vehicles": [{"id": 1, "name": "a", "port": 1, "colour": "red"}]})")
+                    .startsWith(u"s.json: vehicles[0] (a): unknown key \"colour\""_s));
+    EXPECT_TRUE(error(R"({"vehicles": [{"id": 1, "name": "a", "port": 1, "faults": ["gremlins"]}]})")
+                    .startsWith(u"s.json: vehicles[0] (a): faults: 'gremlins' is not a fault"_s));
+    EXPECT_EQ(error(R"({"vehicles": [{"id": 70000, "name": "a", "port": 1}]})"),
+              u"s.json: vehicles[0] (a): id must be a number from 1 to 65534 (or \"0x1f\")"_s);
 }
