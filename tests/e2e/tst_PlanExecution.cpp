@@ -308,3 +308,48 @@ TEST(PlanExecution, AScenarioRunsSeveralVehiclesInOneProcess)
     EXPECT_EQ(console.tree().snapshot(console.tree().find(u"uav-c/EstimatedState/height"_s)).present, true);
     runPlan(console, 0x32, u"asv-b"_s, missionFor("asv-b", 0, "DEPTH"));
 }
+
+// Stop and Abort from a console's desk reach a separate vehicle process,
+// end its plan, and are logged with the vehicle's reason.
+TEST(PlanExecution, StopAndAbortEndAPlanOnAVehicleProcess)
+{
+    test::SimProcess vehicle;
+    vehicle.start({u"--id"_s, u"0x1f"_s, u"--name"_s, u"lauv-sim-1"_s, u"--port"_s, u"16125"_s, u"--time-factor"_s, u"10"_s});
+    transport::ImcUdpConfig config;
+    config.port = 0;
+    config.discoveryPort = 0;
+    config.heartbeatMs = 200;
+    config.destinations = {{QHostAddress::LocalHost, 16125}};
+    session::Console console(test::shippedSchema());
+    ASSERT_TRUE(console.startImc(config));
+    ASSERT_TRUE(QTest::qWaitFor([&] { return heard(console.tree(), u"lauv-sim-1"_s); }, 15000));
+    plans::PlanDesk desk(test::shippedSchema(), console.tree(), console.alarmGraph(),
+                         [&](quint16 id, const msg::Message &m) { return console.send(id, m); });
+    QObject::connect(&console, &session::Console::planMessageReceived, &desk, &plans::PlanDesk::receive);
+    auto mission = mission::readMission(missionFor("lauv-sim-1", 2, "DEPTH"), u"e2e.xml"_s);
+    ASSERT_TRUE(mission);
+    desk.setMission(*mission);
+    const QString name = u"lauv-sim-1"_s;
+    const auto log = [&] { return desk.log(name).join(u'\n'); };
+    const auto state = [&] { return console.tree().snapshot(console.tree().find(name + u"/PlanControlState/state"_s)).text; };
+
+    ASSERT_TRUE(desk.refresh(name));
+    ASSERT_TRUE(QTest::qWaitFor([&] { return desk.fetched(name); }, 10000));
+    ASSERT_TRUE(desk.send(name, u"survey"_s));
+    ASSERT_TRUE(QTest::qWaitFor([&] { return desk.sync(name, u"survey"_s) == plans::Sync::Same; }, 10000)) << log().toStdString();
+
+    ASSERT_TRUE(desk.start(name, u"survey"_s));
+    ASSERT_TRUE(QTest::qWaitFor([&] { return state() == u"EXECUTING"; }, 10000)) << log().toStdString();
+    ASSERT_TRUE(desk.stop(name));
+    ASSERT_TRUE(QTest::qWaitFor([&] { return log().contains(u"survey ended: plan stopped"_s); }, 10000)) << log().toStdString();
+    EXPECT_TRUE(QTest::qWaitFor([&] { return state() == u"READY"; }, 5000));
+
+    ASSERT_TRUE(desk.start(name, u"survey"_s));
+    ASSERT_TRUE(QTest::qWaitFor([&] { return state() == u"EXECUTING"; }, 10000)) << log().toStdString();
+    ASSERT_TRUE(desk.abort(name));
+    ASSERT_TRUE(QTest::qWaitFor([&] { return log().contains(u"survey ended: plan aborted by"_s); }, 10000)) << log().toStdString();
+    const auto node = console.alarmGraph().find(u"systems/lauv-sim-1/plan"_s);
+    ASSERT_NE(node, alarms::AlarmGraph::noNode);
+    EXPECT_EQ(console.alarmGraph().ownLevel(node), alarms::Warning);
+    EXPECT_TRUE(vehicle.output.contains("received Abort")) << vehicle.output.constData();
+}
