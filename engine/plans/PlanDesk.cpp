@@ -71,6 +71,12 @@ void PlanDesk::setMission(mission::Mission mission, const QString &path)
 {
     m_mission = std::move(mission);
     m_missionPath = path;
+    // Conditions are checked when the mission opens, not first when a vehicle waits on them.
+    m_problems.clear();
+    if (scripting::ScriptHost *scripts = m_scripts ? m_scripts() : nullptr)
+        for (const mission::Plan &p : m_mission.plans)
+            for (const QString &error : Supervisor::conditionErrors(p, *scripts))
+                m_problems << p.id + u": "_s + error;
     for (const auto &[id, vehicle] : m_vehicles)
         emit changed(m_tree.systemName(id));
 }

@@ -55,6 +55,9 @@ public:
     std::expected<void, QString> openMission(const QString &path);
     void setMission(mission::Mission mission, const QString &path = {});
     const mission::Mission &mission() const { return m_mission; }
+    // What is wrong with the open mission for running it: conditions that do
+    // not compile ("meet: out → dive: condition '…' does not compile: …").
+    QStringList problems() const { return m_problems; }
     QString missionPath() const { return m_missionPath; }
 
     // The mission's plans for a vehicle (each plan names its vehicle).
@@ -123,6 +126,7 @@ private:
     QTimer m_supervision;
     mission::Mission m_mission;
     QString m_missionPath;
+    QStringList m_problems;
     std::map<quint16, Vehicle> m_vehicles;
     std::chrono::milliseconds m_timeout{3000};
 };

@@ -218,14 +218,34 @@ QString Supervisor::conditionSource(const QString &expression) const
         quoted.replace(u'\\', u"\\\\"_s).replace(u'"', u"\\\""_s);
         marks << u"\"%1\": [%2, %3]"_s.arg(quoted).arg(geo::degrees(at.lat), 0, 'g', 12).arg(geo::degrees(at.lon), 0, 'g', 12);
     }
-    // The expression on one line of its own: an error's line 4 is the condition's.
-    return u"const $elapsed = %1, $waited = %2;\n"
-           "const marks = {%3};\n"
-           "function distance(system, mark) { const s = sys[system] && sys[system].EstimatedState, m = marks[mark]; if (!s || !m || typeof s.lat !== \"number\") return NaN; const R = 6371000, la = s.lat + s.x / R, lo = s.lon + s.y / (R * Math.cos(s.lat)), ml = m[0] * Math.PI / 180; return R * Math.hypot(la - ml, (lo - m[1] * Math.PI / 180) * Math.cos(ml)); }\n"
-           "return (%4\n) ? Normal : Info(\"waiting\");"_s
-        .arg(static_cast<double>(now - m_startMs) / 1000.0, 0, 'f', 1)
-        .arg(m_waiting ? static_cast<double>(now - m_waitSinceMs) / 1000.0 : 0.0, 0, 'f', 1)
-        .arg(marks.join(u", "_s), expression);
+    return conditionScript(expression,
+        u"const $elapsed = %1, $waited = %2;\n"
+        "const marks = {%3};\n"
+        "function distance(system, mark) { const s = sys[system] && sys[system].EstimatedState, m = marks[mark]; if (!s || !m || typeof s.lat !== \"number\") return NaN; const R = 6371000, la = s.lat + s.x / R, lo = s.lon + s.y / (R * Math.cos(s.lat)), ml = m[0] * Math.PI / 180; return R * Math.hypot(la - ml, (lo - m[1] * Math.PI / 180) * Math.cos(ml)); }\n"_s
+            .arg(static_cast<double>(now - m_startMs) / 1000.0, 0, 'f', 1)
+            .arg(m_waiting ? static_cast<double>(now - m_waitSinceMs) / 1000.0 : 0.0, 0, 'f', 1)
+            .arg(marks.join(u", "_s)));
+}
+
+QString Supervisor::conditionScript(const QString &expression, const QString &prelude)
+{
+    // The expression on a line of its own: an error's line 4 is the condition's.
+    return prelude + u"return (%1\n) ? Normal : Info(\"waiting\");"_s.arg(expression);
+}
+
+QStringList Supervisor::conditionErrors(const mission::Plan &plan, const scripting::ScriptHost &scripts)
+{
+    QStringList errors;
+    const QString prelude = u"const $elapsed = 0, $waited = 0;\nconst marks = {};\nfunction distance(system, mark) { return NaN; }\n"_s;
+    for (const mission::Transition &t : plan.transitions) {
+        if (plain(t))
+            continue;
+        const QVariantMap check = scripts.check(conditionScript(t.condition, prelude));
+        if (!check.value(u"ok"_s).toBool())
+            errors << u"%1 → %2: condition '%3' does not compile: %4"_s.arg(t.from, t.to, t.condition,
+                                                                           check.value(u"message"_s).toString());
+    }
+    return errors;
 }
 
 void Supervisor::setConditions()

@@ -53,6 +53,11 @@ public:
     static bool needed(const mission::Plan &plan);
     // The maneuvers of the stretch that begins at `first`.
     static QStringList stretch(const mission::Plan &plan, const QString &first);
+    // A condition as the script it runs as: `prelude` (three lines: $elapsed,
+    // $waited, marks and distance()) then the expression on line 4.
+    static QString conditionScript(const QString &expression, const QString &prelude);
+    // What does not compile among a plan's conditions, one line each ("a → b: …").
+    static QStringList conditionErrors(const mission::Plan &plan, const scripting::ScriptHost &scripts);
 
     const mission::Plan &plan() const { return m_plan; }
     QString part() const { return m_part; }

@@ -16,12 +16,15 @@ class PlanDeskModel : public QObject
     QML_UNCREATABLE("made by the console session")
     Q_PROPERTY(QString missionName READ missionName NOTIFY missionChanged)
     Q_PROPERTY(QString missionPath READ missionPath NOTIFY missionChanged)
+    // Conditions of the mission's plans that do not compile, one line each.
+    Q_PROPERTY(QStringList missionProblems READ missionProblems NOTIFY missionChanged)
 
 public:
     explicit PlanDeskModel(neptus::plans::PlanDesk *desk, QObject *parent = nullptr);
 
     QString missionName() const;
     QString missionPath() const { return m_desk->missionPath(); }
+    QStringList missionProblems() const { return m_desk->problems(); }
 
     // "" when opened, else why not (file and line).
     Q_INVOKABLE QString openMission(const QString &path);

@@ -100,6 +100,17 @@ Rectangle {
             font.pixelSize: Theme.smallFontPixelSize
             elide: Text.ElideMiddle
         }
+        Text {
+            objectName: "missionProblems"
+            width: parent.width
+            visible: text !== ""
+            text: panel.desk ? panel.desk.missionProblems.join("\n") : ""
+            color: Theme.levelColor(AlarmLevel.Warning)
+            font.pixelSize: Theme.smallFontPixelSize
+            wrapMode: Text.Wrap
+            maximumLineCount: 3
+            elide: Text.ElideRight
+        }
 
         // What the vehicle is doing, in its own words.
         Rectangle {

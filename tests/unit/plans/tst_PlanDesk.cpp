@@ -269,3 +269,14 @@ TEST_F(Desk, AConditionThatFailsIsSaidAndTheVehicleWaits)
     ASSERT_TRUE(desk.stop(u"lauv-sim-1"_s));
     EXPECT_FALSE(desk.supervising(u"lauv-sim-1"_s));
 }
+
+TEST_F(Desk, ConditionsThatDoNotCompileAreSaidWhenTheMissionOpens)
+{
+    EXPECT_TRUE(desk.problems().isEmpty()) << desk.problems().join(u'\n').toStdString();
+    mission::Mission broken = desk.mission();
+    broken.plans[1].transitions[0].condition = u"distance(\"caravela-sim\", \"buoy\") <"_s;
+    desk.setMission(broken);
+    ASSERT_EQ(desk.problems().size(), 1);
+    EXPECT_TRUE(desk.problems()[0].startsWith(u"choice: a → b: condition 'distance(\"caravela-sim\", \"buoy\") <' does not compile: "_s))
+        << desk.problems()[0].toStdString();
+}
