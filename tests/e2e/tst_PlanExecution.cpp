@@ -137,6 +137,18 @@ void runPlan(session::Console &console, quint16 id, const QString &name, const Q
     EXPECT_TRUE(QTest::qWaitFor([&] { return tree.snapshot(tree.find(name + u"/PlanControlState/last_outcome"_s)).text == u"SUCCESS"; }, 5000));
 }
 
+// A console's IMC/UDP link to vehicles on these loopback ports (its own ports chosen by the system).
+transport::ImcUdpConfig imcTo(std::initializer_list<quint16> ports)
+{
+    transport::ImcUdpConfig config;
+    config.port = 0;
+    config.discoveryPort = 0;
+    config.heartbeatMs = 200;
+    for (const quint16 port : ports)
+        config.destinations.append({QHostAddress::LocalHost, port});
+    return config;
+}
+
 bool heard(const tree::VariableTree &tree, const QString &system)
 {
     const tree::NodeId node = tree.find(system + u"/EstimatedState/depth"_s);
@@ -149,11 +161,7 @@ TEST(PlanExecution, AnAuvOverImcRunsGotoLoiterRowsToTheEndWhileASecondConsoleWat
 {
     test::SimProcess vehicle;
     vehicle.start({u"--id"_s, u"0x1f"_s, u"--name"_s, u"lauv-sim-1"_s, u"--port"_s, u"16120"_s, u"--time-factor"_s, u"30"_s});
-    transport::ImcUdpConfig config;
-    config.port = 0;
-    config.discoveryPort = 0;
-    config.heartbeatMs = 200;
-    config.destinations = {{QHostAddress::LocalHost, 16120}};
+    const transport::ImcUdpConfig config = imcTo({16120});
     session::Console console(test::shippedSchema()), watcher(test::shippedSchema());
     ASSERT_TRUE(console.startImc(config));
     ASSERT_TRUE(watcher.startImc(config));
@@ -182,11 +190,7 @@ TEST(PlanExecution, AConditionalTransitionIsCarriedOutByTheConsoleForAFirstTrans
     auv.start({u"--id"_s, u"0x1f"_s, u"--name"_s, u"lauv-sim-1"_s, u"--port"_s, u"16122"_s, u"--time-factor"_s, u"30"_s,
                u"--transitions"_s, u"first"_s});
     session::Console console(test::shippedSchema());
-    transport::ImcUdpConfig config;
-    config.port = 0;
-    config.discoveryPort = 0;
-    config.heartbeatMs = 200;
-    config.destinations = {{QHostAddress::LocalHost, 16122}};
+    const transport::ImcUdpConfig config = imcTo({16122});
     ASSERT_TRUE(console.startImc(config));
     ASSERT_TRUE(console.startDds({11, {}, 0x4001}));
     usv.start({u"--dds"_s, u"--dds-domain"_s, u"11"_s, u"--id"_s, u"0x42"_s, u"--name"_s, u"caravela-sim"_s,
@@ -248,11 +252,7 @@ TEST(PlanExecution, EachInjectedFaultRaisesItsAlarm)
     vehicle.start({u"--id"_s, u"0x1f"_s, u"--name"_s, u"lauv-sim-1"_s, u"--port"_s, u"16124"_s, u"--time-factor"_s, u"30"_s,
                    u"--fault"_s, u"navigation-loss@5"_s, u"--fault"_s, u"payload-failure@5"_s, u"--fault"_s,
                    u"motor-jammed@5"_s, u"--fault"_s, u"battery-drain@5"_s, u"--fault"_s, u"comms-loss@11:6"_s});
-    transport::ImcUdpConfig config;
-    config.port = 0;
-    config.discoveryPort = 0;
-    config.heartbeatMs = 200;
-    config.destinations = {{QHostAddress::LocalHost, 16124}};
+    const transport::ImcUdpConfig config = imcTo({16124});
     session::Console console(test::shippedSchema());
     ASSERT_TRUE(console.startImc(config));
     ASSERT_TRUE(QTest::qWaitFor([&] { return heard(console.tree(), u"lauv-sim-1"_s); }, 15000));
@@ -293,11 +293,7 @@ TEST(PlanExecution, AScenarioRunsSeveralVehiclesInOneProcess)
     out.close();
     test::SimProcess sims;
     sims.start({u"--scenario"_s, file, u"--dds-domain"_s, u"12"_s});
-    transport::ImcUdpConfig config;
-    config.port = 0;
-    config.discoveryPort = 0;
-    config.heartbeatMs = 200;
-    config.destinations = {{QHostAddress::LocalHost, 16130}, {QHostAddress::LocalHost, 16132}};
+    const transport::ImcUdpConfig config = imcTo({16130, 16132});
     session::Console console(test::shippedSchema());
     ASSERT_TRUE(console.startImc(config));
     ASSERT_TRUE(console.startDds({12, {}, 0x4001}));
@@ -315,11 +311,7 @@ TEST(PlanExecution, StopAndAbortEndAPlanOnAVehicleProcess)
 {
     test::SimProcess vehicle;
     vehicle.start({u"--id"_s, u"0x1f"_s, u"--name"_s, u"lauv-sim-1"_s, u"--port"_s, u"16125"_s, u"--time-factor"_s, u"10"_s});
-    transport::ImcUdpConfig config;
-    config.port = 0;
-    config.discoveryPort = 0;
-    config.heartbeatMs = 200;
-    config.destinations = {{QHostAddress::LocalHost, 16125}};
+    const transport::ImcUdpConfig config = imcTo({16125});
     session::Console console(test::shippedSchema());
     ASSERT_TRUE(console.startImc(config));
     ASSERT_TRUE(QTest::qWaitFor([&] { return heard(console.tree(), u"lauv-sim-1"_s); }, 15000));
