@@ -142,7 +142,7 @@ Rectangle {
                     color: Theme.background
                     Rectangle {
                         objectName: "progressBar"
-                        width: parent.width * Math.max(0, Math.min(1, (progress.value || 0) / 100))
+                        width: parent.width * Math.max(0, Math.min(1, (progress.value > 0 ? progress.value : 0) / 100))
                         height: parent.height
                         radius: parent.radius
                         color: Theme.accent
@@ -151,7 +151,9 @@ Rectangle {
                 Text {
                     objectName: "progress"
                     visible: panel.executing
-                    text: qsTr("%1 % · ETA %2").arg(Math.round(progress.value || 0)).arg(panel.formatSeconds(eta.value))
+                    // DUNE reports -1 when it does not compute progress (its default).
+                    text: (progress.value >= 0 ? qsTr("%1 %").arg(Math.round(progress.value)) : qsTr("progress not reported"))
+                          + " · " + qsTr("ETA %1").arg(panel.formatSeconds(eta.value))
                     color: Theme.textDim
                     font.pixelSize: Theme.smallFontPixelSize
                     font.family: Theme.monospaceFont

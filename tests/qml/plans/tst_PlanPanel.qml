@@ -81,4 +81,12 @@ TestCase {
         tryVerify(() => findChild(panel, "state").text.indexOf("READY · last plan survey: FAILURE") >= 0, 2000,
                   findChild(panel, "state").text)
     }
+
+    // A vehicle that does not compute progress (DUNE's default) says -1.
+    function test_2_progressNotReportedIsSaid() {
+        Fixtures.ingest("PlanControlState", 0x1f, { state: 3, plan_id: "other", man_id: "m1", plan_progress: -1, plan_eta: 125 })
+        tryVerify(() => findChild(panel, "progress").text === "progress not reported · ETA 2 min 5 s", 2000,
+                  findChild(panel, "progress").text)
+        compare(findChild(panel, "progressBar").width, 0)
+    }
 }
