@@ -195,7 +195,7 @@ std::expected<void, QString> PlanDesk::refresh(const QString &system)
     auto v = vehicle(system);
     if (!v)
         return std::unexpected(v.error());
-    (*v)->client->getState(true);
+    ask(**v);
     return {};
 }
 
@@ -296,9 +296,21 @@ void PlanDesk::receive(const msg::Message &message)
         found->second.client->receive(message);
 }
 
+// Asks a vehicle which plans it holds, unless a question is on its way
+// (views ask on every look; an unreachable vehicle would pile them up).
+void PlanDesk::ask(Vehicle &v)
+{
+    if (v.asking)
+        return;
+    v.asking = true;
+    v.client->getState(true);
+}
+
 void PlanDesk::replied(quint16 id, const PlanClient::Reply &r)
 {
     Vehicle &v = m_vehicles[id];
+    if (r.message == u"PlanDB" && r.op == u"GET_DSTATE")
+        v.asking = false;
     const QString what = r.planId.isEmpty() ? r.op : r.op + u' ' + r.planId;
     if (!r.ok) {
         note(id, u"%1 failed: %2"_s.arg(what, r.info));
@@ -329,7 +341,7 @@ void PlanDesk::replied(quint16 id, const PlanClient::Reply &r)
     note(id, r.info.isEmpty() ? what + u": done"_s : u"%1: %2"_s.arg(what, r.info));
     if (r.message == u"PlanDB" && (r.op == u"SET" || r.op == u"DEL")) {
         v.copies.erase(r.planId);
-        v.client->getState(true); // what it holds now, with the new MD5s
+        ask(v); // what it holds now, with the new MD5s
     }
 }
 

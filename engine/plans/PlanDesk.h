@@ -105,6 +105,7 @@ private:
         std::map<QString, mission::Plan> copies; // its plans, fetched with GET
         QStringList log;
         bool honours = false;
+        bool asking = false; // a GET_DSTATE is on its way
         std::unique_ptr<Supervisor> supervisor;
     };
 
@@ -113,6 +114,7 @@ private:
     const Vehicle *known(const QString &system) const;
     std::expected<msg::Message, QString> specification(const QString &system, const QString &planId) const;
     void note(quint16 id, const QString &line);
+    void ask(Vehicle &v);
     void replied(quint16 id, const PlanClient::Reply &reply);
     void ended(quint16 id, const QString &planId, bool ok, const QString &info);
 
