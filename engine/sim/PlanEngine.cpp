@@ -4,8 +4,11 @@
 #include "mission/ImcPlan.h"
 #include "plans/PlanDatabase.h"
 
+#include <atomic>
+#include <chrono>
 #include <cmath>
 #include <limits>
+#include <thread>
 
 namespace neptus::sim {
 
@@ -291,6 +294,7 @@ std::optional<QString> PlanEngine::start(msg::Message specification, const msg::
     run.total = static_cast<int>(run.plan.executionOrder().size());
     m_run = std::move(run);
     m_lastPlan = m_run->plan.id;
+    m_planStart = m_simTime;
     startManeuver(m_run->plan.start, *motion);
     return std::nullopt;
 }
@@ -328,6 +332,49 @@ void PlanEngine::startManeuver(const QString &id, const Motion &motion)
     r.maneuverStart = m_now;
 }
 
+std::optional<bool> PlanEngine::evaluate(const QString &condition)
+{
+    if (!m_js)
+        m_js = std::make_unique<QJSEngine>();
+    const Motion &m = m_lastMotion;
+    QString name = m_name;
+    name.replace(u'\\', u"\\\\"_s).replace(u'"', u"\\\""_s);
+    const QString program = u"(function () { const $elapsed = %1, $waited = %2;\n"
+                            "const sys = {\"%3\": {EstimatedState: {x: %4, y: %5, z: %6, depth: %7, alt: %8, height: %9, psi: %10, u: %11}}};\n"
+                            "return Boolean(%12\n); })()"_s
+                                .arg(m_simTime - m_planStart, 0, 'f', 3)
+                                .arg(m_run && m_run->stage == Stage::Waiting ? m_simTime - m_waitStart : 0.0, 0, 'f', 3)
+                                .arg(name)
+                                .arg(m.ned.x(), 0, 'g', 12).arg(m.ned.y(), 0, 'g', 12).arg(m.ned.z(), 0, 'g', 12)
+                                .arg(std::max(0.0, m.ned.z()), 0, 'g', 12)
+                                .arg(std::max(0.0, m_limits.bottomDepth - m.ned.z()), 0, 'g', 12)
+                                .arg(-m.ned.z(), 0, 'g', 12).arg(m.psi, 0, 'g', 12).arg(m.speed, 0, 'g', 12)
+                                .arg(condition);
+    // Stopped after 50 ms: a condition that never ends does not stop the vehicle's clock.
+    std::atomic<bool> finished{false};
+    std::thread watchdog([this, &finished] {
+        for (int i = 0; i < 50 && !finished; ++i)
+            std::this_thread::sleep_for(std::chrono::milliseconds(1));
+        if (!finished)
+            m_js->setInterrupted(true);
+    });
+    const QJSValue result = m_js->evaluate(program);
+    finished = true;
+    watchdog.join();
+    const bool interrupted = m_js->isInterrupted();
+    m_js->setInterrupted(false);
+    if (interrupted) {
+        m_conditionError = u"it did not finish within 50 ms"_s;
+        return std::nullopt;
+    }
+    if (result.isError()) {
+        m_conditionError = result.toString() + (result.toString().contains(u"sys"_s) || result.toString().contains(u"undefined"_s)
+                                                    ? u" (this vehicle sees only itself)"_s : QString());
+        return std::nullopt;
+    }
+    return result.toBool();
+}
+
 std::expected<std::optional<QString>, QString> PlanEngine::nextManeuver()
 {
     const Run &r = *m_run;
@@ -340,9 +387,11 @@ std::expected<std::optional<QString>, QString> PlanEngine::nextManeuver()
         if (m_transitions == Transitions::FirstOnly || condition.isEmpty() || condition == u"ManeuverIsDone"
             || condition == u"true")
             return std::optional<QString>(t.to);
-        const std::optional<bool> holds = m_evaluator ? m_evaluator(condition) : std::nullopt;
+        m_conditionError.clear();
+        const std::optional<bool> holds = m_evaluator ? m_evaluator(condition) : evaluate(condition);
         if (!holds)
-            return std::unexpected(u"cannot evaluate the condition '%1' (%2 to %3)"_s.arg(condition, t.from, t.to));
+            return std::unexpected(u"cannot evaluate the condition '%1' (%2 to %3)%4"_s.arg(condition, t.from, t.to,
+                m_conditionError.isEmpty() ? QString() : u": "_s + m_conditionError));
         if (*holds)
             return std::optional<QString>(t.to);
     }
@@ -370,6 +419,7 @@ msg::Message PlanEngine::finish(bool success, const QString &info, double wallTi
 std::vector<msg::Message> PlanEngine::advance(Motion &motion, double dt, double wallTime)
 {
     m_now = wallTime;
+    m_simTime += dt;
     std::vector<msg::Message> out;
     if (!m_run) {
         const double surface = 0; // idle: an AUV floats up, a boat stops, a UAV circles where it is
@@ -443,6 +493,8 @@ std::vector<msg::Message> PlanEngine::advance(Motion &motion, double dt, double 
     if (!next) {
         out.push_back(finish(false, next.error(), wallTime));
     } else if (!*next) {
+        if (r.stage != Stage::Waiting)
+            m_waitStart = m_simTime;
         r.stage = Stage::Waiting; // no condition holds yet
     } else if ((*next)->isEmpty()) {
         out.push_back(finish(true, u"plan completed"_s, wallTime));

@@ -5,6 +5,7 @@
 #include "mission/PlanGeometry.h"
 #include "sim/Kinematics.h"
 
+#include <QJSEngine>
 #include <QString>
 
 #include <functional>
@@ -26,9 +27,16 @@ namespace neptus::sim {
 //    and a PlanControl SUCCESS ("plan completed") or FAILURE (with the
 //    reason) to whoever started the plan when it ends.
 // After a maneuver it takes the first transition whose condition holds
-// ("ManeuverIsDone" always does; others go to the condition evaluator, and
-// it waits where it is while none holds), or, like DUNE, the first
-// transition whatever its condition (Transitions::FirstOnly).
+// ("ManeuverIsDone" always does; it waits where it is while none holds), or,
+// like DUNE, the first transition whatever its condition
+// (Transitions::FirstOnly). It evaluates conditions itself, in JavaScript
+// as the console's are written, over what it knows: its own state as
+// sys["<its name>"].EstimatedState (x, y, z, depth, alt, height, psi, u),
+// $elapsed (simulated seconds since the plan started) and $waited (since it
+// began waiting at this transition), each run stopped after 50 ms. A
+// condition on anything else (another vehicle) cannot be evaluated here and
+// fails the plan, saying why; the console's supervisor is for those. An
+// evaluator set with setEvaluator() replaces this.
 class PlanEngine
 {
 public:
@@ -102,6 +110,8 @@ private:
     double maneuverEta(const Motion &motion) const;
     mission::SpeedModel speeds() const; // its limits' (100 % is its top speed)
     std::optional<double> downOf(double z, const QString &units) const;
+    // Its own evaluation of a condition; empty (with m_conditionError set) when it cannot.
+    std::optional<bool> evaluate(const QString &condition);
 
     std::shared_ptr<const msg::Schema> m_schema;
     msg::Codec m_codec;
@@ -121,6 +131,10 @@ private:
     int m_lastOutcome = 0; // PlanControlState.last_outcome: NONE, SUCCESS, FAILURE
     QString m_lastInfo;
     double m_now = 0;
+    double m_simTime = 0;      // simulated seconds, from advance()
+    double m_planStart = 0, m_waitStart = 0;
+    QString m_conditionError;
+    std::unique_ptr<QJSEngine> m_js;
 };
 
 } // namespace neptus::sim

@@ -482,3 +482,31 @@ TEST(Scenario, MistakesAreNamedByFileLineOrVehicleAndKey)
     EXPECT_EQ(error(R"({"vehicles": [{"id": 70000, "name": "a", "port": 1}]})"),
               u"s.json: vehicles[0] (a): id must be a number from 1 to 65534 (or \"0x1f\")"_s);
 }
+
+// Conditions it can see (its own state, $elapsed, $waited) it evaluates
+// itself; one on another vehicle, or one that never ends, fails the plan
+// saying why.
+TEST_F(Sim, ItEvaluatesConditionsOnItsOwnStateNatively)
+{
+    mission::Plan p = plan(u"choice"_s);
+    p.transitions.removeAt(1); // a → b only, when its condition holds
+    p.transitions[0].condition = u"$waited > 20 && sys[\"lauv-sim-1\"].EstimatedState.depth < 1"_s;
+    const auto specOf = [&](const mission::Plan &plan) { return *mission::planSpecification(plan, *schema); };
+    send(request("PlanControl", "START", u"choice"_s, specOf(p)));
+    runUntil([&] { return vehicle.plans().currentManeuver() != u"a"_s; }, 200);
+    EXPECT_EQ(vehicle.plans().currentManeuver(), u"b"_s) << "a → b once it had waited 20 s at the surface";
+    EXPECT_GT(t, 20 + 10) << "it waited 20 s after getting to a, 22 m away";
+
+    p.transitions[0].condition = u"sys[\"caravela-sim\"].EstimatedState.depth < 2"_s;
+    send(request("PlanControl", "START", u"choice"_s, specOf(p)));
+    runUntil([&] { return !vehicle.plans().executing(); }, 200);
+    auto end = last("PlanControl");
+    EXPECT_EQ(enumOf(*end, "type"), u"FAILURE");
+    EXPECT_TRUE(end->text(u"info").contains(u"this vehicle sees only itself"_s)) << end->text(u"info").toStdString();
+
+    p.transitions[0].condition = u"(function () { while (true) {} })()"_s;
+    send(request("PlanControl", "START", u"choice"_s, specOf(p)));
+    runUntil([&] { return !vehicle.plans().executing(); }, 200);
+    end = last("PlanControl");
+    EXPECT_TRUE(end->text(u"info").contains(u"did not finish within 50 ms"_s)) << end->text(u"info").toStdString();
+}
