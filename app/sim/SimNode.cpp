@@ -25,7 +25,12 @@ SimNode::SimNode(std::shared_ptr<const msg::Schema> schema, Options options, QOb
     , m_schema(schema)
     , m_options(std::move(options))
     , m_codec(schema)
-    , m_vehicle(schema, m_options.vehicle.config)
+    , m_vehicle(schema, [this] {
+        // It announces where its socket is.
+        sim::SimulatedVehicle::Config config = m_options.vehicle.config;
+        config.services = QStringLiteral("imc+udp://%1:%2/").arg(m_options.vehicle.host).arg(m_options.vehicle.port);
+        return config;
+    }())
 {
     for (const auto &f : m_options.vehicle.faults)
         m_vehicle.scheduleFault(f);

@@ -137,17 +137,15 @@ int main(int argc, char *argv[])
             return usage(QStringLiteral("--id must be a number from 1 to 65534, not '%1'").arg(parser.value(id)));
         v.config.id = static_cast<quint16>(idValue);
         v.config.name = parser.value(name);
-        const QString kindName = parser.value(kind).toLower();
-        if (kindName == u"auv") v.config.kind = sim::SimulatedVehicle::Kind::Auv;
-        else if (kindName == u"asv") v.config.kind = sim::SimulatedVehicle::Kind::Asv;
-        else if (kindName == u"uav") v.config.kind = sim::SimulatedVehicle::Kind::Uav;
-        else return usage(QStringLiteral("--kind must be auv, asv or uav, not '%1'").arg(parser.value(kind)));
+        const auto kindValue = sim::SimulatedVehicle::kindNamed(parser.value(kind));
+        if (!kindValue)
+            return usage(QStringLiteral("--kind must be auv, asv or uav, not '%1'").arg(parser.value(kind)));
+        v.config.kind = *kindValue;
         const uint portValue = parser.value(port).toUInt(&ok);
         if (!ok || portValue == 0 || portValue > 65535)
             return usage(QStringLiteral("--port must be a port number, not '%1'").arg(parser.value(port)));
         v.port = static_cast<quint16>(portValue);
         v.host = parser.value(host);
-        v.config.services = QStringLiteral("imc+udp://%1:%2/").arg(v.host).arg(v.port);
         v.config.phase = parser.value(phase).toDouble() * 3.14159265358979 / 180;
         for (const QString &f : parser.values(fault)) {
             auto timed = sim::SimulatedVehicle::parseFault(f);

@@ -44,12 +44,6 @@ void HealthMonitor::forget(quint16 id)
     m_systems.erase(it);
 }
 
-double HealthMonitor::forgetAfter() const
-{
-    QMutexLocker lock(&m_mutex);
-    return static_cast<double>(m_forgetAfterMs) / 1000.0;
-}
-
 Level HealthMonitor::levelOfEntityState(qint64 state)
 {
     switch (state) {
@@ -178,26 +172,22 @@ QList<quint16> HealthMonitor::check()
             ++it;
             continue;
         }
-        if (!establishedLocked(it.key(), system)) {
+        const bool established = establishedLocked(it.key(), system);
+        const qint64 forgetMs = established ? m_forgetAfterMs : shortLivedLimit; // 0: never
+        if (forgetMs > 0 && silent > static_cast<double>(forgetMs)) {
+            m_graph.forget(system.node); // its alarms and its entities', to Unknown
+            forgotten.append(it.key());
+            it = m_systems.erase(it);
+            continue;
+        }
+        if (!established) {
             // What its entities said is as doubtful as the system itself: no
             // forged id's entity failure stays behind (the summary names it).
             for (const Entity &entity : std::as_const(system.entities))
                 if (m_graph.ownLevel(entity.node) != Unknown)
                     m_graph.raise(entity.node, Unknown);
-            if (silent > static_cast<double>(shortLivedLimit)) {
-                m_graph.forget(system.node);
-                forgotten.append(it.key());
-                it = m_systems.erase(it);
-                continue;
-            }
             shortLived.append(it.key());
             ++it;
-            continue;
-        }
-        if (m_forgetAfterMs > 0 && silent > static_cast<double>(m_forgetAfterMs)) {
-            m_graph.forget(system.node);
-            forgotten.append(it.key());
-            it = m_systems.erase(it);
             continue;
         }
         // The text follows the silence as it grows (once a second at most).

@@ -41,7 +41,6 @@ public:
     void setForgetAfter(double seconds); // 0: only short-lived systems are forgotten
     // Forgets a system now (its alarms to Unknown); heard again, it starts anew.
     void forget(quint16 id);
-    double forgetAfter() const;
 
     static Level levelOfEntityState(qint64 state);
 
@@ -72,7 +71,7 @@ private:
     AlarmGraph &m_graph;
     const tree::VariableTree &m_tree;
     const Clock *m_clock;
-    mutable QMutex m_mutex;
+    QMutex m_mutex;
     double m_timeoutMs = 2000;
     qint64 m_forgetAfterMs = 0;
     QHash<quint16, System> m_systems;

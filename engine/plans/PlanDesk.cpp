@@ -26,12 +26,6 @@ PlanDesk::PlanDesk(std::shared_ptr<const msg::Schema> schema, const tree::Variab
     connect(&m_supervision, &QTimer::timeout, this, &PlanDesk::supervise);
 }
 
-void PlanDesk::setHonoursConditions(const QString &system, bool honours)
-{
-    if (auto v = vehicle(system))
-        (*v)->honours = honours;
-}
-
 bool PlanDesk::supervising(const QString &system) const
 {
     const Vehicle *v = known(system);
@@ -71,12 +65,23 @@ void PlanDesk::setMission(mission::Mission mission, const QString &path)
 {
     m_mission = std::move(mission);
     m_missionPath = path;
+    // The MD5s the vehicles' copies are compared with, once per mission (not on every look).
+    m_md5.clear();
+    for (const mission::Plan &p : m_mission.plans)
+        if (const auto spec = mission::planSpecification(p, *m_schema))
+            if (const auto md5 = planMd5(m_codec, *spec))
+                m_md5[p.id] = *md5;
     // Conditions are checked when the mission opens, not first when a vehicle waits on them.
     m_problems.clear();
-    if (scripting::ScriptHost *scripts = m_scripts ? m_scripts() : nullptr)
-        for (const mission::Plan &p : m_mission.plans)
-            for (const QString &error : Supervisor::conditionErrors(p, *scripts))
-                m_problems << p.id + u": "_s + error;
+    // The script host starts only for a mission that has conditions.
+    for (const mission::Plan &p : m_mission.plans) {
+        scripting::ScriptHost *scripts = Supervisor::needed(p) && m_scripts ? m_scripts() : nullptr;
+        if (!scripts)
+            continue;
+        for (const QString &error : Supervisor::conditionErrors(p, *scripts))
+            m_problems << p.id + u": "_s + error;
+    }
+    emit missionChanged();
     for (const auto &[id, vehicle] : m_vehicles)
         emit changed(m_tree.systemName(id));
 }
@@ -130,6 +135,9 @@ std::optional<mission::Plan> PlanDesk::plan(const QString &system, const QString
     Vehicle *v = known(system);
     if (!v)
         return std::nullopt;
+    // A stretch ("meet.2") was started inline: the vehicle holds no such plan to fetch.
+    if (v->supervisor && v->supervisor->part() == planId)
+        return v->supervisor->plan();
     if (const auto copy = v->copies.find(planId); copy != v->copies.end())
         return copy->second;
     // Fetched once: an empty copy marks the question asked.
@@ -166,11 +174,12 @@ Sync PlanDesk::sync(const QString &system, const QString &planId) const
     const auto stored = std::find_if(v->stored.begin(), v->stored.end(), [&](const StoredPlan &p) { return p.id == planId; });
     if (stored == v->stored.end())
         return Sync::Absent;
-    const auto spec = specification(system, planId);
-    if (!spec)
+    const auto ours = m_md5.find(planId);
+    const QList<const mission::Plan *> plans = missionPlans(system);
+    const bool inMission = std::any_of(plans.begin(), plans.end(), [&](const mission::Plan *p) { return p->id == planId; });
+    if (!inMission)
         return Sync::Same; // the vehicle's own plan: nothing here to differ from
-    const auto md5 = planMd5(m_codec, *spec);
-    return md5 && *md5 == stored->md5 ? Sync::Same : Sync::Differs;
+    return ours != m_md5.end() && ours->second == stored->md5 ? Sync::Same : Sync::Differs;
 }
 
 QStringList PlanDesk::log(const QString &system) const
@@ -231,7 +240,7 @@ std::expected<void, QString> PlanDesk::start(const QString &system, const QStrin
     // Conditions the vehicle would ignore: carried out from here.
     const mission::Plan *conditional = nullptr;
     for (const mission::Plan *p : missionPlans(system))
-        if (p->id == planId && Supervisor::needed(*p) && !(*v)->honours)
+        if (p->id == planId && Supervisor::needed(*p))
             conditional = p;
     if (conditional) {
         const quint16 id = (*v)->client->vehicle();

@@ -29,8 +29,8 @@ namespace neptus::plans {
 // "systems/<vehicle>/plan" (Warning when it failed, with the vehicle's
 // reason; Info when it completed or this console stopped it). A plan with
 // conditions on its transitions is carried out by a Supervisor, one stretch
-// at a time, unless the vehicle is known to honour conditions itself.
-// Since DUNE ignores them, by default every vehicle is supervised.
+// at a time, for every vehicle: DUNE ignores conditions, and only the
+// console sees every vehicle a condition may name.
 class PlanDesk : public QObject
 {
     Q_OBJECT
@@ -62,7 +62,8 @@ public:
 
     // The mission's plans for a vehicle (each plan names its vehicle).
     QList<const mission::Plan *> missionPlans(const QString &system) const;
-    // A plan by id: the mission's, else the vehicle's own copy once fetched (GET).
+    // A plan by id: the mission's, the whole plan a stretch being supervised
+    // belongs to, else the vehicle's own copy once fetched (GET).
     std::optional<mission::Plan> plan(const QString &system, const QString &planId);
     // What the vehicle's database held when last asked; empty until it answers.
     std::vector<StoredPlan> storedPlans(const QString &system) const;
@@ -82,9 +83,6 @@ public:
 
     // A PlanDB or PlanControl from the links (Console::planMessageReceived).
     void receive(const msg::Message &message);
-    // A vehicle whose plan engine evaluates transition conditions itself
-    // gets conditional plans whole (the simulator in its default mode).
-    void setHonoursConditions(const QString &system, bool honours);
     // Whether a plan of this vehicle's runs under supervision now.
     bool supervising(const QString &system) const;
     // Supervisors look at their vehicles and decide (a timer does it every second).
@@ -95,6 +93,8 @@ public:
 signals:
     // A vehicle's stored plans, sync or log changed.
     void changed(const QString &system);
+    // Another mission is open (or the same, changed).
+    void missionChanged();
 
 private:
     struct Vehicle
@@ -104,7 +104,6 @@ private:
         bool fetched = false;
         std::map<QString, mission::Plan> copies; // its plans, fetched with GET
         QStringList log;
-        bool honours = false;
         bool asking = false; // a GET_DSTATE is on its way
         std::unique_ptr<Supervisor> supervisor;
     };
@@ -129,6 +128,7 @@ private:
     mission::Mission m_mission;
     QString m_missionPath;
     QStringList m_problems;
+    std::map<QString, QByteArray> m_md5; // the mission's plans' MD5s, by plan id
     std::map<quint16, Vehicle> m_vehicles;
     std::chrono::milliseconds m_timeout{3000};
 };

@@ -153,7 +153,7 @@ void Supervisor::check()
             return conditions.join(u" or "_s);
         }()));
     }
-    setConditions(); // $elapsed and $waited move on
+    setConditions();
     for (qsizetype i = 0; i < m_exits.size(); ++i) {
         const mission::Transition &t = m_exits[i];
         bool holds = plain(t);
@@ -248,10 +248,16 @@ QStringList Supervisor::conditionErrors(const mission::Plan &plan, const scripti
     return errors;
 }
 
+// Installed once when the vehicle begins to wait (they run again whenever
+// what they read changes); those on $elapsed or $waited again every check,
+// their times being part of the script.
 void Supervisor::setConditions()
 {
+    const bool again = m_conditionsSet;
+    m_conditionsSet = true;
     for (qsizetype i = 0; i < m_exits.size(); ++i) {
-        if (plain(m_exits[i]))
+        const QString &condition = m_exits[i].condition;
+        if (plain(m_exits[i]) || (again && !condition.contains(u"$elapsed"_s) && !condition.contains(u"$waited"_s)))
             continue;
         if (!m_scripts) {
             m_log(u"condition '%1' cannot be evaluated: this console runs no scripts"_s.arg(m_exits[i].condition));
@@ -263,6 +269,7 @@ void Supervisor::setConditions()
 
 void Supervisor::clearConditions()
 {
+    m_conditionsSet = false;
     if (!m_scripts)
         return;
     for (qsizetype i = 0; i < m_exits.size(); ++i)

@@ -97,6 +97,7 @@ private:
     QList<mission::Transition> m_exits; // out of the stretch's last maneuver, with conditions
     qint64 m_startMs = 0, m_waitSinceMs = 0;
     bool m_waiting = false;
+    bool m_conditionsSet = false; // installed in the script host for this wait
     bool m_final = false;    // the stretch has no exits: its end is the plan's
     bool m_finished = false;
 };

@@ -12,6 +12,10 @@ PlanDeskModel::PlanDeskModel(neptus::plans::PlanDesk *desk, QObject *parent)
     , m_desk(desk)
 {
     connect(desk, &neptus::plans::PlanDesk::changed, this, &PlanDeskModel::changed);
+    connect(desk, &neptus::plans::PlanDesk::missionChanged, this, [this] {
+        m_summaries.clear();
+        emit missionChanged();
+    });
 }
 
 QString PlanDeskModel::missionName() const
@@ -22,10 +26,7 @@ QString PlanDeskModel::missionName() const
 
 QString PlanDeskModel::openMission(const QString &path)
 {
-    const QString why = said(m_desk->openMission(path));
-    if (why.isEmpty())
-        emit missionChanged();
-    return why;
+    return said(m_desk->openMission(path)); // missionChanged comes from the desk
 }
 
 QVariantList PlanDeskModel::plansFor(const QString &system)
@@ -35,19 +36,23 @@ QVariantList PlanDeskModel::plansFor(const QString &system)
     QVariantList plans;
     QStringList listed;
     for (const neptus::mission::Plan *p : m_desk->missionPlans(system)) {
-        const auto geometry = neptus::mission::planGeometry(*p);
+        // What a plan is (its geometry) is worked out once per mission, not on every look.
+        auto summary = m_summaries.find(p->id);
+        if (summary == m_summaries.end()) {
+            const auto geometry = neptus::mission::planGeometry(*p);
+            summary = m_summaries.insert(p->id, QVariantMap{{u"id"_s, p->id},
+                                                            {u"description"_s, p->description},
+                                                            {u"maneuvers"_s, static_cast<int>(p->maneuvers.size())},
+                                                            {u"length"_s, geometry.length},
+                                                            {u"duration"_s, geometry.duration.value_or(-1)}});
+        }
+        QVariantMap plan = *summary;
         const Sync sync = m_desk->sync(system, p->id);
-        plans.append(QVariantMap{
-            {u"id"_s, p->id},
-            {u"description"_s, p->description},
-            {u"maneuvers"_s, static_cast<int>(p->maneuvers.size())},
-            {u"length"_s, geometry.length},
-            {u"duration"_s, geometry.duration.value_or(-1)},
-            {u"sync"_s, !m_desk->fetched(system) ? u"unknown"_s
-                        : sync == Sync::Same     ? u"same"_s
-                        : sync == Sync::Differs  ? u"differs"_s
-                                                 : u"absent"_s},
-        });
+        plan.insert(u"sync"_s, !m_desk->fetched(system) ? u"unknown"_s
+                               : sync == Sync::Same     ? u"same"_s
+                               : sync == Sync::Differs  ? u"differs"_s
+                                                        : u"absent"_s);
+        plans.append(plan);
         listed << p->id;
     }
     for (const auto &stored : m_desk->storedPlans(system)) {

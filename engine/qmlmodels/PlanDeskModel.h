@@ -2,6 +2,7 @@
 
 #include "plans/PlanDesk.h"
 
+#include <QHash>
 #include <QObject>
 #include <QVariantList>
 #include <QtQml/qqmlregistration.h>
@@ -53,4 +54,5 @@ private:
     static QString said(const std::expected<void, QString> &result) { return result ? QString() : result.error(); }
 
     neptus::plans::PlanDesk *m_desk;
+    QHash<QString, QVariantMap> m_summaries; // the mission's plans: id, length, duration …
 };

@@ -233,9 +233,7 @@ void Console::check()
 
 void Console::forget(quint16 system)
 {
-    if (const auto node = m_graph.find(QStringLiteral("systems/") + m_tree.systemName(system)); node != alarms::AlarmGraph::noNode)
-        m_graph.forget(node);
-    m_health.forget(system);
+    m_health.forget(system); // its alarm node, and everything under it (link, sources, entities), to Unknown
     m_tree.forget(system);
     m_naming.forget(system);
     m_linkStatistics.forget(system);

@@ -92,8 +92,8 @@ public:
 
     // Forgets a system everywhere: its tree branch, its alarms (to Unknown),
     // its link statistics and route, what was asked of it. Heard again, it
-    // is met anew. check() does it for systems silent past
-    // health().forgetAfter() (and short-lived ones after 10 min).
+    // is met anew. check() does it for the systems the health monitor lets
+    // go (HealthMonitor::setForgetAfter; short-lived ones after 10 min).
     void forget(quint16 system);
 
     // A few times a second: silence, entity queries. Once a second: rates and

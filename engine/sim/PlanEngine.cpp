@@ -167,14 +167,6 @@ std::vector<msg::Message> PlanEngine::planDb(const msg::Message &request, double
     return {answer};
 }
 
-std::vector<QString> PlanEngine::planIds() const
-{
-    std::vector<QString> ids;
-    for (const auto &[id, stored] : m_database)
-        ids.push_back(id);
-    return ids;
-}
-
 QByteArray PlanEngine::databaseMd5() const
 {
     QList<std::pair<QString, QByteArray>> hashes;
@@ -330,6 +322,19 @@ void PlanEngine::startManeuver(const QString &id, const Motion &motion)
     r.endless = r.holdLeft <= 0 && (m.type == u"Loiter" || m.type == u"StationKeeping" || m.type == u"CompassCalibration");
     r.yoyoDown = true;
     r.maneuverStart = m_now;
+    // What the maneuvers after this one take (along the first transitions),
+    // worked out once here, not in every report; -1 when one never ends.
+    r.laterSeconds = 0;
+    std::optional<mission::Waypoint> previous; // set once past this maneuver
+    for (const mission::Maneuver *later : r.plan.executionOrder()) {
+        if (previous && r.laterSeconds >= 0) {
+            const mission::ManeuverGeometry g = mission::maneuverGeometry(*later, &*previous, speeds());
+            previous = g.points.last();
+            r.laterSeconds = g.duration ? r.laterSeconds + *g.duration : -1;
+        }
+        if (later->id == id)
+            previous = r.geometry.points.last();
+    }
 }
 
 std::optional<bool> PlanEngine::evaluate(const QString &condition)
@@ -481,7 +486,8 @@ std::vector<msg::Message> PlanEngine::advance(Motion &motion, double dt, double 
     }
     case Stage::Waiting:
         hold(motion, nullptr, dt, m_limits);
-        done = true; // look at the transitions again
+        // Look at the transitions again once a simulated second.
+        done = std::floor(m_simTime) > std::floor(m_simTime - dt);
         break;
     }
     m_lastMotion = motion;
@@ -538,18 +544,7 @@ msg::Message PlanEngine::controlState(double wallTime) const
     const Run &r = *m_run;
     const double manEta = maneuverEta(m_lastMotion);
     // The plan's ETA: this maneuver's and those after it along the first transitions.
-    double planEta = manEta;
-    const QList<const mission::Maneuver *> order = r.plan.executionOrder();
-    std::optional<mission::Waypoint> previous; // set once past the current maneuver
-    for (const mission::Maneuver *m : order) {
-        if (previous && planEta >= 0) {
-            const mission::ManeuverGeometry g = mission::maneuverGeometry(*m, &*previous, speeds());
-            previous = g.points.last();
-            planEta = g.duration ? planEta + *g.duration : -1;
-        }
-        if (m->id == r.maneuver)
-            previous = r.geometry.points.last();
-    }
+    const double planEta = manEta < 0 || r.laterSeconds < 0 ? -1 : manEta + r.laterSeconds;
     // How far into this maneuver: along its points, then (if it waits or
     // circles for a time) through that time, each half of it.
     const mission::Maneuver &current = *r.plan.maneuver(r.maneuver);

@@ -59,7 +59,6 @@ public:
 
     bool executing() const { return m_run.has_value(); }
     QString currentManeuver() const { return m_run ? m_run->maneuver : QString(); }
-    std::vector<QString> planIds() const;
     QByteArray databaseMd5() const;
 
     msg::Message controlState(double wallTime) const;  // PlanControlState
@@ -94,6 +93,7 @@ private:
         int done = 0;     // maneuvers finished
         int total = 1;    // in the plan's execution order
         double maneuverStart = 0;
+        double laterSeconds = 0; // what the maneuvers after this one take; -1: one never ends
     };
 
     msg::Message make(const char *abbrev, double wallTime) const;

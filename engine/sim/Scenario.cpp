@@ -78,15 +78,11 @@ std::expected<Scenario, QString> readScenario(QByteArrayView json, const QString
             return fail(u"name is another vehicle's too"_s);
         names.insert(s.config.name);
 
-        const QString kind = v.value(u"kind"_s).toString(u"auv"_s).toLower();
-        if (kind == u"auv")
-            s.config.kind = SimulatedVehicle::Kind::Auv;
-        else if (kind == u"asv")
-            s.config.kind = SimulatedVehicle::Kind::Asv;
-        else if (kind == u"uav")
-            s.config.kind = SimulatedVehicle::Kind::Uav;
-        else
+        const QString kind = v.value(u"kind"_s).toString(u"auv"_s);
+        const auto kindValue = SimulatedVehicle::kindNamed(kind);
+        if (!kindValue)
             return fail(u"kind '%1' is not auv, asv or uav"_s.arg(kind));
+        s.config.kind = *kindValue;
 
         const qint64 port = v.value(u"port"_s).toInteger(-1);
         if (port < 1 || port > 65535)
@@ -124,7 +120,6 @@ std::expected<Scenario, QString> readScenario(QByteArrayView json, const QString
                 return fail(u"faults: "_s + fault.error());
             s.faults.push_back(*fault);
         }
-        s.config.services = u"imc+udp://%1:%2/"_s.arg(s.host).arg(s.port);
         scenario.vehicles.push_back(std::move(s));
     }
     return scenario;

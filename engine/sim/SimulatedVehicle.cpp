@@ -43,6 +43,17 @@ SimulatedVehicle::SimulatedVehicle(std::shared_ptr<const msg::Schema> schema, Co
 {
 }
 
+std::optional<SimulatedVehicle::Kind> SimulatedVehicle::kindNamed(QStringView name)
+{
+    if (name.compare(u"auv", Qt::CaseInsensitive) == 0)
+        return Kind::Auv;
+    if (name.compare(u"asv", Qt::CaseInsensitive) == 0)
+        return Kind::Asv;
+    if (name.compare(u"uav", Qt::CaseInsensitive) == 0)
+        return Kind::Uav;
+    return std::nullopt;
+}
+
 std::optional<SimulatedVehicle::Fault> SimulatedVehicle::faultNamed(QStringView name)
 {
     for (const auto &[fault, text] : faultTable)
@@ -82,7 +93,7 @@ std::expected<SimulatedVehicle::TimedFault, QString> SimulatedVehicle::parseFaul
 
 int SimulatedVehicle::faultsAt(double t) const
 {
-    int faults = m_faults;
+    int faults = None;
     for (const TimedFault &f : m_schedule)
         if (t >= f.start && (f.duration <= 0 || t < f.start + f.duration))
             faults |= f.fault;
@@ -232,13 +243,19 @@ std::vector<msg::Message> SimulatedVehicle::answer(const msg::Message &request, 
                 continue;
             const QString value = p.text(u"value").trimmed();
             if (value == u"none") {
-                m_faults = None;
                 m_schedule.clear();
                 continue;
             }
-            const qsizetype colon = value.indexOf(u':');
-            if (auto fault = parseFault(colon < 0 ? value : value.left(colon) + u'@' + QString::number(m_now) + value.mid(colon)))
-                m_schedule.push_back(colon < 0 ? TimedFault{fault->fault, m_now, 0} : *fault);
+            // From now, for the seconds after ':' (none: for good).
+            bool ok = true;
+            const std::optional<Fault> fault = faultNamed(value.section(u':', 0, 0));
+            const double duration = value.contains(u':') ? value.section(u':', 1).toDouble(&ok) : 0;
+            if (!fault || !ok || duration < 0) {
+                qWarning("%s: Fault '%s' is not one of %s[:seconds], or none", qPrintable(m_config.name), qPrintable(value),
+                         qPrintable(faultNames().join(QStringLiteral(", "))));
+                continue;
+            }
+            m_schedule.push_back({*fault, m_now, duration});
         }
         return out;
     }

@@ -39,7 +39,7 @@ public:
         double radiusM = 150;
         double speedMps = 1.5;
         double phase = 0;         // where on the circle it starts, radians
-        QString services;         // e.g. "imc+udp://127.0.0.1:6002/"
+        QString services;         // what its Announce says, "imc+udp://127.0.0.1:6002/" (SimNode: from its socket)
         // Send the EntityList every 10 s with the Announce (a DUNE vehicle
         // sends it only when asked: answer() does that).
         bool periodicEntityList = true;
@@ -55,6 +55,7 @@ public:
     enum Fault { None = 0, BatteryLow = 1, MotorJammed = 2, BatteryDrain = 4, NavigationLoss = 8, PayloadFailure = 16,
                  CommsLoss = 32 };
     static std::optional<Fault> faultNamed(QStringView name);
+    static std::optional<Kind> kindNamed(QStringView name); // "auv", "asv", "uav" (any case)
     static QStringList faultNames();
     // A fault from `start` simulated seconds for `duration` (0: for good).
     struct TimedFault
@@ -71,14 +72,12 @@ public:
     SimulatedVehicle &operator=(const SimulatedVehicle &) = delete;
 
     const Config &config() const { return m_config; }
-    void setFaults(int faults) { m_faults = faults; }
     void scheduleFault(const TimedFault &fault) { m_schedule.push_back(fault); }
-    // Faults on at simulated time t (set ones and scheduled ones).
+    // Faults on at time t (scheduled from the start, at a time or at run time).
     int faultsAt(double t) const;
     // Simulated seconds per second of step() time: plans run that much faster
     // while messages keep their rates.
     void setTimeFactor(double factor) { m_timeFactor = factor; }
-    int faults() const { return m_faults; }
 
     // Moves on to simulation time `t` seconds since start (the last call
     // was at `previous`) and returns the messages due (10 Hz state, 1 Hz the
@@ -113,7 +112,6 @@ private:
 
     std::shared_ptr<const msg::Schema> m_schema;
     Config m_config;
-    int m_faults = None;
     std::vector<TimedFault> m_schedule;
     double m_now = 0;         // the simulated time of the last step
     double m_drainFrom = -1;  // when the battery began to drain

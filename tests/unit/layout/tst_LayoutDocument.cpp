@@ -1,6 +1,7 @@
 // Console layout files as the designer reads, edits and writes them.
 #include "Paths.h"
 #include "LayoutDocument.h"
+#include "QtPrinters.h"
 
 #include <QDir>
 #include <QFile>
@@ -12,14 +13,6 @@
 
 using namespace neptus::layout;
 using namespace Qt::StringLiterals;
-
-QT_BEGIN_NAMESPACE
-// Readable failures.
-inline void PrintTo(const QString &text, std::ostream *os)
-{
-    *os << '"' << text.toStdString() << '"';
-}
-QT_END_NAMESPACE
 
 namespace {
 

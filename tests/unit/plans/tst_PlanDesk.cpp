@@ -8,6 +8,7 @@
 #include "sim/SimulatedVehicle.h"
 
 #include "Missions.h"
+#include "QtPrinters.h"
 #include "Schemas.h"
 
 #include <QTest>
@@ -16,10 +17,6 @@
 
 using namespace neptus;
 using namespace Qt::StringLiterals;
-
-QT_BEGIN_NAMESPACE
-inline void PrintTo(const QString &s, std::ostream *out) { *out << '"' << s.toStdString() << '"'; }
-QT_END_NAMESPACE
 
 namespace {
 
@@ -237,6 +234,9 @@ TEST_F(Desk, AConditionalPlanIsCarriedOutByTheConsoleForAFirstTransitionVehicle)
     other(200);
     ASSERT_TRUE(desk.start(u"lauv-sim-1"_s, u"choice"_s)) << "no need to send it first: stretches go whole";
     EXPECT_TRUE(desk.supervising(u"lauv-sim-1"_s));
+    const auto drawn = desk.plan(u"lauv-sim-1"_s, u"choice.1"_s);
+    ASSERT_TRUE(drawn) << "the map draws the whole plan a stretch belongs to";
+    EXPECT_EQ(drawn->id, u"choice"_s);
     run(120);
     EXPECT_EQ(vehicle.plans().currentManeuver(), u"wait"_s) << "a done, the vehicle waits for the condition";
     const QString log = desk.log(u"lauv-sim-1"_s).join(u'\n');

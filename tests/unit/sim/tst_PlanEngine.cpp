@@ -9,6 +9,7 @@
 #include "sim/SimulatedVehicle.h"
 
 #include "Fixtures.h"
+#include "QtPrinters.h"
 #include "Missions.h"
 #include "Schemas.h"
 
@@ -17,10 +18,6 @@
 
 #include <gtest/gtest.h>
 
-// QStrings in gtest's messages as text.
-QT_BEGIN_NAMESPACE
-inline void PrintTo(const QString &s, std::ostream *out) { *out << '"' << s.toStdString() << '"'; }
-QT_END_NAMESPACE
 
 using namespace neptus;
 using namespace Qt::StringLiterals;
@@ -451,7 +448,8 @@ TEST(Scenario, SeveralVehiclesOfSeveralKindsFromOneFile)
     ASSERT_EQ(auv.faults.size(), 2u);
     EXPECT_EQ(auv.faults[1].fault, sim::SimulatedVehicle::CommsLoss);
     EXPECT_EQ(auv.faults[1].duration, 30);
-    EXPECT_EQ(auv.config.services, u"imc+udp://127.0.0.1:6002/"_s);
+    EXPECT_EQ(auv.host, u"127.0.0.1"_s) << "loopback unless the scenario says";
+    EXPECT_EQ(auv.port, 6002);
     EXPECT_TRUE(asv.dds);
     EXPECT_EQ(asv.config.kind, sim::SimulatedVehicle::Kind::Asv);
     EXPECT_NEAR(asv.config.phase, M_PI, 1e-12);
