@@ -24,7 +24,10 @@ Rectangle {
 
     // Re-read when the desk says this vehicle changed.
     property int revision: 0
-    readonly property var plans: desk && hasTarget ? (revision, desk.plansFor(target)) : []
+    // Heard yet: a console opened for a vehicle names it before it is heard,
+    // and the first look at it (which asks it for its plans) waits until then.
+    readonly property bool heard: hasTarget && Session.systems.indexOf(target) >= 0
+    readonly property var plans: desk && heard ? (revision, desk.plansFor(target)) : []
     readonly property var log: desk && hasTarget ? (revision, desk.logOf(target)) : []
     readonly property var selectedPlan: plans.find(p => p.id === selected)
 
@@ -129,7 +132,8 @@ Rectangle {
                     width: parent.width
                     text: !state.present ? qsTr("No plan state heard yet")
                         : panel.executing ? qsTr("Executing %1 · maneuver %2").arg(planId.text).arg(maneuver.text)
-                        : qsTr("%1 · last plan %2: %3").arg(state.text).arg(planId.text || "—").arg(lastOutcome.text)
+                        : planId.text === "" ? qsTr("%1 · no plan run yet").arg(state.text)
+                        : qsTr("%1 · last plan %2: %3").arg(state.text).arg(planId.text).arg(lastOutcome.text)
                     color: Theme.text
                     font.pixelSize: Theme.fontPixelSize
                     elide: Text.ElideRight
@@ -230,7 +234,9 @@ Rectangle {
         Text {
             visible: panel.plans.length === 0
             width: parent.width
-            text: panel.hasTarget ? qsTr("No plans for %1").arg(panel.target) : qsTr("Choose a vehicle in the systems list")
+            text: !panel.hasTarget ? qsTr("Choose a vehicle in the systems list")
+                : !panel.heard ? qsTr("%1 has not been heard yet").arg(panel.target)
+                : qsTr("No plans for %1").arg(panel.target)
             color: Theme.textDim
             font.pixelSize: Theme.smallFontPixelSize
             wrapMode: Text.Wrap

@@ -23,6 +23,10 @@ TestCase {
 <mission format="1" id="panel" name="Panel test">
   <home lat="41.1405" lon="-8.6110" height="0"/>
   <vehicle id="lauv-sim-1"/>
+  <vehicle id="lauv-sim-2"/>
+  <plan id="survey2" vehicle="lauv-sim-2" start="go">
+    <maneuvers><Goto id="go" lat="41.1409" lon="-8.6110" z="0" z_units="DEPTH" speed="1.5" speed_units="METERS_PS"/></maneuvers>
+  </plan>
   <plan id="survey" vehicle="lauv-sim-1" start="go">
     <maneuvers>
       <Goto id="go" lat="41.1409" lon="-8.6110" z="2" z_units="DEPTH" speed="1.5" speed_units="METERS_PS"/>
@@ -88,5 +92,18 @@ TestCase {
         tryVerify(() => findChild(panel, "progress").text === "progress not reported · ETA 2 min 5 s", 2000,
                   findChild(panel, "progress").text)
         compare(findChild(panel, "progressBar").width, 0)
+    }
+
+    // A console opened for a vehicle not heard yet asks it for its plans
+    // once it is heard (the first look used to ask too early, and never again).
+    Component { id: latePanel; PlanPanel { width: 420; height: 640; system: "lauv-sim-2" } }
+    function test_3_aVehicleHeardLaterIsAskedThen() {
+        const late = createTemporaryObject(latePanel, test)
+        const empty = () => findChild(late, "plans").count === 0
+        verify(empty())
+        Fixtures.simulateVehicle(0x21, "lauv-sim-2")
+        Fixtures.ingest("Heartbeat", 0x21, {})
+        tryVerify(() => { const row = findChild(late, "plan-survey2"); return row && findChild(row, "sync").sync === "absent" }, 3000,
+                  "its plans asked for once it was heard")
     }
 }
