@@ -105,8 +105,9 @@ void AlarmGraph::raise(NodeId node, Level level, const QString &message)
 {
     QMutexLocker lock(&m_mutex);
     Node &n = m_nodes[static_cast<size_t>(node)];
-    if (n.own == level && n.message == message)
+    if (n.own == level && n.message == message && !n.notice)
         return;
+    n.notice = false;
     const Level before = n.own;
     if (before != level) {
         n.sinceMs = m_clock->now().toMSecsSinceEpoch();
@@ -127,6 +128,20 @@ void AlarmGraph::raise(NodeId node, Level level, const QString &message)
     }
 }
 
+void AlarmGraph::notify(NodeId node, const QString &message)
+{
+    QMutexLocker lock(&m_mutex);
+    Node &n = m_nodes[static_cast<size_t>(node)];
+    n.own = Info;
+    n.message = message;
+    n.notice = true;
+    n.acknowledged = false;
+    n.sinceMs = m_clock->now().toMSecsSinceEpoch();
+    n.raisedOrder = ++m_order;
+    propagateLocked(node);
+    ++m_version;
+}
+
 void AlarmGraph::forget(NodeId node)
 {
     QMutexLocker lock(&m_mutex);
@@ -144,6 +159,7 @@ void AlarmGraph::forget(NodeId node)
             n.sinceMs = now;
         n.own = Unknown;
         n.message.clear();
+        n.notice = false;
         propagateLocked(*it);
     }
     ++m_version;
@@ -173,7 +189,7 @@ std::vector<AlarmGraph::Alarm> AlarmGraph::activeAlarms() const
     std::vector<std::pair<quint64, Alarm>> alarms;
     for (size_t i = 0; i < m_nodes.size(); ++i) {
         const Node &n = m_nodes[i];
-        if (isAlarm(n.own))
+        if (listed(n))
             alarms.push_back({n.raisedOrder, Alarm{static_cast<NodeId>(i), pathLocked(static_cast<NodeId>(i)), n.own,
                                                    n.message, n.sinceMs, n.acknowledged}});
     }
@@ -195,7 +211,7 @@ void AlarmGraph::acknowledgeAll()
 {
     QMutexLocker lock(&m_mutex);
     for (Node &n : m_nodes) {
-        if (isAlarm(n.own))
+        if (listed(n))
             n.acknowledged = true;
     }
     ++m_version;

@@ -48,6 +48,10 @@ public:
     // below announces once (onAnnounce); staying there does not repeat it.
     void raise(NodeId node, Level level, const QString &message = {});
     void clear(NodeId node) { raise(node, Normal); }
+    // An event worth a line in the alarm window although nothing is wrong
+    // ("plan survey completed"): Info, listed among the alarms until
+    // acknowledged or until the node is raised again.
+    void notify(NodeId node, const QString &message);
     // Unknown, without a message, for a node and everything under it (a
     // system forgotten): no alarm of it stays behind. The nodes stay.
     void forget(NodeId node);
@@ -57,7 +61,7 @@ public:
     QString message(NodeId node) const;
     Level rootLevel() const { return level(root()); }
 
-    // Alarms (own level Warning or above), in the order they were raised.
+    // Alarms (own level Warning or above) and unacknowledged notices, in the order they were raised.
     std::vector<Alarm> activeAlarms() const;
     void acknowledge(NodeId node);
     void acknowledgeAll();
@@ -80,8 +84,10 @@ private:
         QString message;
         qint64 sinceMs = 0;
         bool acknowledged = false;
+        bool notice = false; // own level Info set by notify()
         quint64 raisedOrder = 0;
     };
+    static bool listed(const Node &n) { return isAlarm(n.own) || (n.notice && !n.acknowledged); }
 
     NodeId childNamed(NodeId parent, const QString &name) const;
     QString pathLocked(NodeId node) const;

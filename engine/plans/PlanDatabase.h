@@ -26,6 +26,10 @@ QByteArray databaseMd5(QList<std::pair<QString, QByteArray>> plans);
 // Whether a vehicle holds the plan on screen, from its detailed database
 // state (PlanDB GET_DSTATE's PlanDBState, with a PlanDBInformation per plan).
 enum class Sync { Same, Differs, Absent };
+
+// A service a vehicle lists in its Announce (services, ';'-separated) when its
+// plan engine evaluates transition conditions itself; DUNE does not.
+inline constexpr QStringView evaluatesConditionsService = u"neptus:plan-conditions";
 Sync compare(const msg::Codec &codec, const msg::Message &specification, const msg::Message &databaseState);
 
 } // namespace neptus::plans

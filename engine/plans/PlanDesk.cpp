@@ -238,12 +238,23 @@ std::expected<void, QString> PlanDesk::start(const QString &system, const QStrin
     if (!v)
         return std::unexpected(v.error());
     // Conditions the vehicle would ignore: carried out from here.
+    const quint16 id = (*v)->client->vehicle();
     const mission::Plan *conditional = nullptr;
     for (const mission::Plan *p : missionPlans(system))
         if (p->id == planId && Supervisor::needed(*p))
             conditional = p;
+    // A vehicle that says it evaluates conditions (its Announce lists
+    // neptus:plan-conditions) is given the whole plan, unless a condition
+    // reads something only the console sees.
+    if (conditional && evaluatesConditions(system)) {
+        if (const QString beyond = Supervisor::beyondVehicle(*conditional, system); beyond.isEmpty()) {
+            note(id, u"%1 evaluates %2's conditions itself"_s.arg(system, planId));
+            conditional = nullptr;
+        } else {
+            note(id, u"supervising %1 although %2 evaluates conditions: %3"_s.arg(planId, system, beyond));
+        }
+    }
     if (conditional) {
-        const quint16 id = (*v)->client->vehicle();
         (*v)->supervisor = std::make_unique<Supervisor>(*(*v)->client, m_tree, m_scripts ? m_scripts() : nullptr, m_graph,
                                                         m_mission, *conditional, m_schema,
                                                         [this, id](const QString &line) { note(id, line); }, m_clock);
@@ -268,6 +279,12 @@ std::expected<void, QString> PlanDesk::start(const QString &system, const QStrin
     note((*v)->client->vehicle(), u"starting %1"_s.arg(planId));
     (*v)->client->start(planId);
     return {};
+}
+
+bool PlanDesk::evaluatesConditions(const QString &system) const
+{
+    const tree::NodeId services = m_tree.find(system + u"/Announce/services"_s);
+    return services != tree::noNode && m_tree.snapshot(services).text.split(u';').contains(evaluatesConditionsService);
 }
 
 std::expected<void, QString> PlanDesk::stop(const QString &system)
@@ -368,7 +385,7 @@ void PlanDesk::ended(quint16 id, const QString &planId, bool ok, const QString &
     note(id, ok ? u"%1 completed"_s.arg(planId) : u"%1 ended: %2"_s.arg(planId, info));
     const auto node = m_graph.ensure(u"systems/%1/plan"_s.arg(name));
     if (ok || stoppedHere)
-        m_graph.raise(node, alarms::Info, u"plan %1 %2"_s.arg(planId, ok ? u"completed"_s : info));
+        m_graph.notify(node, u"plan %1 %2"_s.arg(planId, ok ? u"completed"_s : info));
     else
         m_graph.raise(node, alarms::Warning, u"plan %1 failed: %2"_s.arg(planId, info));
 }

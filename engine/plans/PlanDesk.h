@@ -71,6 +71,8 @@ public:
     // The mission's plan against the vehicle's copy.
     Sync sync(const QString &system, const QString &planId) const;
     QStringList log(const QString &system) const;
+    // The vehicle's Announce lists evaluatesConditionsService.
+    bool evaluatesConditions(const QString &system) const;
 
     // Commands. An error says why nothing was sent; what the vehicle answers
     // (or its silence, after retries) comes to the log.

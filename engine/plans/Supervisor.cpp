@@ -47,6 +47,25 @@ bool Supervisor::needed(const mission::Plan &plan)
     return std::any_of(plan.transitions.begin(), plan.transitions.end(), [](const auto &t) { return !plain(t); });
 }
 
+QString Supervisor::beyondVehicle(const mission::Plan &plan, const QString &system)
+{
+    // sys["name"] or name.Message.field (the two ways a condition names a system), and distance().
+    static const QRegularExpression named(uR"X(sys\["([^"]+)"\]|\b([A-Za-z_]\w*)(?:\.[A-Za-z_@][\w@]*){2,}|\b(distance)\s*\()X"_s);
+    for (const mission::Transition &t : plan.transitions) {
+        if (plain(t))
+            continue;
+        for (auto it = named.globalMatch(t.condition); it.hasNext();) {
+            const auto m = it.next();
+            if (!m.captured(3).isEmpty())
+                return u"%1 → %2 measures a distance to a mark"_s.arg(t.from, t.to);
+            const QString name = m.captured(1).isEmpty() ? m.captured(2) : m.captured(1);
+            if (name != system)
+                return u"%1 → %2 reads %3"_s.arg(t.from, t.to, name);
+        }
+    }
+    return {};
+}
+
 QStringList Supervisor::stretch(const mission::Plan &plan, const QString &first)
 {
     QStringList maneuvers;

@@ -51,6 +51,11 @@ public:
     // Whether a plan needs supervising: some transition has a condition
     // other than ManeuverIsDone.
     static bool needed(const mission::Plan &plan);
+    // Why a vehicle that evaluates conditions itself cannot be given the
+    // whole plan: a condition names something only the console sees (another
+    // system, a mark's distance); empty when every condition reads only the
+    // vehicle's own state, $elapsed and $waited.
+    static QString beyondVehicle(const mission::Plan &plan, const QString &system);
     // The maneuvers of the stretch that begins at `first`.
     static QStringList stretch(const mission::Plan &plan, const QString &first);
     // A condition as the script it runs as: `prelude` (three lines: $elapsed,

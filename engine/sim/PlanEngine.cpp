@@ -4,6 +4,8 @@
 #include "mission/ImcPlan.h"
 #include "plans/PlanDatabase.h"
 
+#include <QRegularExpression>
+
 #include <atomic>
 #include <chrono>
 #include <cmath>
@@ -345,8 +347,7 @@ std::optional<bool> PlanEngine::evaluate(const QString &condition)
     QString name = m_name;
     name.replace(u'\\', u"\\\\"_s).replace(u'"', u"\\\""_s);
     const QString program = u"(function () { const $elapsed = %1, $waited = %2;\n"
-                            "const sys = {\"%3\": {EstimatedState: {x: %4, y: %5, z: %6, depth: %7, alt: %8, height: %9, psi: %10, u: %11}}};\n"
-                            "return Boolean(%12\n); })()"_s
+                            "const sys = {\"%3\": {EstimatedState: {x: %4, y: %5, z: %6, depth: %7, alt: %8, height: %9, psi: %10, u: %11}}};\n"_s
                                 .arg(m_simTime - m_planStart, 0, 'f', 3)
                                 .arg(m_run && m_run->stage == Stage::Waiting ? m_simTime - m_waitStart : 0.0, 0, 'f', 3)
                                 .arg(name)
@@ -354,7 +355,10 @@ std::optional<bool> PlanEngine::evaluate(const QString &condition)
                                 .arg(std::max(0.0, m.ned.z()), 0, 'g', 12)
                                 .arg(std::max(0.0, m_limits.bottomDepth - m.ned.z()), 0, 'g', 12)
                                 .arg(-m.ned.z(), 0, 'g', 12).arg(m.psi, 0, 'g', 12).arg(m.speed, 0, 'g', 12)
-                                .arg(condition);
+        // lauv.EstimatedState.depth as well as sys["lauv"].EstimatedState.depth
+        + (QRegularExpression(u"^[A-Za-z_]\\w*$"_s).match(m_name).hasMatch() && m_name != u"sys"_s
+               ? u"const %1 = sys[\"%1\"];\n"_s.arg(m_name) : QString())
+        + u"return Boolean("_s + condition + u"\n); })()"_s;
     // Stopped after 50 ms: a condition that never ends does not stop the vehicle's clock.
     std::atomic<bool> finished{false};
     std::thread watchdog([this, &finished] {

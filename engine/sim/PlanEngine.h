@@ -49,6 +49,7 @@ public:
                double lonDeg);
 
     void setTransitions(Transitions mode) { m_transitions = mode; }
+    Transitions transitions() const { return m_transitions; }
     void setEvaluator(Evaluator evaluator) { m_evaluator = std::move(evaluator); }
 
     // A message addressed to this vehicle: the replies (none for others).

@@ -1,5 +1,7 @@
 #include "sim/SimulatedVehicle.h"
 
+#include "plans/PlanDatabase.h"
+
 #include <cmath>
 #include <numbers>
 
@@ -311,7 +313,11 @@ std::vector<msg::Message> SimulatedVehicle::introduction(double wallTime) const
         announce.setInteger(announce.def()->indexOf(u"owner"), 0xFFFF);
         announce.setNumber(announce.def()->indexOf(u"lat"), m_config.latDeg * std::numbers::pi / 180);
         announce.setNumber(announce.def()->indexOf(u"lon"), m_config.lonDeg * std::numbers::pi / 180);
-        announce.setBytes(announce.def()->indexOf(u"services"), m_config.services.toUtf8());
+        QStringList services(m_config.services);
+        if (m_plans.transitions() == PlanEngine::Transitions::Conditions)
+            services << plans::evaluatesConditionsService.toString();
+        services.removeAll(QString());
+        announce.setBytes(announce.def()->indexOf(u"services"), services.join(u';').toUtf8());
         out.push_back(std::move(announce));
         msg::Message list = make("EntityList", wallTime);
         list.setInteger(list.def()->indexOf(u"op"), 0); // REPORT

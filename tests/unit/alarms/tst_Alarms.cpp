@@ -97,6 +97,38 @@ TEST(AlarmGraph, AcknowledgeAndAnnounceOnce)
     EXPECT_EQ(announced.size(), 3u) << "a new rise is announced";
 }
 
+TEST(AlarmGraph, NoticesAreListedUntilAcknowledged)
+{
+    AlarmGraph graph;
+    const auto plan = graph.ensure(QStringLiteral("systems/lauv/plan"));
+    const auto power = graph.ensure(QStringLiteral("systems/lauv/Power"));
+    graph.raise(plan, Info, QStringLiteral("waiting"));
+    EXPECT_TRUE(graph.activeAlarms().empty()) << "an Info level alone is not listed";
+    graph.raise(power, Warning, QStringLiteral("low"));
+    graph.notify(plan, QStringLiteral("plan survey completed"));
+    EXPECT_EQ(graph.rootLevel(), Warning) << "a notice raises nothing";
+    auto listed = graph.activeAlarms();
+    ASSERT_EQ(listed.size(), 2u);
+    EXPECT_EQ(listed[1].node, plan);
+    EXPECT_EQ(listed[1].level, Info);
+    EXPECT_EQ(listed[1].message, QStringLiteral("plan survey completed"));
+    graph.notify(plan, QStringLiteral("plan survey completed"));
+    EXPECT_EQ(graph.activeAlarms().size(), 2u) << "the same node, one line";
+    graph.acknowledgeAll();
+    listed = graph.activeAlarms();
+    ASSERT_EQ(listed.size(), 1u) << "an acknowledged notice goes; an acknowledged alarm stays while it lasts";
+    EXPECT_EQ(listed[0].node, power);
+    graph.notify(plan, QStringLiteral("plan survey stopped"));
+    graph.raise(plan, Warning, QStringLiteral("plan survey failed: aborted"));
+    listed = graph.activeAlarms();
+    ASSERT_EQ(listed.size(), 2u);
+    EXPECT_EQ(listed[1].level, Warning);
+    graph.raise(plan, Normal);
+    graph.notify(plan, QStringLiteral("plan survey completed"));
+    graph.forget(graph.find(QStringLiteral("systems/lauv")));
+    EXPECT_TRUE(graph.activeAlarms().empty()) << "a forgotten system leaves no notice behind";
+}
+
 TEST(HealthMonitor, EntityStatesBecomeEntityAlarms)
 {
     tree::VariableTree tree;

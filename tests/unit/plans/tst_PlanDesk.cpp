@@ -49,6 +49,13 @@ const char *const missionText = R"X(<?xml version="1.0" encoding="UTF-8"?>
   <plan id="other" vehicle="x8-02" start="up">
     <maneuvers><Takeoff id="up" lat="41.14" lon="-8.61" z="100" z_units="HEIGHT" speed="17"/></maneuvers>
   </plan>
+  <plan id="own" vehicle="lauv-sim-1" start="a">
+    <maneuvers>
+      <Goto id="a" lat="41.1407" lon="-8.6110" z="0" z_units="DEPTH" speed="1.5" speed_units="METERS_PS"/>
+      <Goto id="b" lat="41.1405" lon="-8.6110" z="0" z_units="DEPTH" speed="1.5" speed_units="METERS_PS"/>
+    </maneuvers>
+    <transition from="a" to="b" condition="sys[&quot;lauv-sim-1&quot;].EstimatedState.depth &lt; 1 &amp;&amp; $elapsed &gt; 5"/>
+  </plan>
 </mission>
 )X";
 
@@ -140,7 +147,7 @@ TEST_F(Desk, AMissionsPlansAreOfferedToTheirVehicles)
     QStringList ids;
     for (const mission::Plan *p : desk.missionPlans(u"lauv-sim-1"_s))
         ids << p->id;
-    EXPECT_EQ(ids, (QStringList{u"survey"_s, u"choice"_s})) << "its own, not x8-02's";
+    EXPECT_EQ(ids, (QStringList{u"survey"_s, u"choice"_s, u"own"_s})) << "its own, not x8-02's";
 }
 
 TEST_F(Desk, StartWaitsForTheVehiclesCopyToBeTheMissions)
@@ -178,6 +185,12 @@ TEST_F(Desk, StartWaitsForTheVehiclesCopyToBeTheMissions)
     EXPECT_EQ(lastLog(), u"survey completed"_s);
     EXPECT_EQ(planAlarm(), alarms::Info);
     EXPECT_EQ(graph.message(graph.find(u"systems/lauv-sim-1/plan"_s)), u"plan survey completed"_s);
+    const auto listed = graph.activeAlarms();
+    ASSERT_EQ(listed.size(), 1u) << "a completed plan is a line in the alarm window";
+    EXPECT_EQ(listed[0].level, alarms::Info);
+    EXPECT_EQ(listed[0].message, u"plan survey completed"_s);
+    graph.acknowledge(listed[0].node);
+    EXPECT_TRUE(graph.activeAlarms().empty()) << "until acknowledged";
 }
 
 TEST_F(Desk, StopIsAnInfoAbortAWarningWithTheVehiclesReason)
@@ -190,6 +203,8 @@ TEST_F(Desk, StopIsAnInfoAbortAWarningWithTheVehiclesReason)
     EXPECT_FALSE(vehicle.plans().executing());
     EXPECT_TRUE(desk.log(u"lauv-sim-1"_s).join(u'\n').contains(u"survey ended: plan stopped"_s));
     EXPECT_EQ(planAlarm(), alarms::Info);
+    ASSERT_EQ(graph.activeAlarms().size(), 1u) << "a stopped plan is a line in the alarm window";
+    EXPECT_EQ(graph.activeAlarms()[0].message, u"plan survey plan stopped"_s);
 
     ASSERT_TRUE(desk.start(u"lauv-sim-1"_s, u"survey"_s));
     run(5);
@@ -257,6 +272,70 @@ TEST_F(Desk, AConditionalPlanIsCarriedOutByTheConsoleForAFirstTransitionVehicle)
     EXPECT_FALSE(desk.supervising(u"lauv-sim-1"_s));
     if (qEnvironmentVariableIsSet("NEPTUS_SHOW_LOG"))
         std::printf("%s\n", qPrintable(desk.log(u"lauv-sim-1"_s).join(u'\n')));
+}
+
+// A vehicle that says it evaluates conditions (the simulator by default)
+// gets a conditional plan whole when its conditions read only its own state;
+// one naming what only the console sees is still supervised.
+TEST_F(Desk, AVehicleThatEvaluatesConditionsGetsTheWholePlanIfItCanSeeWhatTheyRead)
+{
+    EXPECT_FALSE(desk.evaluatesConditions(u"lauv-sim-1"_s)) << "not heard yet";
+    for (const msg::Message &m : vehicle.introduction(1.7e9))
+        hear(m);
+    ASSERT_TRUE(desk.evaluatesConditions(u"lauv-sim-1"_s));
+
+    other(200);
+    ASSERT_TRUE(desk.start(u"lauv-sim-1"_s, u"choice"_s));
+    EXPECT_TRUE(desk.supervising(u"lauv-sim-1"_s));
+    EXPECT_TRUE(desk.log(u"lauv-sim-1"_s).join(u'\n').contains(
+        u"supervising choice although lauv-sim-1 evaluates conditions: a → b measures a distance to a mark"_s))
+        << desk.log(u"lauv-sim-1"_s).join(u'\n').toStdString();
+    ASSERT_TRUE(desk.stop(u"lauv-sim-1"_s));
+
+    desk.refresh(u"lauv-sim-1"_s);
+    const auto absent = desk.start(u"lauv-sim-1"_s, u"own"_s);
+    ASSERT_FALSE(absent) << "the whole plan goes by id: it must be on the vehicle";
+    EXPECT_EQ(absent.error(), u"lauv-sim-1 does not hold own: send it first"_s);
+    ASSERT_TRUE(desk.send(u"lauv-sim-1"_s, u"own"_s));
+    ASSERT_TRUE(desk.start(u"lauv-sim-1"_s, u"own"_s));
+    EXPECT_FALSE(desk.supervising(u"lauv-sim-1"_s));
+    EXPECT_TRUE(desk.log(u"lauv-sim-1"_s).join(u'\n').contains(u"lauv-sim-1 evaluates own's conditions itself"_s));
+    run(2);
+    EXPECT_EQ(tree.snapshot(tree.find(u"lauv-sim-1/PlanControlState/plan_id"_s)).text, u"own"_s) << "not a stretch";
+    run(300);
+    EXPECT_FALSE(vehicle.plans().executing());
+    EXPECT_EQ(lastLog(), u"own completed"_s);
+}
+
+TEST_F(Desk, AFirstTransitionVehicleIsSupervisedWhateverItsConditionsRead)
+{
+    vehicle.plans().setTransitions(sim::PlanEngine::Transitions::FirstOnly);
+    for (const msg::Message &m : vehicle.introduction(1.7e9))
+        hear(m);
+    EXPECT_FALSE(desk.evaluatesConditions(u"lauv-sim-1"_s)) << "its Announce does not list the service";
+    ASSERT_TRUE(desk.start(u"lauv-sim-1"_s, u"own"_s));
+    EXPECT_TRUE(desk.supervising(u"lauv-sim-1"_s));
+    run(2);
+    EXPECT_EQ(tree.snapshot(tree.find(u"lauv-sim-1/PlanControlState/plan_id"_s)).text, u"own.1"_s);
+}
+
+TEST(Supervisor, WhatAConditionReadsBeyondTheVehicle)
+{
+    mission::Transition t;
+    t.from = u"a"_s;
+    t.to = u"b"_s;
+    t.condition = u"sys[\"lauv\"].EstimatedState.depth < 1 && $elapsed > 5"_s;
+    mission::Plan plan;
+    plan.transitions = {t};
+    EXPECT_EQ(plans::Supervisor::beyondVehicle(plan, u"lauv"_s), QString());
+    plan.transitions[0].condition = u"lauv.EstimatedState.depth < Math.abs(-1)"_s;
+    EXPECT_EQ(plans::Supervisor::beyondVehicle(plan, u"lauv"_s), QString());
+    plan.transitions[0].condition = u"lauv.EstimatedState.depth < 1 || caravela.EstimatedState.depth > 3"_s;
+    EXPECT_EQ(plans::Supervisor::beyondVehicle(plan, u"lauv"_s), u"a → b reads caravela"_s);
+    plan.transitions[0].condition = u"sys[\"x8-02\"].EstimatedState.height > 100"_s;
+    EXPECT_EQ(plans::Supervisor::beyondVehicle(plan, u"lauv"_s), u"a → b reads x8-02"_s);
+    plan.transitions[0].condition = u"distance(\"lauv\", \"buoy\") < 5"_s;
+    EXPECT_EQ(plans::Supervisor::beyondVehicle(plan, u"lauv"_s), u"a → b measures a distance to a mark"_s);
 }
 
 TEST_F(Desk, AConditionThatFailsIsSaidAndTheVehicleWaits)
