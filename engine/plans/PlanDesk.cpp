@@ -281,6 +281,12 @@ std::expected<void, QString> PlanDesk::start(const QString &system, const QStrin
     return {};
 }
 
+QString PlanDesk::checkCondition(const QString &expression) const
+{
+    const scripting::ScriptHost *scripts = m_scripts ? m_scripts() : nullptr;
+    return scripts ? Supervisor::conditionError(expression, *scripts) : u"conditions cannot be checked: no script host"_s;
+}
+
 bool PlanDesk::evaluatesConditions(const QString &system) const
 {
     const tree::NodeId services = m_tree.find(system + u"/Announce/services"_s);

@@ -252,17 +252,23 @@ QString Supervisor::conditionScript(const QString &expression, const QString &pr
     return prelude + u"return (%1\n) ? Normal : Info(\"waiting\");"_s.arg(expression);
 }
 
+QString Supervisor::conditionError(const QString &expression, const scripting::ScriptHost &scripts)
+{
+    if (expression.trimmed().isEmpty())
+        return u"a condition is empty; ManeuverIsDone is the plain one"_s;
+    const QString prelude = u"const $elapsed = 0, $waited = 0;\nconst marks = {};\nfunction distance(system, mark) { return NaN; }\n"_s;
+    const QVariantMap check = scripts.check(conditionScript(expression, prelude));
+    return check.value(u"ok"_s).toBool() ? QString() : check.value(u"message"_s).toString();
+}
+
 QStringList Supervisor::conditionErrors(const mission::Plan &plan, const scripting::ScriptHost &scripts)
 {
     QStringList errors;
-    const QString prelude = u"const $elapsed = 0, $waited = 0;\nconst marks = {};\nfunction distance(system, mark) { return NaN; }\n"_s;
     for (const mission::Transition &t : plan.transitions) {
         if (plain(t))
             continue;
-        const QVariantMap check = scripts.check(conditionScript(t.condition, prelude));
-        if (!check.value(u"ok"_s).toBool())
-            errors << u"%1 → %2: condition '%3' does not compile: %4"_s.arg(t.from, t.to, t.condition,
-                                                                           check.value(u"message"_s).toString());
+        if (const QString error = conditionError(t.condition, scripts); !error.isEmpty())
+            errors << u"%1 → %2: condition '%3' does not compile: %4"_s.arg(t.from, t.to, t.condition, error);
     }
     return errors;
 }

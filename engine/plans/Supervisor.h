@@ -61,6 +61,8 @@ public:
     // A condition as the script it runs as: `prelude` (three lines: $elapsed,
     // $waited, marks and distance()) then the expression on line 4.
     static QString conditionScript(const QString &expression, const QString &prelude);
+    // Why a condition does not compile ("" if it does), for an editor checking as one types.
+    static QString conditionError(const QString &expression, const scripting::ScriptHost &scripts);
     // What does not compile among a plan's conditions, one line each ("a → b: …").
     static QStringList conditionErrors(const mission::Plan &plan, const scripting::ScriptHost &scripts);
 

@@ -106,4 +106,12 @@ TestCase {
         tryVerify(() => { const row = findChild(late, "plan-survey2"); return row && findChild(row, "sync").sync === "absent" }, 3000,
                   "its plans asked for once it was heard")
     }
+
+    // An editor checks a transition condition as one types it.
+    function test_4_conditionsAreCheckedAsTyped() {
+        const plans = Session.session.plans
+        compare(plans.checkCondition('sys["lauv-sim-1"].EstimatedState.depth < 2 && $elapsed > 60'), "")
+        verify(plans.checkCondition('sys["lauv-sim-1"].EstimatedState.depth <') !== "", "an unfinished expression")
+        verify(plans.checkCondition('distance("caravela-sim", "buoy") < 50 &&& 1') !== "")
+    }
 }

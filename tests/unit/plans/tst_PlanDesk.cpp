@@ -361,6 +361,9 @@ TEST_F(Desk, ConditionsThatDoNotCompileAreSaidWhenTheMissionOpens)
     broken.plans[1].transitions[0].condition = u"distance(\"caravela-sim\", \"buoy\") <"_s;
     desk.setMission(broken);
     ASSERT_EQ(desk.problems().size(), 1);
+    EXPECT_EQ(desk.checkCondition(u"sys[\"lauv-sim-1\"].EstimatedState.depth < 2 && $waited > 10"_s), QString());
+    EXPECT_FALSE(desk.checkCondition(u"distance(\"caravela-sim\", \"buoy\") <"_s).isEmpty()) << "as one types it";
+    EXPECT_FALSE(desk.checkCondition(u"  "_s).isEmpty());
     EXPECT_TRUE(desk.problems()[0].startsWith(u"choice: a → b: condition 'distance(\"caravela-sim\", \"buoy\") <' does not compile: "_s))
         << desk.problems()[0].toStdString();
 }
