@@ -148,6 +148,8 @@ int main(int argc, char *argv[])
         {QStringLiteral("width"), commandLine->windowSize.width()},
         {QStringLiteral("height"), commandLine->windowSize.height()},
     });
+    // Before the first console loads: saved layouts import Neptus.User.
+    ComponentPalette::installUserModule(engine, componentDirectories);
     // A binding or handler that never ends is stopped, and said where.
     JsWatchdog watchdog(engine);
     QObject::connect(&watchdog, &JsWatchdog::stopped, &app, [&](const QString &report) {

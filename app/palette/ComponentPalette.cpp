@@ -24,6 +24,36 @@ QStringList ComponentPalette::standardDirectories()
     return directories;
 }
 
+QList<PaletteEntry> ComponentPalette::userComponents(const QStringList &directories)
+{
+    static const QRegularExpression typeName(u"^[A-Z][A-Za-z0-9_]*$"_s);
+    QList<PaletteEntry> users;
+    for (const QString &directory : directories) {
+        const QFileInfoList files = QDir(directory).entryInfoList({u"*.qml"_s}, QDir::Files | QDir::Readable, QDir::Name);
+        for (const QFileInfo &file : files) {
+            const QString name = file.completeBaseName();
+            if (!typeName.match(name).hasMatch() || std::any_of(users.cbegin(), users.cend(), [&](const PaletteEntry &e) { return e.name == name; }))
+                continue; // not a component type name, or an earlier directory has it
+            PaletteEntry e;
+            e.name = name;
+            e.module = QString::fromLatin1(userModule);
+            e.source = QUrl::fromLocalFile(file.absoluteFilePath());
+            const QFileInfo manifest(file.dir().filePath(name + u".json"_s));
+            e.modified = std::max(file.lastModified(), manifest.exists() ? manifest.lastModified() : QDateTime());
+            e.size = file.size() + (manifest.exists() ? manifest.size() : 0);
+            readManifest(e, manifest.filePath());
+            users << e;
+        }
+    }
+    return users;
+}
+
+void ComponentPalette::installUserModule(QQmlEngine &engine, const QStringList &directories)
+{
+    engine.addImportPath(UserModule::importPath());
+    UserModule::write(userComponents(directories));
+}
+
 void ComponentPalette::setDirectories(const QStringList &directories)
 {
     if (directories == m_directories)
@@ -55,30 +85,11 @@ void ComponentPalette::rescan()
     if (!m_engine)
         return;
     m_watcher.settle();
-    static const QRegularExpression typeName(u"^[A-Z][A-Za-z0-9_]*$"_s);
-    QList<PaletteEntry> users;
-    QStringList taken;
-    for (const PaletteEntry &b : std::as_const(m_builtIns))
-        taken << b.name;
-    for (const QString &directory : std::as_const(m_directories)) {
-        const QFileInfoList files = QDir(directory).entryInfoList({u"*.qml"_s}, QDir::Files | QDir::Readable, QDir::Name);
-        for (const QFileInfo &file : files) {
-            const QString name = file.completeBaseName();
-            if (!typeName.match(name).hasMatch() || std::any_of(users.cbegin(), users.cend(), [&](const PaletteEntry &e) { return e.name == name; }))
-                continue; // not a component type name, or an earlier directory has it
-            PaletteEntry e;
-            e.name = name;
-            e.module = QString::fromLatin1(userModule);
-            e.source = QUrl::fromLocalFile(file.absoluteFilePath());
-            const QFileInfo manifest(file.dir().filePath(name + u".json"_s));
-            e.modified = std::max(file.lastModified(), manifest.exists() ? manifest.lastModified() : QDateTime());
-            e.size = file.size() + (manifest.exists() ? manifest.size() : 0);
-            readManifest(e, manifest.filePath());
-            if (taken.contains(name)) {
-                e.status = u"error"_s;
-                e.errorString = QStringLiteral("%1 is already a built-in component: rename %2").arg(name, file.fileName());
-            }
-            users << e;
+    QList<PaletteEntry> users = userComponents(m_directories);
+    for (PaletteEntry &e : users) {
+        if (std::any_of(m_builtIns.cbegin(), m_builtIns.cend(), [&](const PaletteEntry &b) { return b.name == e.name; })) {
+            e.status = u"error"_s;
+            e.errorString = QStringLiteral("%1 is already a built-in component: rename %2").arg(e.name, QFileInfo(e.source.toLocalFile()).fileName());
         }
     }
     UserModule::write(users);
@@ -87,9 +98,12 @@ void ComponentPalette::rescan()
         compileComponent(*m_engine, e);
 
     QStringList changed;
+    bool namesChanged = users.size() + m_builtIns.size() != m_entries.size();
     for (const PaletteEntry &e : std::as_const(users)) {
         const auto before = std::find_if(m_entries.cbegin(), m_entries.cend(), [&](const PaletteEntry &o) { return o.name == e.name; });
-        if (before != m_entries.cend() && (before->modified != e.modified || before->size != e.size || before->status != e.status))
+        if (before == m_entries.cend())
+            namesChanged = true;
+        else if (before->modified != e.modified || before->size != e.size || before->status != e.status)
             changed << e.name;
     }
     const int oldCount = static_cast<int>(m_entries.size());
@@ -103,7 +117,8 @@ void ComponentPalette::rescan()
         const PaletteEntry &e = *std::find_if(m_entries.cbegin(), m_entries.cend(), [&](const PaletteEntry &o) { return o.name == name; });
         emit componentChanged(name, e.status == u"ready");
     }
-    if (!changed.isEmpty()) {
+    // A console that could not load for want of a component loads once it is there.
+    if (!changed.isEmpty() || (namesChanged && oldCount > 0)) {
         ++m_revision;
         emit revisionChanged();
     }

@@ -55,6 +55,12 @@ public:
 
     // The system-wide and per-user directories (XDG data dirs + "neptus-qt/components"), user first.
     static QStringList standardDirectories();
+    // The components in `directories` (`Name.qml`, earlier directories
+    // first), described by their manifests, not yet compiled.
+    static QList<PaletteEntry> userComponents(const QStringList &directories);
+    // Makes the Neptus.User module of `directories` importable in `engine`
+    // before any console loads (a saved layout imports it on its first line).
+    static void installUserModule(QQmlEngine &engine, const QStringList &directories);
 
     QStringList directories() const { return m_directories; }
     void setDirectories(const QStringList &directories);

@@ -15,6 +15,8 @@
 #include <QFileInfo>
 #include <QEventLoop>
 #include <QImage>
+#include <QProcess>
+#include <QUdpSocket>
 #include <QMediaCaptureSession>
 #include <QMediaFormat>
 #include <QMediaRecorder>
@@ -29,6 +31,8 @@
 
 #include <functional>
 #include <memory>
+
+using namespace Qt::StringLiterals;
 
 Q_IMPORT_QML_PLUGIN(Neptus_EnginePlugin)
 Q_IMPORT_QML_PLUGIN(Neptus_ComponentsPlugin)
@@ -206,6 +210,34 @@ public:
         return file.open(QIODevice::ReadOnly) ? QString::fromUtf8(file.readAll()) : QString();
     }
     Q_INVOKABLE bool makeDir(const QString &path) const { return QDir().mkpath(path); }
+    // The console program in a process of its own, as a restart would start
+    // it (offscreen, loopback, no DDS, no discovery): {exitCode, output}.
+    Q_INVOKABLE QVariantMap runConsole(const QStringList &arguments) const
+    {
+        QUdpSocket probe; // a free port for its IMC link
+        probe.bind(QHostAddress::LocalHost, 0);
+        const quint16 port = probe.localPort();
+        probe.close();
+        QProcess console;
+        console.setProcessChannelMode(QProcess::MergedChannels);
+        console.start(test::programPath(u"neptus"_s), QStringList{u"--imc-port"_s, QString::number(port),
+                      u"--imc-discovery"_s, u"off"_s, u"--dds-domain"_s, u"-1"_s} + arguments);
+        const bool finished = console.waitForFinished(60000);
+        if (!finished)
+            console.kill();
+        return {{u"exitCode"_s, finished && console.exitStatus() == QProcess::NormalExit ? console.exitCode() : -1},
+                {u"output"_s, QString::fromUtf8(console.readAll())}};
+    }
+    // How many pixels of an image file are `color` (0 if it cannot be read).
+    Q_INVOKABLE int countPixels(const QString &path, const QColor &color) const
+    {
+        const QImage image = QImage(path).convertToFormat(QImage::Format_RGB32);
+        int n = 0;
+        for (int y = 0; y < image.height(); ++y)
+            for (int x = 0; x < image.width(); ++x)
+                n += image.pixel(x, y) == color.rgb();
+        return n;
+    }
     // A video file of `frames` frames of one colour (320x240, 10 per second),
     // encoded by Qt Multimedia itself. Returns "" or what went wrong.
     Q_INVOKABLE QString writeVideo(const QString &path, const QColor &color, int frames)

@@ -258,6 +258,34 @@ TestCase {
         verify(Fixtures.writeFile(components + "/Dial.qml", dial.replace("#336699", "#aa0000")))
         tryVerify(() => liveItem(shell, "dial1") && String(liveItem(shell, "dial1").color) === "#aa0000", 2000,
                   "the edited component reloads in place")
+
+        // Save, restart: the console of another process opens it, dial and all
+        // (it used to say 'module "Neptus.User" is not installed').
+        verify(shell.loader.editor.save())
+        const picture = Fixtures.makeTempDir() + "/restart.png"
+        const run = Fixtures.runConsole(["--console", shell.file, "--components", components,
+                                         "--screenshot", picture, "--screenshot-delay", "300", "--size", "1280x800"])
+        compare(run.exitCode, 0, run.output)
+        verify(run.output.indexOf("Could not open console") < 0, run.output)
+        const dialPixels = Fixtures.countPixels(picture, "#aa0000")
+        verify(dialPixels > 0.6 * Math.PI * 60 * 60, "the dial is drawn after the restart: " + dialPixels + " pixels\n" + run.output)
+    }
+
+    // A layout naming a component not there yet (a folder not copied over)
+    // says so, and opens by itself once the component is dropped in.
+    function test_aConsoleWaitingForAComponentOpensWhenItArrives() {
+        const components = Fixtures.makeTempDir()
+        const dir = Fixtures.makeTempDir()
+        const file = dir + "/Waits.qml"
+        verify(Fixtures.writeFile(file, "import QtQuick\nimport Neptus.Components\nimport Neptus.User\n\nConsole {\n"
+                                        + "    Beacon {\n        id: beacon1\n        width: 50\n        height: 50\n    }\n}\n"))
+        const shell = createTemporaryObject(shellComponent, test, { directories: [components], source: "file://" + file })
+        shells.push(shell)
+        tryVerify(() => shell.loader.errorString !== "", 3000)
+        compare(shell.loader.item, null)
+        verify(Fixtures.writeFile(components + "/Beacon.qml", "import QtQuick\nRectangle { color: \"#00ff00\" }\n"))
+        tryVerify(() => shell.loader.item !== null, 5000, shell.loader.errorString)
+        compare(shell.loader.errorString, "")
     }
 
     function test_aBrokenComponentIsReportedNotFatal() {
@@ -348,6 +376,11 @@ TestCase {
         // The documented alarm script compiles.
         const script = example.match(/```js\n([\s\S]*?)```/)[1]
         verify(Fixtures.scripts.check(script).ok, JSON.stringify(Fixtures.scripts.check(script)))
+        // Saved, it opens in a new process.
+        verify(shell.loader.editor.save())
+        const run = Fixtures.runConsole(["--console", shell.file, "--components", components, "--quit-after", "1500"])
+        compare(run.exitCode, 0, run.output)
+        verify(run.output.indexOf("Could not open console") < 0, run.output)
     }
 
     function test_dragFromThePaletteResizeByHandlesAndCompletePaths() {
