@@ -77,6 +77,7 @@ Rectangle {
                     width: column.width
                     editor: panel.editor
                     componentId: panel.componentId
+                    target: panel.target
                     spec: modelData
                 }
             }
@@ -91,6 +92,12 @@ Rectangle {
         readonly property string name: spec.name
         readonly property bool bound: { editor.text; return editor.isBinding(componentId, name) }
         readonly property var current: { editor.text; return editor.value(componentId, name) }
+        // What the running component has when the layout does not set it: its real default.
+        property Item target: null
+        readonly property var live: { editor.text; return target ? target[name] : undefined }
+        readonly property var shown: current !== undefined ? current : live
+        readonly property string defaultText: current === undefined && live !== undefined && live !== null
+                                              ? qsTr("%1 (default)").arg(String(live)) : ""
         property bool confirming: false
         objectName: "property-" + name
         spacing: Theme.spacing / 2
@@ -157,6 +164,7 @@ Rectangle {
             Field {
                 objectName: "field-" + row.name
                 text: row.current === undefined ? "" : String(row.current)
+                placeholderText: row.defaultText || qsTr("(component's default)")
                 onCommitted: row.commit(text)
             }
         }
@@ -165,6 +173,7 @@ Rectangle {
             Field {
                 objectName: "field-" + row.name
                 text: row.current === undefined ? "" : String(row.current)
+                placeholderText: row.defaultText || qsTr("(component's default)")
                 inputMethodHints: Qt.ImhFormattedNumbersOnly
                 validator: DoubleValidator { bottom: row.spec.min !== undefined ? row.spec.min : -1e12
                                              top: row.spec.max !== undefined ? row.spec.max : 1e12 }
@@ -175,7 +184,7 @@ Rectangle {
             id: boolEditor
             Basic.Switch {
                 objectName: "field-" + row.name
-                checked: row.current === true
+                checked: row.shown === true
                 implicitHeight: Theme.touchTarget
                 onToggled: row.commit(checked)
             }
@@ -186,7 +195,7 @@ Rectangle {
                 objectName: "field-" + row.name
                 implicitHeight: Theme.touchTarget
                 model: row.spec.options || []
-                currentIndex: typeof row.current === "number" ? row.current : -1
+                currentIndex: typeof row.shown === "number" ? row.shown : -1
                 onActivated: index => row.commit(index)
                 font.pixelSize: Theme.fontPixelSize
             }
@@ -199,6 +208,7 @@ Rectangle {
                     objectName: "field-" + row.name
                     width: row.width
                     text: row.current === undefined ? "" : String(row.current)
+                    placeholderText: row.defaultText || qsTr("(component's default)")
                     onCommitted: row.commit(text)
                 }
                 Row {
@@ -227,6 +237,7 @@ Rectangle {
                     objectName: "field-" + row.name
                     width: row.width
                     text: row.current === undefined ? "" : String(row.current)
+                    placeholderText: row.defaultText || qsTr("(component's default)")
                     font.family: Theme.monospaceFont
                     onCommitted: row.commit(text)
                     readonly property string folder: text.lastIndexOf("/") >= 0 ? text.substring(0, text.lastIndexOf("/")) : ""

@@ -271,6 +271,30 @@ TestCase {
         verify(dialPixels > 0.6 * Math.PI * 60 * 60, "the dial is drawn after the restart: " + dialPixels + " pixels\n" + run.output)
     }
 
+    // A property the layout does not set shows the component's own default:
+    // CommandButton's confirm is true (it read OFF, and flipping it on and
+    // off wrote false).
+    function test_thePropertyEditorShowsTheComponentsRealDefaults() {
+        const shell = openShell(emptyLayout)
+        const editor = shell.loader.editor
+        compare(shell.designer.place("CommandButton", 300, 300), "commandButton1")
+        shell.designer.selected = "commandButton1"
+        tryVerify(() => liveItem(shell, "commandButton1") !== null)
+        compare(editor.value("commandButton1", "confirm"), undefined, "not in the layout")
+        tryVerify(() => findChild(shell.designer, "field-confirm") !== null)
+        const toggle = findChild(shell.designer, "field-confirm")
+        verify(toggle.checked, "shown on, as the component has it")
+        toggle.toggle(); toggle.toggled()
+        compare(editor.value("commandButton1", "confirm"), false)
+        tryVerify(() => !findChild(shell.designer, "field-confirm").checked)
+        findChild(shell.designer, "field-confirm").toggle(); findChild(shell.designer, "field-confirm").toggled()
+        compare(editor.value("commandButton1", "confirm"), true)
+        // Text and numbers show their default as a hint, not as a value written.
+        const label = findChild(shell.designer, "field-label")
+        verify(label.placeholderText.indexOf("(default)") > 0, label.placeholderText)
+        compare(label.text, "")
+    }
+
     // A layout naming a component not there yet (a folder not copied over)
     // says so, and opens by itself once the component is dropped in.
     function test_aConsoleWaitingForAComponentOpensWhenItArrives() {
