@@ -31,6 +31,7 @@ Item {
 
     Variable { id: kindVariable; tree: Session.tree; path: marker.system + "/Announce/sys_type" }
     Variable { id: positionVariable; tree: Session.tree; path: marker.system + "/EstimatedState/lat" }
+    AlarmState { id: health; alarms: Session.alarms; path: "systems/" + marker.system }
 
     Shape {
         id: mark
@@ -52,14 +53,16 @@ Item {
     }
     Rectangle {
         anchors { top: mark.bottom; horizontalCenter: parent.horizontalCenter; topMargin: Theme.mm(0.5) }
-        width: label.implicitWidth + Theme.spacing * 2
+        width: lamp.width + label.implicitWidth + Theme.spacing * 3
         height: label.implicitHeight + 2
         radius: Theme.radius
         color: Qt.alpha(Theme.surface, 0.85)
         border.color: marker.tint
+        // The system's health level, the same as in the systems list and health strip.
+        HealthDot { id: lamp; level: health.level; anchors { left: parent.left; verticalCenter: parent.verticalCenter; leftMargin: Theme.spacing } }
         Text {
             id: label
-            anchors.centerIn: parent
+            anchors { left: lamp.right; verticalCenter: parent.verticalCenter; leftMargin: Theme.spacing }
             text: marker.system + (marker.kind ? " · " + marker.kind : "") + (marker.stale ? qsTr(" (stale)") : "")
             color: Theme.text
             font.pixelSize: Theme.smallFontPixelSize

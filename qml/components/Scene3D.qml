@@ -218,16 +218,18 @@ Rectangle {
             visible: at.z > 0
             x: at.x - width / 2
             y: at.y - height - Theme.mm(5)
-            width: text.implicitWidth + Theme.spacing * 2
+            width: lamp.width + text.implicitWidth + Theme.spacing * 3
             height: text.implicitHeight + 2
             radius: Theme.radius
             color: Qt.alpha(Theme.surface, 0.8)
             border.color: root.colorOf(label.system)
             opacity: stale ? 0.45 : 1
             Variable { id: positionVariable; tree: Session.tree; path: label.system + "/EstimatedState/lat" }
+            AlarmState { id: health; alarms: Session.alarms; path: "systems/" + label.system }
+            HealthDot { id: lamp; level: health.level; anchors { left: parent.left; verticalCenter: parent.verticalCenter; leftMargin: Theme.spacing } }
             Text {
                 id: text
-                anchors.centerIn: parent
+                anchors { left: lamp.right; verticalCenter: parent.verticalCenter; leftMargin: Theme.spacing }
                 text: label.system + "  " + label.depth.toFixed(1) + " m" + (label.stale ? qsTr(" (stale)") : "")
                 color: Theme.text
                 font.pixelSize: Theme.smallFontPixelSize

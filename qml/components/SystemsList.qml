@@ -49,6 +49,8 @@ Rectangle {
             border.width: main ? Theme.mm(0.5) : 1
 
             Variable { id: systemVariable; tree: Session.tree; path: row.name }
+            // The system's one health level, as the health strip, map and 3D show it.
+            AlarmState { id: health; alarms: Session.alarms; path: "systems/" + row.name }
             Variable { id: kindVariable; tree: Session.tree; path: row.name + "/Announce/sys_type" }
 
             StatusLed {
@@ -56,7 +58,8 @@ Rectangle {
                 anchors { left: parent.left; verticalCenter: parent.verticalCenter }
                 width: Theme.touchTarget * 0.8
                 height: width
-                level: systemVariable.stale ? AlarmLevel.Warning : AlarmLevel.Normal
+                objectName: "health"
+                level: health.level
             }
             Column {
                 anchors { left: led.right; right: openButton.left; verticalCenter: parent.verticalCenter; rightMargin: Theme.spacing }
