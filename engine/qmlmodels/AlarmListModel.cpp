@@ -61,7 +61,7 @@ void AlarmListModel::refresh()
             endRemoveRows();
         }
     }
-    // Changed rows in place, new ones at the end (alarms keep the order they were raised in).
+    // Changed rows in place, new ones at the end; then worst and newest first.
     for (const AlarmGraph::Alarm &alarm : now) {
         auto it = std::find_if(m_rows.begin(), m_rows.end(), [&](const auto &a) { return a.node == alarm.node; });
         if (it != m_rows.end()) {
@@ -76,6 +76,23 @@ void AlarmListModel::refresh()
             m_rows.push_back(alarm);
             endInsertRows();
         }
+    }
+    const auto before_ = [](const AlarmGraph::Alarm &a, const AlarmGraph::Alarm &b) {
+        return a.level != b.level ? a.level > b.level : a.sinceMs != b.sinceMs ? a.sinceMs > b.sinceMs : a.node < b.node;
+    };
+    if (!std::is_sorted(m_rows.begin(), m_rows.end(), before_)) {
+        emit layoutAboutToBeChanged({}, QAbstractItemModel::VerticalSortHint);
+        const QModelIndexList persistent = persistentIndexList();
+        std::vector<AlarmGraph::NodeId> nodes;
+        for (const QModelIndex &p : persistent)
+            nodes.push_back(m_rows[static_cast<size_t>(p.row())].node);
+        std::stable_sort(m_rows.begin(), m_rows.end(), before_);
+        for (qsizetype i = 0; i < persistent.size(); ++i) {
+            const auto node = nodes[static_cast<size_t>(i)];
+            const auto at = std::find_if(m_rows.begin(), m_rows.end(), [node](const auto &a) { return a.node == node; });
+            changePersistentIndex(persistent[i], index(static_cast<int>(at - m_rows.begin())));
+        }
+        emit layoutChanged({}, QAbstractItemModel::VerticalSortHint);
     }
     if (count() != before || unacknowledged() != unackedBefore)
         emit countChanged();

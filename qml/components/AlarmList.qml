@@ -1,13 +1,23 @@
 import QtQuick
 
-// The active alarms, worst first as the alarm model orders them: where from,
-// level, message and since when. Tap one to acknowledge it; "Acknowledge all"
-// for the lot. Unacknowledged alarms are marked by a bar in their colour.
+// The active alarms, worst and newest first as the alarm model orders them:
+// where from, level, message and since when. Tap one to acknowledge it;
+// "Acknowledge all" for the lot. Unacknowledged alarms are marked by a bar in
+// their colour. None is ever hidden: when they do not all fit, a touch-sized
+// cue says how many are above or below and scrolls to them.
 Rectangle {
     id: panel
 
     readonly property int count: Session.alarms ? Session.alarms.count : 0
     readonly property int unacknowledged: Session.alarms ? Session.alarms.unacknowledged : 0
+    // Rows not wholly in view, above and below.
+    // (Counted once the view has laid its rows out, after any change.)
+    property int hiddenAbove: 0
+    property int hiddenBelow: 0
+    function recount() {
+        hiddenAbove = view.hidden(true)
+        hiddenBelow = view.hidden(false)
+    }
 
     implicitWidth: Theme.mm(90)
     implicitHeight: Theme.mm(60)
@@ -20,7 +30,9 @@ Rectangle {
     Text {
         id: heading
         anchors { left: parent.left; verticalCenter: ackAll.verticalCenter; leftMargin: Theme.spacing * 1.5 }
-        text: qsTr("Alarms (%1)").arg(panel.count)
+        text: panel.hiddenAbove + panel.hiddenBelow > 0
+              ? qsTr("Alarms (%1, %2 out of view)").arg(panel.count).arg(panel.hiddenAbove + panel.hiddenBelow)
+              : qsTr("Alarms (%1)").arg(panel.count)
         color: Theme.textDim
         font.pixelSize: Theme.smallFontPixelSize
     }
@@ -39,6 +51,36 @@ Rectangle {
         anchors { left: parent.left; right: parent.right; top: ackAll.bottom; bottom: parent.bottom; margins: Theme.spacing }
         spacing: Theme.spacing / 2
         model: Session.alarms || null
+        boundsBehavior: Flickable.StopAtBounds
+        onContentYChanged: Qt.callLater(panel.recount)
+        onContentHeightChanged: Qt.callLater(panel.recount)
+        onCountChanged: Qt.callLater(panel.recount)
+        onHeightChanged: Qt.callLater(panel.recount)
+        // Whether row i is not wholly inside the view, above (or below) it.
+        function outside(i, above) {
+            const item = itemAtIndex(i)
+            if (!item) { // not made: out of view, on one side or the other
+                const first = indexAt(0, contentY)
+                return above ? first >= 0 && i < first : first >= 0 && i > first
+            }
+            return above ? item.y < contentY - 0.5 : item.y + item.height > contentY + height + 0.5
+        }
+        function hidden(above) {
+            let n = 0
+            for (let i = 0; i < count; ++i)
+                n += outside(i, above) ? 1 : 0
+            return n
+        }
+        // Brings the nearest row out of view on that side wholly into view.
+        function reveal(above) {
+            if (above) {
+                for (let i = count - 1; i >= 0; --i)
+                    if (outside(i, true)) { positionViewAtIndex(i, ListView.Beginning); return }
+            } else {
+                for (let i = 0; i < count; ++i)
+                    if (outside(i, false)) { positionViewAtIndex(i, ListView.End); return }
+            }
+        }
         delegate: Rectangle {
             id: row
             required property int index
@@ -82,6 +124,39 @@ Rectangle {
             }
             TapHandler { onTapped: Session.alarms.acknowledge(row.index) }
         }
+    }
+
+    component Cue: Rectangle {
+        id: cue
+        property string text
+        signal tapped()
+        height: Theme.touchTarget * 0.8
+        width: Math.min(view.width, cueText.implicitWidth + Theme.spacing * 4)
+        radius: height / 2
+        color: Theme.accent
+        Text {
+            id: cueText
+            anchors.centerIn: parent
+            text: cue.text
+            color: Theme.background
+            font.pixelSize: Theme.smallFontPixelSize
+            font.bold: true
+        }
+        TapHandler { onTapped: cue.tapped() }
+    }
+    Cue {
+        objectName: "moreAbove"
+        visible: panel.hiddenAbove > 0
+        anchors { top: view.top; horizontalCenter: view.horizontalCenter }
+        text: qsTr("▲ %n more", "", panel.hiddenAbove)
+        onTapped: view.reveal(true)
+    }
+    Cue {
+        objectName: "moreBelow"
+        visible: panel.hiddenBelow > 0
+        anchors { bottom: view.bottom; horizontalCenter: view.horizontalCenter }
+        text: qsTr("▼ %n more", "", panel.hiddenBelow)
+        onTapped: view.reveal(false)
     }
 
     Text {

@@ -42,9 +42,9 @@ TestCase {
         tryCompare(announced, "count", 1)
         compare(announced.signalArguments[0][0], "scripts/depth")
 
-        Fixtures.alarmModel.acknowledge(1)
-        tryVerify(() => list.itemAtIndex(1) !== null)
-        tryCompare(list.itemAtIndex(1), "text", "scripts/depth Error too deep (ack)")
+        Fixtures.alarmModel.acknowledge(0) // worst first
+        tryVerify(() => list.itemAtIndex(0) !== null)
+        tryCompare(list.itemAtIndex(0), "text", "scripts/depth Error too deep (ack)")
         compare(Fixtures.alarmModel.unacknowledged, 1)
 
         Fixtures.raise("scripts/depth", AlarmLevel.Normal, "")

@@ -132,4 +132,41 @@ TestCase {
                       "level " + level + ": " + lamps().map(lamp => lamp.level).join(", "))
         }
     }
+
+    // Never a hidden alarm: three alarms in room for about two. The header
+    // said 3 while 2 showed and the hidden one was "communications lost".
+    Component { id: smallAlarms; AlarmList { width: 300; height: Theme.touchTarget * 4.2 } }
+    function test_anAlarmThatDoesNotFitIsNeverHidden() {
+        Fixtures.raise("systems/xplore/Batteries", AlarmLevel.Normal, "")
+        const list = createTemporaryObject(smallAlarms, test, { x: 500, y: 0, z: 100 })
+        Fixtures.raise("systems/a/Fuel", AlarmLevel.Warning, "fuel low")
+        Fixtures.advanceClock(1000)
+        Fixtures.raise("systems/b/Sonar", AlarmLevel.Warning, "sonar noisy")
+        Fixtures.advanceClock(1000)
+        Fixtures.raise("systems/c", AlarmLevel.Error, "communications lost")
+        Fixtures.alarmModel.refresh()
+        const view = findChild(list, "alarmsView")
+        tryCompare(view, "count", 3)
+        waitForRendering(list)
+        // Worst, then newest, first: the loss of communications is on top.
+        compare(view.itemAtIndex(0).objectName, "alarm-systems/c")
+        compare(view.itemAtIndex(1).objectName, "alarm-systems/b/Sonar")
+        const below = findChild(list, "moreBelow")
+        tryVerify(() => below.visible, 2000, "a cue says some are out of view")
+        verify(below.text.indexOf("1 more") >= 0, below.text)
+        verify(below.height >= Theme.touchTarget * 0.8 - 1)
+        verify(!findChild(list, "moreAbove").visible)
+        mouseClick(below)
+        tryVerify(() => !findChild(list, "moreBelow").visible, 2000, "scrolled to the last")
+        tryVerify(() => findChild(list, "moreAbove").visible)
+        const last = view.itemAtIndex(2)
+        verify(last.y + last.height <= view.contentY + view.height + 0.5, "the last is wholly in view")
+        mouseClick(findChild(list, "moreAbove"))
+        tryVerify(() => !findChild(list, "moreAbove").visible)
+        for (const path of ["systems/a/Fuel", "systems/b/Sonar", "systems/c"])
+            Fixtures.raise(path, AlarmLevel.Normal, "")
+        Fixtures.alarmModel.refresh()
+        tryCompare(view, "count", 0)
+        tryVerify(() => !findChild(list, "moreBelow").visible, 1000, "no cue once all fit")
+    }
 }

@@ -220,6 +220,36 @@ TEST(HealthMonitor, EntityAlarmsAreRenamedWhenTheirLabelIsLearned)
     EXPECT_EQ(graph.ownLevel(node), Normal);
 }
 
+TEST(AlarmListModel, WorstThenNewestFirstAndViewsKeepTheirRows)
+{
+    ManualClock clock(QDateTime::fromMSecsSinceEpoch(1000, QTimeZone::UTC));
+    AlarmGraph graph(&clock);
+    AlarmListModel model(&graph);
+    QAbstractItemModelTester tester(&model, QAbstractItemModelTester::FailureReportingMode::Fatal);
+    const auto old = graph.ensure(QStringLiteral("systems/a/Old"));
+    const auto recent = graph.ensure(QStringLiteral("systems/a/Recent"));
+    const auto bad = graph.ensure(QStringLiteral("systems/b/Bad"));
+    graph.raise(old, Warning, QStringLiteral("old"));
+    clock.advance(1000);
+    graph.raise(recent, Warning, QStringLiteral("recent"));
+    model.refresh();
+    const QPersistentModelIndex kept = model.index(1);
+    EXPECT_EQ(kept.data(AlarmListModel::MessageRole).toString(), QStringLiteral("old")) << "newest first within a level";
+    clock.advance(1000);
+    graph.raise(bad, Failure, QStringLiteral("bad"));
+    model.refresh();
+    QStringList order;
+    for (int row = 0; row < model.rowCount(); ++row)
+        order << model.index(row).data(AlarmListModel::MessageRole).toString();
+    EXPECT_EQ(order, (QStringList{QStringLiteral("bad"), QStringLiteral("recent"), QStringLiteral("old")}));
+    EXPECT_EQ(kept.row(), 2) << "a view's row follows its alarm";
+    clock.advance(1000);
+    graph.raise(old, Error, QStringLiteral("worse"));
+    model.refresh();
+    EXPECT_EQ(model.index(1).data(AlarmListModel::MessageRole).toString(), QStringLiteral("worse"));
+    EXPECT_EQ(kept.row(), 1);
+}
+
 TEST(AlarmListModel, ListsAlarmsAndTheRootLevel)
 {
     AlarmGraph graph;
@@ -234,11 +264,12 @@ TEST(AlarmListModel, ListsAlarmsAndTheRootLevel)
     ASSERT_EQ(model.rowCount(), 2);
     EXPECT_EQ(model.rootLevel(), Error);
     EXPECT_EQ(model.rootLevelName(), QStringLiteral("Error"));
-    EXPECT_EQ(model.data(model.index(0), AlarmListModel::OriginRole).toString(), QStringLiteral("scripts/a"));
-    EXPECT_EQ(model.data(model.index(1), AlarmListModel::LevelNameRole).toString(), QStringLiteral("Error"));
+    EXPECT_EQ(model.data(model.index(0), AlarmListModel::OriginRole).toString(), QStringLiteral("systems/x/y")) << "worst first";
+    EXPECT_EQ(model.data(model.index(0), AlarmListModel::LevelNameRole).toString(), QStringLiteral("Error"));
+    EXPECT_EQ(model.data(model.index(1), AlarmListModel::OriginRole).toString(), QStringLiteral("scripts/a"));
     EXPECT_EQ(model.unacknowledged(), 2);
-    model.acknowledge(1);
-    EXPECT_TRUE(model.data(model.index(1), AlarmListModel::AcknowledgedRole).toBool());
+    model.acknowledge(0);
+    EXPECT_TRUE(model.data(model.index(0), AlarmListModel::AcknowledgedRole).toBool());
     EXPECT_EQ(model.unacknowledged(), 1);
     graph.clear(a);
     model.refresh();
