@@ -32,6 +32,8 @@ Rectangle {
     property real initialZoomLevel: 15
 
     readonly property bool hasTiles: tileServer !== "" || tileDirectory !== "" || offlineDirectory !== ""
+    // A source that has no tile where the map looks shows the grid, and says why.
+    readonly property bool tilesShown: hasTiles && tileProbe.status !== TileProbe.Missing
     readonly property Tracks tracks: Session.tracks
     readonly property list<string> systems: tracks ? tracks.systems : []
     // The system followed now: "" when not following or "$main" is not chosen yet.
@@ -57,7 +59,7 @@ Rectangle {
 
     implicitWidth: Theme.mm(160)
     implicitHeight: Theme.mm(110)
-    color: hasTiles ? Theme.surface : Theme.sea
+    color: tilesShown ? Theme.surface : Theme.sea
     clip: true
 
     function colorOf(system: string): color { return Theme.traceColor(Math.max(0, systems.indexOf(system))) }
@@ -126,6 +128,7 @@ Rectangle {
     MapTileLayer {
         id: tileLayer
         anchors.fill: parent
+        visible: root.tilesShown
         tileServer: root.tileServer
         tileDirectory: root.tileDirectory
         offlineDirectory: root.offlineDirectory
@@ -135,6 +138,15 @@ Rectangle {
         centerLongitude: root.centerLongitude
         zoomLevel: root.zoomLevel
         bearing: root.bearing
+    }
+    // Whether the source has tiles where the map looks (said when it has none).
+    TileProbe {
+        id: tileProbe
+        directory: root.tileDirectory
+        server: root.tileServer
+        latitude: root.centerLatitude
+        longitude: root.centerLongitude
+        zoomLevel: root.zoomLevel
     }
 
     // Gestures, over the tiles and under the overlays.
@@ -187,7 +199,7 @@ Rectangle {
     MapGridItem {
         objectName: "graticule"
         anchors.fill: parent
-        visible: !root.hasTiles && !nedGrid.visible
+        visible: !root.tilesShown && !nedGrid.visible
         kind: MapGridItem.LatitudeLongitude
         centerLatitude: root.centerLatitude
         centerLongitude: root.centerLongitude
@@ -321,9 +333,12 @@ Rectangle {
     }
     Text {
         objectName: "noTiles"
-        visible: !root.hasTiles
+        visible: !root.tilesShown
         anchors { right: parent.right; bottom: parent.bottom; margins: Theme.spacing }
-        text: qsTr("no map tiles: grid only")
+        width: Math.min(implicitWidth, parent.width - Theme.spacing * 2)
+        wrapMode: Text.Wrap
+        horizontalAlignment: Text.AlignRight
+        text: root.hasTiles ? qsTr("%1: grid only").arg(tileProbe.message) : qsTr("no map tiles: grid only")
         color: Theme.textDim
         font.pixelSize: Theme.smallFontPixelSize
     }

@@ -1,4 +1,5 @@
 pragma ComponentBehavior: Bound
+import QtCore
 import QtQuick
 import QtLocation
 import QtPositioning
@@ -7,7 +8,9 @@ import QtPositioning
 // following the Map2D's own camera. Offline first: a folder of z/x/y.png
 // tiles, a tile server on the local network or Qt's offline tile folder;
 // never a provider list or tiles from the internet. Without a source no map
-// is made at all, so nothing is ever requested.
+// is made at all, so nothing is ever requested. Each source has its own tile
+// cache, and a new source makes a new map: tiles of one are never shown for
+// another (Qt Location keys its cache by tile, not by where it came from).
 Loader {
     id: tiles
     property string tileServer: ""
@@ -20,7 +23,14 @@ Loader {
     property real zoomLevel: 15
     property real bearing: 0
 
-    active: tileServer !== "" || tileDirectory !== "" || offlineDirectory !== ""
+    readonly property string source: tileServer !== "" ? tileServer : tileDirectory !== "" ? tileDirectory : offlineDirectory
+    active: false
+    onSourceChanged: Qt.callLater(reload)
+    Component.onCompleted: reload()
+    function reload() {
+        active = false
+        active = source !== ""
+    }
     sourceComponent: Map {
         objectName: "map"
         plugin: Plugin {
@@ -35,6 +45,11 @@ Loader {
                      : "file:///nonexistent-neptus-tiles/"
             }
             PluginParameter { name: "osm.mapping.offline.directory"; value: tiles.offlineDirectory }
+            PluginParameter {
+                name: "osm.mapping.cache.directory"
+                value: StandardPaths.writableLocation(StandardPaths.CacheLocation).toString().replace(/^file:\/\//, "")
+                       + "/tiles/" + Qt.md5(tiles.source)
+            }
             PluginParameter { name: "osm.useragent"; value: "Neptus-Qt" }
         }
         activeMapType: supportedMapTypes[supportedMapTypes.length - 1]

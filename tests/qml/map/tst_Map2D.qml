@@ -161,6 +161,46 @@ TestCase {
         checkProjection(m, trail, "with tiles")
     }
 
+    // Another source never shows the previous one's tiles (Qt Location's
+    // cache is keyed by tile, not by source), and a source with no tile here
+    // says so over the grid instead of leaving a blank map.
+    function test_4b_anotherSourceNeverShowsThePreviousTiles() {
+        const full = Fixtures.makeTempDir(), empty = Fixtures.makeTempDir()
+        const n = Math.pow(2, 15)
+        const tx = Math.floor((homeLon + 180) / 360 * n)
+        const ty = Math.floor((1 - Math.asinh(Math.tan(rad(homeLat))) / Math.PI) / 2 * n)
+        for (let x = tx - 2; x <= tx + 2; ++x)
+            for (let y = ty - 2; y <= ty + 2; ++y)
+                verify(Fixtures.writeTile(full + "/15/" + x + "/" + y + ".png", "#00ffff"))
+        const m = createTemporaryObject(tiledMap, test, { x: 0, y: 0, tileDirectory: full })
+        tryVerify(() => Qt.colorEqual(grabImage(m).pixel(100, 180), "#00ffff"), 10000, "the full folder's tiles")
+        verify(!findChild(m, "noTiles").visible)
+        m.tileDirectory = empty
+        tryVerify(() => findChild(m, "noTiles").visible, 3000, "an empty folder is said")
+        verify(findChild(m, "noTiles").text.indexOf("no tiles here in " + empty) === 0, findChild(m, "noTiles").text)
+        verify(findChild(m, "graticule").visible || findChild(m, "nedGrid").visible, "the grid instead")
+        waitForRendering(m)
+        const image = grabImage(m)
+        let cyan = 0
+        for (let x = 0; x < m.width; x += 10)
+            for (let y = 0; y < m.height; y += 10)
+                cyan += Qt.colorEqual(image.pixel(x, y), "#00ffff") ? 1 : 0
+        compare(cyan, 0, "none of the previous folder's tiles")
+        m.tileDirectory = full + "/missing"
+        tryVerify(() => findChild(m, "noTiles").text.indexOf("does not exist") > 0, 3000, findChild(m, "noTiles").text)
+        m.tileDirectory = full
+        tryVerify(() => !findChild(m, "noTiles").visible, 3000)
+        tryVerify(() => Qt.colorEqual(grabImage(m).pixel(100, 180), "#00ffff"), 10000, "back to the full folder")
+        // Another folder with the same tiles in another colour: its own tiles, not the cached ones.
+        const other = Fixtures.makeTempDir()
+        for (let x = tx - 2; x <= tx + 2; ++x)
+            for (let y = ty - 2; y <= ty + 2; ++y)
+                verify(Fixtures.writeTile(other + "/15/" + x + "/" + y + ".png", "#ffff00"))
+        m.tileDirectory = other
+        tryVerify(() => Qt.colorEqual(grabImage(m).pixel(100, 180), "#ffff00"), 10000,
+                  "the other folder's tiles: " + grabImage(m).pixel(100, 180))
+    }
+
     function test_5_followKeepsTheMainSystemCentredUntilTheMapIsDragged() {
         Session.mainSystem = "alpha"
         map2d.following = true
