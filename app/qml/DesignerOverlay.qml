@@ -36,6 +36,20 @@ Item {
     ComponentPalette { id: fallbackPalette }
 
     function snap(v) { return Math.round(v / grid) * grid }
+    // A rectangle of the canvas in the layout's own units (design pixels
+    // for a proportional layout), snapped to the grid there.
+    function toLayout(x, y, w, h) {
+        const console_ = loader ? loader.item : null
+        const r = console_ ? console_.toDesign(x, y, w, h) : Qt.rect(x, y, w, h)
+        if (!console_ || !console_.proportional)
+            return r
+        const left = snap(r.x), top = snap(r.y)
+        return Qt.rect(left, top, Math.max(grid, snap(r.x + r.width) - left), Math.max(grid, snap(r.y + r.height) - top))
+    }
+    function setGeometry(id, item) {
+        const r = toLayout(item.x, item.y, item.width, item.height)
+        editor.setGeometry(id, r.x, r.y, r.width, r.height)
+    }
     function itemFor(id) { return loader && loader.item ? editor.itemWithId(loader.item, id) : null }
     function movable(id) {
         return editor.value(id, "x") !== undefined && editor.value(id, "y") !== undefined
@@ -47,7 +61,12 @@ Item {
         if (!entry.name || entry.status !== "ready")
             return ""
         const w = entry.defaultWidth || 240, h = entry.defaultHeight || 160
-        const id = editor.add(entry.name, entry.module, snap(Math.max(0, x - w / 2)), snap(Math.max(0, y - h / 2)), w, h)
+        const console_ = loader ? loader.item : null
+        // Its default size on screen; where it goes in the layout's units.
+        const r = console_ && console_.proportional
+            ? toLayout(Math.max(0, x - w / 2), Math.max(0, y - h / 2), w, h)
+            : Qt.rect(snap(Math.max(0, x - w / 2)), snap(Math.max(0, y - h / 2)), w, h)
+        const id = editor.add(entry.name, entry.module, r.x, r.y, r.width, r.height)
         placing = ""
         selected = id
         return id
@@ -85,8 +104,11 @@ Item {
     }
     function nudge(dx, dy) {
         const item = itemFor(selected)
-        if (item && movable(selected))
-            editor.setGeometry(selected, item.x + dx, item.y + dy, item.width, item.height)
+        if (!item || !movable(selected))
+            return
+        // In the layout's own units (design pixels for a proportional layout).
+        const value = (name, fallback) => editor.value(selected, name) !== undefined ? editor.value(selected, name) : fallback
+        editor.setGeometry(selected, value("x", 0) + dx, value("y", 0) + dy, value("width", item.width), value("height", item.height))
     }
     function undo() { if (editor.undo()) keepSelection() }
     function redo() { if (editor.redo()) keepSelection() }
@@ -174,8 +196,7 @@ Item {
                         if (active) {
                             frame.startPos = Qt.point(frame.target.x, frame.target.y)
                         } else if (frame.target) {
-                            designer.editor.setGeometry(frame.modelData, frame.target.x, frame.target.y,
-                                                        frame.target.width, frame.target.height)
+                            designer.setGeometry(frame.modelData, frame.target)
                         }
                     }
                     // In scene coordinates: the frame moves under the finger.
@@ -219,7 +240,7 @@ Item {
                                 if (active) {
                                     handle.startRect = Qt.rect(t.x, t.y, t.width, t.height)
                                 } else if (t) {
-                                    designer.editor.setGeometry(frame.modelData, t.x, t.y, t.width, t.height)
+                                    designer.setGeometry(frame.modelData, t)
                                 }
                             }
                             onCentroidChanged: {

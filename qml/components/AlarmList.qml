@@ -1,3 +1,4 @@
+pragma ComponentBehavior: Bound
 import QtQuick
 
 // The active alarms, worst and newest first as the alarm model orders them:

@@ -3,7 +3,14 @@ import Neptus.Engine
 
 // The root of every console layout: what the designer saves and the shell
 // loads. Components are its children, placed by their own geometry.
+//
+// A layout with a design size (designWidth × designHeight) is proportional:
+// its components' x, y, width and height are in pixels of that design size
+// and are stretched with the console, so it fills any screen (1024×600 to
+// 3840×2160, landscape or portrait) with nothing cut off. Without one (older
+// files) the numbers are screen pixels, as they always were.
 Item {
+    id: console_
     // Layout format, so that a newer Neptus-Qt can read older files.
     property int formatVersion: 1
     property string title: qsTr("Console")
@@ -15,4 +22,42 @@ Item {
     // The running console's tree, alarms and scripts (session.tree,
     // session.alarms, session.scripts); null when a layout is only previewed.
     property ConsoleSession session: null
+
+    // The size the components' geometry is given in; 0 = screen pixels.
+    property real designWidth: 0
+    property real designHeight: 0
+    readonly property bool proportional: designWidth > 0 && designHeight > 0
+    readonly property real scaleX: proportional && width > 0 ? width / designWidth : 1
+    readonly property real scaleY: proportional && height > 0 ? height / designHeight : 1
+
+    // A rectangle of the screen (the console's own coordinates) in the
+    // layout's units, rounded: what the designer writes.
+    function toDesign(x: real, y: real, w: real, h: real): rect {
+        return Qt.rect(Math.round(x / scaleX), Math.round(y / scaleY), Math.round(w / scaleX), Math.round(h / scaleY))
+    }
+
+    // Each component's geometry as the file gives it, read once when made.
+    property var designRects: []
+    function relayout() {
+        if (!proportional)
+            return
+        for (const entry of designRects) {
+            const r = entry.rect
+            entry.item.x = Math.round(r.x * scaleX)
+            entry.item.y = Math.round(r.y * scaleY)
+            entry.item.width = Math.round((r.x + r.width) * scaleX) - entry.item.x
+            entry.item.height = Math.round((r.y + r.height) * scaleY) - entry.item.y
+        }
+    }
+    Component.onCompleted: {
+        if (!proportional)
+            return
+        const rects = []
+        for (const child of children)
+            rects.push({ item: child, rect: Qt.rect(child.x, child.y, child.width, child.height) })
+        designRects = rects
+        relayout()
+    }
+    onScaleXChanged: relayout()
+    onScaleYChanged: relayout()
 }

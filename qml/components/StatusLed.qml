@@ -7,6 +7,8 @@ Item {
 
     property int level: 0
     property string label: Theme.levelNames[Math.max(0, Math.min(level, Theme.levelNames.length - 1))]
+    // Off where the lamp only shows (the row around it takes the touch).
+    property bool tappable: true
     signal tapped()
 
     implicitWidth: Theme.touchTarget
@@ -27,5 +29,5 @@ Item {
         border.width: Math.max(1, Theme.mm(0.3))
     }
 
-    TapHandler { onTapped: led.tapped() }
+    TapHandler { enabled: led.tappable; onTapped: led.tapped() }
 }

@@ -59,6 +59,7 @@ Rectangle {
                 width: Theme.touchTarget * 0.8
                 height: width
                 objectName: "health"
+                tappable: false // the row takes the touch
                 level: health.level
             }
             Column {

@@ -7,6 +7,8 @@ import Neptus.Components
 // "$main" is that vehicle.
 Console {
     id: layout
+    designHeight: 752
+    designWidth: 1280
     formatVersion: 1
     title: "AUV console"
     vehicleKinds: ["UUV"]

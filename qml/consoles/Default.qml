@@ -7,6 +7,8 @@ import Neptus.Components
 // the main one.
 Console {
     id: layout
+    designHeight: 752
+    designWidth: 1280
     formatVersion: 1
     title: "Generic console"
 

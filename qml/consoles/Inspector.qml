@@ -6,6 +6,8 @@ import Neptus.Components
 // screen allows.
 Console {
     id: layout
+    designHeight: 752
+    designWidth: 1280
     formatVersion: 1
     title: "Inspector"
 

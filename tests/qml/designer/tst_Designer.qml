@@ -295,6 +295,36 @@ TestCase {
         compare(label.text, "")
     }
 
+    // A proportional layout (a design size) stretches with the screen; the
+    // designer writes what it places and moves in design pixels.
+    function test_aProportionalLayoutIsEditedInItsDesignUnits() {
+        const layout = "import QtQuick\nimport Neptus.Components\n\nConsole {\n    id: layout\n    designHeight: 400\n"
+                     + "    designWidth: 640\n    title: \"Half\"\n\n    Readout {\n        id: depth\n        x: 100\n        y: 50\n"
+                     + "        width: 200\n        height: 100\n    }\n}\n"
+        const shell = openShell(layout)
+        const editor = shell.loader.editor
+        const live = liveItem(shell, "depth")
+        compare(shell.loader.item.scaleX, 2)
+        compare(shell.loader.item.scaleY, 2)
+        compare(Qt.rect(live.x, live.y, live.width, live.height), Qt.rect(200, 100, 400, 200), "stretched twice")
+        // Placed at a point of the screen: written in design pixels.
+        compare(shell.designer.place("Readout", 900, 600), "readout1")
+        const x = editor.value("readout1", "x"), y = editor.value("readout1", "y")
+        verify(Math.abs(x - (900 - 100) / 2) <= 8 && Math.abs(y - (600 - 48) / 2) <= 8, x + ", " + y)
+        compare(editor.value("readout1", "width"), 104, "its default 200 px on screen, in design pixels on the grid")
+        tryVerify(() => liveItem(shell, "readout1") !== null)
+        compare(liveItem(shell, "readout1").x, 2 * x)
+        // Nudged by the keyboard: one grid step of the design.
+        shell.designer.selected = "depth"
+        shell.designer.nudge(8, 0)
+        compare(editor.value("depth", "x"), 108)
+        compare(editor.value("depth", "width"), 200, "the size stays")
+        // The window changes size: the layout follows, the file does not change.
+        shell.width = 960
+        tryCompare(liveItem(shell, "depth"), "width", 300)
+        compare(editor.value("depth", "width"), 200)
+    }
+
     // A layout naming a component not there yet (a folder not copied over)
     // says so, and opens by itself once the component is dropped in.
     function test_aConsoleWaitingForAComponentOpensWhenItArrives() {

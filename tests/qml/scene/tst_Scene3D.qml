@@ -147,6 +147,19 @@ TestCase {
         verify(label.opacity < 1)
     }
 
+    // The label's health dot shows the system's one level (as the list and strip do).
+    function test_8b_theLabelShowsTheSystemsHealth() {
+        const dot = findChild(findChild(scene, "label:alpha"), "health")
+        verify(dot)
+        Fixtures.raise("systems/alpha/Motor", AlarmLevel.Failure, "motor jammed")
+        Fixtures.alarmModel.refresh()
+        tryCompare(dot, "level", AlarmLevel.Failure)
+        compare(String(dot.color), String(Theme.levelColor(AlarmLevel.Failure)))
+        Fixtures.raise("systems/alpha/Motor", AlarmLevel.Normal, "")
+        Fixtures.alarmModel.refresh()
+        tryCompare(dot, "level", AlarmLevel.Normal)
+    }
+
     function test_9_pinchZoomsTheCamera() {
         scene.resetView()
         const d = scene.distance

@@ -1,0 +1,108 @@
+import QtQuick
+import QtTest
+import Neptus.Components
+import Neptus.Shell
+import Neptus.Engine
+import Neptus.Testing
+
+// Every shipped console in the real shell window at the screens it is made
+// for, landscape and portrait: every component wholly inside the window and
+// every interactive item at least 9 mm both ways at this screen's density.
+TestCase {
+    id: test
+    name: "ConsoleSizes"
+    when: windowShown
+
+    Component { id: mainComponent; Main { visible: true } }
+
+    readonly property var consoles: ["Default.qml", "AUV.qml", "Inspector.qml"]
+    readonly property var sizes: [Qt.size(1024, 600), Qt.size(1280, 800), Qt.size(1920, 1080), Qt.size(800, 1280)]
+
+    // Whether an item takes touches: a tap or drag handler of its own, a
+    // MouseArea, or a control (button, switch, slider, field, combo box),
+    // whatever its QML type is called.
+    function interactive(item) {
+        if (!item.visible || !item.enabled || item.opacity === 0)
+            return false
+        if (/^QQuickMouseArea/.test(String(item)))
+            return true
+        const button = typeof item.pressed === "boolean" && typeof item.clicked === "function"
+        const slider = typeof item.stepSize === "number" && typeof item.increase === "function"
+        const field = typeof item.cursorPosition === "number" && item.readOnly === false && typeof item.acceptableInput === "boolean"
+        const combo = typeof item.currentIndex === "number" && item.popup !== undefined
+        if (button || slider || field || combo)
+            return true
+        for (const d of item.data)
+            if (/^QQuick(Tap|Drag)Handler/.test(String(d)) && d.enabled && (d.target === null || d.target === item))
+                return true
+        return false
+    }
+    // The part of an item that can be seen: inside every clipping ancestor and the window.
+    function visibleRect(item, window) {
+        let r = item.mapToItem(null, 0, 0, item.width, item.height)
+        let left = Math.max(0, r.x), top = Math.max(0, r.y)
+        let right = Math.min(window.width, r.x + r.width), bottom = Math.min(window.height, r.y + r.height)
+        for (let p = item.parent; p; p = p.parent) {
+            if (!p.visible)
+                return null
+            if (p.clip) {
+                const c = p.mapToItem(null, 0, 0, p.width, p.height)
+                left = Math.max(left, c.x); top = Math.max(top, c.y)
+                right = Math.min(right, c.x + c.width); bottom = Math.min(bottom, c.y + c.height)
+            }
+        }
+        return right > left && bottom > top ? Qt.rect(left, top, right - left, bottom - top) : null
+    }
+    function walk(item, visit) {
+        visit(item)
+        for (const child of item.children)
+            walk(child, visit)
+    }
+
+    function test_everyShippedConsoleFitsEveryScreen_data() {
+        const rows = []
+        for (const file of consoles)
+            for (const size of sizes)
+                rows.push({ tag: file + " " + size.width + "x" + size.height, file: file, size: size })
+        return rows
+    }
+    function initTestCase() {
+        // Something to show: a vehicle heard, an alarm, so lists have rows.
+        Fixtures.simulateVehicle(0x1f, "lauv-sim-1")
+        Fixtures.runVehicle(3)
+        Fixtures.raise("systems/lauv-sim-1/Batteries", AlarmLevel.Warning, "battery low")
+        Fixtures.alarmModel.refresh()
+        Fixtures.treeModel.sync()
+    }
+    function test_everyShippedConsoleFitsEveryScreen(row) {
+        const window = createTemporaryObject(mainComponent, test, {
+            consoleUrl: "file://" + Fixtures.sourceDir() + "/qml/consoles/" + row.file,
+            session: Fixtures.session, width: row.size.width, height: row.size.height })
+        tryVerify(() => window.consoleLoader.item !== null, 5000, window.consoleLoader.errorString)
+        tryVerify(() => window.width === row.size.width && window.height === row.size.height, 3000,
+                  "window " + window.width + "x" + window.height)
+        const console_ = window.consoleLoader.item
+        verify(console_.proportional, row.file + " has a design size")
+        waitForRendering(window.contentItem)
+        const min = 9 * Theme.pixelsPerMm - 0.5
+        const problems = []
+        let checked = 0
+        for (const component of console_.children) {
+            const r = component.mapToItem(null, 0, 0, component.width, component.height)
+            if (r.x < -0.5 || r.y < -0.5 || r.x + r.width > row.size.width + 0.5 || r.y + r.height > row.size.height + 0.5)
+                problems.push(String(component).split("(")[0] + " at " + r + " leaves the window")
+            walk(component, item => {
+                if (!interactive(item) || !visibleRect(item, window.contentItem))
+                    return
+                ++checked
+                if (item.width < min || item.height < min)
+                    problems.push(String(item).split("(")[0] + " '" + (item.objectName || item.text || "") + "' in "
+                                  + String(component).split("(")[0] + " is " + (item.width / Theme.pixelsPerMm).toFixed(1)
+                                  + " × " + (item.height / Theme.pixelsPerMm).toFixed(1) + " mm")
+            })
+        }
+        verify(checked >= 2, checked + " interactive items found: the walk sees them")
+        console.log(row.tag + ": " + console_.children.length + " components, " + checked + " interactive items checked")
+        compare(problems.length, 0, problems.join("\n"))
+    }
+}
