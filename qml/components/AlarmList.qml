@@ -11,14 +11,9 @@ Rectangle {
 
     readonly property int count: Session.alarms ? Session.alarms.count : 0
     readonly property int unacknowledged: Session.alarms ? Session.alarms.unacknowledged : 0
-    // Rows not wholly in view, above and below.
-    // (Counted once the view has laid its rows out, after any change.)
-    property int hiddenAbove: 0
-    property int hiddenBelow: 0
-    function recount() {
-        hiddenAbove = view.hidden(true)
-        hiddenBelow = view.hidden(false)
-    }
+    // Rows out of view (the cues say where).
+    readonly property int hiddenAbove: cues.hiddenAbove
+    readonly property int hiddenBelow: cues.hiddenBelow
 
     implicitWidth: Theme.mm(90)
     implicitHeight: Theme.mm(60)
@@ -53,35 +48,6 @@ Rectangle {
         spacing: Theme.spacing / 2
         model: Session.alarms || null
         boundsBehavior: Flickable.StopAtBounds
-        onContentYChanged: Qt.callLater(panel.recount)
-        onContentHeightChanged: Qt.callLater(panel.recount)
-        onCountChanged: Qt.callLater(panel.recount)
-        onHeightChanged: Qt.callLater(panel.recount)
-        // Whether row i is not wholly inside the view, above (or below) it.
-        function outside(i, above) {
-            const item = itemAtIndex(i)
-            if (!item) { // not made: out of view, on one side or the other
-                const first = indexAt(0, contentY)
-                return above ? first >= 0 && i < first : first >= 0 && i > first
-            }
-            return above ? item.y < contentY - 0.5 : item.y + item.height > contentY + height + 0.5
-        }
-        function hidden(above) {
-            let n = 0
-            for (let i = 0; i < count; ++i)
-                n += outside(i, above) ? 1 : 0
-            return n
-        }
-        // Brings the nearest row out of view on that side wholly into view.
-        function reveal(above) {
-            if (above) {
-                for (let i = count - 1; i >= 0; --i)
-                    if (outside(i, true)) { positionViewAtIndex(i, ListView.Beginning); return }
-            } else {
-                for (let i = 0; i < count; ++i)
-                    if (outside(i, false)) { positionViewAtIndex(i, ListView.End); return }
-            }
-        }
         delegate: Rectangle {
             id: row
             required property int index
@@ -127,41 +93,10 @@ Rectangle {
         }
     }
 
-    component Cue: Rectangle {
-        id: cue
-        property string text
-        signal tapped()
-        height: Theme.touchTarget * 0.8
-        width: Math.min(view.width, cueText.implicitWidth + Theme.spacing * 4)
-        radius: height / 2
-        color: Theme.accent
-        Text {
-            id: cueText
-            anchors.centerIn: parent
-            text: cue.text
-            color: Theme.background
-            font.pixelSize: Theme.smallFontPixelSize
-            font.bold: true
-        }
-        TapHandler { onTapped: cue.tapped() }
-    }
-    Cue {
-        objectName: "moreAbove"
-        visible: panel.hiddenAbove > 0
-        anchors { top: view.top; horizontalCenter: view.horizontalCenter }
-        text: qsTr("▲ %n more", "", panel.hiddenAbove)
-        onTapped: view.reveal(true)
-    }
-    Cue {
-        objectName: "moreBelow"
-        visible: panel.hiddenBelow > 0
-        anchors { bottom: view.bottom; horizontalCenter: view.horizontalCenter }
-        text: qsTr("▼ %n more", "", panel.hiddenBelow)
-        onTapped: view.reveal(false)
-    }
+    ListCues { id: cues; view: view }
 
     Text {
-        anchors.centerIn: parent
+        anchors.centerIn: view
         visible: panel.count === 0
         text: qsTr("No alarms.")
         color: Theme.textDim

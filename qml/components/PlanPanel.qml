@@ -202,6 +202,9 @@ Rectangle {
                               : qsTr("only on the vehicle")
                         color: Theme.textDim
                         font.pixelSize: Theme.smallFontPixelSize
+                        // Wrapped, not cut, in a narrow panel: the duration matters.
+                        wrapMode: Text.Wrap
+                        maximumLineCount: 3
                         elide: Text.ElideRight
                     }
                 }

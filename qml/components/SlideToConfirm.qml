@@ -36,8 +36,13 @@ Rectangle {
         radius: slider.radius
         color: Qt.rgba(slider.tint.r, slider.tint.g, slider.tint.b, 0.25)
     }
+    // Beside the knob, never under it; shortened to fit a narrow panel.
     Text {
-        anchors.centerIn: parent
+        objectName: "label"
+        anchors { left: parent.left; right: parent.right; verticalCenter: parent.verticalCenter
+                  leftMargin: knob.width + Theme.mm(0.8) + Theme.spacing; rightMargin: Theme.spacing }
+        horizontalAlignment: Text.AlignHCenter
+        elide: Text.ElideMiddle
         text: slider.text + "  ›››"
         color: Theme.text
         font.pixelSize: Theme.fontPixelSize

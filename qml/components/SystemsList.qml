@@ -23,7 +23,8 @@ Rectangle {
     Text {
         id: heading
         anchors { left: parent.left; top: parent.top; margins: Theme.spacing * 1.5 }
-        text: qsTr("Systems (%1)").arg(list.count)
+        text: cues.hidden > 0 ? qsTr("Systems (%1, %2 out of view)").arg(list.count).arg(cues.hidden)
+                              : qsTr("Systems (%1)").arg(list.count)
         color: Theme.textDim
         font.pixelSize: Theme.smallFontPixelSize
     }
@@ -34,6 +35,7 @@ Rectangle {
         anchors { left: parent.left; right: parent.right; top: heading.bottom; bottom: parent.bottom; margins: Theme.spacing }
         spacing: Theme.spacing / 2
         model: Session.tree
+        boundsBehavior: Flickable.StopAtBounds
         delegate: Rectangle {
             id: row
             required property string name
@@ -95,6 +97,8 @@ Rectangle {
             }
         }
     }
+
+    ListCues { id: cues; view: view }
 
     Text {
         anchors.centerIn: parent

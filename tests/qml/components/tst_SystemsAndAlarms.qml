@@ -167,4 +167,23 @@ TestCase {
         tryCompare(view, "count", 0)
         tryVerify(() => !findChild(list, "moreBelow").visible, 1000, "no cue once all fit")
     }
+
+    // The systems list says so too when a system is out of view.
+    Component { id: smallSystems; SystemsList { width: 300; height: Theme.touchTarget * 3.2 } }
+    function test_aSystemOutOfViewIsSaid() {
+        const list = createTemporaryObject(smallSystems, test, { x: 500, y: 0, z: 100 })
+        const view = findChild(list, "systemsView")
+        for (let id = 60; id < 64; ++id) {
+            Fixtures.nameSystem(id, "many-" + id)
+            Fixtures.ingest("Heartbeat", id, {})
+        }
+        Fixtures.treeModel.sync()
+        tryVerify(() => view.count >= 4, 2000, "systems: " + view.count)
+        const below = findChild(list, "moreBelow")
+        tryVerify(() => below.visible, 2000)
+        const hidden = Number(below.text.match(/\d+/)[0])
+        verify(hidden >= 1 && hidden < view.count, below.text)
+        mouseClick(below)
+        tryVerify(() => findChild(list, "moreAbove").visible, 2000, "scrolled on")
+    }
 }
