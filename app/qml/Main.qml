@@ -71,6 +71,11 @@ ApplicationWindow {
         onPaletteToggleRequested: window.togglePalette()
     }
 
+    AlarmSounds {
+        id: alarmSounds
+        alarms: window.session ? window.session.alarms : null
+    }
+
     // Consoles to open for a vehicle (the systems list offers them).
     ConsoleCatalog {
         id: catalog

@@ -68,6 +68,15 @@ Rectangle {
             font.family: Theme.monospaceFont
             font.pixelSize: Theme.largeFontPixelSize
         }
+        // Alarm sound: mute what sounds now for two minutes (new errors still sound).
+        TouchButton {
+            objectName: "muteButton"
+            visible: bar.alarms !== null && (bar.alarms.muted || bar.alarms.soundLevel >= AlarmLevel.Warning)
+            text: bar.alarms && bar.alarms.muted ? qsTr("Muted") : qsTr("Mute 2 min")
+            highlighted: bar.alarms !== null && bar.alarms.muted
+            toolTip: qsTr("Silence the alarm sound for two minutes; a new error still sounds")
+            onClicked: bar.alarms.muted ? bar.alarms.unmute() : bar.alarms.mute(120)
+        }
         TouchButton {
             objectName: "editButton"
             visible: bar.canEdit

@@ -19,6 +19,8 @@ AlarmListModel::AlarmListModel(AlarmGraph *graph, QObject *parent)
     });
     m_timer.setInterval(100);
     connect(&m_timer, &QTimer::timeout, this, &AlarmListModel::refresh);
+    m_mute.setSingleShot(true);
+    connect(&m_mute, &QTimer::timeout, this, &AlarmListModel::unmute);
     m_timer.start();
     refresh();
 }
@@ -96,11 +98,50 @@ void AlarmListModel::refresh()
     }
     if (count() != before || unacknowledged() != unackedBefore)
         emit countChanged();
+    updateSound();
     const int root = m_graph->rootLevel();
     if (root != m_rootLevel) {
         m_rootLevel = root;
         emit rootLevelChanged();
     }
+}
+
+void AlarmListModel::updateSound()
+{
+    int level = Unknown;
+    for (const AlarmGraph::Alarm &a : m_rows) {
+        if (a.acknowledged || !isAlarm(a.level) || a.level <= level)
+            continue;
+        const bool silenced = m_mute.isActive()
+            && (a.level < Error || std::any_of(m_muted.begin(), m_muted.end(), [&](const auto &m) {
+                   return m.first == a.node && m.second >= a.level;
+               }));
+        if (!silenced)
+            level = a.level;
+    }
+    const bool changed = level != m_soundLevel;
+    m_soundLevel = level;
+    if (changed)
+        emit soundChanged();
+}
+
+void AlarmListModel::mute(int seconds)
+{
+    m_muted.clear();
+    for (const AlarmGraph::Alarm &a : m_rows)
+        if (!a.acknowledged && isAlarm(a.level))
+            m_muted.emplace_back(a.node, a.level);
+    m_mute.start(std::chrono::seconds(std::max(1, seconds)));
+    updateSound();
+    emit soundChanged();
+}
+
+void AlarmListModel::unmute()
+{
+    m_mute.stop();
+    m_muted.clear();
+    updateSound();
+    emit soundChanged();
 }
 
 void AlarmListModel::acknowledge(int row)

@@ -23,6 +23,10 @@ class AlarmListModel : public QAbstractListModel
     Q_PROPERTY(int unacknowledged READ unacknowledged NOTIFY countChanged)
     // Changes whenever anything in the graph did (AlarmState follows it).
     Q_PROPERTY(int revision READ revision NOTIFY revisionChanged)
+    // What the alarm sound should say: the worst level among unacknowledged
+    // alarms of Warning or above that are not muted; Unknown for silence.
+    Q_PROPERTY(int soundLevel READ soundLevel NOTIFY soundChanged)
+    Q_PROPERTY(bool muted READ muted NOTIFY soundChanged)
 
 public:
     enum Role { OriginRole = Qt::UserRole + 1, LevelRole, LevelNameRole, MessageRole, SinceRole, AcknowledgedRole };
@@ -42,6 +46,13 @@ public:
 
     Q_INVOKABLE void acknowledge(int row);
     Q_INVOKABLE void acknowledgeAll();
+
+    int soundLevel() const { return m_soundLevel; }
+    bool muted() const { return m_mute.isActive(); }
+    // Silences the alarms sounding now for `seconds`: an alarm that is new
+    // or gets worse meanwhile (Error or Failure) sounds all the same.
+    Q_INVOKABLE void mute(int seconds);
+    Q_INVOKABLE void unmute();
     // Looks at the graph now (it does so by itself every 100 ms).
     Q_INVOKABLE void refresh();
 
@@ -53,11 +64,17 @@ signals:
     void rootLevelChanged();
     void countChanged();
     void revisionChanged();
+    void soundChanged();
     // An alarm rose to Error or Failure: flash, play a sound. Once per rise.
     void announced(const QString &origin, int level, const QString &message);
 
 private:
+    void updateSound();
+
     AlarmGraph *m_graph;
+    int m_soundLevel = Unknown;
+    QTimer m_mute;                                   // single shot: muting ends
+    std::vector<std::pair<AlarmGraph::NodeId, Level>> m_muted; // what was sounding when muted
     std::vector<AlarmGraph::Alarm> m_rows;
     quint64 m_seenVersion = ~quint64(0);
     int m_rootLevel = Unknown;
