@@ -29,6 +29,27 @@ ApplicationWindow {
     visible: true
     title: (consoleLoader.title || qsTr("Console")) + " — Neptus-Qt"
     color: Theme.background
+    // Every control takes its colours from the theme (no white switch or
+    // combo box at night).
+    palette {
+        window: Theme.background
+        windowText: Theme.text
+        base: Theme.surface
+        alternateBase: Theme.background
+        text: Theme.text
+        button: Theme.surface
+        buttonText: Theme.text
+        highlight: Theme.accent
+        highlightedText: Theme.background
+        light: Theme.surface
+        midlight: Theme.border
+        mid: Theme.border
+        dark: Theme.textDim
+        shadow: Theme.background
+        placeholderText: Theme.textDim
+        toolTipBase: Theme.surface
+        toolTipText: Theme.text
+    }
 
     Settings {
         id: settings

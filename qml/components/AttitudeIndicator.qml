@@ -43,8 +43,8 @@ Item {
             width: parent.width
             height: parent.height
             y: attitude.pitchDegrees * attitude.scale
-            Rectangle { width: parent.width; height: parent.height / 2; color: Theme.palette === Theme.Night ? "#140000" : "#4f86c6" }
-            Rectangle { y: parent.height / 2; width: parent.width; height: parent.height / 2; color: Theme.palette === Theme.Night ? "#2a0a00" : "#8a5a2b" }
+            Rectangle { width: parent.width; height: parent.height / 2; color: Theme.sky }
+            Rectangle { y: parent.height / 2; width: parent.width; height: parent.height / 2; color: Theme.ground }
             Rectangle { y: parent.height / 2 - 1; width: parent.width; height: 2; color: Theme.text }
             Repeater {
                 model: [-30, -20, -10, 10, 20, 30]

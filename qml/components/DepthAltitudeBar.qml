@@ -30,7 +30,7 @@ Item {
     Rectangle {
         id: column
         anchors { left: parent.left; right: parent.right; top: parent.top; bottom: depthText.top; bottomMargin: Theme.spacing }
-        color: Theme.palette === Theme.Night ? "#100000" : "#cfe3f5"
+        color: Theme.water
         border.color: Theme.border
         radius: Theme.radius
         clip: true
@@ -41,7 +41,7 @@ Item {
             y: column.yOf(bar.seabedDepth)
             width: parent.width
             height: parent.height - y
-            color: Theme.palette === Theme.Night ? "#2a0a00" : "#8a5a2b"
+            color: Theme.ground
         }
         Rectangle {
             id: vehicle

@@ -106,7 +106,7 @@ Rectangle {
             eulerRotation.x: -90
             scale: Qt.vector3d(60, 60, 1)
             materials: DefaultMaterial {
-                diffuseColor: Theme.palette === Theme.Night ? "#300000" : "#4f9fd6"
+                diffuseColor: Theme.waterSurface
                 opacity: 0.3
                 cullMode: Material.NoCulling
                 specularAmount: 0

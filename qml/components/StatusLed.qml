@@ -27,6 +27,24 @@ Item {
         color: Theme.levelColor(led.level)
         border.color: Theme.border
         border.width: Math.max(1, Theme.mm(0.3))
+        // The level's mark: told apart without colour (night's reds).
+        Text {
+            objectName: "glyph"
+            anchors.centerIn: parent
+            text: Theme.levelGlyph(led.level)
+            color: Theme.palette === Theme.Night ? "#000000" : "#ffffff"
+            font.pixelSize: Math.max(8, lamp.height * 0.62)
+            font.bold: true
+        }
+        // Failure blinks (1 Hz), so the worst is seen at a glance.
+        SequentialAnimation on opacity {
+            objectName: "blink"
+            running: led.level >= 5
+            loops: Animation.Infinite
+            alwaysRunToEnd: true
+            NumberAnimation { to: 0.25; duration: 500 }
+            NumberAnimation { to: 1; duration: 500 }
+        }
     }
 
     TapHandler { enabled: led.tappable; onTapped: led.tapped() }
