@@ -17,9 +17,15 @@ Basic.Button {
     Keys.onReturnPressed: clicked()
     Keys.onEnterPressed: clicked()
 
-    Basic.ToolTip.visible: hovered && toolTip !== ""
+    // A finger cannot hover: press and hold shows what the button does (for
+    // 3 s) without doing it.
+    property bool helpShown: false
+    onPressAndHold: if (toolTip !== "") { helpShown = true; helpTimer.restart() }
+    Timer { id: helpTimer; interval: 3000; onTriggered: button.helpShown = false }
+
+    Basic.ToolTip.visible: (hovered || helpShown) && toolTip !== ""
     Basic.ToolTip.text: toolTip
-    Basic.ToolTip.delay: 600
+    Basic.ToolTip.delay: helpShown ? 0 : 600
 
     contentItem: Text {
         text: button.text

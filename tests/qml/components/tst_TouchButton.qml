@@ -33,4 +33,17 @@ TestCase {
         keyClick(Qt.Key_Return)
         compare(spy.count, 4)
     }
+
+    // A finger cannot hover: press and hold shows the help, and does nothing.
+    Component { id: glyphButton; TouchButton { text: "⊡"; toolTip: "Show every system" } }
+    function test_pressAndHoldShowsWhatItDoes() {
+        const button = createTemporaryObject(glyphButton, this)
+        const spy = spyComponent.createObject(this, { target: button })
+        const touch = touchEvent(button)
+        touch.press(0, button, button.width / 2, button.height / 2).commit()
+        tryVerify(() => button.helpShown, 3000, "held")
+        touch.release(0, button, button.width / 2, button.height / 2).commit()
+        compare(spy.count, 0, "holding for help does not press it")
+        tryVerify(() => !button.helpShown, 5000, "the help goes by itself")
+    }
 }
