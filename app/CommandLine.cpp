@@ -34,6 +34,9 @@ std::expected<CommandLine, QString> CommandLine::parse(const QStringList &argume
         QStringLiteral("name"));
     const QCommandLineOption palette(QStringLiteral("palette"),
         QStringLiteral("Colour palette: day, dusk or night."), QStringLiteral("name"));
+    const QCommandLineOption uiScale(QStringLiteral("ui-scale"),
+        QStringLiteral("Size of text and controls, 0.75 to 2 (touch targets never under 9 mm); default as last time."),
+        QStringLiteral("factor"));
     const QCommandLineOption size(QStringLiteral("size"),
         QStringLiteral("Window size, e.g. 1280x800."), QStringLiteral("WxH"));
     const QCommandLineOption selfTest(QStringLiteral("self-test"),
@@ -81,7 +84,7 @@ std::expected<CommandLine, QString> CommandLine::parse(const QStringList &argume
         QStringLiteral("file"));
     const QCommandLineOption quitAfter(QStringLiteral("quit-after"),
         QStringLiteral("Exit after this many milliseconds."), QStringLiteral("ms"));
-    parser.addOptions({console, screenshot, screenshotDelay, components, edit, select, system, palette, size, selfTest,
+    parser.addOptions({console, screenshot, screenshotDelay, components, edit, select, system, palette, uiScale, size, selfTest,
                        imcPort, imcBind, imcPeer, ddsDomain, ddsConfig, ddsKeys, ddsIdentity, defs, defsFor, imcDiscovery, dumpTree, quitAfter, forgetAfter, mission});
     // "--defs-for SYSTEM FILE" (two words, as the documentation writes it) is
     // "--defs-for SYSTEM=FILE" to the parser, which takes one value per option.
@@ -132,6 +135,12 @@ std::expected<CommandLine, QString> CommandLine::parse(const QStringList &argume
         && result.palette != u"night")
         return std::unexpected(QStringLiteral("--palette must be day, dusk or night, not '%1'")
                                    .arg(parser.value(palette)));
+    if (parser.isSet(uiScale)) {
+        bool ok = false;
+        result.uiScale = parser.value(uiScale).toDouble(&ok);
+        if (!ok || result.uiScale < 0.75 || result.uiScale > 2)
+            return std::unexpected(QStringLiteral("--ui-scale must be a number from 0.75 to 2, not '%1'").arg(parser.value(uiScale)));
+    }
     if (parser.isSet(size)) {
         static const QRegularExpression format(QStringLiteral("^(\\d{2,5})x(\\d{2,5})$"));
         const auto match = format.match(parser.value(size));

@@ -140,6 +140,7 @@ int main(int argc, char *argv[])
         {QStringLiteral("session"), QVariant::fromValue(&session)},
         {QStringLiteral("consoleUrl"), QUrl::fromLocalFile(commandLine->consoleFile)},
         {QStringLiteral("initialPalette"), commandLine->palette},
+        {QStringLiteral("initialScale"), commandLine->uiScale},
         {QStringLiteral("componentDirectories"), componentDirectories},
         {QStringLiteral("consoleDirectories"), ConsoleCatalog::standardDirectories()},
         {QStringLiteral("editing"), commandLine->edit},

@@ -12,6 +12,8 @@ ApplicationWindow {
     property ConsoleSession session: null
     // "day", "dusk" or "night" from the command line; empty = as the user left it.
     property string initialPalette: ""
+    // From the command line (--ui-scale); 0 = as the user left it.
+    property real initialScale: 0
     // Where drop-in components are looked for, first wins.
     property var componentDirectories: []
     // Where console layouts are looked for (to open one for a vehicle).
@@ -55,6 +57,7 @@ ApplicationWindow {
         id: settings
         category: "shell"
         property int palette: Theme.Day
+        property real uiScale: 1
     }
 
     Component.onCompleted: {
@@ -63,7 +66,16 @@ ApplicationWindow {
         designer.selected = initialSelection
         const requested = Theme.paletteNames.map(name => name.toLowerCase()).indexOf(initialPalette)
         Theme.palette = requested >= 0 ? requested : settings.palette
+        Theme.uiScale = initialScale > 0 ? initialScale : settings.uiScale
     }
+    // The operator's UI scale, kept for next time.
+    function setUiScale(scale) {
+        Theme.uiScale = Math.round(Math.max(0.75, Math.min(2, scale)) * 20) / 20
+        settings.uiScale = Theme.uiScale
+    }
+    Shortcut { sequences: ["Ctrl+=", "Ctrl++"]; context: Qt.ApplicationShortcut; onActivated: window.setUiScale(Theme.uiScale + 0.1) }
+    Shortcut { sequence: "Ctrl+-"; context: Qt.ApplicationShortcut; onActivated: window.setUiScale(Theme.uiScale - 0.1) }
+    Shortcut { sequence: "Ctrl+0"; context: Qt.ApplicationShortcut; onActivated: window.setUiScale(1) }
 
     function togglePalette() {
         Theme.nextPalette()

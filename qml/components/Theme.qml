@@ -22,10 +22,14 @@ QtObject {
     readonly property real pixelsPerMm: reportedPixelsPerMm >= 2 && reportedPixelsPerMm <= 30
                                         ? reportedPixelsPerMm : 96 / 25.4
 
-    function mm(millimetres: real): real { return Math.round(millimetres * pixelsPerMm) }
+    // The operator's own scale (0.75 to 2; Ctrl+= and Ctrl+- in the shell):
+    // text, spacing and controls grow or shrink with it, but a touch target
+    // never below 9 mm.
+    property real uiScale: 1
+    function mm(millimetres: real): real { return Math.round(millimetres * pixelsPerMm * uiScale) }
 
     // A finger in a glove needs 9 mm (ISO 9241-9 and ship bridge guidance).
-    readonly property real touchTarget: Math.ceil(9 * pixelsPerMm)
+    readonly property real touchTarget: Math.ceil(9 * pixelsPerMm * Math.max(1, uiScale))
     readonly property real spacing: mm(1.5)
     readonly property real radius: mm(1)
     readonly property real titleBarHeight: mm(12)

@@ -68,4 +68,18 @@ TestCase {
         compare(Theme.levelColor(99), Theme.levelColor(5))
         compare(Theme.levelColor(-1), Theme.levelColor(0))
     }
+
+    // The operator's scale: text and controls grow with it; a touch target
+    // never goes under 9 mm.
+    function test_uiScaleNeverShrinksATouchTargetUnderNineMillimetres() {
+        const ten = Theme.mm(10), target = Theme.touchTarget
+        Theme.uiScale = 1.5
+        compare(Theme.mm(10), Math.round(10 * Theme.pixelsPerMm * 1.5))
+        verify(Theme.touchTarget > target * 1.4, "bigger with it")
+        verify(Theme.fontPixelSize > 0)
+        Theme.uiScale = 0.75
+        verify(Theme.mm(10) < ten, "text and spacing smaller")
+        compare(Theme.touchTarget, target, "a touch target stays 9 mm")
+        Theme.uiScale = 1
+    }
 }

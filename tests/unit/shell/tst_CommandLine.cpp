@@ -57,6 +57,12 @@ TEST(CommandLine, NamesWhatIsWrong)
     ASSERT_FALSE(line);
     EXPECT_TRUE(line.error().contains(QStringLiteral("/nonexistent/Nope.qml"))) << line.error().toStdString();
 
+    line = parse({QStringLiteral("--ui-scale"), QStringLiteral("1.5")});
+    ASSERT_TRUE(line);
+    EXPECT_EQ(line->uiScale, 1.5);
+    line = parse({QStringLiteral("--ui-scale"), QStringLiteral("5")});
+    ASSERT_FALSE(line);
+    EXPECT_TRUE(line.error().contains(QStringLiteral("0.75 to 2"))) << line.error().toStdString();
     line = parse({QStringLiteral("--palette"), QStringLiteral("purple")});
     ASSERT_FALSE(line);
     EXPECT_TRUE(line.error().contains(QStringLiteral("purple")));
