@@ -6,6 +6,9 @@ import Neptus.Engine
 // scene graph (hundreds of thousands of points). Drag to look back (pauses),
 // pinch or wheel to zoom the time span, "Live" to follow again. The legend
 // names each series with its latest value; greyed when all of them are stale.
+// One value axis per unit (the first on the left, the second on the right,
+// then alternating outwards), each with round ticks and its unit; lines at
+// the first axis's ticks.
 Rectangle {
     id: plot
 
@@ -14,6 +17,28 @@ Rectangle {
     property real span: 300
     property var seriesColors: Theme.traces
     readonly property alias series: series
+    // The distinct units of the series, in order: one axis each ("" for a unitless series).
+    readonly property var units: {
+        const seen = []
+        for (let i = 0; i < sources.count; ++i) {
+            const v = sources.objectAt(i) as Variable
+            const unit = v && v.present ? v.unit : ""
+            if (v && v.present && seen.indexOf(unit) < 0)
+                seen.push(unit)
+        }
+        return seen.length ? seen : [""]
+    }
+    readonly property var axisOfSeries: {
+        const axes = []
+        for (let i = 0; i < sources.count; ++i) {
+            const v = sources.objectAt(i) as Variable
+            axes.push(Math.max(0, units.indexOf(v && v.present ? v.unit : "")))
+        }
+        return axes
+    }
+    readonly property real axisWidth: Theme.mm(13)
+    readonly property int leftAxes: Math.ceil(units.length / 2)
+    readonly property int rightAxes: Math.floor(units.length / 2)
     readonly property bool stale: {
         let any = false
         for (let i = 0; i < sources.count; ++i) {
@@ -55,8 +80,13 @@ Rectangle {
     TimeSeriesItem {
         id: series
         objectName: "series"
-        anchors { fill: parent; leftMargin: Theme.mm(14); rightMargin: Theme.spacing; topMargin: legend.height + Theme.spacing * 2; bottomMargin: Theme.mm(6) }
+        anchors { fill: parent; leftMargin: plot.leftAxes * plot.axisWidth + Theme.spacing
+                  rightMargin: plot.rightAxes * plot.axisWidth + Theme.spacing
+                  topMargin: legend.height + Theme.spacing * 2 + Theme.smallFontPixelSize * 1.6; bottomMargin: Theme.mm(6) }
+        z: 1 // over the tick lines
         seriesCount: Math.max(1, plot.paths.length)
+        axes: plot.axisOfSeries
+        tickSpacing: Theme.mm(10)
         colors: plot.seriesColors
         span: plot.span
         opacity: plot.stale ? 0.4 : 1
@@ -81,22 +111,60 @@ Rectangle {
         }
     }
 
-    // Axes: the value range on the left, the time span under.
-    Text {
-        objectName: "yMax"
-        anchors { right: series.left; rightMargin: Theme.spacing / 2; top: series.top }
-        text: series.yMax.toPrecision(4)
-        color: Theme.textDim
-        font.pixelSize: Theme.smallFontPixelSize
-        font.family: Theme.monospaceFont
+    // Lines at the first axis's ticks, under the series.
+    Repeater {
+        model: series.axisTicks[0] || []
+        Rectangle {
+            required property real modelData
+            x: series.x
+            width: series.width
+            height: 1
+            y: series.y + series.height * (1 - (modelData - series.yMin) / (series.yMax - series.yMin))
+            color: Theme.border
+            opacity: 0.6
+        }
     }
-    Text {
-        objectName: "yMin"
-        anchors { right: series.left; rightMargin: Theme.spacing / 2; bottom: series.bottom }
-        text: series.yMin.toPrecision(4)
-        color: Theme.textDim
-        font.pixelSize: Theme.smallFontPixelSize
-        font.family: Theme.monospaceFont
+    // The value axes: round ticks and the unit on top, one column per unit.
+    Repeater {
+        model: plot.units.length
+        delegate: Item {
+            id: axis
+            required property int index
+            readonly property bool onLeft: index % 2 === 0
+            readonly property int column: Math.floor(index / 2) // 0 next to the plot, then outwards
+            readonly property string unit: plot.units[index]
+            objectName: "axis-" + index
+            x: onLeft ? series.x - (column + 1) * plot.axisWidth - Theme.spacing / 2 : series.x + series.width + column * plot.axisWidth + Theme.spacing / 2
+            y: series.y
+            width: plot.axisWidth
+            height: series.height
+            Text {
+                objectName: "unit"
+                anchors { bottom: parent.top; bottomMargin: Theme.smallFontPixelSize * 0.7 }
+                x: axis.onLeft ? parent.width - width : 0
+                text: axis.unit
+                color: Theme.text
+                font.pixelSize: Theme.smallFontPixelSize
+                font.bold: true
+            }
+            Repeater {
+                model: series.axisTicks[axis.index] || []
+                Text {
+                    required property real modelData
+                    readonly property var range: series.axisRanges[axis.index] || [0, 1]
+                    readonly property real lo: range[0]
+                    readonly property real hi: range[1]
+                    objectName: "tick"
+                    x: axis.onLeft ? axis.width - width : 0
+                    y: axis.height * (1 - (modelData - lo) / (hi - lo)) - height / 2
+                    // Round values: as few decimals as the step needs.
+                    text: Number(modelData.toPrecision(6)).toString()
+                    color: Theme.textDim
+                    font.pixelSize: Theme.smallFontPixelSize
+                    font.family: Theme.monospaceFont
+                }
+            }
+        }
     }
     Text {
         anchors { left: series.left; top: series.bottom; topMargin: 2 }

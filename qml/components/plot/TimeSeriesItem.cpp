@@ -147,35 +147,122 @@ size_t TimeSeriesItem::firstAtOrAfter(const Series &s, double time) const
     return lo;
 }
 
+QList<double> TimeSeriesItem::roundTicks(double &lo, double &hi, int intervals)
+{
+    intervals = std::max(1, intervals);
+    const double raw = (hi - lo) / intervals;
+    const double magnitude = std::pow(10.0, std::floor(std::log10(raw)));
+    double step = 10 * magnitude;
+    for (const double m : {1.0, 2.0, 5.0})
+        if (m * magnitude >= raw) {
+            step = m * magnitude;
+            break;
+        }
+    lo = std::floor(lo / step + 1e-9) * step;
+    hi = std::ceil(hi / step - 1e-9) * step;
+    QList<double> ticks;
+    for (double t = lo; t <= hi + step * 1e-6; t += step)
+        ticks << (std::abs(t) < step * 1e-9 ? 0.0 : std::round(t / step) * step);
+    return ticks;
+}
+
 void TimeSeriesItem::updateRange()
 {
-    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+    int count = 1;
+    for (int i = 0; i < seriesCount(); ++i)
+        count = std::max(count, axisOf(i) + 1);
+    std::vector<double> lo(static_cast<size_t>(count), std::numeric_limits<double>::infinity());
+    std::vector<double> hi(static_cast<size_t>(count), -std::numeric_limits<double>::infinity());
     const double start = m_end - m_span;
-    for (const Series &s : m_series) {
+    for (int index = 0; index < seriesCount(); ++index) {
+        const Series &s = m_series[static_cast<size_t>(index)];
+        const auto a = static_cast<size_t>(axisOf(index));
         for (size_t i = firstAtOrAfter(s, start); i < s.size() && s.time(i) <= m_end; ++i) {
             const double v = s.value(i);
             if (std::isfinite(v)) {
-                lo = std::min(lo, v);
-                hi = std::max(hi, v);
+                lo[a] = std::min(lo[a], v);
+                hi[a] = std::max(hi[a], v);
             }
         }
     }
-    if (!std::isfinite(lo)) {
-        lo = 0;
-        hi = 1;
-    } else if (hi - lo < 1e-9) {
-        lo -= 0.5;
-        hi += 0.5;
-    } else {
-        const double margin = (hi - lo) * 0.05;
-        lo -= margin;
-        hi += margin;
+    const int intervals = std::max(1, static_cast<int>(height() / std::max(8.0, m_tickSpacing)));
+    std::vector<Axis> axes(static_cast<size_t>(count));
+    for (size_t a = 0; a < axes.size(); ++a) {
+        double l = lo[a], h = hi[a];
+        if (!std::isfinite(l)) {
+            l = 0;
+            h = 1;
+        } else if (h - l < 1e-9) {
+            const double pad = std::max(0.5, std::abs(l) * 0.05);
+            l -= pad;
+            h += pad;
+        } else { // a little room, so a line on a tick is not on the edge
+            const double pad = (h - l) * 0.02;
+            l -= pad;
+            h += pad;
+        }
+        axes[a].ticks = roundTicks(l, h, intervals);
+        axes[a].lo = l;
+        axes[a].hi = h;
     }
-    if (lo != m_yMin || hi != m_yMax) {
-        m_yMin = lo;
-        m_yMax = hi;
+    const bool countChanged = axes.size() != m_axes.size();
+    const bool moved = countChanged || !std::equal(axes.begin(), axes.end(), m_axes.begin(), [](const Axis &x, const Axis &y) {
+        return x.lo == y.lo && x.hi == y.hi;
+    });
+    m_axes = std::move(axes);
+    if (countChanged)
+        emit axesChanged();
+    if (moved)
         emit rangeChanged();
-    }
+}
+
+void TimeSeriesItem::setAxes(const QList<int> &axes)
+{
+    if (axes == m_axisOf)
+        return;
+    m_axisOf = axes;
+    emit axesChanged();
+    changed();
+}
+
+void TimeSeriesItem::setTickSpacing(double pixels)
+{
+    if (pixels == m_tickSpacing || !(pixels > 0))
+        return;
+    m_tickSpacing = pixels;
+    emit axesChanged();
+    changed();
+}
+
+QVariantList TimeSeriesItem::axisTicks() const
+{
+    QVariantList out;
+    for (const Axis &a : m_axes)
+        out << QVariant::fromValue(a.ticks);
+    return out;
+}
+
+QVariantList TimeSeriesItem::axisRanges() const
+{
+    QVariantList out;
+    for (const Axis &a : m_axes)
+        out << QVariant::fromValue(QList<double>{a.lo, a.hi});
+    return out;
+}
+
+double TimeSeriesItem::axisMin(int axis) const
+{
+    return axis >= 0 && axis < axisCount() ? m_axes[static_cast<size_t>(axis)].lo : 0;
+}
+
+double TimeSeriesItem::axisMax(int axis) const
+{
+    return axis >= 0 && axis < axisCount() ? m_axes[static_cast<size_t>(axis)].hi : 1;
+}
+
+QList<double> TimeSeriesItem::ticks(int axis) const
+{
+    return axis >= 0 && axis < axisCount() ? m_axes[static_cast<size_t>(axis)].ticks : QList<double>();
 }
 
 double TimeSeriesItem::valueAt(int series, double x) const
@@ -218,8 +305,6 @@ QSGNode *TimeSeriesItem::updatePaintNode(QSGNode *old, UpdatePaintNodeData *)
     }
     const int columns = std::max(1, static_cast<int>(std::ceil(width())));
     const double start = m_end - m_span;
-    const double yScale = height() / (m_yMax - m_yMin);
-    auto yOf = [&](double v) { return static_cast<float>(height() - (v - m_yMin) * yScale); };
     std::vector<QSGGeometry::Point2D> points;
     int index = 0;
     for (QSGNode *child = root->firstChild(); child; child = child->nextSibling(), ++index) {
@@ -231,6 +316,9 @@ QSGNode *TimeSeriesItem::updatePaintNode(QSGNode *old, UpdatePaintNodeData *)
             node->markDirty(QSGNode::DirtyMaterial);
         }
         const Series &s = m_series[static_cast<size_t>(index)];
+        const Axis &axis = m_axes[std::min(static_cast<size_t>(axisOf(index)), m_axes.size() - 1)];
+        const double yScale = height() / (axis.hi - axis.lo);
+        auto yOf = [&](double v) { return static_cast<float>(height() - (v - axis.lo) * yScale); };
         points.clear();
         // Per pixel column: the first, lowest, highest and last value, in time order.
         int column = -1;

@@ -12,6 +12,9 @@
 // as at most two vertices per pixel column (its lowest and highest value
 // there), so hundreds of thousands of points cost one pass over them.
 // Feeding (append) and the view (end, span, live) are the QML wrapper's.
+// Each series belongs to a value axis (one per unit); each axis has its own
+// range, widened to round ticks (1, 2 or 5 × 10^n) about `tickSpacing`
+// pixels apart.
 class TimeSeriesItem : public QQuickItem
 {
     Q_OBJECT
@@ -21,8 +24,14 @@ class TimeSeriesItem : public QQuickItem
     Q_PROPERTY(double span READ span WRITE setSpan NOTIFY viewChanged)       // seconds across
     Q_PROPERTY(double end READ end WRITE setEnd NOTIFY viewChanged)          // time at the right edge
     Q_PROPERTY(bool live READ live WRITE setLive NOTIFY viewChanged)         // end follows the newest point
-    Q_PROPERTY(double yMin READ yMin NOTIFY rangeChanged)
+    Q_PROPERTY(double yMin READ yMin NOTIFY rangeChanged) // axis 0's
     Q_PROPERTY(double yMax READ yMax NOTIFY rangeChanged)
+    Q_PROPERTY(QList<int> axes READ axes WRITE setAxes NOTIFY axesChanged)     // the axis of each series (0 if absent)
+    Q_PROPERTY(int axisCount READ axisCount NOTIFY axesChanged)
+    // Per axis: its ticks (a list of numbers) and its range ([min, max]), for labels to bind to.
+    Q_PROPERTY(QVariantList axisTicks READ axisTicks NOTIFY rangeChanged)
+    Q_PROPERTY(QVariantList axisRanges READ axisRanges NOTIFY rangeChanged)
+    Q_PROPERTY(double tickSpacing READ tickSpacing WRITE setTickSpacing NOTIFY axesChanged)
     Q_PROPERTY(int pointCount READ pointCount NOTIFY pointsChanged)
     Q_PROPERTY(int capacity READ capacity WRITE setCapacity NOTIFY pointsChanged) // points kept per series
 
@@ -39,8 +48,22 @@ public:
     void setEnd(double time);
     bool live() const { return m_live; }
     void setLive(bool live);
-    double yMin() const { return m_yMin; }
-    double yMax() const { return m_yMax; }
+    double yMin() const { return m_axes.empty() ? 0 : m_axes[0].lo; }
+    double yMax() const { return m_axes.empty() ? 1 : m_axes[0].hi; }
+    QList<int> axes() const { return m_axisOf; }
+    void setAxes(const QList<int> &axes);
+    int axisCount() const { return static_cast<int>(m_axes.size()); }
+    double tickSpacing() const { return m_tickSpacing; }
+    void setTickSpacing(double pixels);
+    QVariantList axisTicks() const;
+    QVariantList axisRanges() const;
+    Q_INVOKABLE double axisMin(int axis) const;
+    Q_INVOKABLE double axisMax(int axis) const;
+    // The round values an axis is labelled at, lowest first.
+    Q_INVOKABLE QList<double> ticks(int axis) const;
+    // Round ticks (1, 2 or 5 × 10^n apart) covering [lo, hi] in at most
+    // `intervals` steps; lo and hi are widened to the first and last tick.
+    static QList<double> roundTicks(double &lo, double &hi, int intervals);
     int pointCount() const;
     int capacity() const { return m_capacity; }
     void setCapacity(int points);
@@ -56,6 +79,7 @@ public:
 
 signals:
     void seriesCountChanged();
+    void axesChanged();
     void colorsChanged();
     void viewChanged();
     void rangeChanged();
@@ -86,6 +110,14 @@ private:
     double m_span = 300;
     double m_end = 0;
     bool m_live = true;
-    double m_yMin = 0, m_yMax = 1;
+    struct Axis
+    {
+        double lo = 0, hi = 1;
+        QList<double> ticks{0, 1};
+    };
+    int axisOf(int series) const { return series < m_axisOf.size() ? std::max(0, m_axisOf[series]) : 0; }
+    std::vector<Axis> m_axes{Axis{}};
+    QList<int> m_axisOf;
+    double m_tickSpacing = 40;
     int m_capacity = 1'000'000;
 };

@@ -33,9 +33,68 @@ TestCase {
         }
         tryCompare(plot.series, "pointCount", 10)
         waitForRendering(plot)
-        verify(plot.series.yMax >= 14 && plot.series.yMax < 15, plot.series.yMax)
-        verify(plot.series.yMin <= 3 && plot.series.yMin > 2, plot.series.yMin)
-        verify(findChild(plot, "yMax").text.indexOf("14") === 0, findChild(plot, "yMax").text)
+        // Round ticks covering the data (3 to 14 m): the axis ends on ticks.
+        const ticks = plot.series.ticks(0)
+        verify(ticks.length >= 3, ticks)
+        compare(ticks[0], plot.series.yMin)
+        compare(ticks[ticks.length - 1], plot.series.yMax)
+        verify(plot.series.yMin <= 3 && plot.series.yMax >= 14, plot.series.yMin + " … " + plot.series.yMax)
+        const step = ticks[1] - ticks[0]
+        verify([1, 2, 5].indexOf(step / Math.pow(10, Math.floor(Math.log10(step)))) >= 0, "a round step: " + step)
+        for (const t of ticks)
+            verify(Math.abs(t / step - Math.round(t / step)) < 1e-9, t + " is a multiple of " + step)
+        compare(plot.units, ["m"], "depth and altitude share one axis")
+        compare(findChild(findChild(plot, "axis-0"), "unit").text, "m")
+        // The labels are those ticks, where they belong.
+        const axis = findChild(plot, "axis-0")
+        const labels = axis.children.filter(c => c.objectName === "tick").map(c => Number(c.text))
+        compare(labels.sort((a, b) => a - b), ticks.slice().sort((a, b) => a - b))
+    }
+
+    // One axis per unit: metres on the left, volts on the right, each with its own range.
+    Component { id: twoUnits; Plot { width: 600; height: 300; span: 60
+                                     paths: ["plotter/EstimatedState/depth", "plotter/Voltage/value"] } }
+    function test_1b_oneAxisPerUnit() {
+        const p = createTemporaryObject(twoUnits, test, { x: 0, y: 0 })
+        for (let i = 0; i < 5; ++i) {
+            Fixtures.ingest("EstimatedState", 71, { depth: 10 + i, alt: 3 })
+            Fixtures.ingest("Voltage", 71, { value: 24 + i / 10 })
+            Fixtures.advanceClock(1000)
+            Fixtures.treeModel.sync()
+        }
+        tryCompare(p.series, "axisCount", 2)
+        compare(p.units, ["m", "V"])
+        compare(p.series.axes, [0, 1])
+        const volts = p.series.ticks(1)
+        verify(p.series.axisMin(1) <= 24 && p.series.axisMax(1) >= 24.4 && p.series.axisMax(1) < 30,
+               "volts on their own scale: " + volts)
+        verify(p.series.axisMax(0) >= 14 && p.series.axisMin(0) <= 10)
+        const right = findChild(p, "axis-1"), left = findChild(p, "axis-0")
+        compare(findChild(right, "unit").text, "V")
+        verify(right.x > p.series.x + p.series.width - 1, "the second unit's axis is on the right")
+        verify(left.x + left.width <= p.series.x + 1, "the first on the left")
+    }
+
+    // Round ticks for any range.
+    function test_1c_roundTicks() {
+        const check = (lo, hi) => {
+            plot.series.clear()
+            plot.series.append(0, 1000, lo)
+            plot.series.append(0, 1001, hi)
+            plot.series.end = 1001
+            waitForRendering(plot)
+            const t = plot.series.ticks(0)
+            const step = t[1] - t[0]
+            const mantissa = step / Math.pow(10, Math.floor(Math.log10(step)))
+            verify([1, 2, 5].some(m => Math.abs(m - mantissa) < 1e-6), lo + "…" + hi + ": step " + step)
+            verify(t[0] <= lo && t[t.length - 1] >= hi, t)
+        }
+        plot.series.live = false
+        check(0.0013, 0.0042)
+        check(-37, 1250)
+        check(1013.2, 1013.9)
+        plot.series.clear()
+        plot.series.live = true
     }
 
     function test_2_dragLooksBackAndLiveFollowsAgain() {
@@ -60,8 +119,8 @@ TestCase {
             s.append(0, t0 + i * 0.0003, Math.sin(i / 1000))
         compare(s.pointCount, 200000)
         waitForRendering(plot)
-        fuzzyCompare(s.yMax, 1.1, 0.02)
-        fuzzyCompare(s.yMin, -1.1, 0.02)
+        verify(s.yMax >= 1 && s.yMax <= 1.5, "round, around the data: " + s.yMax)
+        verify(s.yMin <= -1 && s.yMin >= -1.5, s.yMin)
         // Value under the cursor: the right half of a 60 s window of ~60 s of data.
         verify(!isNaN(s.valueAt(0, s.width - 1)))
         s.clear()
