@@ -1,9 +1,10 @@
 #include "core/DataFiles.h"
 #include "ConsoleCatalog.h"
-
 #include "LayoutDocument.h"
 
 #include <QDir>
+#include <QFileInfo>
+#include <QRegularExpression>
 #include <QStandardPaths>
 #include <QUrl>
 
@@ -11,6 +12,24 @@ QStringList ConsoleCatalog::standardDirectories()
 {
     return {neptus::dataPath(QStringLiteral("consoles")),
             QDir(QStandardPaths::writableLocation(QStandardPaths::GenericDataLocation)).filePath(QStringLiteral("neptus-qt/consoles"))};
+}
+
+QString ConsoleCatalog::fileFor(const QString &title) const
+{
+    if (m_directories.isEmpty())
+        return {};
+    QString stem = title.trimmed();
+    stem.replace(QRegularExpression(QStringLiteral("[^A-Za-z0-9_-]+")), QStringLiteral("_"));
+    stem.remove(QRegularExpression(QStringLiteral("^_+|_+$")));
+    if (stem.isEmpty())
+        stem = QStringLiteral("Console");
+    if (!stem.front().isUpper())
+        stem.front() = stem.front().toUpper(); // a QML file name starts with a capital
+    const QDir dir(m_directories.last());
+    QString file = dir.filePath(stem + QStringLiteral(".qml"));
+    for (int n = 2; QFileInfo::exists(file); ++n)
+        file = dir.filePath(QStringLiteral("%1_%2.qml").arg(stem).arg(n));
+    return file;
 }
 
 void ConsoleCatalog::setDirectories(const QStringList &directories)

@@ -26,6 +26,9 @@ public:
     // [{file: url, title: string, kinds: [string]}], by file name.
     QVariantList consoles() const { return m_consoles; }
     Q_INVOKABLE void refresh();
+    // Where a console of that title is saved among the user's (the last
+    // directory): "Harbour trials" → ".../Harbour_trials.qml", numbered if taken.
+    Q_INVOKABLE QString fileFor(const QString &title) const;
 
 signals:
     void consolesChanged();

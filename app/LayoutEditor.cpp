@@ -1,10 +1,14 @@
 #include "LayoutEditor.h"
 
+#include <QDir>
+#include <QFile>
+#include <QFileInfo>
 #include <QQmlContext>
 #include <QQmlEngine>
 #include <QQuickItem>
 
 using namespace neptus::layout;
+using namespace Qt::StringLiterals;
 
 LayoutEditor::LayoutEditor(QObject *parent)
     : QObject(parent)
@@ -39,6 +43,60 @@ bool LayoutEditor::reload()
     }
     emit textChanged();
     return m_document.has_value();
+}
+
+bool LayoutEditor::saveAs(const QString &path)
+{
+    if (!m_document)
+        return false;
+    if (QFileInfo::exists(path)) {
+        setError(tr("%1 exists already: choose another name").arg(path));
+        return false;
+    }
+    QDir().mkpath(QFileInfo(path).absolutePath());
+    if (auto saved = m_document->save(path); !saved) {
+        setError(saved.error());
+        return false;
+    }
+    setError({});
+    m_source = QUrl::fromLocalFile(path); // the same document, now from there
+    emit sourceChanged();
+    m_modified = false;
+    emit modifiedChanged();
+    return true;
+}
+
+QUrl LayoutEditor::create(const QString &path, const QString &title, int width, int height)
+{
+    if (QFileInfo::exists(path)) {
+        setError(tr("%1 exists already: choose another name").arg(path));
+        return {};
+    }
+    const QString text = u"import QtQuick\nimport Neptus.Components\n\nConsole {\n    id: layout\n    designHeight: %1\n"
+                         "    designWidth: %2\n    formatVersion: 1\n    title: %3\n}\n"_s
+                             .arg(height).arg(width).arg(LayoutDocument::literal(QString(title).replace(u'\n', u' ')));
+    auto document = LayoutDocument::parse(text);
+    if (!document) {
+        setError(tr("cannot make a console titled '%1'").arg(title));
+        return {};
+    }
+    QDir().mkpath(QFileInfo(path).absolutePath());
+    if (auto saved = document->save(path); !saved) {
+        setError(saved.error());
+        return {};
+    }
+    QFile::remove(path + u".bak"_s); // nothing came before it
+    return QUrl::fromLocalFile(path);
+}
+
+QString LayoutEditor::rootId() const
+{
+    if (!m_document)
+        return {};
+    for (const LayoutObject::Property &p : m_document->root().properties)
+        if (p.name == u"id")
+            return p.value.trimmed();
+    return {};
 }
 
 bool LayoutEditor::save()

@@ -43,6 +43,15 @@ public:
 
     // Reads the file again, dropping unsaved edits.
     Q_INVOKABLE bool reload();
+    // Writes the layout, edits and all, to another file and edits that one
+    // from now on (the file it came from stays as it was). False, with
+    // errorString, if it cannot; an existing file is not overwritten.
+    Q_INVOKABLE bool saveAs(const QString &path);
+    // A new, empty proportional console (design size `width` × `height`)
+    // written to `path`; its URL, or an empty one (errorString says why).
+    Q_INVOKABLE QUrl create(const QString &path, const QString &title, int width, int height);
+    // The id of the root Console ("" if it has none): its title and vehicle kinds are edited by it.
+    Q_INVOKABLE QString rootId() const;
     Q_INVOKABLE bool save();
 
     Q_INVOKABLE QString add(const QString &type, const QString &module, double x, double y, double width, double height);

@@ -1,5 +1,6 @@
 pragma ComponentBehavior: Bound
 import QtQuick
+import QtQuick.Controls.Basic as Basic
 import Neptus.Components
 import Neptus.Shell
 
@@ -25,6 +26,39 @@ Item {
     // The left panel shows the variable tree instead of the palette: drag a
     // value onto the console to make a readout of it.
     property bool variablesShown: false
+    // The consoles there are (where "Save as" and "New" put theirs).
+    property ConsoleCatalog catalog: null
+    property bool consolePanelShown: false
+    property string consoleStatus: ""
+    // A console made here is to be opened (the shell does it).
+    signal openRequested(url file)
+
+    // Writes this console, edits and all, as a new console of the user's
+    // titled `title`; the file it came from (a shipped one) stays as it was.
+    function saveAsNew(title) {
+        if (!catalog || title.trim() === "")
+            return false
+        const path = catalog.fileFor(title)
+        const root = editor.rootId()
+        if (root !== "")
+            editor.setValue(root, "title", title.trim())
+        if (!editor.saveAs(path))
+            return false
+        consoleStatus = qsTr("Saved as %1").arg(path)
+        catalog.refresh()
+        return true
+    }
+    // A new empty console the size of this one, opened for editing.
+    function createNew(title) {
+        if (!catalog || title.trim() === "")
+            return false
+        const file = editor.create(catalog.fileFor(title), title.trim(), Math.round(canvas.width), Math.round(canvas.height))
+        if (String(file) === "")
+            return false
+        catalog.refresh()
+        openRequested(file)
+        return true
+    }
 
     visible: editing
     enabled: editing
@@ -315,6 +349,13 @@ Item {
             TouchButton { objectName: "lowerButton"; text: qsTr("Lower"); enabled: designer.selected !== ""; toolTip: qsTr("Page Down"); onClicked: designer.editor.lower(designer.selected) }
             TouchButton { objectName: "deleteButton"; text: qsTr("Delete"); enabled: designer.selected !== ""; toolTip: qsTr("Delete"); onClicked: designer.removeSelected() }
             TouchButton {
+                objectName: "consoleButton"
+                text: qsTr("Console…")
+                highlighted: designer.consolePanelShown
+                toolTip: qsTr("This console's title and vehicle kinds; save as a new console; a new console")
+                onClicked: designer.consolePanelShown = !designer.consolePanelShown
+            }
+            TouchButton {
                 objectName: "saveButton"
                 text: designer.editor.modified ? qsTr("Save") : qsTr("Saved")
                 enabled: designer.editor.modified
@@ -322,6 +363,83 @@ Item {
                 toolTip: qsTr("Ctrl+S")
                 onClicked: designer.editor.save()
             }
+        }
+    }
+
+    // The console itself: its title and the vehicle kinds it is for, and new consoles.
+    Rectangle {
+        id: consolePanel
+        objectName: "consolePanel"
+        visible: designer.consolePanelShown
+        anchors { horizontalCenter: toolbar.horizontalCenter; bottom: toolbar.top; bottomMargin: Theme.spacing }
+        width: Math.min(parent.width - Theme.spacing * 4, Theme.mm(120))
+        height: consoleColumn.implicitHeight + Theme.spacing * 3
+        color: Theme.surface
+        border.color: Theme.border
+        radius: Theme.radius
+        MouseArea { anchors.fill: parent; acceptedButtons: Qt.AllButtons }
+        readonly property string root: designer.editor.text !== "" ? designer.editor.rootId() : ""
+        Column {
+            id: consoleColumn
+            anchors { left: parent.left; right: parent.right; top: parent.top; margins: Theme.spacing * 1.5 }
+            spacing: Theme.spacing
+            Text { text: qsTr("Title"); color: Theme.textDim; font.pixelSize: Theme.smallFontPixelSize }
+            PanelField {
+                id: titleField
+                objectName: "consoleTitleField"
+                enabled: consolePanel.root !== ""
+                text: designer.editor.text !== "" ? designer.editor.value(consolePanel.root, "title") || "" : ""
+                onEditingFinished: if (text !== designer.editor.value(consolePanel.root, "title")) designer.editor.setValue(consolePanel.root, "title", text)
+            }
+            Text { text: qsTr("For vehicles of kind (UUV, USV, UAV, … comma-separated; empty for any)"); color: Theme.textDim; font.pixelSize: Theme.smallFontPixelSize; width: parent.width; wrapMode: Text.Wrap }
+            PanelField {
+                objectName: "consoleKindsField"
+                enabled: consolePanel.root !== ""
+                text: designer.editor.text !== "" ? (designer.editor.value(consolePanel.root, "vehicleKinds") || []).join(", ") : ""
+                onEditingFinished: {
+                    const kinds = text.split(/[\s,]+/).filter(k => k !== "").map(k => k.toUpperCase())
+                    designer.editor.setValue(consolePanel.root, "vehicleKinds", kinds)
+                }
+            }
+            Text { text: qsTr("A new console of your own, titled"); color: Theme.textDim; font.pixelSize: Theme.smallFontPixelSize }
+            PanelField { id: newTitle; objectName: "newConsoleTitle"; placeholderText: qsTr("e.g. Harbour trials") }
+            Flow {
+                width: parent.width
+                spacing: Theme.spacing
+                TouchButton {
+                    objectName: "saveAsButton"
+                    text: qsTr("Save this as it")
+                    enabled: newTitle.text.trim() !== "" && designer.catalog !== null
+                    onClicked: designer.saveAsNew(newTitle.text)
+                }
+                TouchButton {
+                    objectName: "newConsoleButton"
+                    text: qsTr("Start it empty")
+                    enabled: newTitle.text.trim() !== "" && designer.catalog !== null
+                    onClicked: designer.createNew(newTitle.text)
+                }
+            }
+            Text {
+                objectName: "consoleStatus"
+                width: parent.width
+                wrapMode: Text.WrapAnywhere
+                text: designer.consoleStatus
+                visible: text !== ""
+                color: Theme.textDim
+                font.pixelSize: Theme.smallFontPixelSize
+            }
+        }
+    }
+    component PanelField: Basic.TextField {
+        width: parent ? parent.width : implicitWidth
+        implicitHeight: Theme.touchTarget
+        font.pixelSize: Theme.fontPixelSize
+        color: Theme.text
+        placeholderTextColor: Theme.textDim
+        background: Rectangle {
+            color: Theme.background
+            border.color: parent.activeFocus ? Theme.accent : Theme.border
+            radius: Theme.radius
         }
     }
 

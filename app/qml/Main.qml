@@ -1,3 +1,4 @@
+pragma ComponentBehavior: Bound
 import QtQuick
 import QtQuick.Controls
 import QtCore
@@ -102,6 +103,7 @@ ApplicationWindow {
         onEditToggleRequested: window.editing = !window.editing
         alarms: window.session ? window.session.alarms : null
         onPaletteToggleRequested: window.togglePalette()
+        onConsolesRequested: { catalog.refresh(); switcher.shown = !switcher.shown }
     }
 
     AlarmSounds {
@@ -121,14 +123,73 @@ ApplicationWindow {
     }
     Connections {
         target: Session
-        function onOpenConsoleRequested(file, system) {
-            if (consoleLoader.editor.modified) {
-                consoleLoader.warning = qsTr("Save or undo the edits of this console before opening another one.")
-                return
+        function onOpenConsoleRequested(file, system) { window.openConsole(file, system, false) }
+    }
+
+    // The console shown before this one (a vehicle's console opened from the
+    // systems list): the switcher offers the way back.
+    property url previousUrl
+    property string previousTitle: ""
+    property string previousSystem: ""
+    function openConsole(file, system, edit) {
+        if (String(file) === String(consoleUrl) && !edit)
+            return true
+        if (consoleLoader.editor.modified) {
+            consoleLoader.warning = qsTr("Save or undo the edits of this console before opening another one.")
+            return false
+        }
+        previousUrl = consoleUrl
+        previousTitle = consoleLoader.title
+        previousSystem = Session.mainSystem
+        window.editing = edit
+        Session.mainSystem = system
+        window.consoleUrl = file
+        switcher.shown = false
+        return true
+    }
+
+    // Every console there is, and the way back: under the title, opened by tapping it.
+    Rectangle {
+        id: switcher
+        objectName: "consoleSwitcher"
+        property bool shown: false
+        visible: shown
+        z: 100
+        x: Theme.spacing
+        y: Theme.spacing
+        width: Math.min(parent.width - Theme.spacing * 2, Theme.mm(100))
+        height: Math.min(parent.height - Theme.spacing * 2, switcherColumn.implicitHeight + Theme.spacing * 2)
+        color: Theme.surface
+        border.color: Theme.border
+        radius: Theme.radius
+        MouseArea { anchors.fill: parent; acceptedButtons: Qt.AllButtons }
+        Flickable {
+            anchors { fill: parent; margins: Theme.spacing }
+            contentHeight: switcherColumn.implicitHeight
+            clip: true
+            Column {
+                id: switcherColumn
+                width: parent.width
+                spacing: Theme.spacing / 2
+                TouchButton {
+                    objectName: "backButton"
+                    width: parent.width
+                    visible: String(window.previousUrl) !== "" && String(window.previousUrl) !== String(window.consoleUrl)
+                    text: qsTr("← Back to %1").arg(window.previousTitle || qsTr("the previous console"))
+                    onClicked: window.openConsole(window.previousUrl, window.previousSystem, false)
+                }
+                Repeater {
+                    model: catalog.consoles
+                    delegate: TouchButton {
+                        required property var modelData
+                        objectName: "open-" + modelData.title
+                        width: switcherColumn.width
+                        text: modelData.title + (modelData.kinds.length ? "  ·  " + modelData.kinds.join(", ") : "")
+                        highlighted: String(modelData.file) === String(window.consoleUrl)
+                        onClicked: window.openConsole(modelData.file, Session.mainSystem, false)
+                    }
+                }
             }
-            window.editing = false
-            Session.mainSystem = system
-            window.consoleUrl = file
         }
     }
 
@@ -150,6 +211,8 @@ ApplicationWindow {
         anchors.fill: parent
         loader: consoleLoader
         palette: componentPalette
+        catalog: catalog
+        onOpenRequested: file => window.openConsole(file, Session.mainSystem, true)
         editing: window.editing && consoleLoader.editor.editable
     }
 }

@@ -17,6 +17,8 @@ Rectangle {
     property bool canEdit: true
     signal paletteToggleRequested()
     signal editToggleRequested()
+    // The console's title was tapped: show every console (and the way back).
+    signal consolesRequested()
 
     Connections {
         target: bar.alarms
@@ -55,11 +57,22 @@ Rectangle {
         Text {
             objectName: "consoleTitle"
             Layout.fillWidth: true
+            Layout.fillHeight: true
+            verticalAlignment: Text.AlignVCenter
             text: bar.consoleTitle
             elide: Text.ElideRight
             color: Theme.text
             font.pixelSize: Theme.largeFontPixelSize
             font.bold: true
+            // The title opens the console switcher (a ▾ after it says so).
+            TapHandler { onTapped: bar.consolesRequested() }
+            Text {
+                x: Math.min(parent.contentWidth, parent.width) + Theme.spacing
+                anchors.verticalCenter: parent.verticalCenter
+                text: "▾"
+                color: Theme.textDim
+                font.pixelSize: Theme.largeFontPixelSize
+            }
         }
         Text {
             objectName: "utcClock"

@@ -28,10 +28,12 @@ TestCase {
             property alias designer: designer
             property alias source: loader.source
             property alias directories: palette.directories
+            property alias catalog: catalog
             property string file
             width: test.width
             height: test.height
             ComponentPalette { id: palette }
+            ConsoleCatalog { id: catalog }
             ConsoleLoader {
                 id: loader
                 anchors.fill: parent
@@ -43,6 +45,7 @@ TestCase {
                 anchors.fill: parent
                 loader: loader
                 palette: palette
+                catalog: catalog
                 editing: true
             }
         }
@@ -323,6 +326,47 @@ TestCase {
         shell.width = 960
         tryCompare(liveItem(shell, "depth"), "width", 300)
         compare(editor.value("depth", "width"), 200)
+    }
+
+    // A shipped console saved as one of the user's own (the shipped file
+    // untouched), its title and vehicle kinds edited in the designer, and a
+    // new empty console started.
+    Component { id: spy; SignalSpy {} }
+    function test_saveAsANewConsoleAndStartAnEmptyOne() {
+        const original = Fixtures.readFile(Fixtures.sourceDir() + "/qml/consoles/AUV.qml")
+        const shell = openShell(original)
+        const editor = shell.loader.editor
+        const mine = Fixtures.makeTempDir()
+        shell.catalog.directories = [mine]
+        mouseClick(findChild(shell.designer, "consoleButton"))
+        verify(findChild(shell.designer, "consolePanel").visible)
+        const title = findChild(shell.designer, "consoleTitleField")
+        compare(title.text, "AUV console")
+        const kinds = findChild(shell.designer, "consoleKindsField")
+        compare(kinds.text, "UUV")
+        kinds.text = "uuv, usv"
+        kinds.editingFinished()
+        compare(editor.value("layout", "vehicleKinds"), ["UUV", "USV"])
+
+        verify(shell.designer.saveAsNew("Harbour trials"), editor.errorString)
+        compare(String(editor.source), "file://" + mine + "/Harbour_trials.qml")
+        verify(!editor.modified)
+        compare(Fixtures.readFile(shell.file), original, "the console it came from is as it was")
+        const saved = Fixtures.readFile(mine + "/Harbour_trials.qml")
+        verify(saved.indexOf("title: \"Harbour trials\"") > 0, saved)
+        verify(saved.indexOf("vehicleKinds: [\"UUV\", \"USV\"]") > 0, saved)
+        verify(shell.catalog.consoles.some(c => c.title === "Harbour trials"), "offered among the consoles")
+        verify(shell.designer.saveAsNew("Harbour trials"))
+        compare(String(editor.source), "file://" + mine + "/Harbour_trials_2.qml", "never over another")
+
+        const opened = spy.createObject(test, { target: shell.designer, signalName: "openRequested" })
+        verify(shell.designer.createNew("empty one"))
+        compare(opened.count, 1)
+        const made = String(opened.signalArguments[0][0])
+        compare(made, "file://" + mine + "/Empty_one.qml")
+        const text = Fixtures.readFile(mine + "/Empty_one.qml")
+        verify(text.indexOf("designWidth: " + Math.round(shell.designer.width)) > 0, text)
+        verify(text.indexOf("title: \"empty one\"") > 0, text)
     }
 
     // A layout naming a component not there yet (a folder not copied over)

@@ -77,7 +77,7 @@ TestCase {
 
     function test_opensTheConsoleMadeForAVehicleFromTheSystemsList() {
         const consoles = "file://" + Fixtures.sourceDir() + "/qml/consoles/"
-        const window = createTemporaryObject(mainComponent, test, { consoleUrl: consoles + "Default.qml",
+        const window = createTemporaryObject(mainComponent, test, { consoleUrl: consoles + "Default.qml", visible: true,
                                                                      consoleDirectories: [Fixtures.sourceDir() + "/qml/consoles"] })
         tryCompare(window.consoleLoader, "title", "Generic console")
         const auv = Session.consoleFor("UUV")
@@ -91,6 +91,27 @@ TestCase {
         const depth = window.consoleLoader.editor.itemWithId(window.consoleLoader.item, "depth")
         verify(depth)
         compare(Session.resolve(depth.path), "lauv-xplore-1/EstimatedState/depth")
+
+        // The way back, and to any other console: tap the title.
+        const tap = item => {
+            const touch = touchEvent(item)
+            touch.press(0, item, item.width / 2, item.height / 2).commit()
+            touch.release(0, item, item.width / 2, item.height / 2).commit()
+        }
+        const switcher = findChild(window.contentItem, "consoleSwitcher")
+        tap(findChild(window.header, "consoleTitle"))
+        tryVerify(() => switcher.visible)
+        const back = findChild(switcher, "backButton")
+        verify(back.visible && back.text.indexOf("Generic console") >= 0, back.text)
+        verify(back.height >= Theme.touchTarget - 1)
+        tap(back)
+        tryCompare(window.consoleLoader, "title", "Generic console")
+        compare(Session.mainSystem, "", "following what it followed before")
+        verify(!switcher.visible)
+        tap(findChild(window.header, "consoleTitle"))
+        tryVerify(() => findChild(switcher, "open-Inspector") !== null && switcher.visible)
+        tap(findChild(switcher, "open-Inspector"))
+        tryCompare(window.consoleLoader, "title", "Inspector")
         Session.mainSystem = ""
     }
 
