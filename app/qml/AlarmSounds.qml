@@ -15,16 +15,32 @@ Item {
     // Each time a sound is played: for tests and for a flash beside it.
     signal requested(int level)
 
-    SoundEffect { id: warning; source: AlarmTones.url(AlarmLevel.Warning) }
-    SoundEffect { id: error; source: AlarmTones.url(AlarmLevel.Error) }
-    SoundEffect { id: failure; source: AlarmTones.url(AlarmLevel.Failure) }
-
-    function effect(level) { return level >= AlarmLevel.Failure ? failure : level >= AlarmLevel.Error ? error : warning }
-    function play(level) {
-        for (const e of [warning, error, failure])
-            if (e !== effect(level))
+    // The audio output is opened at the first alarm, not at start (a console
+    // that never alarms never touches the sound system).
+    property var effectSet: null
+    Loader {
+        id: effects
+        active: false
+        onLoaded: sounds.effectSet = item
+        sourceComponent: QtObject {
+            readonly property SoundEffect warning: SoundEffect { source: AlarmTones.url(AlarmLevel.Warning) }
+            readonly property SoundEffect error: SoundEffect { source: AlarmTones.url(AlarmLevel.Error) }
+            readonly property SoundEffect failure: SoundEffect { source: AlarmTones.url(AlarmLevel.Failure) }
+        }
+    }
+    function stopAll() {
+        if (effectSet)
+            for (const e of [effectSet.warning, effectSet.error, effectSet.failure])
                 e.stop()
-        effect(level).play()
+    }
+    function play(level) {
+        effects.active = true
+        const set = effectSet
+        const effect = level >= AlarmLevel.Failure ? set.failure : level >= AlarmLevel.Error ? set.error : set.warning
+        for (const e of [set.warning, set.error, set.failure])
+            if (e !== effect)
+                e.stop()
+        effect.play()
         requested(level)
     }
 
@@ -42,7 +58,6 @@ Item {
         if (level >= AlarmLevel.Warning)
             repeat.restart()
         else
-            for (const e of [warning, error, failure])
-                e.stop()
+            stopAll()
     }
 }

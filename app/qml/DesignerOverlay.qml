@@ -26,6 +26,15 @@ Item {
     // The left panel shows the variable tree instead of the palette: drag a
     // value onto the console to make a readout of it.
     property bool variablesShown: false
+    // The console shrinks beside the panels while editing (the shell binds
+    // its console area to these insets), so no panel covers it and no handle
+    // is under a panel; the property panel's place is kept whether or not
+    // something is selected, so the console does not jump.
+    property bool insetCanvas: false
+    readonly property real leftInset: insetCanvas && editing && (paletteShown || variablesShown)
+                                      ? (variablesShown ? variablesView.width : paletteView.width) + Theme.spacing * 2 : 0
+    readonly property real rightInset: insetCanvas && editing ? properties.width + Theme.spacing * 2 : 0
+    readonly property real bottomInset: insetCanvas && editing ? toolbar.height + Theme.spacing * 3 : 0
     // The consoles there are (where "Save as" and "New" put theirs).
     property ConsoleCatalog catalog: null
     property bool consolePanelShown: false
@@ -152,7 +161,7 @@ Item {
     Item {
         id: canvas
         objectName: "designerCanvas"
-        anchors.fill: parent
+        anchors { fill: parent; leftMargin: designer.leftInset; rightMargin: designer.rightInset; bottomMargin: designer.bottomInset }
 
         Canvas {
             id: gridLines

@@ -200,7 +200,7 @@ ApplicationWindow {
 
     ConsoleLoader {
         id: consoleLoader
-        anchors.fill: parent
+        anchors { fill: parent; leftMargin: designer.leftInset; rightMargin: designer.rightInset; bottomMargin: designer.bottomInset }
         session: window.session
         source: window.consoleUrl
         componentsRevision: componentPalette.revision
@@ -212,6 +212,7 @@ ApplicationWindow {
         loader: consoleLoader
         palette: componentPalette
         catalog: catalog
+        insetCanvas: true
         onOpenRequested: file => window.openConsole(file, Session.mainSystem, true)
         editing: window.editing && consoleLoader.editor.editable
     }

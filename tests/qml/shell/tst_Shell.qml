@@ -115,6 +115,32 @@ TestCase {
         Session.mainSystem = ""
     }
 
+    // Editing, the console shrinks beside the palette and property panels: no
+    // panel covers it, and the frames sit on the components.
+    function test_panelsDoNotCoverTheConsoleWhileEditing() {
+        const consoles = "file://" + Fixtures.sourceDir() + "/qml/consoles/"
+        const window = createTemporaryObject(mainComponent, test, { consoleUrl: consoles + "Default.qml", visible: true })
+        tryCompare(window.consoleLoader, "title", "Generic console")
+        const loader = window.consoleLoader
+        compare(loader.x, 0)
+        compare(loader.width, window.width)
+        window.editing = true
+        tryVerify(() => loader.x > 0)
+        const palette = findChild(window.designer, "paletteView"), properties = findChild(window.designer, "propertyEditor")
+        verify(loader.x >= palette.x + palette.width, "right of the palette")
+        verify(loader.x + loader.width <= properties.x, "left of the property panel")
+        const toolbarTop = findChild(window.designer, "consoleButton").mapToItem(window.contentItem, 0, 0).y
+        verify(loader.y + loader.height <= toolbarTop, "above the toolbar")
+        compare(loader.item.width, loader.width, "the proportional console fits the space left")
+        const map = loader.editor.itemWithId(loader.item, "map2D1")
+        const frame = findChild(window.designer, "frame-map2D1")
+        tryVerify(() => frame !== null && frame.visible)
+        const a = frame.mapToItem(null, 0, 0), b = map.mapToItem(null, 0, 0)
+        verify(Math.abs(a.x - b.x) < 1 && Math.abs(a.y - b.y) < 1, "the frame sits on its component: " + a + " " + b)
+        window.editing = false
+        tryCompare(loader, "x", 0)
+    }
+
     function test_runsValidQmlTheDesignerCannotReadButDoesNotEditIt() {
         const loader = createTemporaryObject(loaderComponent, this,
             { source: Qt.resolvedUrl("data/RegexConsole.qml") })
