@@ -286,6 +286,45 @@ Rectangle {
         readonly property string saved: editor ? (editor.text, editor.value(componentId, "alarmScript") || "") : ""
         readonly property var check: Session.scripts && area.text.trim() !== "" ? Session.scripts.check(area.text) : ({ ok: true })
         onSavedChanged: area.text = saved
+        // Dragged by the handle under the text: a longer script gets more room.
+        property real extraHeight: 0
+
+        // A tree path ("$main/Voltage/value", "lauv/Temperature@CTD/value") as a script expression.
+        function expressionOf(path) {
+            const parts = path.split("/").filter(p => p !== "")
+            if (parts.length === 0)
+                return ""
+            const head = parts[0] === "$main" ? "$main" : "sys[" + JSON.stringify(parts[0]) + "]"
+            return head + parts.slice(1).map(p => /^[A-Za-z_]\w*$/.test(p) ? "." + p : "[" + JSON.stringify(p) + "]").join("")
+        }
+        // The threshold alarm "value below 20 → Warning" added to a script:
+        // a new script if there is none, else a check placed before the
+        // first milder one (worse levels are looked at first), or before
+        // the script's last return.
+        function withThreshold(script, path, above, value, level) {
+            const name = path.split("/").filter(p => p !== "").slice(-2).join(" ")
+            const words = (above ? "above " : "below ") + value
+            const check = "if (" + expressionOf(path) + (above ? " > " : " < ") + value + ") return " + level
+                          + "(" + JSON.stringify(name + " " + words) + ")"
+            const text = script.trim()
+            if (text === "")
+                return "// " + name + " " + words + " → " + level + " (alarm builder)\n" + check + "\nreturn Normal\n"
+            const lines = text.split("\n")
+            const order = ["Warning", "Error", "Failure"]
+            let at = lines.findIndex(l => {
+                const m = l.match(/return (Warning|Error|Failure)\(/)
+                return m && order.indexOf(m[1]) < order.indexOf(level)
+            })
+            if (at < 0) {
+                at = lines.length - 1
+                while (at > 0 && !/^\s*return\b/.test(lines[at]))
+                    --at
+                if (at < 0 || !/^\s*return\b/.test(lines[at]))
+                    at = lines.length
+            }
+            lines.splice(at, 0, check)
+            return lines.join("\n") + "\n"
+        }
 
         Text {
             text: qsTr("Alarm script → alarm \"scripts/%1\"").arg(scriptEditor.componentId)
@@ -294,7 +333,7 @@ Rectangle {
         }
         Rectangle {
             width: parent.width
-            height: Math.max(Theme.touchTarget * 2, area.implicitHeight + Theme.spacing)
+            height: Math.max(Theme.touchTarget * 2, area.implicitHeight + Theme.spacing) + scriptEditor.extraHeight
             color: Theme.background
             border.color: scriptEditor.check.ok ? (area.activeFocus ? Theme.accent : Theme.border) : Theme.levelColor(4)
             border.width: area.activeFocus || !scriptEditor.check.ok ? Theme.mm(0.5) : 1
@@ -304,7 +343,9 @@ Rectangle {
                 visible: !scriptEditor.check.ok && scriptEditor.check.line > 0
                 x: 1
                 width: parent.width - 2
-                y: area.y + area.topPadding + (scriptEditor.check.line - 1) * metrics.lineSpacing
+                // (Wrapped lines: from where the line starts in the text.)
+                y: area.y + area.positionToRectangle(area.text.split("\n").slice(0, Math.max(0, scriptEditor.check.line - 1))
+                                                         .reduce((n, l) => n + l.length + 1, 0)).y
                 height: metrics.lineSpacing
                 color: Qt.rgba(1, 0, 0, 0.15)
             }
@@ -316,10 +357,29 @@ Rectangle {
                 font.family: Theme.monospaceFont
                 font.pixelSize: Theme.smallFontPixelSize
                 color: Theme.text
-                wrapMode: TextEdit.NoWrap
+                wrapMode: TextEdit.Wrap
                 placeholderText: "return sys.lauv.Voltage.value < 22 ? Warning(\"low battery\") : Normal"
                 placeholderTextColor: Theme.textDim
                 background: null
+            }
+        }
+        // Drag to give the script more (or less) room.
+        Rectangle {
+            objectName: "scriptResize"
+            width: parent.width
+            height: Theme.touchTarget * 0.5
+            color: "transparent"
+            Rectangle { anchors.centerIn: parent; width: Theme.mm(12); height: Theme.mm(0.8); radius: height / 2; color: Theme.textDim }
+            DragHandler {
+                target: null
+                yAxis.enabled: true
+                xAxis.enabled: false
+                // The panel scrolls; this drag is the handle's, not the panel's.
+                grabPermissions: PointerHandler.CanTakeOverFromAnything
+                dragThreshold: 2
+                property real start: 0
+                onActiveChanged: if (active) start = scriptEditor.extraHeight
+                onTranslationChanged: scriptEditor.extraHeight = Math.max(0, start + translation.y)
             }
         }
         Text {
@@ -337,6 +397,54 @@ Rectangle {
             text: qsTr("Apply script")
             enabled: scriptEditor.check.ok && area.text !== scriptEditor.saved
             onClicked: scriptEditor.editor.setValue(scriptEditor.componentId, "alarmScript", area.text)
+        }
+        // Or without writing: "battery below 20 → Warning" written for you.
+        Text {
+            width: parent.width
+            text: qsTr("Threshold alarm: when a value is below or above a limit")
+            color: Theme.textDim
+            font.pixelSize: Theme.smallFontPixelSize
+            wrapMode: Text.Wrap
+        }
+        Field {
+            id: thresholdPath
+            objectName: "thresholdPath"
+            width: parent.width
+            placeholderText: "$main/Voltage/value"
+            font.family: Theme.monospaceFont
+        }
+        Flow {
+            width: parent.width
+            spacing: Theme.spacing / 2
+            Basic.ComboBox {
+                id: thresholdSide
+                objectName: "thresholdSide"
+                implicitHeight: Theme.touchTarget
+                model: [qsTr("below"), qsTr("above")]
+                font.pixelSize: Theme.fontPixelSize
+            }
+            Field {
+                id: thresholdValue
+                objectName: "thresholdValue"
+                width: Theme.mm(20)
+                placeholderText: "20"
+                inputMethodHints: Qt.ImhFormattedNumbersOnly
+                validator: DoubleValidator {}
+            }
+            Basic.ComboBox {
+                id: thresholdLevel
+                objectName: "thresholdLevel"
+                implicitHeight: Theme.touchTarget
+                model: ["Warning", "Error", "Failure"]
+                font.pixelSize: Theme.fontPixelSize
+            }
+            TouchButton {
+                objectName: "addThreshold"
+                text: qsTr("Add")
+                enabled: thresholdPath.text.trim() !== "" && thresholdValue.acceptableInput
+                onClicked: area.text = scriptEditor.withThreshold(area.text, thresholdPath.text.trim(), thresholdSide.currentIndex === 1,
+                                                                  Number(thresholdValue.text), thresholdLevel.currentText)
+            }
         }
     }
 

@@ -607,4 +607,55 @@ TestCase {
         tree.selectedPath = "tree-auv/EstimatedState"
         verify(!findChild(shell.designer, "addReadout").enabled)
     }
+
+    // "Battery below 22 → Warning, below 20 → Error" without writing a line
+    // of script: the builder writes it, it compiles, and it raises the alarm.
+    function test_zThresholdAlarmIsBuiltForTheUser() {
+        const layout = "import QtQuick\nimport Neptus.Components\n\nConsole {\n    id: layout\n\n"
+            + "    Readout {\n        id: cells\n        x: 400\n        y: 200\n        width: 200\n        height: 96\n"
+            + "        path: \"skiff/Voltage/value\"\n    }\n}\n"
+        const shell = openShell(layout)
+        const editor = shell.loader.editor
+        tryVerify(() => liveItem(shell, "cells") !== null)
+        shell.designer.selected = "cells"
+        tryVerify(() => findChild(shell.designer, "thresholdPath") !== null)
+        const path = findChild(shell.designer, "thresholdPath"), value = findChild(shell.designer, "thresholdValue")
+        const level = findChild(shell.designer, "thresholdLevel"), add = findChild(shell.designer, "addThreshold")
+        const area = findChild(shell.designer, "scriptArea")
+        verify(!add.enabled, "nothing to add yet")
+        path.text = "skiff/Voltage/value"
+        value.text = "22"
+        level.currentIndex = 0
+        verify(add.enabled)
+        add.clicked()
+        value.text = "20"
+        level.currentIndex = 1
+        add.clicked()
+        verify(area.text.indexOf("if (sys[\"skiff\"].Voltage.value < 20) return Error(\"Voltage value below 20\")") >= 0, area.text)
+        verify(area.text.indexOf("return Warning(\"Voltage value below 22\")") > area.text.indexOf("return Error"), "worse levels first: " + area.text)
+        verify(Fixtures.scripts.check(area.text).ok, JSON.stringify(Fixtures.scripts.check(area.text)))
+        tryVerify(() => findChild(shell.designer, "applyScript").enabled)
+        findChild(shell.designer, "applyScript").clicked()
+        verify(String(editor.value("cells", "alarmScript")).indexOf("below 20") > 0)
+        Fixtures.nameSystem(43, "skiff")
+        Fixtures.ingest("Voltage", 43, { value: 21 })
+        tryVerify(() => Fixtures.alarmLevel("scripts/cells") === AlarmLevel.Warning, 2000, "level " + Fixtures.alarmLevel("scripts/cells"))
+        Fixtures.ingest("Voltage", 43, { value: 19 })
+        tryVerify(() => Fixtures.alarmLevel("scripts/cells") === AlarmLevel.Error, 2000)
+        Fixtures.ingest("Voltage", 43, { value: 25 })
+        tryVerify(() => Fixtures.alarmLevel("scripts/cells") === AlarmLevel.Normal, 2000)
+        // The script box grows by its handle.
+        const box = area.parent, before = box.height
+        const handle = findChild(shell.designer, "scriptResize")
+        let flick = handle.parent
+        while (flick && flick.contentY === undefined)
+            flick = flick.parent
+        if (flick)
+            flick.contentY = Math.max(0, handle.mapToItem(flick.contentItem, 0, 0).y - 150)
+        waitForRendering(shell.designer)
+        const at = handle.mapToItem(shell.designer, handle.width / 2, handle.height / 2)
+        mouseDrag(shell.designer, at.x, at.y, 0, 60)
+        verify(box.height > before + 30, before + " → " + box.height)
+    }
+
 }
