@@ -34,6 +34,9 @@ std::expected<CommandLine, QString> CommandLine::parse(const QStringList &argume
         QStringLiteral("name"));
     const QCommandLineOption palette(QStringLiteral("palette"),
         QStringLiteral("Colour palette: day, dusk or night."), QStringLiteral("name"));
+    const QCommandLineOption gps(QStringLiteral("gps"),
+        QStringLiteral("Own ship's position from NMEA: serial:/dev/ttyUSB0, socket://host:port or an NMEA file (replayed)."),
+        QStringLiteral("source"));
     const QCommandLineOption uiScale(QStringLiteral("ui-scale"),
         QStringLiteral("Size of text and controls, 0.75 to 2 (touch targets never under 9 mm); default as last time."),
         QStringLiteral("factor"));
@@ -84,7 +87,7 @@ std::expected<CommandLine, QString> CommandLine::parse(const QStringList &argume
         QStringLiteral("file"));
     const QCommandLineOption quitAfter(QStringLiteral("quit-after"),
         QStringLiteral("Exit after this many milliseconds."), QStringLiteral("ms"));
-    parser.addOptions({console, screenshot, screenshotDelay, components, edit, select, system, palette, uiScale, size, selfTest,
+    parser.addOptions({console, screenshot, screenshotDelay, components, edit, select, system, palette, uiScale, gps, size, selfTest,
                        imcPort, imcBind, imcPeer, ddsDomain, ddsConfig, ddsKeys, ddsIdentity, defs, defsFor, imcDiscovery, dumpTree, quitAfter, forgetAfter, mission});
     // "--defs-for SYSTEM FILE" (two words, as the documentation writes it) is
     // "--defs-for SYSTEM=FILE" to the parser, which takes one value per option.
@@ -135,6 +138,13 @@ std::expected<CommandLine, QString> CommandLine::parse(const QStringList &argume
         && result.palette != u"night")
         return std::unexpected(QStringLiteral("--palette must be day, dusk or night, not '%1'")
                                    .arg(parser.value(palette)));
+    result.gps = parser.value(gps);
+    if (!result.gps.isEmpty() && !result.gps.startsWith(u"serial:") && !result.gps.startsWith(u"socket://")) {
+        const QFileInfo file(result.gps);
+        if (!file.isFile() || !file.isReadable())
+            return std::unexpected(QStringLiteral("--gps: %1 is not a readable NMEA file (or serial:DEVICE, socket://HOST:PORT)").arg(result.gps));
+        result.gps = file.absoluteFilePath();
+    }
     if (parser.isSet(uiScale)) {
         bool ok = false;
         result.uiScale = parser.value(uiScale).toDouble(&ok);

@@ -141,6 +141,7 @@ int main(int argc, char *argv[])
         {QStringLiteral("consoleUrl"), QUrl::fromLocalFile(commandLine->consoleFile)},
         {QStringLiteral("initialPalette"), commandLine->palette},
         {QStringLiteral("initialScale"), commandLine->uiScale},
+        {QStringLiteral("gpsSource"), commandLine->gps},
         {QStringLiteral("componentDirectories"), componentDirectories},
         {QStringLiteral("consoleDirectories"), ConsoleCatalog::standardDirectories()},
         {QStringLiteral("editing"), commandLine->edit},

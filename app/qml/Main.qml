@@ -15,6 +15,8 @@ ApplicationWindow {
     property string initialPalette: ""
     // From the command line (--ui-scale); 0 = as the user left it.
     property real initialScale: 0
+    // Own ship's NMEA source (--gps): serial:…, socket://… or a file; "" = none.
+    property string gpsSource: ""
     // Where drop-in components are looked for, first wins.
     property var componentDirectories: []
     // Where console layouts are looked for (to open one for a vehicle).
@@ -105,6 +107,8 @@ ApplicationWindow {
         onPaletteToggleRequested: window.togglePalette()
         onConsolesRequested: { catalog.refresh(); switcher.shown = !switcher.shown }
     }
+
+    OwnShip { source: window.gpsSource }
 
     AlarmSounds {
         id: alarmSounds

@@ -285,10 +285,66 @@ Rectangle {
             required property real lat
             required property real lon
             at: root.screenPoint(marker.lat, marker.lon)
+            fromOwnShip: root.fromOwnShip(marker.lat, marker.lon)
             mapBearing: root.bearing
             tint: root.colorOf(marker.system)
             shape: root.markShape(marker.kind)
         }
+    }
+
+    // Own ship: where the console is (a GPS on the boat), drawn as a ship's
+    // circle-and-cross along its course; each system's label says its range
+    // and bearing from it.
+    Item {
+        id: ownShip
+        objectName: "ownShip"
+        readonly property var fix: Session.ownShip
+        readonly property point at: fix.valid ? root.screenPoint(fix.latitude, fix.longitude) : Qt.point(-1e6, -1e6)
+        visible: fix.valid
+        x: at.x - width / 2
+        y: at.y - height / 2
+        width: Theme.mm(7)
+        height: width
+        Rectangle {
+            anchors.fill: parent
+            radius: width / 2
+            color: "transparent"
+            border.color: Theme.text
+            border.width: Theme.mm(0.6)
+        }
+        Rectangle { anchors.centerIn: parent; width: parent.width * 1.4; height: Theme.mm(0.5); color: Theme.text }
+        Rectangle { anchors.centerIn: parent; height: parent.height * 1.4; width: Theme.mm(0.5); color: Theme.text }
+        // The course, as a line ahead of it.
+        Rectangle {
+            visible: !isNaN(ownShip.fix.course)
+            x: parent.width / 2 - width / 2
+            y: -height + parent.height / 2
+            width: Theme.mm(0.6)
+            height: parent.height * 1.5
+            color: Theme.text
+            transformOrigin: Item.Bottom
+            rotation: (ownShip.fix.course || 0) - root.bearing
+        }
+        Text {
+            anchors { left: parent.right; verticalCenter: parent.verticalCenter; leftMargin: Theme.spacing }
+            text: qsTr("own ship")
+            color: Theme.text
+            style: Text.Outline
+            styleColor: Theme.background
+            font.pixelSize: Theme.smallFontPixelSize
+            font.bold: true
+        }
+    }
+    // Range and bearing from own ship ("1.24 km 045°"), for a system's label.
+    function fromOwnShip(lat: real, lon: real): string {
+        const fix = Session.ownShip
+        if (!fix.valid || isNaN(lat) || isNaN(lon))
+            return ""
+        const m = Geo.measure(fix.latitude, fix.longitude, lat, lon)
+        if (!m.valid)
+            return ""
+        const bearing = Math.round((m.bearing + 360) % 360)
+        return formatDistance(m.distance) + " " + String(bearing).padStart(3, "0") + "°"
     }
 
     // Measuring: the points tapped, the line between them, distance and bearing.

@@ -14,6 +14,8 @@ Item {
     property point at: Qt.point(-1e6, -1e6)
     property real mapBearing: 0
     property color tint: Theme.accent
+    // Range and bearing from own ship ("1.24 km 045°"), "" without a GPS.
+    property string fromOwnShip: ""
     // The mark as points in a unit square, nose up.
     property var shape: [[0.5, 0], [0.85, 1], [0.5, 0.75], [0.15, 1], [0.5, 0]]
 
@@ -64,6 +66,7 @@ Item {
             id: label
             anchors { left: lamp.right; verticalCenter: parent.verticalCenter; leftMargin: Theme.spacing }
             text: marker.system + (marker.kind ? " · " + marker.kind : "") + (marker.stale ? qsTr(" (stale)") : "")
+                  + (marker.fromOwnShip ? " · " + marker.fromOwnShip : "")
             color: Theme.text
             font.pixelSize: Theme.smallFontPixelSize
             font.bold: marker.selected

@@ -25,6 +25,11 @@ QtObject {
         return variable.unit === "rad" ? variable.value * 180 / Math.PI : variable.value
     }
 
+    // The console's own position (own ship), from a GPS the shell reads with
+    // Qt Positioning (--gps): {valid, latitude, longitude, course (°, NaN if
+    // unknown), speed (m/s), source}. Components draw it and measure to it.
+    property var ownShip: ({ valid: false, latitude: NaN, longitude: NaN, course: NaN, speed: NaN, source: "" })
+
     // The system the console follows: a tree path "$main/EstimatedState/depth"
     // means this system's. Chosen in the systems list, or by opening a
     // console for a vehicle.

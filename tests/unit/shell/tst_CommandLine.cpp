@@ -63,6 +63,12 @@ TEST(CommandLine, NamesWhatIsWrong)
     line = parse({QStringLiteral("--ui-scale"), QStringLiteral("5")});
     ASSERT_FALSE(line);
     EXPECT_TRUE(line.error().contains(QStringLiteral("0.75 to 2"))) << line.error().toStdString();
+    line = parse({QStringLiteral("--gps"), QStringLiteral("/nonexistent/track.nmea")});
+    ASSERT_FALSE(line);
+    EXPECT_TRUE(line.error().contains(QStringLiteral("not a readable NMEA file"))) << line.error().toStdString();
+    line = parse({QStringLiteral("--gps"), QStringLiteral("socket://192.168.1.20:10110")});
+    ASSERT_TRUE(line);
+    EXPECT_EQ(line->gps, QStringLiteral("socket://192.168.1.20:10110"));
     line = parse({QStringLiteral("--palette"), QStringLiteral("purple")});
     ASSERT_FALSE(line);
     EXPECT_TRUE(line.error().contains(QStringLiteral("purple")));
