@@ -155,10 +155,132 @@ Rectangle {
             visible: !row.bound
             active: !row.bound
             width: parent.width
-            sourceComponent: ({ number: numberEditor, bool: boolEditor, color: colorEditor, enum: enumEditor,
+            // A system or a command is picked, not typed.
+            sourceComponent: row.name === "system" ? systemEditor : row.name === "message" ? commandEditor
+                           : ({ number: numberEditor, bool: boolEditor, color: colorEditor, enum: enumEditor,
                                 path: pathEditor })[row.spec.type] || textEditor
         }
 
+        // A system: the one followed ($main) or one heard, or typed.
+        Component {
+            id: systemEditor
+            Column {
+                spacing: Theme.spacing / 2
+                Field {
+                    objectName: "field-" + row.name
+                    width: row.width
+                    text: row.current === undefined ? "" : String(row.current)
+                    placeholderText: row.defaultText || qsTr("(component's default)")
+                    onCommitted: row.commit(text)
+                }
+                Flow {
+                    width: row.width
+                    spacing: Theme.spacing / 2
+                    Repeater {
+                        model: ["$main"].concat(Session.systems)
+                        delegate: TouchButton {
+                            required property string modelData
+                            objectName: "pick-" + modelData
+                            text: modelData === "$main" ? qsTr("followed ($main)") : modelData
+                            highlighted: row.shown === modelData
+                            onClicked: row.commit(modelData)
+                        }
+                    }
+                }
+            }
+        }
+        // A command: the message picked from the definitions and its fields
+        // filled in, written as the JSON the component sends.
+        Component {
+            id: commandEditor
+            Column {
+                id: command
+                spacing: Theme.spacing / 2
+                readonly property var parsed: { try { return JSON.parse(row.shown || "{}") } catch (e) { return ({}) } }
+                property string chosen: parsed.abbrev || ""
+                property var values: parsed.fields || ({})
+                readonly property var fields: Session.session && chosen !== "" ? Session.session.fieldsOf(chosen) : []
+                readonly property var matches: {
+                    if (!Session.session || search.text.trim() === "")
+                        return []
+                    const q = search.text.trim().toLowerCase()
+                    return Session.session.messageTypes().filter(m => m.abbrev.toLowerCase().indexOf(q) >= 0
+                                                                  || m.name.toLowerCase().indexOf(q) >= 0).slice(0, 6)
+                }
+                function write() {
+                    const fields = {}
+                    for (const f of command.fields)
+                        if (command.values[f.abbrev] !== undefined && command.values[f.abbrev] !== "")
+                            fields[f.abbrev] = command.values[f.abbrev]
+                    row.commit(JSON.stringify(Object.keys(fields).length ? { abbrev: command.chosen, fields: fields } : { abbrev: command.chosen }))
+                }
+                Text {
+                    width: row.width
+                    text: command.chosen !== "" ? qsTr("Sends %1").arg(command.chosen) : qsTr("Pick the message to send")
+                    color: Theme.text
+                    font.pixelSize: Theme.fontPixelSize
+                    font.bold: true
+                }
+                Field {
+                    id: search
+                    objectName: "commandSearch"
+                    width: row.width
+                    placeholderText: qsTr("Find a message: abort, plan, reference…")
+                }
+                Repeater {
+                    model: command.matches
+                    delegate: TouchButton {
+                        required property var modelData
+                        objectName: "command-" + modelData.abbrev
+                        width: row.width
+                        text: modelData.abbrev + "  ·  " + modelData.name
+                        onClicked: { command.chosen = modelData.abbrev; command.values = ({}); search.text = ""; command.write() }
+                    }
+                }
+                Repeater {
+                    model: command.fields.filter(f => f.kind !== "message" && f.kind !== "raw")
+                    delegate: Column {
+                        id: fieldRow
+                        required property var modelData
+                        width: row.width
+                        Text {
+                            text: fieldRow.modelData.abbrev + (fieldRow.modelData.unit ? " (" + fieldRow.modelData.unit + ")" : "")
+                            color: Theme.textDim
+                            font.pixelSize: Theme.smallFontPixelSize
+                        }
+                        Field {
+                            objectName: "commandField-" + fieldRow.modelData.abbrev
+                            visible: fieldRow.modelData.kind !== "enum"
+                            width: parent.width
+                            text: command.values[fieldRow.modelData.abbrev] !== undefined ? String(command.values[fieldRow.modelData.abbrev]) : ""
+                            placeholderText: fieldRow.modelData.kind === "bitfield" ? fieldRow.modelData.options.join("|") : (fieldRow.modelData.value || "")
+                            onCommitted: {
+                                const v = Object.assign({}, command.values)
+                                const numeric = fieldRow.modelData.kind === "number" || fieldRow.modelData.kind === "integer"
+                                v[fieldRow.modelData.abbrev] = numeric && text !== "" && !isNaN(Number(text)) ? Number(text) : text
+                                command.values = v
+                                command.write()
+                            }
+                        }
+                        Basic.ComboBox {
+                            objectName: "commandEnum-" + fieldRow.modelData.abbrev
+                            visible: fieldRow.modelData.kind === "enum"
+                            width: parent.width
+                            implicitHeight: Theme.touchTarget
+                            model: fieldRow.modelData.options
+                            currentIndex: fieldRow.modelData.options.indexOf(command.values[fieldRow.modelData.abbrev])
+                            font.pixelSize: Theme.fontPixelSize
+                            onActivated: index => {
+                                const v = Object.assign({}, command.values)
+                                v[fieldRow.modelData.abbrev] = fieldRow.modelData.options[index]
+                                command.values = v
+                                command.write()
+                            }
+                        }
+                    }
+                }
+            }
+        }
         Component {
             id: textEditor
             Field {

@@ -5,6 +5,43 @@
 #include <QJsonObject>
 
 using namespace neptus;
+using namespace Qt::StringLiterals;
+
+QVariantList ConsoleSession::messageTypes() const
+{
+    std::vector<const msg::MessageDef *> defs;
+    for (const auto &m : m_console.schema().messages())
+        defs.push_back(m.get());
+    std::sort(defs.begin(), defs.end(), [](const msg::MessageDef *a, const msg::MessageDef *b) {
+        return a->category != b->category ? a->category < b->category : a->name < b->name;
+    });
+    QVariantList out;
+    for (const msg::MessageDef *m : defs)
+        out << QVariantMap{{u"abbrev"_s, m->abbrev}, {u"name"_s, m->name}, {u"category"_s, m->category}};
+    return out;
+}
+
+QVariantList ConsoleSession::fieldsOf(const QString &abbrev) const
+{
+    const msg::MessageDef *m = m_console.schema().byAbbrev(abbrev);
+    QVariantList out;
+    if (!m)
+        return out;
+    for (const msg::FieldDef &f : m->fields) {
+        QString kind = msg::isFloat(f.type) ? u"number"_s : msg::isInteger(f.type) ? u"integer"_s
+                     : f.type == msg::FieldType::PlainText ? u"text"_s
+                     : f.type == msg::FieldType::RawData ? u"raw"_s : u"message"_s;
+        QStringList options;
+        if (f.enumeration) {
+            kind = f.enumeration->bitfield ? u"bitfield"_s : u"enum"_s;
+            for (const auto &v : f.enumeration->values)
+                options << v.abbrev;
+        }
+        out << QVariantMap{{u"abbrev"_s, f.abbrev}, {u"name"_s, f.name}, {u"kind"_s, kind}, {u"unit"_s, f.unit},
+                           {u"min"_s, f.min}, {u"max"_s, f.max}, {u"value"_s, f.value}, {u"options"_s, options}};
+    }
+    return out;
+}
 
 ConsoleSession::ConsoleSession(std::shared_ptr<const msg::Schema> schema, const Clock *clock, QObject *parent)
     : QObject(parent)

@@ -44,6 +44,13 @@ public:
     // as JSON ({"abbrev": "Abort", "fields": {...}}), to a system. Returns ""
     // when sent, else why not.
     Q_INVOKABLE QString send(const QString &system, const QVariantMap &message);
+    // For a command picker: the messages there are to send, [{abbrev, name,
+    // category}] by category then name.
+    Q_INVOKABLE QVariantList messageTypes() const;
+    // A message's fields for an editor: [{abbrev, name, kind ("number",
+    // "integer", "text", "enum", "bitfield", "message", "raw"), unit, min,
+    // max, value (default as written), options ([abbrev] of an enum or bitfield)}].
+    Q_INVOKABLE QVariantList fieldsOf(const QString &abbrev) const;
     // The operator trusts `host` as the system with IMC id `systemId` (when
     // several hosts send as it): commands go there. "" goes back to automatic.
     Q_INVOKABLE bool chooseSource(int systemId, const QString &host);

@@ -658,4 +658,42 @@ TestCase {
         verify(box.height > before + 30, before + " → " + box.height)
     }
 
+
+    // Pickers instead of typing: a command button's system from those heard,
+    // and its message built from the definitions (no raw JSON).
+    function test_zCommandsAndSystemsArePicked() {
+        Fixtures.nameSystem(44, "picked-auv")
+        Fixtures.ingest("Heartbeat", 44, {})
+        Fixtures.treeModel.sync()
+        const shell = openShell(emptyLayout)
+        const editor = shell.loader.editor
+        compare(shell.designer.place("CommandButton", 300, 300), "commandButton1")
+        shell.designer.selected = "commandButton1"
+        tryVerify(() => findChild(shell.designer, "pick-picked-auv") !== null, 3000, "the systems heard are offered")
+        findChild(shell.designer, "pick-picked-auv").clicked()
+        compare(editor.value("commandButton1", "system"), "picked-auv")
+        findChild(shell.designer, "pick-$main").clicked()
+        compare(editor.value("commandButton1", "system"), "$main")
+
+        const search = findChild(shell.designer, "commandSearch")
+        search.text = "plancontrol"
+        tryVerify(() => findChild(shell.designer, "command-PlanControl") !== null, 2000, "found by name")
+        findChild(shell.designer, "command-PlanControl").clicked()
+        compare(JSON.parse(editor.value("commandButton1", "message")).abbrev, "PlanControl")
+        // An enumerated field is chosen from its values; a text field typed.
+        tryVerify(() => findChild(shell.designer, "commandEnum-op") !== null)
+        const op = findChild(shell.designer, "commandEnum-op")
+        verify(op.model.indexOf("START") >= 0, op.model)
+        op.currentIndex = op.model.indexOf("STOP")
+        op.activated(op.currentIndex)
+        const planId = findChild(shell.designer, "commandField-plan_id")
+        planId.text = "survey"
+        planId.committed()
+        const message = JSON.parse(editor.value("commandButton1", "message"))
+        compare(message.abbrev, "PlanControl")
+        compare(message.fields.op, "STOP")
+        compare(message.fields.plan_id, "survey")
+        // What the button sends is valid: the session encodes it.
+        compare(Fixtures.session.send("picked-auv", message), "")
+    }
 }
