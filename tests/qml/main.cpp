@@ -16,6 +16,8 @@
 #include <QEventLoop>
 #include <QImage>
 #include <QProcess>
+#include <QTcpServer>
+#include <QTcpSocket>
 #include <QUdpSocket>
 #include <QMediaCaptureSession>
 #include <QMediaFormat>
@@ -292,6 +294,43 @@ public:
         return QDir().mkpath(QFileInfo(path).path()) && tile.save(path, "PNG");
     }
     Q_INVOKABLE QString sourceDir() const { return test::sourcePath({}); }
+    // A tile server on loopback serving a folder's files over HTTP/1.0 (404
+    // for what it lacks), as a boat's LAN server would: its base URL.
+    Q_INVOKABLE QString startTileServer(const QString &folder)
+    {
+        auto server = std::make_unique<QTcpServer>();
+        if (!server->listen(QHostAddress::LocalHost, 0))
+            return {};
+        QTcpServer *s = server.get();
+        QObject::connect(s, &QTcpServer::newConnection, s, [s, folder] {
+            while (QTcpSocket *socket = s->nextPendingConnection()) {
+                QObject::connect(socket, &QTcpSocket::disconnected, socket, &QObject::deleteLater);
+                QObject::connect(socket, &QTcpSocket::readyRead, socket, [socket, folder] {
+                    const QByteArray request = socket->readAll();
+                    const QByteArray path = request.split(' ').value(1);
+                    QFile file(folder + QString::fromUtf8(path));
+                    if (!path.contains("..") && file.open(QIODevice::ReadOnly)) {
+                        const QByteArray body = file.readAll();
+                        socket->write("HTTP/1.0 200 OK\r\nContent-Type: image/png\r\nContent-Length: " + QByteArray::number(body.size())
+                                      + "\r\n\r\n" + body);
+                    } else {
+                        socket->write("HTTP/1.0 404 Not Found\r\nContent-Length: 0\r\n\r\n");
+                    }
+                    socket->disconnectFromHost();
+                });
+            }
+        });
+        const QString url = u"http://127.0.0.1:%1/"_s.arg(s->serverPort());
+        m_servers.push_back(std::move(server));
+        return url;
+    }
+    // A loopback port nobody listens on.
+    Q_INVOKABLE int closedPort() const
+    {
+        QTcpServer probe;
+        probe.listen(QHostAddress::LocalHost, 0);
+        return probe.serverPort();
+    }
 
 signals:
     void sentChanged();
@@ -303,6 +342,7 @@ private:
     ConsoleSession m_session;
     double m_vehicleTime = 0;
     std::vector<std::unique_ptr<QTemporaryDir>> m_dirs;
+    std::vector<std::unique_ptr<QTcpServer>> m_servers;
 };
 
 class Setup : public QObject

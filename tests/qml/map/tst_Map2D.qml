@@ -201,6 +201,29 @@ TestCase {
                   "the other folder's tiles: " + grabImage(m).pixel(100, 180))
     }
 
+    // A tile server on the LAN (here on loopback): its tiles are drawn; one
+    // that has none here (404) or does not answer is said over the grid.
+    function test_4c_aTileServerThatGivesNothingIsSaid() {
+        const folder = Fixtures.makeTempDir()
+        const n = Math.pow(2, 15)
+        const tx = Math.floor((homeLon + 180) / 360 * n)
+        const ty = Math.floor((1 - Math.asinh(Math.tan(rad(homeLat))) / Math.PI) / 2 * n)
+        for (let x = tx - 2; x <= tx + 2; ++x)
+            for (let y = ty - 2; y <= ty + 2; ++y)
+                verify(Fixtures.writeTile(folder + "/15/" + x + "/" + y + ".png", "#ff8000"))
+        const server = Fixtures.startTileServer(folder)
+        verify(server !== "")
+        const m = createTemporaryObject(tiledMap, test, { x: 0, y: 0, tileServer: server })
+        tryVerify(() => Qt.colorEqual(grabImage(m).pixel(100, 180), "#ff8000"), 10000, "the server's tiles")
+        verify(!findChild(m, "noTiles").visible)
+        const empty = Fixtures.startTileServer(Fixtures.makeTempDir())
+        m.tileServer = empty
+        tryVerify(() => findChild(m, "noTiles").visible && findChild(m, "noTiles").text.indexOf("HTTP 404") > 0, 5000,
+                  findChild(m, "noTiles").text)
+        m.tileServer = "http://127.0.0.1:" + Fixtures.closedPort() + "/"
+        tryVerify(() => findChild(m, "noTiles").text.indexOf("does not answer") > 0, 5000, findChild(m, "noTiles").text)
+    }
+
     function test_5_followKeepsTheMainSystemCentredUntilTheMapIsDragged() {
         Session.mainSystem = "alpha"
         map2d.following = true
