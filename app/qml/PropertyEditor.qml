@@ -23,9 +23,13 @@ Rectangle {
 
     readonly property string type: editor ? (editor.text, editor.typeOf(componentId)) : ""
     readonly property var entry: palette && type !== "" ? palette.entry(type) : ({})
-    readonly property var geometry: [{ name: "x", type: "number", unit: "px" }, { name: "y", type: "number", unit: "px" },
-                                     { name: "width", type: "number", unit: "px", min: 8 },
-                                     { name: "height", type: "number", unit: "px", min: 8 }]
+    // A proportional console's geometry is in pixels of its design size.
+    readonly property Console hostConsole: target ? target.parent as Console : null
+    readonly property string geometryUnit: hostConsole && hostConsole.proportional
+                                           ? qsTr("design px of %1 × %2").arg(hostConsole.designWidth).arg(hostConsole.designHeight) : "px"
+    readonly property var geometry: [{ name: "x", type: "number", unit: geometryUnit }, { name: "y", type: "number", unit: geometryUnit },
+                                     { name: "width", type: "number", unit: geometryUnit, min: 8 },
+                                     { name: "height", type: "number", unit: geometryUnit, min: 8 }]
 
     color: Theme.surface
     border.color: Theme.border

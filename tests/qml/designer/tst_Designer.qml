@@ -319,6 +319,9 @@ TestCase {
         compare(liveItem(shell, "readout1").x, 2 * x)
         // Nudged by the keyboard: one grid step of the design.
         shell.designer.selected = "depth"
+        tryVerify(() => findChild(shell.designer, "property-x") !== null)
+        const label = findChild(shell.designer, "property-x").children[0].text
+        verify(label.indexOf("design px of 640 × 400") > 0, "the editor says which pixels: " + label)
         shell.designer.nudge(8, 0)
         compare(editor.value("depth", "x"), 108)
         compare(editor.value("depth", "width"), 200, "the size stays")
