@@ -23,9 +23,14 @@ Rectangle {
     radius: Theme.radius
     clip: true
 
+    // In a narrow list (portrait) the button goes under the heading, not over it.
+    readonly property bool narrow: width < heading.implicitWidth + ackAll.implicitWidth + Theme.spacing * 5
     Text {
         id: heading
-        anchors { left: parent.left; verticalCenter: ackAll.verticalCenter; leftMargin: Theme.spacing * 1.5 }
+        x: Theme.spacing * 1.5
+        y: panel.narrow ? Theme.spacing * 1.5 : ackAll.y + (ackAll.height - height) / 2
+        width: panel.width - Theme.spacing * 3
+        elide: Text.ElideRight
         text: panel.hiddenAbove + panel.hiddenBelow > 0
               ? qsTr("Alarms (%1, %2 out of view)").arg(panel.count).arg(panel.hiddenAbove + panel.hiddenBelow)
               : qsTr("Alarms (%1)").arg(panel.count)
@@ -35,7 +40,9 @@ Rectangle {
     TouchButton {
         id: ackAll
         objectName: "acknowledgeAll"
-        anchors { right: parent.right; top: parent.top; margins: Theme.spacing }
+        x: panel.narrow ? Theme.spacing : panel.width - width - Theme.spacing
+        y: panel.narrow ? heading.y + heading.height + Theme.spacing / 2 : Theme.spacing
+        width: panel.narrow ? Math.min(implicitWidth, panel.width - Theme.spacing * 2) : implicitWidth
         text: qsTr("Acknowledge all")
         enabled: panel.unacknowledged > 0
         onClicked: Session.alarms.acknowledgeAll()
