@@ -1,4 +1,5 @@
 pragma ComponentBehavior: Bound
+import QtCore
 import QtQuick
 import Neptus.Engine
 
@@ -292,6 +293,118 @@ Rectangle {
         }
     }
 
+    // Going offline: the tiles of this view at a few zoom levels, fetched
+    // from the tile server into a folder the map reads without a network
+    // (the map's tileDirectory, else the user's tiles folder for this server).
+    readonly property string downloadFolder: tileDirectory !== "" ? tileDirectory
+        : StandardPaths.writableLocation(StandardPaths.AppDataLocation).toString().replace(/^file:\/\//, "")
+          + "/tiles/" + tileServer.replace(/^\w+:\/\//, "").replace(/[^A-Za-z0-9.-]+/g, "_")
+    // (The view's values as arguments: a binding on it follows them.)
+    function viewBounds(lat: real, lon: real, zoom: real, bearing: real, w: real, h: real): var {
+        const at = (x, y) => Geo.coordinateAt(x, y, lat, lon, zoom, bearing, w, h)
+        const corners = [at(0, 0), at(w, 0), at(0, h), at(w, h)]
+        return { north: Math.max(...corners.map(c => c.lat)), south: Math.min(...corners.map(c => c.lat)),
+                 west: Math.min(...corners.map(c => c.lon)), east: Math.max(...corners.map(c => c.lon)) }
+    }
+    TileDownloader {
+        id: downloader
+        server: root.tileServer
+        folder: root.downloadFolder
+    }
+    Rectangle {
+        id: downloadPanel
+        objectName: "tileDownloadPanel"
+        visible: false
+        z: 5
+        anchors { left: parent.left; bottom: parent.bottom; margins: Theme.spacing }
+        width: Math.min(parent.width - Theme.mm(16), Theme.mm(95))
+        height: downloadColumn.implicitHeight + Theme.spacing * 2
+        color: Qt.alpha(Theme.surface, 0.95)
+        border.color: Theme.border
+        radius: Theme.radius
+        property int fromZoom: Math.max(0, Math.floor(root.zoomLevel) - 2)
+        property int toZoom: Math.min(19, Math.floor(root.zoomLevel) + 2)
+        readonly property var area: visible ? root.viewBounds(root.centerLatitude, root.centerLongitude, root.zoomLevel, root.bearing, root.width, root.height) : null
+        readonly property var plan: area && !downloader.running
+            ? downloader.plan(area.north, area.south, area.west, area.east, fromZoom, toZoom) : null
+        TapHandler {} // touches stay on the panel
+        Column {
+            id: downloadColumn
+            anchors { left: parent.left; right: parent.right; top: parent.top; margins: Theme.spacing }
+            spacing: Theme.spacing / 2
+            Text {
+                width: parent.width
+                text: qsTr("Tiles of this view, zoom %1 to %2, from %3").arg(downloadPanel.fromZoom).arg(downloadPanel.toZoom).arg(root.tileServer)
+                color: Theme.text
+                font.pixelSize: Theme.smallFontPixelSize
+                font.bold: true
+                wrapMode: Text.WrapAnywhere
+            }
+            Flow {
+                width: parent.width
+                spacing: Theme.spacing / 2
+                TouchButton { objectName: "fromZoomDown"; text: qsTr("from −"); onClicked: downloadPanel.fromZoom = Math.max(0, downloadPanel.fromZoom - 1) }
+                TouchButton { objectName: "fromZoomUp"; text: qsTr("from +"); onClicked: downloadPanel.fromZoom = Math.min(downloadPanel.toZoom, downloadPanel.fromZoom + 1) }
+                TouchButton { objectName: "toZoomDown"; text: qsTr("to −"); onClicked: downloadPanel.toZoom = Math.max(downloadPanel.fromZoom, downloadPanel.toZoom - 1) }
+                TouchButton { objectName: "toZoomUp"; text: qsTr("to +"); onClicked: downloadPanel.toZoom = Math.min(19, downloadPanel.toZoom + 1) }
+            }
+            Text {
+                objectName: "downloadEstimate"
+                width: parent.width
+                wrapMode: Text.Wrap
+                color: Theme.text
+                font.pixelSize: Theme.smallFontPixelSize
+                text: downloader.running || downloader.total > 0 && !downloadPanel.plan
+                      ? qsTr("%1 of %2 tiles · %3 MB · %4 failed").arg(downloader.done).arg(downloader.total)
+                            .arg((downloader.bytes / 1048576).toFixed(1)).arg(downloader.failed)
+                      : downloadPanel.plan
+                        ? (downloadPanel.plan.tooMany ? qsTr("too many tiles: narrow the view or the zoom levels")
+                           : qsTr("%1 tiles (%2 here already), about %3 MB, into %4").arg(downloadPanel.plan.tiles)
+                               .arg(downloadPanel.plan.present).arg((downloadPanel.plan.estimatedBytes / 1048576).toFixed(1))
+                               .arg(root.downloadFolder))
+                        : ""
+            }
+            Rectangle {
+                objectName: "downloadProgress"
+                visible: downloader.total > 0
+                width: parent.width
+                height: Theme.mm(1.5)
+                color: Theme.background
+                border.color: Theme.border
+                Rectangle {
+                    width: parent.width * (downloader.total > 0 ? downloader.done / downloader.total : 0)
+                    height: parent.height
+                    color: downloader.failed > 0 ? Theme.levelColor(3) : Theme.accent
+                }
+            }
+            Text {
+                visible: text !== ""
+                width: parent.width
+                wrapMode: Text.Wrap
+                text: !downloader.running && downloader.total > 0 && downloader.done === downloader.total
+                      ? qsTr("Done: %1 tiles ready offline%2").arg(downloader.total - downloader.failed)
+                            .arg(downloader.failed > 0 ? qsTr(" (%1 the server did not have)").arg(downloader.failed) : "")
+                      : downloader.errorString
+                color: Theme.textDim
+                font.pixelSize: Theme.smallFontPixelSize
+            }
+            Row {
+                spacing: Theme.spacing
+                TouchButton {
+                    objectName: "downloadStart"
+                    text: qsTr("Download")
+                    enabled: !downloader.running && downloadPanel.plan !== null && !downloadPanel.plan.tooMany
+                    onClicked: {
+                        const a = downloadPanel.area
+                        downloader.start(a.north, a.south, a.west, a.east, downloadPanel.fromZoom, downloadPanel.toZoom)
+                    }
+                }
+                TouchButton { objectName: "downloadCancel"; text: qsTr("Cancel"); enabled: downloader.running; onClicked: downloader.cancel() }
+                TouchButton { text: qsTr("Close"); onClicked: downloadPanel.visible = false }
+            }
+        }
+    }
+
     // Own ship: where the console is (a GPS on the boat), drawn as a ship's
     // circle-and-cross along its course; each system's label says its range
     // and bearing from it.
@@ -373,6 +486,9 @@ Rectangle {
         following: root.followed !== ""
         measuring: root.measuring
         northUp: root.bearing === 0
+        canDownload: root.tileServer !== ""
+        downloading: downloadPanel.visible
+        onDownloadToggled: downloadPanel.visible = !downloadPanel.visible
         onZoomIn: root.zoomBy(1)
         onZoomOut: root.zoomBy(-1)
         onFollowToggled: {

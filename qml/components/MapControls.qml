@@ -9,6 +9,8 @@ Column {
     property bool following: false
     property bool measuring: false
     property bool northUp: true
+    property bool canDownload: false  // a tile server to prepare tiles from
+    property bool downloading: false
 
     signal zoomIn()
     signal zoomOut()
@@ -16,6 +18,7 @@ Column {
     signal showAll()
     signal measureToggled()
     signal turnNorthUp()
+    signal downloadToggled()
 
     spacing: Theme.spacing
 
@@ -43,5 +46,13 @@ Column {
         toolTip: qsTr("North up")
         highlighted: !controls.northUp
         onClicked: controls.turnNorthUp()
+    }
+    TouchButton {
+        objectName: "downloadButton"
+        visible: controls.canDownload
+        text: "⇩"
+        toolTip: qsTr("Prepare tiles of this view for going offline")
+        highlighted: controls.downloading
+        onClicked: controls.downloadToggled()
     }
 }

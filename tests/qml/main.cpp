@@ -212,6 +212,7 @@ public:
         return file.open(QIODevice::ReadOnly) ? QString::fromUtf8(file.readAll()) : QString();
     }
     Q_INVOKABLE bool makeDir(const QString &path) const { return QDir().mkpath(path); }
+    Q_INVOKABLE bool fileExists(const QString &path) const { return QFileInfo::exists(path); }
     // The console program in a process of its own, as a restart would start
     // it (offscreen, loopback, no DDS, no discovery): {exitCode, output}.
     Q_INVOKABLE QVariantMap runConsole(const QStringList &arguments) const

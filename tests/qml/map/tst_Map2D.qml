@@ -224,6 +224,45 @@ TestCase {
         tryVerify(() => findChild(m, "noTiles").text.indexOf("does not answer") > 0, 5000, findChild(m, "noTiles").text)
     }
 
+    // Going offline: the view's tiles fetched from the tile server into a
+    // folder, with an estimate first and progress; tiles the server lacks
+    // are counted, not fatal.
+    function test_4d_tilesOfTheViewArePreparedForGoingOffline() {
+        const served = Fixtures.makeTempDir(), offline = Fixtures.makeTempDir()
+        const n = Math.pow(2, 15)
+        const tx = Math.floor((homeLon + 180) / 360 * n)
+        const ty = Math.floor((1 - Math.asinh(Math.tan(rad(homeLat))) / Math.PI) / 2 * n)
+        for (let x = tx - 1; x <= tx + 1; ++x)
+            for (let y = ty - 1; y <= ty + 1; ++y)
+                verify(Fixtures.writeTile(served + "/15/" + x + "/" + y + ".png", "#4080ff"))
+        const m = createTemporaryObject(tiledMap, test, { x: 0, y: 0, tileServer: Fixtures.startTileServer(served), tileDirectory: offline })
+        m.zoomLevel = 15
+        m.centreAt(homeLat, homeLon)
+        const button = findChild(m, "downloadButton")
+        verify(button.visible, "offered with a tile server")
+        mouseClick(button)
+        const panel = findChild(m, "tileDownloadPanel")
+        verify(panel.visible)
+        panel.fromZoom = 15
+        panel.toZoom = 15
+        tryVerify(() => panel.plan && panel.plan.tiles > 0, 3000, JSON.stringify(panel.area) + " " + JSON.stringify(panel.plan))
+        const tiles = panel.plan.tiles
+        verify(tiles >= 4 && tiles <= 40, tiles + " tiles for one zoom level of the view")
+        verify(findChild(m, "downloadEstimate").text.indexOf(tiles + " tiles (0 here already)") === 0, findChild(m, "downloadEstimate").text)
+        mouseClick(findChild(m, "downloadStart"))
+        tryVerify(() => findChild(m, "downloadEstimate").text.indexOf(tiles + " of " + tiles + " tiles") === 0
+                        || findChild(m, "downloadEstimate").text.indexOf(tiles + " tiles (" + tiles + " here already)") === 0, 10000,
+                  findChild(m, "downloadEstimate").text)
+        tryVerify(() => findChild(m, "downloadEstimate").text.indexOf(tiles + " tiles (" + tiles + " here already)") === 0, 3000,
+                  "all of the view's tiles are in the folder now: " + findChild(m, "downloadEstimate").text)
+        verify(Fixtures.fileExists(offline + "/15/" + tx + "/" + ty + ".png"), "the tile under home")
+        // Offline now: the map reads the folder with no server at all.
+        panel.visible = false
+        m.tileServer = ""
+        tryVerify(() => Qt.colorEqual(grabImage(m).pixel(100, 180), "#4080ff"), 10000,
+                  "drawn from the prepared folder: " + grabImage(m).pixel(100, 180))
+    }
+
     function test_5_followKeepsTheMainSystemCentredUntilTheMapIsDragged() {
         Session.mainSystem = "alpha"
         map2d.following = true
