@@ -75,7 +75,10 @@ Rectangle {
         const shown = tree.rowAtIndex(Session.tree.indexOfPath(path))
         if (shown >= 0) {
             tree.forceLayout()
-            tree.positionViewAtRow(shown, TableView.AlignVCenter)
+            // Wholly in view (centring a row near the end of the list left it
+            // half under the panel's bottom), laid out now so its cell exists.
+            tree.positionViewAtRow(shown, TableView.Contain)
+            tree.forceLayout()
         }
         for (let row = 0; row < tree.rows; ++row) {
             const item = tree.itemAtCell(Qt.point(column || 0, row))

@@ -613,7 +613,7 @@ TestCase {
 
     // "Battery below 22 → Warning, below 20 → Error" without writing a line
     // of script: the builder writes it, it compiles, and it raises the alarm.
-    function test_zThresholdAlarmIsBuiltForTheUser() {
+    function test_aThresholdAlarmIsBuiltForTheUser() {
         const layout = "import QtQuick\nimport Neptus.Components\n\nConsole {\n    id: layout\n\n"
             + "    Readout {\n        id: cells\n        x: 400\n        y: 200\n        width: 200\n        height: 96\n"
             + "        path: \"skiff/Voltage/value\"\n    }\n}\n"
