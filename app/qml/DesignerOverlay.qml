@@ -1,6 +1,5 @@
 pragma ComponentBehavior: Bound
 import QtQuick
-import QtQuick.Controls.Basic as Basic
 import Neptus.Components
 import Neptus.Shell
 
@@ -393,15 +392,17 @@ Item {
             anchors { left: parent.left; right: parent.right; top: parent.top; margins: Theme.spacing * 1.5 }
             spacing: Theme.spacing
             Text { text: qsTr("Title"); color: Theme.textDim; font.pixelSize: Theme.smallFontPixelSize }
-            PanelField {
+            FormField {
                 id: titleField
+                width: parent.width
                 objectName: "consoleTitleField"
                 enabled: consolePanel.root !== ""
                 text: designer.editor.text !== "" ? designer.editor.value(consolePanel.root, "title") || "" : ""
                 onEditingFinished: if (text !== designer.editor.value(consolePanel.root, "title")) designer.editor.setValue(consolePanel.root, "title", text)
             }
             Text { text: qsTr("For vehicles of kind (UUV, USV, UAV, … comma-separated; empty for any)"); color: Theme.textDim; font.pixelSize: Theme.smallFontPixelSize; width: parent.width; wrapMode: Text.Wrap }
-            PanelField {
+            FormField {
+                width: parent.width
                 objectName: "consoleKindsField"
                 enabled: consolePanel.root !== ""
                 text: designer.editor.text !== "" ? (designer.editor.value(consolePanel.root, "vehicleKinds") || []).join(", ") : ""
@@ -411,7 +412,7 @@ Item {
                 }
             }
             Text { text: qsTr("A new console of your own, titled"); color: Theme.textDim; font.pixelSize: Theme.smallFontPixelSize }
-            PanelField { id: newTitle; objectName: "newConsoleTitle"; placeholderText: qsTr("e.g. Harbour trials") }
+            FormField { id: newTitle; objectName: "newConsoleTitle"; width: parent.width; placeholderText: qsTr("e.g. Harbour trials") }
             Flow {
                 width: parent.width
                 spacing: Theme.spacing
@@ -437,18 +438,6 @@ Item {
                 color: Theme.textDim
                 font.pixelSize: Theme.smallFontPixelSize
             }
-        }
-    }
-    component PanelField: Basic.TextField {
-        width: parent ? parent.width : implicitWidth
-        implicitHeight: Theme.touchTarget
-        font.pixelSize: Theme.fontPixelSize
-        color: Theme.text
-        placeholderTextColor: Theme.textDim
-        background: Rectangle {
-            color: Theme.background
-            border.color: parent.activeFocus ? Theme.accent : Theme.border
-            radius: Theme.radius
         }
     }
 

@@ -170,7 +170,7 @@ Rectangle {
             id: systemEditor
             Column {
                 spacing: Theme.spacing / 2
-                Field {
+                FormField {
                     objectName: "field-" + row.name
                     width: row.width
                     text: row.current === undefined ? "" : String(row.current)
@@ -225,7 +225,7 @@ Rectangle {
                     font.pixelSize: Theme.fontPixelSize
                     font.bold: true
                 }
-                Field {
+                FormField {
                     id: search
                     objectName: "commandSearch"
                     width: row.width
@@ -252,7 +252,7 @@ Rectangle {
                             color: Theme.textDim
                             font.pixelSize: Theme.smallFontPixelSize
                         }
-                        Field {
+                        FormField {
                             objectName: "commandField-" + fieldRow.modelData.abbrev
                             visible: fieldRow.modelData.kind !== "enum"
                             width: parent.width
@@ -287,7 +287,7 @@ Rectangle {
         }
         Component {
             id: textEditor
-            Field {
+            FormField {
                 objectName: "field-" + row.name
                 text: row.current === undefined ? "" : String(row.current)
                 placeholderText: row.defaultText || qsTr("(component's default)")
@@ -296,7 +296,7 @@ Rectangle {
         }
         Component {
             id: numberEditor
-            Field {
+            FormField {
                 objectName: "field-" + row.name
                 text: row.current === undefined ? "" : String(row.current)
                 placeholderText: row.defaultText || qsTr("(component's default)")
@@ -330,7 +330,7 @@ Rectangle {
             id: colorEditor
             Column {
                 spacing: Theme.spacing / 2
-                Field {
+                FormField {
                     objectName: "field-" + row.name
                     width: row.width
                     text: row.current === undefined ? "" : String(row.current)
@@ -358,7 +358,7 @@ Rectangle {
             id: pathEditor
             Column {
                 spacing: Theme.spacing / 2
-                Field {
+                FormField {
                     id: pathField
                     objectName: "field-" + row.name
                     width: row.width
@@ -532,7 +532,7 @@ Rectangle {
             font.pixelSize: Theme.smallFontPixelSize
             wrapMode: Text.Wrap
         }
-        Field {
+        FormField {
             id: thresholdPath
             objectName: "thresholdPath"
             width: parent.width
@@ -549,7 +549,7 @@ Rectangle {
                 model: [qsTr("below"), qsTr("above")]
                 font.pixelSize: Theme.fontPixelSize
             }
-            Field {
+            FormField {
                 id: thresholdValue
                 objectName: "thresholdValue"
                 width: Theme.mm(20)
@@ -572,23 +572,5 @@ Rectangle {
                                                                   Number(thresholdValue.text), thresholdLevel.currentText)
             }
         }
-    }
-
-    component Field: Basic.TextField {
-        implicitHeight: Theme.touchTarget
-        placeholderText: qsTr("(component's default)")
-        placeholderTextColor: Theme.textDim
-        font.pixelSize: Theme.fontPixelSize
-        color: Theme.text
-        selectByMouse: true
-        background: Rectangle {
-            color: Theme.background
-            border.color: parent.activeFocus ? Theme.accent : Theme.border
-            border.width: parent.activeFocus ? Theme.mm(0.5) : 1
-            radius: Theme.radius
-        }
-        // Enter, or leaving the field with a valid value.
-        signal committed()
-        onEditingFinished: if (acceptableInput) committed()
     }
 }

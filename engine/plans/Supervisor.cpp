@@ -12,6 +12,20 @@ using namespace Qt::StringLiterals;
 
 namespace {
 const QString waitId = u"wait"_s;
+
+// How a condition reads the tree: sys["name"].Message.field, or
+// name.Message.field for names that are identifiers. Captures: the system
+// (1 or 3) and the rest of the path (2 or 4).
+const QRegularExpression &treeReference()
+{
+    static const QRegularExpression reference(
+        uR"X(sys\["([^"]+)"\]((?:\.[A-Za-z_@][\w@]*)+)|\b([A-Za-z_][\w]*)((?:\.[A-Za-z_@][\w@]*){2,}))X"_s);
+    return reference;
+}
+QString systemOf(const QRegularExpressionMatch &m)
+{
+    return m.captured(1).isEmpty() ? m.captured(3) : m.captured(1);
+}
 } // namespace
 
 Supervisor::Supervisor(PlanClient &client, const tree::VariableTree &tree, scripting::ScriptHost *scripts,
@@ -49,19 +63,15 @@ bool Supervisor::needed(const mission::Plan &plan)
 
 QString Supervisor::beyondVehicle(const mission::Plan &plan, const QString &system)
 {
-    // sys["name"] or name.Message.field (the two ways a condition names a system), and distance().
-    static const QRegularExpression named(uR"X(sys\["([^"]+)"\]|\b([A-Za-z_]\w*)(?:\.[A-Za-z_@][\w@]*){2,}|\b(distance)\s*\()X"_s);
+    static const QRegularExpression distance(uR"X(\bdistance\s*\()X"_s);
     for (const mission::Transition &t : plan.transitions) {
         if (plain(t))
             continue;
-        for (auto it = named.globalMatch(t.condition); it.hasNext();) {
-            const auto m = it.next();
-            if (!m.captured(3).isEmpty())
-                return u"%1 → %2 measures a distance to a mark"_s.arg(t.from, t.to);
-            const QString name = m.captured(1).isEmpty() ? m.captured(2) : m.captured(1);
-            if (name != system)
+        if (t.condition.contains(distance))
+            return u"%1 → %2 measures a distance to a mark"_s.arg(t.from, t.to);
+        for (auto it = treeReference().globalMatch(t.condition); it.hasNext();)
+            if (const QString name = systemOf(it.next()); name != system)
                 return u"%1 → %2 reads %3"_s.arg(t.from, t.to, name);
-        }
     }
     return {};
 }
@@ -306,10 +316,9 @@ void Supervisor::clearConditions()
 QString Supervisor::valuesIn(const QString &expression) const
 {
     QStringList values;
-    static const QRegularExpression path(uR"X(sys\["([^"]+)"\]((?:\.[A-Za-z_@][\w@]*)+)|\b([A-Za-z_][\w]*)((?:\.[A-Za-z_@][\w@]*){2,}))X"_s);
-    for (auto it = path.globalMatch(expression); it.hasNext();) {
+    for (auto it = treeReference().globalMatch(expression); it.hasNext();) {
         const auto m = it.next();
-        const QString system = m.captured(1).isEmpty() ? m.captured(3) : m.captured(1);
+        const QString system = systemOf(m);
         QString rest = m.captured(1).isEmpty() ? m.captured(4) : m.captured(2);
         const tree::NodeId node = m_tree.find(system + rest.replace(u'.', u'/'));
         if (node != tree::noNode)

@@ -344,6 +344,7 @@ std::optional<bool> PlanEngine::evaluate(const QString &condition)
     if (!m_js)
         m_js = std::make_unique<QJSEngine>();
     const Motion &m = m_lastMotion;
+    static const QRegularExpression identifier(u"^[A-Za-z_]\\w*$"_s);
     QString name = m_name;
     name.replace(u'\\', u"\\\\"_s).replace(u'"', u"\\\""_s);
     const QString program = u"(function () { const $elapsed = %1, $waited = %2;\n"
@@ -356,7 +357,7 @@ std::optional<bool> PlanEngine::evaluate(const QString &condition)
                                 .arg(std::max(0.0, m_limits.bottomDepth - m.ned.z()), 0, 'g', 12)
                                 .arg(-m.ned.z(), 0, 'g', 12).arg(m.psi, 0, 'g', 12).arg(m.speed, 0, 'g', 12)
         // lauv.EstimatedState.depth as well as sys["lauv"].EstimatedState.depth
-        + (QRegularExpression(u"^[A-Za-z_]\\w*$"_s).match(m_name).hasMatch() && m_name != u"sys"_s
+        + (identifier.match(m_name).hasMatch() && m_name != u"sys"_s
                ? u"const %1 = sys[\"%1\"];\n"_s.arg(m_name) : QString())
         + u"return Boolean("_s + condition + u"\n); })()"_s;
     // Stopped after 50 ms: a condition that never ends does not stop the vehicle's clock.

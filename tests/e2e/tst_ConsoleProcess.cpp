@@ -1,6 +1,7 @@
 // The console program itself, started as an operator starts it, sent what a
 // real vehicle sends: it must live through it and show it.
 #include "Paths.h"
+#include "Ports.h"
 #include "Schemas.h"
 
 #include <QHostAddress>
@@ -11,23 +12,13 @@
 
 #include <gtest/gtest.h>
 
-namespace {
-
-quint16 freeUdpPort()
-{
-    QUdpSocket probe;
-    probe.bind(QHostAddress::LocalHost, 0);
-    return probe.localPort();
-}
-
-} // namespace
 
 TEST(ConsoleProcess, APacketOfATypeItsDefinitionsLackNeitherKillsItNorIsHidden)
 {
     // Before the fix, one such packet ended the console with a segfault (exit 139).
     QTemporaryDir dir;
     const QString dump = dir.filePath(QStringLiteral("tree.txt"));
-    const quint16 port = freeUdpPort();
+    const quint16 port = neptus::test::freeUdpPort();
     QProcess console;
     console.setProcessChannelMode(QProcess::MergedChannels);
     console.start(neptus::test::programPath(QStringLiteral("neptus")),

@@ -4,6 +4,7 @@
 // session on a manual clock, so tests drive the real models, and a link that
 // records what components send.
 #include "Paths.h"
+#include "Ports.h"
 #include "messages/Codec.h"
 #include "messages/MessageJson.h"
 #include "messages/Schema.h"
@@ -18,7 +19,6 @@
 #include <QProcess>
 #include <QTcpServer>
 #include <QTcpSocket>
-#include <QUdpSocket>
 #include <QMediaCaptureSession>
 #include <QMediaFormat>
 #include <QMediaRecorder>
@@ -217,10 +217,7 @@ public:
     // it (offscreen, loopback, no DDS, no discovery): {exitCode, output}.
     Q_INVOKABLE QVariantMap runConsole(const QStringList &arguments) const
     {
-        QUdpSocket probe; // a free port for its IMC link
-        probe.bind(QHostAddress::LocalHost, 0);
-        const quint16 port = probe.localPort();
-        probe.close();
+        const quint16 port = test::freeUdpPort(); // for its IMC link
         QProcess console;
         console.setProcessChannelMode(QProcess::MergedChannels);
         console.start(test::programPath(u"neptus"_s), QStringList{u"--imc-port"_s, QString::number(port),
@@ -326,12 +323,7 @@ public:
         return url;
     }
     // A loopback port nobody listens on.
-    Q_INVOKABLE int closedPort() const
-    {
-        QTcpServer probe;
-        probe.listen(QHostAddress::LocalHost, 0);
-        return probe.serverPort();
-    }
+    Q_INVOKABLE int closedPort() const { return test::closedTcpPort(); }
 
 signals:
     void sentChanged();

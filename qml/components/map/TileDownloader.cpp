@@ -32,7 +32,7 @@ void TileDownloader::forEachTile(double north, double south, double west, double
 
 QString TileDownloader::path(const Tile &t) const
 {
-    return QDir(m_folder).filePath(u"%1/%2/%3.png"_s.arg(t.z).arg(t.x).arg(t.y));
+    return QDir(m_folder).filePath(TileProbe::tilePath(t.z, t.x, t.y));
 }
 
 QVariantMap TileDownloader::plan(double north, double south, double west, double east, int minZoom, int maxZoom) const
@@ -103,10 +103,7 @@ void TileDownloader::next()
             ++m_done;
             continue;
         }
-        QString base = m_server;
-        if (!base.endsWith(u'/'))
-            base += u'/';
-        QNetworkRequest request(QUrl(base + u"%1/%2/%3.png"_s.arg(t.z).arg(t.x).arg(t.y)));
+        QNetworkRequest request(TileProbe::tileUrl(m_server, t.z, t.x, t.y));
         request.setHeader(QNetworkRequest::UserAgentHeader, u"Neptus-Qt"_s);
         QNetworkReply *reply = m_network.get(request);
         reply->setParent(this);

@@ -28,6 +28,16 @@ QPoint TileProbe::tileAt(double latDeg, double lonDeg, int zoom)
     return {std::clamp(x, 0, last), std::clamp(y, 0, last)};
 }
 
+QString TileProbe::tilePath(int z, int x, int y)
+{
+    return u"%1/%2/%3.png"_s.arg(z).arg(x).arg(y);
+}
+
+QUrl TileProbe::tileUrl(const QString &server, int z, int x, int y)
+{
+    return QUrl(server + (server.endsWith(u'/') ? u""_s : u"/"_s) + tilePath(z, x, y));
+}
+
 void TileProbe::report(Status status, const QString &message)
 {
     if (status == m_status && message == m_message)
@@ -41,7 +51,7 @@ void TileProbe::check()
 {
     const int zoom = std::clamp(static_cast<int>(std::floor(m_zoom)), 0, 22);
     const QPoint t = tileAt(m_lat, m_lon, zoom);
-    const QString tile = u"%1/%2/%3.png"_s.arg(zoom).arg(t.x()).arg(t.y());
+    const QString tile = tilePath(zoom, t.x(), t.y());
     const QString key = m_directory + u'|' + m_server + u'|' + tile;
     if (key == m_lastTile)
         return;
@@ -64,10 +74,7 @@ void TileProbe::check()
         report(Unknown, {});
         return;
     }
-    QString base = m_server;
-    if (!base.endsWith(u'/'))
-        base += u'/';
-    const QUrl url(base + tile);
+    const QUrl url = tileUrl(m_server, zoom, t.x(), t.y());
     QNetworkRequest request(url);
     request.setHeader(QNetworkRequest::UserAgentHeader, u"Neptus-Qt"_s);
     m_reply = m_network.get(request);

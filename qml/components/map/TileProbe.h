@@ -5,6 +5,7 @@
 #include <QPoint>
 #include <QPointer>
 #include <QTimer>
+#include <QUrl>
 #include <QtQml/qqmlregistration.h>
 
 class QNetworkReply;
@@ -43,6 +44,9 @@ public:
 
     // The tile (x, y) at `zoom` holding a point (Web Mercator, as OSM numbers them).
     static QPoint tileAt(double latDeg, double lonDeg, int zoom);
+    // Where a tile is in a z/x/y.png folder ("15/15591/12262.png"), and on a server ("http://…/15/15591/12262.png").
+    static QString tilePath(int z, int x, int y);
+    static QUrl tileUrl(const QString &server, int z, int x, int y);
 
 signals:
     void sourceChanged();
