@@ -197,8 +197,10 @@ Rectangle {
                     Text {
                         width: parent.width
                         text: row.modelData.maneuvers !== undefined
-                              ? qsTr("%n maneuver(s)", "", row.modelData.maneuvers) + " · " + panel.formatDistance(row.modelData.length)
-                                + " · " + (row.modelData.duration >= 0 ? panel.formatSeconds(row.modelData.duration) : qsTr("no end"))
+                              // Wrapped between the parts, never inside one ("13 min 47 s" stays whole).
+                              ? [qsTr("%n maneuver(s)", "", row.modelData.maneuvers), panel.formatDistance(row.modelData.length),
+                                 row.modelData.duration >= 0 ? panel.formatSeconds(row.modelData.duration) : qsTr("no end")]
+                                .map(part => part.replace(/ /g, "\u00a0")).join(" · ")
                               : qsTr("only on the vehicle")
                         color: Theme.textDim
                         font.pixelSize: Theme.smallFontPixelSize
