@@ -16,6 +16,7 @@ set(NEPTUS_LAYERS
   "neptus-scripting    scripting   neptus-alarms"
   "neptus-transport    transport   neptus-messages"
   "neptus-geo          geo         neptus-core"
+  "neptus-coastline    geo         neptus-core"
   "neptus-mission-model mission    neptus-messages neptus-geo"
   "neptus-processor    processor   neptus-mission-model"
   "neptus-plans        plans       neptus-mission-model neptus-scripting"

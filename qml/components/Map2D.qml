@@ -1,12 +1,14 @@
 pragma ComponentBehavior: Bound
 import QtCore
 import QtQuick
+import QtQuick.Shapes
 import Neptus.Engine
 
 // The 2D map (the paper's Renderer2D): every known system at its position
 // with its heading, kind and name, and the trail of where it has been; tiles
 // from a local folder or a tile server on the local network, never from the
-// internet; a lat/lon grid on plain sea when there are no tiles; a local
+// internet; the world coastline (land, shore) and a lat/lon grid when there
+// are no tiles; a local
 // north/east grid around home; follow a system, measure distance and
 // bearing, a scale bar. Drag to pan, pinch or wheel to zoom, two-finger turn
 // to rotate; every button is a touch target.
@@ -14,7 +16,8 @@ import Neptus.Engine
 // This file holds the view (its own Web Mercator camera: centre, zoom,
 // bearing; 256-pixel tiles, as Qt Location's) and what it shows; the parts
 // are MapTileLayer, MapGestures, MapSystemMarker, MapMeasureOverlay,
-// MapScaleBar and MapControls, and the C++ scene-graph grids and trails.
+// MapScaleBar and MapControls, and the C++ scene-graph grids, coastline and
+// trails.
 Rectangle {
     id: root
 
@@ -28,6 +31,8 @@ Rectangle {
     // The system the map keeps centred: a name, "$main", or "" for none.
     property string follow: "$main"
     property bool showGrid: true
+    // The world coastline (GSHHG, installed with Neptus-Qt) where no tiles are.
+    property bool showCoastline: true
     property bool showTrails: true
     property real trailWidth: 2
     property real initialZoomLevel: 15
@@ -194,6 +199,36 @@ Rectangle {
         placed = true
     }
     Component.onCompleted: placeAtHome()
+
+    // The world coastline where there are no tiles: land filled (a Shape,
+    // placed by the coastline item's transform, so moving the view moves it
+    // without new geometry) under the shore drawn by the item.
+    Item {
+        objectName: "land"
+        visible: coastline.visible
+        transform: Matrix4x4 { matrix: coastline.landTransform }
+        Shape {
+            asynchronous: true
+            ShapePath {
+                fillColor: Theme.land
+                fillRule: ShapePath.OddEvenFill
+                strokeWidth: -1
+                PathMultiline { paths: coastline.landPaths }
+            }
+        }
+    }
+    CoastlineItem {
+        id: coastline
+        objectName: "coastline"
+        anchors.fill: parent
+        visible: root.showCoastline && !root.tilesShown
+        centerLatitude: root.centerLatitude
+        centerLongitude: root.centerLongitude
+        zoomLevel: root.zoomLevel
+        bearing: root.bearing
+        shoreColor: Theme.shore
+        shoreWidth: Math.max(1, Theme.mm(0.25))
+    }
 
     // Lat/lon grid: the map itself when there are no tiles (and no
     // north/east grid, which takes its place once home is known).
@@ -510,7 +545,11 @@ Rectangle {
         width: Math.min(implicitWidth, parent.width - Theme.spacing * 2)
         wrapMode: Text.Wrap
         horizontalAlignment: Text.AlignRight
-        text: root.hasTiles ? qsTr("%1: grid only").arg(tileProbe.message) : qsTr("no map tiles: grid only")
+        text: (root.hasTiles ? tileProbe.message + ": " : qsTr("no map tiles: "))
+              + (!coastline.visible ? qsTr("grid only")
+                 : coastline.error !== "" ? coastline.error
+                 : coastline.resolution !== "" ? qsTr("coastline (GSHHG, %1 resolution)").arg(coastline.resolution)
+                 : qsTr("coastline loading…"))
         color: Theme.textDim
         font.pixelSize: Theme.smallFontPixelSize
     }

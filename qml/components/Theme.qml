@@ -44,17 +44,17 @@ QtObject {
         { background: "#eef0f3", surface: "#ffffff", titleBar: "#dde1e7", text: "#0b0d10",
           textDim: "#454d5a", accent: "#0050aa", border: "#aab2be",
           levels: ["#8a929e", "#1e8a2e", "#1f63c6", "#c98a00", "#d01f1f", "#8b008b"],
-          sea: "#cfe0ec", traces: ["#1565c0", "#d32f2f", "#2e7d32", "#6a1b9a"],
+          sea: "#cfe0ec", land: "#ece3c8", shore: "#5e4f32", traces: ["#1565c0", "#d32f2f", "#2e7d32", "#6a1b9a"],
           sky: "#4f86c6", ground: "#8a5a2b", water: "#cfe3f5", waterSurface: "#4f9fd6" },
         { background: "#1d2229", surface: "#262c35", titleBar: "#14181d", text: "#e3e7ec",
           textDim: "#98a2b0", accent: "#5ea8ff", border: "#47515f",
           levels: ["#6c7480", "#3fae52", "#4f8fe6", "#e0a52a", "#ef4b4b", "#d26ad2"],
-          sea: "#142531", traces: ["#5ea8ff", "#ff6b6b", "#5fd07a", "#c58af9"],
+          sea: "#142531", land: "#2f2b23", shore: "#9c8b63", traces: ["#5ea8ff", "#ff6b6b", "#5fd07a", "#c58af9"],
           sky: "#2c4a6b", ground: "#4f3419", water: "#1f3346", waterSurface: "#2a5573" },
         { background: "#000000", surface: "#0a0000", titleBar: "#050000", text: "#a30000",
           textDim: "#6a0000", accent: "#c80000", border: "#360000",
           levels: ["#2e1010", "#3a4a00", "#4a1a3a", "#8a4a00", "#c00000", "#ff1a1a"],
-          sea: "#050000", traces: ["#ff3030", "#c08000", "#a05050", "#ff8080"],
+          sea: "#050000", land: "#170400", shore: "#6a0000", traces: ["#ff3030", "#c08000", "#a05050", "#ff8080"],
           sky: "#140000", ground: "#2a0a00", water: "#100000", waterSurface: "#300000" }
     ]
     readonly property var colors: palettes[Math.max(0, Math.min(palette, palettes.length - 1))]
@@ -68,6 +68,9 @@ QtObject {
     readonly property color border: colors.border
     // Behind a map without tiles.
     readonly property color sea: colors.sea
+    // The world coastline's land and shore line on such a map.
+    readonly property color land: colors.land
+    readonly property color shore: colors.shore
     // Instruments: an attitude indicator's sky and ground, a water column and its seabed.
     readonly property color sky: colors.sky
     readonly property color ground: colors.ground

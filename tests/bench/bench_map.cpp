@@ -6,9 +6,10 @@
 // Run: tools/bench map
 #include "FrameTimes.h"
 #include "geo/Geodesy.h"
-#include "qmlmodels/Tracks.h"
-#include "qmlmodels/VariableTreeModel.h"
+#include "FakeVehicle.h"
+#include "qmlmodels/ConsoleSession.h"
 
+#include <QElapsedTimer>
 #include <QGuiApplication>
 #include <QQmlComponent>
 #include <QQmlEngine>
@@ -49,10 +50,9 @@ int main(int argc, char **argv)
     // --smoke: a few frames of small trails, so that ctest keeps it working.
     const bool smoke = app.arguments().contains(QStringLiteral("--smoke"));
     const int frames = smoke ? 5 : 300;
-    ManualClock clock;
-    tree::VariableTree tree(&clock);
-    tree::VariableTreeModel model(&tree);
-    geo::Tracks tracks(&model);
+    // A real session (the Session singleton takes nothing else), its tracks fed directly.
+    ConsoleSession session(test::shippedSchema());
+    geo::Tracks &tracks = *session.tracks();
     tracks.setHome({{QStringLiteral("lat"), homeLat}, {QStringLiteral("lon"), homeLon}});
     const int points = smoke ? 2'000 : 100'000;
     for (int i = 0; i < points; ++i) {
@@ -61,18 +61,19 @@ int main(int argc, char **argv)
     }
 
     QQmlEngine engine;
-    QQmlComponent sessionComponent(&engine);
-    sessionComponent.setData("import QtQuick\nQtObject { property var tree; property var tracks }", QUrl());
-    std::unique_ptr<QObject> session(sessionComponent.create());
-    session->setProperty("tree", QVariant::fromValue(&model));
-    session->setProperty("tracks", QVariant::fromValue(&tracks));
-    engine.singletonInstance<QObject *>("Neptus.Components", "Session")->setProperty("session", QVariant::fromValue(session.get()));
+    engine.singletonInstance<QObject *>("Neptus.Components", "Session")->setProperty("session", QVariant::fromValue(&session));
 
     QQuickWindow window;
     const auto map = neptus::test::showInWindow(engine, window, "import QtQuick\nimport Neptus.Components\n"
         "Map2D { width: 1280; height: 800; initialZoomLevel: 13.2; follow: \"\" }");
     if (!map)
         return 1;
+    // The map opens at home, where the surveys are: otherwise nothing of them is timed.
+    if (std::abs(map->property("centerLatitude").toDouble() - homeLat) > 1e-6) {
+        std::fprintf(stderr, "bench_map: the map did not open at home (%f, %f)\n", map->property("centerLatitude").toDouble(),
+                     map->property("centerLongitude").toDouble());
+        return 1;
+    }
 
     int next = points;
     auto grow = [&] {
@@ -90,9 +91,24 @@ int main(int argc, char **argv)
         map->setProperty("bearing", map->property("bearing").toDouble() + 1);
         grow();
     };
+    // The world coastline is read on a worker thread: wait for it before timing.
+    auto *coastline = map->findChild<QObject *>(QStringLiteral("coastline"));
+    if (!coastline)
+        qFatal("Map2D has no coastline item");
+    auto coastRead = [&] {
+        QElapsedTimer waited;
+        waited.start();
+        while ((coastline->property("loading").toBool() || coastline->property("resolution").toString().isEmpty())
+               && waited.elapsed() < 20000)
+            QCoreApplication::processEvents(QEventLoop::AllEvents, 50);
+        std::printf("  (coastline: %s resolution, %d shore points, read in %lld ms%s)\n",
+                    qPrintable(coastline->property("resolution").toString()), coastline->property("pointCount").toInt(),
+                    static_cast<long long>(waited.elapsed()), qPrintable(coastline->property("error").toString()));
+    };
     // Warm up: the first frames upload the trails.
     neptus::test::measureFrames(window, smoke ? 2 : 30, pan);
-    std::printf("Map2D, 1280x800, software OpenGL (%s), 2 trails x %d points, no tiles (grid)\n",
+    coastRead();
+    std::printf("Map2D, 1280x800, software OpenGL (%s), 2 trails x %d points, no tiles (coastline and grid)\n",
                 qPrintable(QString::fromLatin1(qgetenv("QT_QPA_PLATFORM"))), points);
     bool drew = true;
     auto print = [&](const char *what, const neptus::test::FrameTimes &r) {
@@ -107,6 +123,15 @@ int main(int argc, char **argv)
     map->setProperty("zoomLevel", 13.2);
     map->setProperty("showTrails", false);
     print("baseline: same map and panning, trails hidden", neptus::test::measureFrames(window, frames, pan));
+    // The coastline's cost: the same map without it (the grid-only map it
+    // replaced), and zoomed out over Iberia (intermediate resolution).
+    map->setProperty("showCoastline", false);
+    print("grid only (no coastline), panning, trails hidden", neptus::test::measureFrames(window, frames, pan));
+    map->setProperty("zoomLevel", 6.0);
+    print("zoom 6 (Iberia), grid only, panning", neptus::test::measureFrames(window, frames, pan));
+    map->setProperty("showCoastline", true);
+    coastRead();
+    print("zoom 6 (Iberia), coastline, panning", neptus::test::measureFrames(window, frames, pan));
     if (!drew)
         std::fprintf(stderr, "bench_map: a run drew no frames\n");
     return drew ? 0 : 1;

@@ -141,6 +141,48 @@ TestCase {
         map2d.showGrid = true
     }
 
+    // With no tiles the world coastline is drawn (GSHHG from Debian's
+    // gmt-gshhg packages): at Porto, full resolution, the city on land and
+    // the sea off the Douro mouth as sea, the shore between; zoomed out a
+    // coarser resolution, Madrid on land; switched off, all sea again.
+    function test_3b_withoutTilesTheCoastlineShowsLand() {
+        const m = createTemporaryObject(tiledMap, test, { x: 0, y: 0, width: 800, height: 600, initialZoomLevel: 13 })
+        m.centreAt(41.15, -8.66)
+        const coast = findChild(m, "coastline")
+        verify(coast.visible)
+        // (read twice: at home when made, then here)
+        tryVerify(() => coast.resolution === "full" && !coast.loading, 10000, coast.resolution)
+        verify(coast.pointCount > 200, coast.pointCount + " shore points")
+        verify(coast.isLand(41.1496, -8.6110) && !coast.isLand(41.14, -8.715))
+        compare(findChild(m, "noTiles").text, "no map tiles: coastline (GSHHG, full resolution)")
+        const porto = m.screenPoint(41.1496, -8.6110), offshore = m.screenPoint(41.14, -8.715)
+        tryVerify(() => Qt.colorEqual(grabImage(m).pixel(porto.x, porto.y), Theme.land), 5000, "Porto is drawn as land")
+        let image = grabImage(m)
+        verify(Qt.colorEqual(image.pixel(offshore.x, offshore.y), Theme.sea), "off the Douro mouth is sea")
+        // The shore: drawn between them, on the row through both.
+        let shore = 0
+        for (let x = Math.round(offshore.x); x < porto.x; ++x)
+            shore += Qt.colorEqual(image.pixel(x, Math.round(porto.y)), Theme.shore) ? 1 : 0
+        verify(shore >= 1, "the shore line crosses the row from the sea to Porto")
+
+        // Panning a little reads nothing: the same data is moved.
+        const points = coast.pointCount
+        m.pan(40, 0)
+        verify(!coast.loading, "a small pan is inside what was read")
+        compare(coast.pointCount, points)
+
+        m.setZoom(5)
+        tryVerify(() => coast.resolution !== "full" && !coast.loading, 10000, coast.resolution)
+        verify(coast.isLand(40.42, -3.70), "Madrid")
+        const madrid = m.screenPoint(40.42, -3.70)
+        tryVerify(() => Qt.colorEqual(grabImage(m).pixel(madrid.x, madrid.y), Theme.land), 5000, "Madrid is drawn as land at " + coast.resolution)
+
+        m.showCoastline = false
+        verify(!coast.visible && !findChild(m, "land").visible)
+        tryVerify(() => Qt.colorEqual(grabImage(m).pixel(madrid.x, madrid.y), Theme.sea), 5000, "switched off: sea")
+        compare(findChild(m, "noTiles").text, "no map tiles: grid only")
+    }
+
     function test_4_tilesComeFromALocalFolder() {
         const dir = Fixtures.makeTempDir()
         const n = Math.pow(2, 15)
@@ -153,6 +195,7 @@ TestCase {
         const m = createTemporaryObject(tiledMap, test, { x: 0, y: 0, tileDirectory: dir })
         verify(m.hasTiles)
         verify(!findChild(m, "graticule").visible)
+        verify(!findChild(m, "coastline").visible, "tiles, not the coastline")
         tryVerify(() => Qt.colorEqual(grabImage(m).pixel(100, 180), "#ff00ff"), 10000, "a tile from the folder is drawn")
         // Tiles, trails and overlays line up: Qt Location projects as we do.
         m.showTrails = true
