@@ -26,8 +26,10 @@ Rectangle {
     property string tileDirectory: ""
     // ...or a tile server that serves <url>z/x/y.png (e.g. "http://10.0.0.2:8080/tiles/")...
     property string tileServer: ""
-    // ...or a folder of Qt Location's own offline tile files (osm_100-l-8-z-x-y.png).
+    // ...or a folder of Qt Location's own offline tile files (osm_100-l-8-z-x-y.png)...
     property string offlineDirectory: ""
+    // ...or an MBTiles file (unpacked once into the cache, with progress).
+    property string mbtiles: ""
     // The system the map keeps centred: a name, "$main", or "" for none.
     property string follow: "$main"
     property bool showGrid: true
@@ -37,7 +39,9 @@ Rectangle {
     property real trailWidth: 2
     property real initialZoomLevel: 15
 
-    readonly property bool hasTiles: tileServer !== "" || tileDirectory !== "" || offlineDirectory !== ""
+    // The folder of z/x/y.png tiles read: the tile directory, or the MBTiles file's once unpacked.
+    readonly property string tileFolder: tileDirectory !== "" ? tileDirectory : mbtilesFolder.folder
+    readonly property bool hasTiles: tileServer !== "" || tileFolder !== "" || offlineDirectory !== ""
     // A source that has no tile where the map looks shows the grid, and says why.
     readonly property bool tilesShown: hasTiles && tileProbe.status !== TileProbe.Missing
     readonly property Tracks tracks: Session.tracks
@@ -136,7 +140,7 @@ Rectangle {
         anchors.fill: parent
         visible: root.tilesShown
         tileServer: root.tileServer
-        tileDirectory: root.tileDirectory
+        tileDirectory: root.tileFolder
         offlineDirectory: root.offlineDirectory
         background: root.color
         minimumZoomLevel: root.minimumZoomLevel
@@ -145,10 +149,16 @@ Rectangle {
         zoomLevel: root.zoomLevel
         bearing: root.bearing
     }
+    // The MBTiles file's unpacking: busy, progress, folder, tileCount, error.
+    readonly property MbTilesFolder mbtilesSource: mbtilesFolder
+    MbTilesFolder {
+        id: mbtilesFolder
+        file: root.mbtiles
+    }
     // Whether the source has tiles where the map looks (said when it has none).
     TileProbe {
         id: tileProbe
-        directory: root.tileDirectory
+        directory: root.tileFolder
         server: root.tileServer
         latitude: root.centerLatitude
         longitude: root.centerLongitude
@@ -545,7 +555,9 @@ Rectangle {
         width: Math.min(implicitWidth, parent.width - Theme.spacing * 2)
         wrapMode: Text.Wrap
         horizontalAlignment: Text.AlignRight
-        text: (root.hasTiles ? tileProbe.message + ": " : qsTr("no map tiles: "))
+        text: (mbtilesFolder.busy ? qsTr("preparing the tiles of %1: %2 %: ").arg(mbtilesFolder.name).arg(Math.floor(mbtilesFolder.progress * 100))
+               : mbtilesFolder.error !== "" && !root.tilesShown ? mbtilesFolder.error + ": "
+               : root.hasTiles ? tileProbe.message + ": " : qsTr("no map tiles: "))
               + (!coastline.visible ? qsTr("grid only")
                  : coastline.error !== "" ? coastline.error
                  : coastline.resolution !== "" ? qsTr("coastline (GSHHG, %1 resolution)").arg(coastline.resolution)

@@ -11,12 +11,16 @@
 #include "qmlmodels/ConsoleSession.h"
 #include "sim/SimulatedVehicle.h"
 
+#include <QBuffer>
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
 #include <QEventLoop>
 #include <QImage>
 #include <QProcess>
+#include <QSqlDatabase>
+#include <QSqlError>
+#include <QSqlQuery>
 #include <QTcpServer>
 #include <QTcpSocket>
 #include <QMediaCaptureSession>
@@ -290,6 +294,46 @@ public:
         QImage tile(256, 256, QImage::Format_RGB32);
         tile.fill(color);
         return QDir().mkpath(QFileInfo(path).path()) && tile.save(path, "PNG");
+    }
+    // An MBTiles file (SQLite, as QGIS and tile downloaders write it) of
+    // one-colour 256-pixel tiles: {z, x, y (XYZ, from the north), color,
+    // format ("PNG" or "JPEG"), junk (bytes that are no image)}. "" or what failed.
+    Q_INVOKABLE QString writeMbTiles(const QString &path, const QVariantList &tiles) const
+    {
+        QString error;
+        {
+            QSqlDatabase db = QSqlDatabase::addDatabase(QStringLiteral("QSQLITE"), QStringLiteral("write-mbtiles"));
+            db.setDatabaseName(path);
+            QSqlQuery q(db);
+            if (!db.open() || !q.exec(QStringLiteral("CREATE TABLE metadata (name text, value text)"))
+                || !q.exec(QStringLiteral("INSERT INTO metadata VALUES ('name', 'Douro test tiles'), ('format', 'png')"))
+                || !q.exec(QStringLiteral("CREATE TABLE tiles (zoom_level integer, tile_column integer, tile_row integer, tile_data blob)")))
+                error = q.lastError().text() + db.lastError().text();
+            for (const QVariant &t : tiles) {
+                const QVariantMap m = t.toMap();
+                const int z = m.value(QStringLiteral("z")).toInt();
+                QByteArray data;
+                if (m.contains(QStringLiteral("junk")))
+                    data = m.value(QStringLiteral("junk")).toByteArray();
+                else {
+                    QImage tile(256, 256, QImage::Format_RGB32);
+                    tile.fill(m.value(QStringLiteral("color")).value<QColor>());
+                    QBuffer buffer(&data);
+                    buffer.open(QIODevice::WriteOnly);
+                    tile.save(&buffer, m.value(QStringLiteral("format"), QStringLiteral("PNG")).toString().toLatin1().constData(), 100);
+                }
+                q.prepare(QStringLiteral("INSERT INTO tiles VALUES (?, ?, ?, ?)"));
+                q.addBindValue(z);
+                q.addBindValue(m.value(QStringLiteral("x")).toInt());
+                q.addBindValue((1 << z) - 1 - m.value(QStringLiteral("y")).toInt()); // TMS rows
+                q.addBindValue(data);
+                if (error.isEmpty() && !q.exec())
+                    error = q.lastError().text();
+            }
+            db.close();
+        }
+        QSqlDatabase::removeDatabase(QStringLiteral("write-mbtiles"));
+        return error;
     }
     Q_INVOKABLE QString sourceDir() const { return test::sourcePath({}); }
     // A tile server on loopback serving a folder's files over HTTP/1.0 (404

@@ -246,6 +246,55 @@ TestCase {
 
     // A tile server on the LAN (here on loopback): its tiles are drawn; one
     // that has none here (404) or does not answer is said over the grid.
+    // An MBTiles file (SQLite; rows counted from the south, PNG or JPEG
+    // tiles) is a tile source: unpacked once into the cache and drawn; the
+    // second time it is there at once; a damaged tile is skipped and counted;
+    // a file that is not MBTiles, or is missing, is said by name.
+    function test_4e_mbtilesFilesAreATileSource() {
+        const dir = Fixtures.makeTempDir()
+        const n = Math.pow(2, 15)
+        const tx = Math.floor((homeLon + 180) / 360 * n)
+        const ty = Math.floor((1 - Math.asinh(Math.tan(rad(homeLat))) / Math.PI) / 2 * n)
+        const tiles = []
+        for (let x = tx - 2; x <= tx + 2; ++x)
+            for (let y = ty - 2; y <= ty + 2; ++y)
+                tiles.push(x === tx + 1 && y === ty ? { z: 15, x: x, y: y, color: "#00c000", format: "JPEG" }
+                                                     : { z: 15, x: x, y: y, color: "#ff00ff" })
+        tiles.push({ z: 15, x: tx + 3, y: ty, junk: "not an image" })
+        const file = dir + "/douro.mbtiles"
+        compare(Fixtures.writeMbTiles(file, tiles), "")
+
+        const m = createTemporaryObject(tiledMap, test, { x: 0, y: 0, width: 800, height: 600, mbtiles: file })
+        tryVerify(() => m.tilesShown && !m.mbtilesSource.busy, 15000, findChild(m, "noTiles").text)
+        compare(m.mbtilesSource.tileCount, 25)
+        verify(m.mbtilesSource.error.indexOf("1 damaged tile(s) skipped") > 0, m.mbtilesSource.error)
+        compare(m.mbtilesSource.name, "Douro test tiles")
+        verify(!findChild(m, "coastline").visible)
+        tryVerify(() => Qt.colorEqual(grabImage(m).pixel(100, 180), "#ff00ff"), 10000, "a tile from the file is drawn")
+        // The JPEG tile, re-encoded, where its row says (XYZ from TMS).
+        const lon = (tx + 1.5) / n * 360 - 180
+        const lat = Math.atan(Math.sinh(Math.PI * (1 - 2 * (ty + 0.5) / n))) * 180 / Math.PI
+        const p = m.screenPoint(lat, lon)
+        verify(p.x > 0 && p.x < m.width && p.y > 0 && p.y < m.height, p)
+        tryVerify(() => {
+            const c = grabImage(m).pixel(p.x, p.y)
+            return Math.abs(c.g - 0.75) < 0.05 && c.r < 0.05 && c.b < 0.05
+        }, 10000, "the JPEG tile at " + p)
+
+        const again = createTemporaryObject(tiledMap, test, { x: 0, y: 0, mbtiles: file })
+        verify(!again.mbtilesSource.busy && again.mbtilesSource.folder === m.mbtilesSource.folder,
+               "unpacked once: the second map has it at once")
+
+        Fixtures.writeFile(dir + "/junk.mbtiles", "this is not a database, not even close to one; ".repeat(200))
+        const junk = createTemporaryObject(tiledMap, test, { x: 0, y: 0, mbtiles: dir + "/junk.mbtiles" })
+        tryVerify(() => findChild(junk, "noTiles").text.indexOf(dir + "/junk.mbtiles: not an MBTiles file") === 0, 10000,
+                  findChild(junk, "noTiles").text)
+        verify(!junk.tilesShown && findChild(junk, "coastline").visible, "the coastline instead")
+        const missing = createTemporaryObject(tiledMap, test, { x: 0, y: 0, mbtiles: dir + "/none.mbtiles" })
+        tryVerify(() => findChild(missing, "noTiles").text.indexOf(dir + "/none.mbtiles: no such file") === 0, 10000,
+                  findChild(missing, "noTiles").text)
+    }
+
     function test_4c_aTileServerThatGivesNothingIsSaid() {
         const folder = Fixtures.makeTempDir()
         const n = Math.pow(2, 15)
