@@ -193,8 +193,28 @@ ApplicationWindow {
                         onClicked: window.openConsole(modelData.file, Session.mainSystem, false)
                     }
                 }
+                TouchButton {
+                    objectName: "openFileButton"
+                    width: parent.width
+                    text: qsTr("Open a console file…")
+                    toolTip: qsTr("A console layout from anywhere: a USB stick, a colleague's folder")
+                    onClicked: { switcher.shown = false; consoleChooser.open("") }
+                }
             }
         }
+    }
+
+    // A console layout from anywhere (the switcher's "Open a console file…").
+    FileChooser {
+        id: consoleChooser
+        objectName: "consoleChooser"
+        anchors.centerIn: parent
+        width: Math.min(parent.width - Theme.spacing * 2, Theme.mm(160))
+        height: parent.height - Theme.spacing * 2
+        title: qsTr("Open a console")
+        nameFilters: ["*.qml"]
+        extraPlaces: window.consoleDirectories
+        onChosen: path => window.openConsole("file://" + path, Session.mainSystem, false)
     }
 
     ComponentPalette {

@@ -115,6 +115,83 @@ TestCase {
         Session.mainSystem = ""
     }
 
+    // A console file from anywhere (a USB stick): the switcher's "Open a
+    // console file…" shows a chooser of big rows, folders first, only .qml
+    // files; a tap opens a folder or the console.
+    function test_opensAConsoleFileFromAnywhere() {
+        const stick = Fixtures.makeTempDir()
+        verify(Fixtures.makeDir(stick + "/trials"))
+        verify(Fixtures.writeFile(stick + "/trials/Harbour.qml",
+                                  "import QtQuick\nimport Neptus.Components\n\nConsole {\n    title: \"From the stick\"\n    StatusLed { level: 1 }\n}\n"))
+        verify(Fixtures.writeFile(stick + "/trials/notes.txt", "not a console"))
+        const consoles = Fixtures.sourceDir() + "/qml/consoles"
+        const window = createTemporaryObject(mainComponent, test, { consoleUrl: "file://" + consoles + "/Default.qml", visible: true,
+                                                                     consoleDirectories: [consoles] })
+        tryCompare(window.consoleLoader, "title", "Generic console")
+        const tap = item => {
+            const touch = touchEvent(item)
+            touch.press(0, item, item.width / 2, item.height / 2).commit()
+            touch.release(0, item, item.width / 2, item.height / 2).commit()
+        }
+        const switcher = findChild(window.contentItem, "consoleSwitcher")
+        tap(findChild(window.header, "consoleTitle"))
+        tryVerify(() => switcher.visible)
+        tap(findChild(switcher, "openFileButton"))
+        const chooser = findChild(window.contentItem, "consoleChooser")
+        tryVerify(() => chooser.visible && !switcher.visible)
+        // The places: home and the consoles' folder.
+        verify(findChild(chooser, "place-Home"))
+        tap(findChild(chooser, "place-qml/consoles"))
+        tryCompare(findChild(chooser, "chooserFolder"), "text", consoles)
+        tryVerify(() => findChild(chooser, "entry-AUV.qml") !== null)
+        verify(findChild(chooser, "entry-AUV.qml").height >= Theme.touchTarget - 1, "rows a finger can hit")
+        tap(findChild(chooser, "chooserUp"))
+        tryVerify(() => findChild(chooser, "entry-consoles") !== null, 2000, "the folder above lists consoles/")
+        // The stick: a folder, then the console; the text file is not offered.
+        chooser.folder = stick
+        tryVerify(() => findChild(chooser, "entry-trials") !== null)
+        tap(findChild(chooser, "entry-trials"))
+        tryVerify(() => findChild(chooser, "entry-Harbour.qml") !== null)
+        compare(findChild(chooser, "entry-notes.txt"), null)
+        tap(findChild(chooser, "entry-Harbour.qml"))
+        tryCompare(window.consoleLoader, "title", "From the stick")
+        verify(!chooser.visible)
+        // Cancel leaves the console as it is.
+        tap(findChild(window.header, "consoleTitle"))
+        tryVerify(() => switcher.visible)
+        tap(findChild(switcher, "openFileButton"))
+        tryVerify(() => chooser.visible)
+        tap(findChild(chooser, "chooserCancel"))
+        tryVerify(() => !chooser.visible)
+        compare(window.consoleLoader.title, "From the stick")
+    }
+
+    // The chooser by keyboard: arrows move, Enter opens a folder or chooses
+    // a file, Escape cancels.
+    Component { id: chooserComponent; FileChooser { width: 600; height: 500; nameFilters: ["*.qml"] } }
+    function test_fileChooserByKeyboard() {
+        const dir = Fixtures.makeTempDir()
+        verify(Fixtures.makeDir(dir + "/a-folder"))
+        verify(Fixtures.writeFile(dir + "/a-folder/Inner.qml", "x"))
+        verify(Fixtures.writeFile(dir + "/Top.qml", "x"))
+        const chooser = createTemporaryObject(chooserComponent, test)
+        const chosen = spyComponent.createObject(this, { target: chooser, signalName: "chosen" })
+        const cancelled = spyComponent.createObject(this, { target: chooser, signalName: "cancelled" })
+        chooser.open(dir)
+        compare(chooser.entries.map(e => e.name), ["a-folder", "Top.qml"], "folders first")
+        keyClick(Qt.Key_Return)
+        compare(chooser.folder, dir + "/a-folder")
+        keyClick(Qt.Key_Return)
+        compare(chosen.count, 1)
+        compare(chosen.signalArguments[0][0], dir + "/a-folder/Inner.qml")
+        verify(!chooser.visible)
+        chooser.open(dir)
+        keyClick(Qt.Key_Down)
+        keyClick(Qt.Key_Escape)
+        compare(cancelled.count, 1)
+        verify(!chooser.visible)
+    }
+
     // Editing, the console shrinks beside the palette and property panels: no
     // panel covers it, and the frames sit on the components.
     function test_panelsDoNotCoverTheConsoleWhileEditing() {
