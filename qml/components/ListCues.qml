@@ -7,22 +7,27 @@ import QtQuick
 Item {
     id: cues
     required property ListView view
-    // Rows not wholly in view, above and below (counted once the view has
-    // laid its rows out, after any change).
+    // Rows out of view, above and below (counted once the view has laid its
+    // rows out, after any change). A row cut by a sliver is still read: it
+    // counts as out of view when less than three quarters of it shows, so a
+    // cue never covers a row that could be read without it.
     property int hiddenAbove: 0
     property int hiddenBelow: 0
     readonly property int hidden: hiddenAbove + hiddenBelow
 
     anchors.fill: view
 
-    // Whether row i is not wholly inside the view, above (or below) it.
+    // Whether row i is out of view, above (or below) it.
     function outside(i, above) {
         const item = view.itemAtIndex(i)
         if (!item) { // not made: out of view, on one side or the other
             const first = view.indexAt(0, view.contentY)
             return above ? first >= 0 && i < first : first >= 0 && i > first
         }
-        return above ? item.y < view.contentY - 0.5 : item.y + item.height > view.contentY + view.height + 0.5
+        const shown = Math.min(item.y + item.height, view.contentY + view.height) - Math.max(item.y, view.contentY)
+        if (shown >= item.height * 0.75)
+            return false
+        return above ? item.y < view.contentY : item.y + item.height > view.contentY + view.height
     }
     function count(above) {
         let n = 0

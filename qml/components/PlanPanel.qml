@@ -198,7 +198,7 @@ Rectangle {
                         width: parent.width
                         text: row.modelData.maneuvers !== undefined
                               // Wrapped between the parts, never inside one ("13 min 47 s" stays whole).
-                              ? [qsTr("%n maneuver(s)", "", row.modelData.maneuvers), panel.formatDistance(row.modelData.length),
+                              ? [row.modelData.maneuvers === 1 ? qsTr("1 maneuver") : qsTr("%1 maneuvers").arg(row.modelData.maneuvers), panel.formatDistance(row.modelData.length),
                                  row.modelData.duration >= 0 ? panel.formatSeconds(row.modelData.duration) : qsTr("no end")]
                                 .map(part => part.replace(/ /g, "\u00a0")).join(" · ")
                               : qsTr("only on the vehicle")
