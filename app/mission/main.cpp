@@ -4,6 +4,7 @@
 // vehicle offers, and prints what each plan implies. docs/missions.md.
 #include "core/SafeFile.h"
 #include "mission/NeptusImport.h"
+#include "mission/PlanCheck.h"
 #include "mission/PlanGeometry.h"
 #include "mission/Vehicle.h"
 #include "models/ModelImport.h"
@@ -118,11 +119,17 @@ int validate(const QStringList &files, const VehicleCatalog &vehicles)
         qsizetype maneuvers = 0;
         for (const Plan &plan : m->plans) {
             maneuvers += plan.maneuvers.size();
-            if (const VehicleDefinition *v = vehicles.find(plan.vehicle))
-                problems += v->check(plan, path);
-            else
-                std::fprintf(stderr, "%s: note: no definition of vehicle '%s'; plan '%s' is checked against the schema only\n",
+            // The plan editor's checks: its graph, its legs against the mission's areas, its vehicle.
+            const VehicleDefinition *v = vehicles.find(plan.vehicle);
+            if (!v)
+                std::fprintf(stderr, "%s: note: no definition of vehicle '%s'; plan '%s' is checked without one\n",
                              qPrintable(path), qPrintable(plan.vehicle), qPrintable(plan.id));
+            Errors warnings;
+            for (const PlanProblem &p : checkPlan(plan, *m, planGeometry(plan, v ? v->speeds() : SpeedModel{}), v)) {
+                const QString message = p.maneuver.isEmpty() ? p.message : u"plan '%1', %2"_s.arg(plan.id, p.message);
+                (p.severity == PlanProblem::Severity::Error ? problems : warnings).append(xml::XmlError{path, p.line, 0, message});
+            }
+            warnAll(warnings);
         }
         if (!problems.isEmpty()) {
             failAll(problems);

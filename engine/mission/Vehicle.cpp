@@ -63,65 +63,69 @@ SpeedModel VehicleDefinition::speeds() const
     return model;
 }
 
+QStringList VehicleDefinition::checkManeuver(const Maneuver &m) const
+{
+    QStringList problems;
+    const ManeuverSpec *spec = maneuver(m.type);
+    if (!spec) {
+        QStringList feasible;
+        for (const ManeuverSpec &s : maneuvers)
+            feasible << s.type;
+        problems << u"%1 cannot do %2 (it can: %3)"_s.arg(id, m.type, feasible.join(u", "_s));
+        return problems;
+    }
+    for (auto it = m.parameters.cbegin(); it != m.parameters.cend(); ++it) {
+        const ParameterSpec *p = spec->parameter(it.key());
+        if (!p)
+            continue; // the schema has checked the field exists; the vehicle sets no bounds on it
+        if (p->type == u"number" || p->type == u"integer") {
+            double value = it.value().toDouble();
+            // A speed range is in m/s; a speed planned in RPM or % is compared in m/s too.
+            const QString speedUnits = m.text(u"speed_units"_s, u"METERS_PS"_s);
+            if (it.key() == u"speed" && p->unit == u"m/s" && speedUnits != u"METERS_PS")
+                value = speedUnits == u"RPM" ? value * speeds().metresPerSecondPerRpm : value / 100 * speeds().maxSpeed;
+            if ((p->min && value < *p->min) || (p->max && value > *p->max))
+                problems << (u"%1 = %2 %3 is outside %4's range [%5, %6]"_s.arg(it.key(), formatNumber(value), p->unit, id,
+                        p->min ? formatNumber(*p->min) : u"…"_s, p->max ? formatNumber(*p->max) : u"…"_s));
+        } else if (p->type == u"enum" && !p->values.isEmpty() && !p->values.contains(it.value())) {
+            problems << (u"%1 = %2 is not one %3 takes (%4)"_s.arg(it.key(), it.value(), id, p->values.join(u", "_s)));
+        } else if (p->type == u"flags" && !p->values.isEmpty()) {
+            for (const QString &flag : it.value().split(u'|', Qt::SkipEmptyParts)) {
+                if (!p->values.contains(flag))
+                    problems << (u"%1 flag %2 is not one %3 takes (%4)"_s.arg(it.key(), flag, id, p->values.join(u", "_s)));
+            }
+        }
+    }
+    for (const QString &unitsField : {u"z_units"_s, u"start_z_units"_s, u"end_z_units"_s, u"travel_z_units"_s}) {
+        const QString units = m.text(unitsField);
+        const ParameterSpec *own = spec->parameter(unitsField);
+        if (own && !own->values.isEmpty())
+            continue; // the maneuver's own list has said it
+        if (!units.isEmpty() && units != u"NONE" && !limits.zUnits.isEmpty() && !limits.zUnits.contains(units))
+            problems << (u"%1 cannot be commanded in %2 (only %3)"_s.arg(id, units, limits.zUnits.join(u", "_s)));
+    }
+    if (m.text(u"z_units"_s) == u"DEPTH" && limits.maxDepth && m.number(u"z"_s) > *limits.maxDepth)
+        problems << (u"depth %1 m is past %2's %3 m"_s.arg(m.text(u"z"_s), id, formatNumber(*limits.maxDepth)));
+    if (m.text(u"z_units"_s) == u"HEIGHT" && limits.maxAltitude && m.number(u"z"_s) > *limits.maxAltitude)
+        problems << (u"height %1 m is past %2's %3 m"_s.arg(m.text(u"z"_s), id, formatNumber(*limits.maxAltitude)));
+    const ParameterSpec *speedSpec = spec->parameter(u"speed"_s);
+    const bool speedBounded = speedSpec && (speedSpec->min || speedSpec->max);
+    if (!speedBounded && m.has(u"speed"_s) && m.text(u"speed_units"_s, u"METERS_PS"_s) == u"METERS_PS") {
+        const double speed = m.number(u"speed"_s);
+        if ((limits.minSpeed && speed < *limits.minSpeed) || (limits.maxSpeed && speed > *limits.maxSpeed))
+            problems << (u"speed %1 m/s is outside %2's [%3, %4] m/s"_s.arg(m.text(u"speed"_s), id,
+                    limits.minSpeed ? formatNumber(*limits.minSpeed) : u"0"_s,
+                    limits.maxSpeed ? formatNumber(*limits.maxSpeed) : u"…"_s));
+    }
+    return problems;
+}
+
 Errors VehicleDefinition::check(const Plan &plan, const QString &planFile) const
 {
     Errors errors;
-    const auto fail = [&](const Maneuver &m, const QString &what) {
-        errors.append(XmlError{planFile, m.line.value, 0,
-                               u"plan '%1', maneuver '%2' (%3): %4"_s.arg(plan.id, m.id, m.type, what)});
-    };
-    QStringList feasible;
-    for (const ManeuverSpec &s : maneuvers)
-        feasible << s.type;
     for (const Maneuver &m : plan.maneuvers) {
-        const ManeuverSpec *spec = maneuver(m.type);
-        if (!spec) {
-            fail(m, u"%1 cannot do %2 (it can: %3)"_s.arg(id, m.type, feasible.join(u", "_s)));
-            continue;
-        }
-        for (auto it = m.parameters.cbegin(); it != m.parameters.cend(); ++it) {
-            const ParameterSpec *p = spec->parameter(it.key());
-            if (!p)
-                continue; // the schema has checked the field exists; the vehicle sets no bounds on it
-            if (p->type == u"number" || p->type == u"integer") {
-                double value = it.value().toDouble();
-                // A speed range is in m/s; a speed planned in RPM or % is compared in m/s too.
-                const QString speedUnits = m.text(u"speed_units"_s, u"METERS_PS"_s);
-                if (it.key() == u"speed" && p->unit == u"m/s" && speedUnits != u"METERS_PS")
-                    value = speedUnits == u"RPM" ? value * speeds().metresPerSecondPerRpm : value / 100 * speeds().maxSpeed;
-                if ((p->min && value < *p->min) || (p->max && value > *p->max))
-                    fail(m, u"%1 = %2 %3 is outside %4's range [%5, %6]"_s.arg(it.key(), formatNumber(value), p->unit, id,
-                            p->min ? formatNumber(*p->min) : u"…"_s, p->max ? formatNumber(*p->max) : u"…"_s));
-            } else if (p->type == u"enum" && !p->values.isEmpty() && !p->values.contains(it.value())) {
-                fail(m, u"%1 = %2 is not one %3 takes (%4)"_s.arg(it.key(), it.value(), id, p->values.join(u", "_s)));
-            } else if (p->type == u"flags" && !p->values.isEmpty()) {
-                for (const QString &flag : it.value().split(u'|', Qt::SkipEmptyParts)) {
-                    if (!p->values.contains(flag))
-                        fail(m, u"%1 flag %2 is not one %3 takes (%4)"_s.arg(it.key(), flag, id, p->values.join(u", "_s)));
-                }
-            }
-        }
-        for (const QString &unitsField : {u"z_units"_s, u"start_z_units"_s, u"end_z_units"_s, u"travel_z_units"_s}) {
-            const QString units = m.text(unitsField);
-            const ParameterSpec *own = spec->parameter(unitsField);
-            if (own && !own->values.isEmpty())
-                continue; // the maneuver's own list has said it
-            if (!units.isEmpty() && units != u"NONE" && !limits.zUnits.isEmpty() && !limits.zUnits.contains(units))
-                fail(m, u"%1 cannot be commanded in %2 (only %3)"_s.arg(id, units, limits.zUnits.join(u", "_s)));
-        }
-        if (m.text(u"z_units"_s) == u"DEPTH" && limits.maxDepth && m.number(u"z"_s) > *limits.maxDepth)
-            fail(m, u"depth %1 m is past %2's %3 m"_s.arg(m.text(u"z"_s), id, formatNumber(*limits.maxDepth)));
-        if (m.text(u"z_units"_s) == u"HEIGHT" && limits.maxAltitude && m.number(u"z"_s) > *limits.maxAltitude)
-            fail(m, u"height %1 m is past %2's %3 m"_s.arg(m.text(u"z"_s), id, formatNumber(*limits.maxAltitude)));
-        const ParameterSpec *speedSpec = spec->parameter(u"speed"_s);
-        const bool speedBounded = speedSpec && (speedSpec->min || speedSpec->max);
-        if (!speedBounded && m.has(u"speed"_s) && m.text(u"speed_units"_s, u"METERS_PS"_s) == u"METERS_PS") {
-            const double speed = m.number(u"speed"_s);
-            if ((limits.minSpeed && speed < *limits.minSpeed) || (limits.maxSpeed && speed > *limits.maxSpeed))
-                fail(m, u"speed %1 m/s is outside %2's [%3, %4] m/s"_s.arg(m.text(u"speed"_s), id,
-                        limits.minSpeed ? formatNumber(*limits.minSpeed) : u"0"_s,
-                        limits.maxSpeed ? formatNumber(*limits.maxSpeed) : u"…"_s));
-        }
+        for (const QString &what : checkManeuver(m))
+            errors.append(XmlError{planFile, m.line.value, 0, u"plan '%1', maneuver '%2' (%3): %4"_s.arg(plan.id, m.id, m.type, what)});
     }
     if (limits.endurance) {
         const auto geometry = planGeometry(plan, speeds());

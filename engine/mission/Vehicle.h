@@ -96,6 +96,8 @@ struct VehicleDefinition
     // parameters out of range or not among the allowed values, z units or
     // speeds or depths past its limits. Each names `planFile` and the line.
     Errors check(const Plan &plan, const QString &planFile) const;
+    // What of `check` is about one maneuver, each said for people.
+    QStringList checkManeuver(const Maneuver &maneuver) const;
 
     friend bool operator==(const VehicleDefinition &, const VehicleDefinition &) = default;
 };

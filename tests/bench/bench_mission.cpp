@@ -6,6 +6,7 @@
 // Run: tools/bench mission --benchmark_min_time=2s   (figures in BENCHMARKS.md)
 #include "BenchMain.h"
 #include "mission/MissionXml.h"
+#include "mission/PlanCheck.h"
 #include "mission/PlanGeometry.h"
 #include "mission/Vehicle.h"
 #include "core/DataFiles.h"
@@ -176,6 +177,67 @@ void Geometry(benchmark::State &state)
         benchmark::DoNotOptimize(planGeometry(plan));
 }
 BENCHMARK(Geometry)->Unit(benchmark::kMillisecond);
+
+// The plan editor's check on every edit (issue "Drawing the environment and
+// planning on the map": a 1,000-maneuver plan in ≤ 10 ms): the first 1,000
+// maneuvers of the mixed plan in a mission with an operating area around
+// them and six no-go areas (five circles beside the plan, a polygon two of
+// its legs cross), against the vehicle.
+struct CheckFixture
+{
+    Mission mission;
+    Plan plan;
+    PlanGeometry geometry;
+    CheckFixture()
+    {
+        const Plan &big = fixture().mission.plans.first();
+        plan = big;
+        plan.maneuvers = big.maneuvers.mid(0, 1000);
+        plan.transitions = big.transitions.mid(0, 999);
+        mission.home = {41.18, -8.70, 0};
+        Map map{u"areas"_s, {}, {}};
+        const auto point = [](double lat, double lon) {
+            Feature::Point p;
+            p.lat = lat;
+            p.lon = lon;
+            return p;
+        };
+        Feature ops{u"polygon"_s, u"ops"_s, {}, {}, {}, {}, {point(41.17, -8.71), point(41.29, -8.71), point(41.29, -8.68), point(41.17, -8.68)},
+                    {{u"role"_s, u"operating-area"_s}}, {}};
+        map.features.append(ops);
+        for (int i = 0; i < 5; ++i) {
+            Feature rock{u"circle"_s, u"rock%1"_s.arg(i), {}, {}, {}, point(41.20 + i * 0.01, -8.705), {},
+                         {{u"role"_s, u"no-go"_s}, {u"radius"_s, u"20"_s}}, {}};
+            map.features.append(rock);
+        }
+        Feature wreck{u"polygon"_s, u"wreck"_s, {}, {}, {}, {}, {point(41.2195, -8.6965), point(41.2205, -8.6965), point(41.2205, -8.6955), point(41.2195, -8.6955)},
+                      {{u"role"_s, u"no-go"_s}}, {}};
+        map.features.append(wreck);
+        mission.maps.append(map);
+        geometry = planGeometry(plan, fixture().vehicle.speeds());
+    }
+};
+
+void PlanCheck(benchmark::State &state)
+{
+    static const CheckFixture f;
+    qsizetype problems = 0;
+    for (auto _ : state)
+        problems = checkPlan(f.plan, f.mission, f.geometry, &fixture().vehicle).size();
+    state.counters["maneuvers"] = static_cast<double>(f.plan.maneuvers.size());
+    state.counters["problems"] = static_cast<double>(problems);
+}
+BENCHMARK(PlanCheck)->Unit(benchmark::kMillisecond);
+
+// What an edit costs the editor: the geometry again, then the check.
+void PlanGeometryAndCheck(benchmark::State &state)
+{
+    static const CheckFixture f;
+    for (auto _ : state)
+        benchmark::DoNotOptimize(checkPlan(f.plan, f.mission, planGeometry(f.plan, fixture().vehicle.speeds()), &fixture().vehicle));
+    state.counters["maneuvers"] = static_cast<double>(f.plan.maneuvers.size());
+}
+BENCHMARK(PlanGeometryAndCheck)->Unit(benchmark::kMillisecond);
 
 void TranslationInput(benchmark::State &state)
 {

@@ -23,7 +23,8 @@ for name in phase3 missao-cavado Split Horta; do
   out=$("$tool" import "$fixtures/missions/$name.nmisz" -o "$work/$name.xml" 2>"$work/$name.warnings")
   grep -q ": ${plans[$name]} plans," <<<"$out"; check "import $name.nmisz: ${plans[$name]} plans ($out)" $?
   "$tool" validate "$work/$name.xml" >/dev/null 2>"$work/$name.validate"
-  check "validate $name.xml against the shipped vehicles$(sed 's/^/\n    /' "$work/$name.validate")" $?
+  status=$? # before the description's $(…) runs, which sets $? again
+  check "validate $name.xml against the shipped vehicles$(sed 's/^/\n    /' "$work/$name.validate")" $status
   # Every plan, to every target its vehicle offers.
   for plan in $(grep -o '<plan id="[^"]*" vehicle="[^"]*"' "$work/$name.xml" | sed 's/<plan id="\([^"]*\)" vehicle="\([^"]*\)"/\1:\2/'); do
     id=${plan%%:*} vehicle=${plan##*:}
@@ -80,6 +81,26 @@ printf 'this is not a model\n' >"$work/ship.obj"
 "$tool" validate "$work/models.xml" 2>"$work/err"
 [ $? = 1 ] && grep -q "models.xml:3: map 'harbour', model 'ship': .*could not be read" "$work/err"
 check "a model the helper cannot read is named with its line" $?
+
+# The plan editor's checks: a leg between two clear waypoints crosses a
+# no-go area (an error, with its line); a maneuver nothing leads to (a warning).
+cat >"$work/legs.xml" <<'EOF'
+<mission format="1" id="m"><home lat="41" lon="-8"/><vehicle id="lauv-xplore-1"/>
+<map id="harbour"><circle id="wreck" role="no-go" north="200" east="0" radius="30"/></map>
+<plan id="survey" vehicle="lauv-xplore-1" start="a">
+<maneuvers>
+<Goto id="a" lat="41" lon="-8" z="2" z_units="DEPTH" speed="1.5" speed_units="METERS_PS"/>
+<Goto id="b" lat="41.0036" lon="-8" z="2" z_units="DEPTH" speed="1.5" speed_units="METERS_PS"/>
+<Goto id="spare" lat="41.001" lon="-8.001" z="2" z_units="DEPTH" speed="1.5" speed_units="METERS_PS"/>
+</maneuvers>
+<transition from="a" to="b"/>
+</plan></mission>
+EOF
+"$tool" validate "$work/legs.xml" 2>"$work/err"
+[ $? = 1 ] && grep -q "legs.xml:6: plan 'survey', 'b' (Goto): a leg crosses the no-go area 'wreck'" "$work/err" \
+  && grep -q "warning: .*legs.xml:7: plan 'survey', 'spare' (Goto) cannot be reached from the start 'a'" "$work/err"
+status=$?
+check "a leg through a no-go area fails validation with its line; an unreachable maneuver is a warning$(sed 's/^/\n    /' "$work/err")" $status
 
 # A vehicle and a target of one's own: files only.
 mkdir -p "$work/mine"

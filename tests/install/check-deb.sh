@@ -43,7 +43,8 @@ check() { if [ "$2" = 0 ]; then echo "ok: $1"; else echo "FAIL: $1"; failures=$(
 # Pack.
 (cd "$work/pkg" && cpack -G DEB -B "$work/pkg" --config "$build/CPackConfig.cmake" >"$work/cpack.log" 2>&1)
 deb=$(ls "$work"/pkg/neptus-qt_*.deb 2>/dev/null | head -1)
-[ -n "$deb" ]; check "cpack made $(basename "${deb:-no .deb}")" $?
+[ -n "$deb" ]; status=$? # taken before the description's $(…), which sets $? again
+check "cpack made $(basename "${deb:-no .deb}")" $status
 [ -n "$deb" ] || { tail -20 "$work/cpack.log"; exit 1; }
 echo "Depends: $(dpkg-deb -f "$deb" Depends)"
 contents=$(dpkg-deb -c "$deb")
@@ -70,7 +71,8 @@ check "apt removed what the package does not depend on: ${removed:-nothing}" $st
 # Run the installed programs where nothing else is.
 in_root test ! -e "$(cd "$(dirname "$0")/../.." && pwd)"; check "the source tree is not there" $?
 in_root neptus-msg list >"$work/list.txt" 2>&1
-grep -q "EstimatedState" "$work/list.txt"; check "neptus-msg list reads the installed definitions ($(wc -l <"$work/list.txt") lines)" $?
+grep -q "EstimatedState" "$work/list.txt"; status=$?
+check "neptus-msg list reads the installed definitions ($(wc -l <"$work/list.txt") lines)" $status
 in_root neptus-sim --help >/dev/null 2>&1; check "neptus-sim --help" $?
 in_root neptus-mission targets --vehicle x8-02 >"$work/targets.txt" 2>&1
 grep -q "^qgc-plan" "$work/targets.txt" && ! grep -q "missing" "$work/targets.txt"
