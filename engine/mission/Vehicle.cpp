@@ -104,9 +104,11 @@ QStringList VehicleDefinition::checkManeuver(const Maneuver &m) const
         if (!units.isEmpty() && units != u"NONE" && !limits.zUnits.isEmpty() && !limits.zUnits.contains(units))
             problems << (u"%1 cannot be commanded in %2 (only %3)"_s.arg(id, units, limits.zUnits.join(u", "_s)));
     }
-    if (m.text(u"z_units"_s) == u"DEPTH" && limits.maxDepth && m.number(u"z"_s) > *limits.maxDepth)
+    // Past the vehicle's depth or height, unless its range for z has said so already.
+    const bool zSaid = std::any_of(problems.begin(), problems.end(), [](const QString &p) { return p.startsWith(u"z = "_s); });
+    if (!zSaid && m.text(u"z_units"_s) == u"DEPTH" && limits.maxDepth && m.number(u"z"_s) > *limits.maxDepth)
         problems << (u"depth %1 m is past %2's %3 m"_s.arg(m.text(u"z"_s), id, formatNumber(*limits.maxDepth)));
-    if (m.text(u"z_units"_s) == u"HEIGHT" && limits.maxAltitude && m.number(u"z"_s) > *limits.maxAltitude)
+    if (!zSaid && m.text(u"z_units"_s) == u"HEIGHT" && limits.maxAltitude && m.number(u"z"_s) > *limits.maxAltitude)
         problems << (u"height %1 m is past %2's %3 m"_s.arg(m.text(u"z"_s), id, formatNumber(*limits.maxAltitude)));
     const ParameterSpec *speedSpec = spec->parameter(u"speed"_s);
     const bool speedBounded = speedSpec && (speedSpec->min || speedSpec->max);

@@ -2,6 +2,8 @@
 
 #include "mission/ImcPlan.h"
 #include "mission/MissionXml.h"
+#include "mission/PlanCheck.h"
+#include "mission/Vehicle.h"
 
 namespace neptus::plans {
 
@@ -80,6 +82,20 @@ void PlanDesk::setMission(mission::Mission mission, const QString &path)
             continue;
         for (const QString &error : Supervisor::conditionErrors(p, *scripts))
             m_problems << p.id + u": "_s + error;
+    }
+    // What the plan editor would say of each plan: a plan with errors (a leg
+    // through a no-go area, a parameter past its vehicle's range) is not sent.
+    m_planErrors.clear();
+    const mission::VehicleCatalog definitions = mission::loadVehicles(mission::vehicleFolders());
+    for (const mission::Plan &p : m_mission.plans) {
+        const mission::VehicleDefinition *v = definitions.find(p.vehicle);
+        for (const mission::PlanProblem &problem :
+             mission::checkPlan(p, m_mission, mission::planGeometry(p, v ? v->speeds() : mission::SpeedModel{}), v)) {
+            if (problem.severity != mission::PlanProblem::Severity::Error)
+                continue;
+            m_planErrors[p.id] << problem.message;
+            m_problems << p.id + u": "_s + problem.message;
+        }
     }
     emit missionChanged();
     for (const auto &[id, vehicle] : m_vehicles)
@@ -213,6 +229,9 @@ std::expected<void, QString> PlanDesk::send(const QString &system, const QString
     auto v = vehicle(system);
     if (!v)
         return std::unexpected(v.error());
+    if (const QStringList errors = m_planErrors.value(planId); !errors.isEmpty())
+        return std::unexpected(u"plan '%1' is not sent: %2%3"_s.arg(planId, errors.first(),
+                                   errors.size() > 1 ? u" (and %1 more)"_s.arg(errors.size() - 1) : QString()));
     auto spec = specification(system, planId);
     if (!spec)
         return std::unexpected(spec.error());

@@ -8,6 +8,7 @@
 #include "plans/Supervisor.h"
 #include "tree/VariableTree.h"
 
+#include <QHash>
 #include <QObject>
 #include <QTimer>
 
@@ -132,6 +133,7 @@ private:
     mission::Mission m_mission;
     QString m_missionPath;
     QStringList m_problems;
+    QHash<QString, QStringList> m_planErrors; // plan id -> its errors (mission::checkPlan)
     std::map<QString, QByteArray> m_md5; // the mission's plans' MD5s, by plan id
     std::map<quint16, Vehicle> m_vehicles;
     std::chrono::milliseconds m_timeout{3000};

@@ -215,6 +215,31 @@ TEST_F(Desk, StopIsAnInfoAbortAWarningWithTheVehiclesReason)
     EXPECT_EQ(graph.activeAlarms().size(), 1u) << "a line in the alarm window";
 }
 
+// What the plan editor marks as an error never reaches a vehicle: a
+// parameter past the vehicle's range, a leg through a no-go area.
+TEST_F(Desk, APlanWithErrorsIsNotSent)
+{
+    mission::Mission edited = desk.mission();
+    mission::Feature rock;
+    rock.kind = u"circle"_s;
+    rock.id = u"rock"_s;
+    rock.position.lat = 41.1407;
+    rock.position.lon = -8.6110;
+    rock.attributes = {{u"role"_s, u"no-go"_s}, {u"radius"_s, u"5"_s}};
+    edited.maps.first().features.append(rock);
+    desk.setMission(edited);
+    EXPECT_EQ(desk.send(u"lauv-sim-1"_s, u"survey"_s).error(),
+              u"plan 'survey' is not sent: 'back' (Goto): a leg crosses the no-go area 'rock'"_s);
+    EXPECT_TRUE(desk.problems().contains(u"survey: 'back' (Goto): a leg crosses the no-go area 'rock'"_s)) << "said when it opens";
+    edited.maps.first().features.removeLast();
+    edited.plans.first().maneuvers.first().set(u"z"_s, 500);
+    desk.setMission(edited);
+    EXPECT_TRUE(desk.send(u"lauv-sim-1"_s, u"survey"_s).error().startsWith(u"plan 'survey' is not sent: 'go' (Goto): z = 500 m is outside"_s));
+    edited.plans.first().maneuvers.first().set(u"z"_s, 2);
+    desk.setMission(edited);
+    EXPECT_TRUE(desk.send(u"lauv-sim-1"_s, u"survey"_s));
+}
+
 TEST_F(Desk, SilenceAndUnknownSystemsAreSaid)
 {
     desk.setTimeout(std::chrono::milliseconds(20));

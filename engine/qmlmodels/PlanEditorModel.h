@@ -1,0 +1,109 @@
+#pragma once
+
+#include "mission/Mission.h"
+#include "mission/PlanCheck.h"
+#include "mission/PlanGeometry.h"
+#include "mission/Vehicle.h"
+
+#include <QObject>
+#include <QStringList>
+#include <QVariantList>
+#include <QtQml/qqmlregistration.h>
+
+// One plan of a mission file being drawn on the map (the plan editor): add
+// a maneuver where the operator taps (its vehicle's defaults), move it, edit
+// its parameters, remove it, lay rows over a drawn area; undo and redo every
+// edit; after each one the plan's geometry, statistics and problems
+// (mission::checkPlan) are worked out again, so the map shows them at once.
+// Saving writes the mission file (the previous one kept as .bak).
+class PlanEditorModel : public QObject
+{
+    Q_OBJECT
+    QML_ELEMENT
+    // The mission file; setting it opens it ("" closes).
+    Q_PROPERTY(QString missionPath READ missionPath WRITE setMissionPath NOTIFY missionChanged)
+    Q_PROPERTY(QStringList planIds READ planIds NOTIFY missionChanged)
+    // The plan being edited (one of planIds).
+    Q_PROPERTY(QString planId READ planId WRITE setPlanId NOTIFY planChanged)
+    Q_PROPERTY(QString vehicle READ vehicle NOTIFY planChanged)
+    // The maneuvers its vehicle can do (its definition's; every known type without one).
+    Q_PROPERTY(QStringList maneuverTypes READ maneuverTypes NOTIFY planChanged)
+    // [{id, type, lat, lon, index, severity: "error" | "warning" | ""}], in plan order.
+    Q_PROPERTY(QVariantList maneuvers READ maneuvers NOTIFY edited)
+    // Every point the vehicle will pass, transits included, in execution order: [{lat, lon, maneuver}].
+    Q_PROPERTY(QVariantList path READ path NOTIFY edited)
+    // [{severity: "error" | "warning", kind, maneuver, message, lat, lon (NaN: none)}], worst first.
+    Q_PROPERTY(QVariantList problems READ problems NOTIFY edited)
+    Q_PROPERTY(int errorCount READ errorCount NOTIFY edited)
+    // {maneuvers, length (m), duration (s, -1: never ends), maxDepth (m, -1: none)}.
+    Q_PROPERTY(QVariantMap statistics READ statistics NOTIFY edited)
+    Q_PROPERTY(bool modified READ modified NOTIFY edited)
+    Q_PROPERTY(bool canUndo READ canUndo NOTIFY edited)
+    Q_PROPERTY(bool canRedo READ canRedo NOTIFY edited)
+    // Why the last open, save or edit did not happen ("" when it did).
+    Q_PROPERTY(QString error READ error NOTIFY errorChanged)
+
+public:
+    explicit PlanEditorModel(QObject *parent = nullptr);
+
+    QString missionPath() const { return m_path; }
+    void setMissionPath(const QString &path);
+    QStringList planIds() const;
+    QString planId() const { return m_planId; }
+    void setPlanId(const QString &id);
+    QString vehicle() const;
+    QStringList maneuverTypes() const;
+    QVariantList maneuvers() const;
+    QVariantList path() const { return m_pathPoints; }
+    QVariantList problems() const;
+    int errorCount() const;
+    QVariantMap statistics() const;
+    bool modified() const { return m_modified; }
+    bool canUndo() const { return !m_undo.isEmpty(); }
+    bool canRedo() const { return !m_redo.isEmpty(); }
+    QString error() const { return m_error; }
+
+    // A maneuver of `type` at a position, after the plan's last one (a
+    // transition from it), with its vehicle's defaults: its id, or "".
+    Q_INVOKABLE QString addManeuver(const QString &type, double lat, double lon);
+    Q_INVOKABLE bool moveManeuver(const QString &id, double lat, double lon);
+    Q_INVOKABLE bool removeManeuver(const QString &id);
+    // Sets one parameter (text, as typed); a value out of the vehicle's
+    // range is kept and shown as a problem, so the plan cannot be sent.
+    Q_INVOKABLE bool setParameter(const QString &id, const QString &name, const QString &value);
+    // [{name, value, unit, type, min, max (NaN: none), values, problem}]:
+    // the vehicle's parameters of the maneuver's type, then any other it has.
+    Q_INVOKABLE QVariantList parametersOf(const QString &id) const;
+    // Rows over an area drawn as [{lat, lon}]: the new FollowPath's id, or "".
+    Q_INVOKABLE QString addRows(const QVariantList &area, double spacing, double angle, double overshoot, bool crossHatch);
+    Q_INVOKABLE bool undo();
+    Q_INVOKABLE bool redo();
+    Q_INVOKABLE bool save();
+
+    // The editor's own copy (tests, benchmarks).
+    const neptus::mission::Plan *plan() const;
+
+signals:
+    void missionChanged();
+    void planChanged();
+    void edited();
+    void errorChanged();
+
+private:
+    neptus::mission::Plan *editable();
+    // Keeps the plan as it was for undo, applies nothing itself.
+    void remember();
+    void changed(); // geometry, problems and statistics again; edited()
+    void fail(const QString &why);
+    QString freshId(const QString &type) const;
+    neptus::mission::Maneuver *find(const QString &id);
+
+    QString m_path, m_planId, m_error;
+    neptus::mission::Mission m_mission;
+    neptus::mission::VehicleCatalog m_vehicles;
+    QList<neptus::mission::Plan> m_undo, m_redo;
+    bool m_modified = false;
+    neptus::mission::PlanGeometry m_geometry;
+    QList<neptus::mission::PlanProblem> m_problems;
+    QVariantList m_pathPoints;
+};

@@ -1,0 +1,149 @@
+// The plan editor's model: edits on a mission file's plan, each checked at
+// once, undone and redone, saved and read back.
+#include "Paths.h"
+#include "qmlmodels/PlanEditorModel.h"
+
+#include <QFile>
+#include <QSignalSpy>
+#include <QTemporaryDir>
+
+#include <gtest/gtest.h>
+
+using namespace Qt::StringLiterals;
+
+namespace {
+
+// A copy of the shipped Douro mission to edit.
+QString douroCopy(const QTemporaryDir &dir)
+{
+    const QString path = dir.filePath(u"douro.xml"_s);
+    QFile::copy(neptus::test::sourcePath(u"docs/examples/douro.xml"_s), path);
+    QFile::setPermissions(path, QFile::ReadOwner | QFile::WriteOwner);
+    return path;
+}
+
+QVariantMap byId(const QVariantList &maneuvers, const QString &id)
+{
+    for (const QVariant &v : maneuvers)
+        if (v.toMap().value(u"id"_s) == id)
+            return v.toMap();
+    return {};
+}
+
+} // namespace
+
+TEST(PlanEditor, OpensAMissionAtItsFirstPlanWithItsVehiclesManeuvers)
+{
+    QTemporaryDir dir;
+    PlanEditorModel editor;
+    editor.setMissionPath(douroCopy(dir));
+    EXPECT_EQ(editor.error(), QString());
+    EXPECT_EQ(editor.planIds(), (QStringList{u"survey"_s, u"patrol"_s}));
+    EXPECT_EQ(editor.planId(), u"survey"_s);
+    EXPECT_EQ(editor.vehicle(), u"lauv-sim-1"_s);
+    EXPECT_TRUE(editor.maneuverTypes().contains(u"Goto"_s));
+    EXPECT_EQ(editor.maneuvers().size(), 4);
+    EXPECT_EQ(editor.problems().size(), 0);
+    EXPECT_GT(editor.statistics().value(u"length"_s).toDouble(), 500);
+    EXPECT_FALSE(editor.canUndo());
+
+    PlanEditorModel missing;
+    missing.setMissionPath(dir.filePath(u"none.xml"_s));
+    EXPECT_TRUE(missing.error().contains(u"none.xml"_s)) << missing.error().toStdString();
+}
+
+TEST(PlanEditor, AddMoveUndoRedo)
+{
+    QTemporaryDir dir;
+    PlanEditorModel editor;
+    editor.setMissionPath(douroCopy(dir));
+    QSignalSpy edited(&editor, &PlanEditorModel::edited);
+    const double length = editor.statistics().value(u"length"_s).toDouble();
+
+    const QString id = editor.addManeuver(u"Goto"_s, 41.1420, -8.6100);
+    EXPECT_EQ(id, u"goto1"_s);
+    EXPECT_EQ(edited.size(), 1) << "checked at once";
+    EXPECT_EQ(editor.maneuvers().size(), 5);
+    const auto *plan = editor.plan();
+    EXPECT_EQ(plan->transitions.last().from, u"surface"_s) << "after the plan's last maneuver";
+    EXPECT_EQ(plan->transitions.last().to, id);
+    EXPECT_GT(editor.statistics().value(u"length"_s).toDouble(), length);
+    EXPECT_TRUE(editor.modified());
+
+    EXPECT_TRUE(editor.moveManeuver(id, 41.1425, -8.6095));
+    EXPECT_NEAR(byId(editor.maneuvers(), id).value(u"lat"_s).toDouble(), 41.1425, 1e-9);
+    EXPECT_TRUE(editor.undo());
+    EXPECT_NEAR(byId(editor.maneuvers(), id).value(u"lat"_s).toDouble(), 41.1420, 1e-9) << "the move undone";
+    EXPECT_TRUE(editor.undo());
+    EXPECT_EQ(editor.maneuvers().size(), 4) << "the add undone";
+    EXPECT_FALSE(editor.canUndo());
+    EXPECT_TRUE(editor.redo());
+    EXPECT_TRUE(editor.redo());
+    EXPECT_NEAR(byId(editor.maneuvers(), id).value(u"lat"_s).toDouble(), 41.1425, 1e-9) << "both redone";
+    EXPECT_FALSE(editor.canRedo());
+
+    EXPECT_EQ(editor.addManeuver(u"Launch"_s, 41.14, -8.61), QString());
+    EXPECT_TRUE(editor.error().startsWith(u"lauv-sim-1 cannot do Launch"_s)) << editor.error().toStdString();
+}
+
+// Out of the vehicle's range: kept, shown on the parameter and as a problem.
+TEST(PlanEditor, AParameterOutOfRangeIsAProblem)
+{
+    QTemporaryDir dir;
+    PlanEditorModel editor;
+    editor.setMissionPath(douroCopy(dir));
+    EXPECT_TRUE(editor.setParameter(u"go"_s, u"z"_s, u"500"_s));
+    EXPECT_EQ(editor.errorCount(), 1);
+    const QVariantMap problem = editor.problems().first().toMap();
+    EXPECT_EQ(problem.value(u"maneuver"_s), u"go"_s);
+    EXPECT_TRUE(problem.value(u"message"_s).toString().contains(u"z = 500 m is outside lauv-sim-1's range [0, 100]"_s))
+        << problem.value(u"message"_s).toString().toStdString();
+    EXPECT_EQ(byId(editor.maneuvers(), u"go"_s).value(u"severity"_s), u"error"_s) << "the marker says so";
+    bool shown = false;
+    for (const QVariant &p : editor.parametersOf(u"go"_s))
+        if (p.toMap().value(u"name"_s) == u"z"_s)
+            shown = p.toMap().value(u"value"_s) == u"500"_s && !p.toMap().value(u"problem"_s).toString().isEmpty();
+    EXPECT_TRUE(shown) << "the form marks the field";
+    EXPECT_TRUE(editor.undo());
+    EXPECT_EQ(editor.errorCount(), 0);
+}
+
+TEST(PlanEditor, RemovingAManeuverJoinsItsNeighbours)
+{
+    QTemporaryDir dir;
+    PlanEditorModel editor;
+    editor.setMissionPath(douroCopy(dir));
+    EXPECT_TRUE(editor.removeManeuver(u"wait"_s));
+    const auto *plan = editor.plan();
+    ASSERT_EQ(plan->transitions.size(), 2);
+    EXPECT_EQ(plan->transitions[0].from, u"rows"_s);
+    EXPECT_EQ(plan->transitions[1].from, u"go"_s);
+    EXPECT_EQ(plan->transitions[1].to, u"rows"_s);
+    EXPECT_EQ(editor.problems().size(), 0);
+    EXPECT_TRUE(editor.removeManeuver(u"go"_s));
+    EXPECT_EQ(editor.plan()->start, u"rows"_s) << "the start moves on";
+}
+
+TEST(PlanEditor, RowsOverADrawnAreaSavedAndReadBack)
+{
+    QTemporaryDir dir;
+    const QString path = douroCopy(dir);
+    PlanEditorModel editor;
+    editor.setMissionPath(path);
+    const QVariantList area{QVariantMap{{u"lat"_s, 41.1395}, {u"lon"_s, -8.6130}}, QVariantMap{{u"lat"_s, 41.1420}, {u"lon"_s, -8.6130}},
+                            QVariantMap{{u"lat"_s, 41.1420}, {u"lon"_s, -8.6090}}, QVariantMap{{u"lat"_s, 41.1395}, {u"lon"_s, -8.6090}}};
+    const QString id = editor.addRows(area, 25, 0, 0, false);
+    ASSERT_FALSE(id.isEmpty()) << editor.error().toStdString();
+    EXPECT_EQ(byId(editor.maneuvers(), id).value(u"type"_s), u"FollowPath"_s);
+    EXPECT_GT(editor.plan()->maneuver(id)->points.size(), 4);
+    EXPECT_EQ(editor.errorCount(), 0) << "inside the operating area";
+    EXPECT_EQ(editor.addRows(QVariantList{area[0], area[1]}, 25, 0, 0, false), QString());
+    EXPECT_EQ(editor.error(), u"a survey area needs at least three corners (it has 2)"_s);
+
+    ASSERT_TRUE(editor.save()) << editor.error().toStdString();
+    EXPECT_FALSE(editor.modified());
+    PlanEditorModel again;
+    again.setMissionPath(path);
+    EXPECT_EQ(again.maneuvers().size(), 5);
+    EXPECT_EQ(again.plan()->maneuver(id)->points, editor.plan()->maneuver(id)->points);
+}
