@@ -37,6 +37,9 @@ class PlanEditorModel : public QObject
     Q_PROPERTY(int errorCount READ errorCount NOTIFY edited)
     // {maneuvers, length (m), duration (s, -1: never ends), maxDepth (m, -1: none)}.
     Q_PROPERTY(QVariantMap statistics READ statistics NOTIFY edited)
+    // The mission's areas, to draw under the plan: [{id, name, role, points: [{lat, lon}]}]
+    // (polygons as drawn, circles as 48-sided polygons).
+    Q_PROPERTY(QVariantList areas READ areas NOTIFY missionChanged)
     Q_PROPERTY(bool modified READ modified NOTIFY edited)
     Q_PROPERTY(bool canUndo READ canUndo NOTIFY edited)
     Q_PROPERTY(bool canRedo READ canRedo NOTIFY edited)
@@ -58,6 +61,7 @@ public:
     QVariantList problems() const;
     int errorCount() const;
     QVariantMap statistics() const;
+    QVariantList areas() const;
     bool modified() const { return m_modified; }
     bool canUndo() const { return !m_undo.isEmpty(); }
     bool canRedo() const { return !m_redo.isEmpty(); }

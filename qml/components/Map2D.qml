@@ -35,6 +35,10 @@ Rectangle {
     property bool showGrid: true
     // The world coastline (GSHHG, installed with Neptus-Qt) where no tiles are.
     property bool showCoastline: true
+    // Drawing a plan of the console's mission on the map (the ✎ button).
+    property bool editingPlan: false
+    // (var: MapPlanEditor refers to Map2D, and types may not refer round in a circle)
+    readonly property var planEditor: planEditorLoader.item
     property bool showTrails: true
     property real trailWidth: 2
     property real initialZoomLevel: 15
@@ -186,6 +190,10 @@ Rectangle {
             root.alignCoordinateToPoint(c, at)
         }
         onTapped: (at) => {
+            if (root.planEditor) {
+                root.planEditor.tapped(at)
+                return
+            }
             if (!root.measuring)
                 return
             const p = root.toCoordinate(at.x, at.y)
@@ -506,6 +514,14 @@ Rectangle {
     }
 
     // Measuring: the points tapped, the line between them, distance and bearing.
+    // The plan editor, over the systems and under the controls.
+    Loader {
+        id: planEditorLoader
+        anchors.fill: parent
+        active: root.editingPlan
+        sourceComponent: MapPlanEditor { map: root }
+    }
+
     MapMeasureOverlay {
         anchors.fill: parent
         visible: root.measuring
@@ -525,7 +541,7 @@ Rectangle {
 
     // Controls, at the right edge for the thumb.
     MapControls {
-        anchors { right: parent.right; top: parent.top; margins: Theme.spacing }
+        anchors { right: parent.right; top: parent.top; bottom: parent.bottom; margins: Theme.spacing }
         followName: Session.resolve(root.follow)
         canFollow: root.follow !== ""
         following: root.followed !== ""
@@ -533,6 +549,8 @@ Rectangle {
         northUp: root.bearing === 0
         canDownload: root.tileServer !== ""
         downloading: downloadPanel.visible
+        planning: root.editingPlan
+        onPlanToggled: root.editingPlan = !root.editingPlan
         onDownloadToggled: downloadPanel.visible = !downloadPanel.visible
         onZoomIn: root.zoomBy(1)
         onZoomOut: root.zoomBy(-1)

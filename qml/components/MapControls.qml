@@ -1,9 +1,13 @@
 import QtQuick
 
 // A map's buttons, at its right edge for the thumb: zoom, follow, show every
-// system, measure, north up. They say what was asked; the map does it.
-Column {
+// system, measure, north up, plan, tiles. They say what was asked; the map
+// does it. Top to bottom, in a second column leftwards when the map is too
+// short for one (give it a height).
+Flow {
     id: controls
+    flow: Flow.TopToBottom
+    layoutDirection: Qt.RightToLeft
     property string followName: ""   // whom "follow" follows, for its help
     property bool canFollow: true
     property bool following: false
@@ -11,6 +15,7 @@ Column {
     property bool northUp: true
     property bool canDownload: false  // a tile server to prepare tiles from
     property bool downloading: false
+    property bool planning: false
 
     signal zoomIn()
     signal zoomOut()
@@ -19,6 +24,7 @@ Column {
     signal measureToggled()
     signal turnNorthUp()
     signal downloadToggled()
+    signal planToggled()
 
     spacing: Theme.spacing
 
@@ -46,6 +52,13 @@ Column {
         toolTip: qsTr("North up")
         highlighted: !controls.northUp
         onClicked: controls.turnNorthUp()
+    }
+    TouchButton {
+        objectName: "planButton"
+        text: "✎"
+        toolTip: qsTr("Draw and edit the mission's plans on the map")
+        highlighted: controls.planning
+        onClicked: controls.planToggled()
     }
     TouchButton {
         objectName: "downloadButton"

@@ -1,8 +1,7 @@
 import QtQuick
 import QtQuick.Controls.Basic as Basic
-import Neptus.Components
 
-// A text field of the designer's panels: touch-sized, in the theme's
+// A text field of the designer's and the plan editor's panels: touch-sized, in the theme's
 // colours; `committed` on Enter or on leaving it with a valid value.
 Basic.TextField {
     implicitHeight: Theme.touchTarget

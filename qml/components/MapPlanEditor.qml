@@ -1,0 +1,364 @@
+pragma ComponentBehavior: Bound
+import QtQuick
+import QtQuick.Shapes
+import Neptus.Engine
+
+// Drawing a plan on the map (Map2D's ✎): the plan of the console's mission
+// being edited, its legs as the vehicle will sail them, a numbered marker
+// per maneuver (coloured by its worst problem; drag to move), the problems
+// found on every edit marked where they are, and a panel: plan, tool (add a
+// maneuver of a type with a tap, or draw an area and lay rows over it),
+// undo/redo, save, statistics, problems (tap to go there), and the selected
+// maneuver's parameters with the vehicle's units and ranges.
+Item {
+    id: editor
+
+    required property var map // the Map2D (var: it refers to this type)
+    readonly property PlanEditorModel model: planModel
+    property string tool: "add" // "add" or "area"
+    property string addType: planModel.maneuverTypes.indexOf("Goto") >= 0 ? "Goto" : (planModel.maneuverTypes[0] || "")
+    property string selected: ""
+    property var area: []       // corners drawn so far: [{lat, lon}]
+    property real rowSpacing: 20
+
+    PlanEditorModel {
+        id: planModel
+        objectName: "planEditorModel"
+        missionPath: Session.session ? Session.session.plans.missionPath : ""
+    }
+
+    // Where positions are drawn: read with the view's values, so that every
+    // binding using it follows the map.
+    function screen(lat: real, lon: real, view: var): point {
+        return Geo.project(lat, lon, view[0], view[1], view[2], view[3], view[4], view[5])
+    }
+    readonly property var view: [map.centerLatitude, map.centerLongitude, map.zoomLevel, map.bearing, map.width, map.height]
+
+    // A tap on the map: select the maneuver under it, else add one there or
+    // a corner of the area.
+    function tapped(at: point): void {
+        for (const m of planModel.maneuvers) {
+            const p = screen(m.lat, m.lon, view)
+            if (Math.hypot(p.x - at.x, p.y - at.y) <= Theme.touchTarget / 2) {
+                selected = m.id
+                return
+            }
+        }
+        const c = map.toCoordinate(at.x, at.y)
+        if (tool === "area") {
+            area = area.concat([{ lat: c.lat, lon: c.lon }])
+        } else {
+            const id = planModel.addManeuver(addType, c.lat, c.lon)
+            if (id !== "")
+                selected = id
+        }
+    }
+    function makeRows(): void {
+        const id = planModel.addRows(area, rowSpacing, 0, rowSpacing / 2, false)
+        if (id !== "") {
+            selected = id
+            area = []
+            tool = "add"
+        }
+    }
+    function formatDuration(s: real): string {
+        if (s < 0)
+            return qsTr("no end")
+        const m = Math.floor(s / 60)
+        return m >= 60 ? qsTr("%1 h %2 min").arg(Math.floor(m / 60)).arg(m % 60) : qsTr("%1 min %2 s").arg(m).arg(Math.round(s % 60))
+    }
+
+    // The mission's areas under the plan: operating areas outlined, no-go areas red.
+    Repeater {
+        model: planModel.areas
+        delegate: Shape {
+            id: areaShape
+            required property var modelData
+            readonly property bool noGo: modelData.role === "no-go"
+            objectName: "area:" + modelData.id
+            anchors.fill: parent
+            ShapePath {
+                strokeColor: areaShape.noGo ? Theme.levelColor(4) : Theme.textDim
+                strokeWidth: Math.max(1.5, Theme.mm(0.3))
+                strokeStyle: areaShape.noGo ? ShapePath.SolidLine : ShapePath.DashLine
+                fillColor: areaShape.noGo ? Qt.alpha(Theme.levelColor(4), 0.25) : "transparent"
+                PathPolyline {
+                    path: areaShape.modelData.points.concat([areaShape.modelData.points[0]]).map(p => editor.screen(p.lat, p.lon, editor.view))
+                }
+            }
+        }
+    }
+    // The legs, transits included.
+    Shape {
+        anchors.fill: parent
+        ShapePath {
+            strokeColor: Theme.accent
+            strokeWidth: Math.max(2, Theme.mm(0.5))
+            fillColor: "transparent"
+            PathPolyline { path: planModel.path.map(p => editor.screen(p.lat, p.lon, editor.view)) }
+        }
+    }
+    // The area being drawn.
+    Shape {
+        anchors.fill: parent
+        visible: editor.area.length > 0
+        ShapePath {
+            strokeColor: Theme.levelColor(3)
+            strokeWidth: Math.max(2, Theme.mm(0.4))
+            strokeStyle: ShapePath.DashLine
+            fillColor: Qt.alpha(Theme.levelColor(3), 0.15)
+            PathPolyline {
+                path: editor.area.concat(editor.area.length > 2 ? [editor.area[0]] : []).map(p => editor.screen(p.lat, p.lon, editor.view))
+            }
+        }
+    }
+    // Problems where they are.
+    Repeater {
+        model: planModel.problems.filter(p => !isNaN(p.lat))
+        delegate: Text {
+            required property var modelData
+            readonly property point at: editor.screen(modelData.lat, modelData.lon, editor.view)
+            objectName: "problemMark"
+            x: at.x - width / 2
+            y: at.y - height - Theme.touchTarget / 2
+            text: modelData.severity === "error" ? "✕" : "!"
+            color: Theme.levelColor(modelData.severity === "error" ? 4 : 3)
+            font.pixelSize: Theme.largeFontPixelSize
+            font.bold: true
+        }
+    }
+    // A marker per maneuver: its number, coloured by its worst problem; drag to move.
+    Repeater {
+        model: planModel.maneuvers
+        delegate: Rectangle {
+            id: marker
+            required property var modelData
+            readonly property point at: editor.screen(modelData.lat, modelData.lon, editor.view)
+            objectName: "maneuver:" + modelData.id
+            width: Theme.touchTarget * 0.8
+            height: width
+            radius: width / 2
+            x: at.x - width / 2
+            y: at.y - height / 2
+            color: modelData.severity === "error" ? Theme.levelColor(4) : modelData.severity === "warning" ? Theme.levelColor(3) : Theme.surface
+            border.color: editor.selected === modelData.id ? Theme.accent : Theme.text
+            border.width: editor.selected === modelData.id ? Theme.mm(0.8) : Theme.mm(0.3)
+            Text {
+                anchors.centerIn: parent
+                text: marker.modelData.index + 1
+                color: marker.modelData.severity !== "" ? Theme.background : Theme.text
+                font.pixelSize: Theme.smallFontPixelSize
+                font.bold: true
+            }
+            DragHandler {
+                target: marker
+                onActiveChanged: {
+                    if (active) {
+                        editor.selected = marker.modelData.id
+                        return
+                    }
+                    const c = editor.map.toCoordinate(marker.x + marker.width / 2, marker.y + marker.height / 2)
+                    planModel.moveManeuver(marker.modelData.id, c.lat, c.lon)
+                }
+            }
+        }
+    }
+
+    // The panel, at the left edge.
+    Rectangle {
+        id: panel
+        objectName: "planEditorPanel"
+        x: Theme.spacing
+        y: Theme.spacing
+        width: Math.min(Theme.mm(75), editor.width * 0.45)
+        height: Math.min(column.implicitHeight + Theme.spacing * 2, editor.height - Theme.spacing * 2)
+        color: Theme.surface
+        border.color: Theme.border
+        radius: Theme.radius
+        // Taps on the panel are the panel's, not the map's.
+        MouseArea { anchors.fill: parent; acceptedButtons: Qt.AllButtons; onWheel: (w) => w.accepted = true }
+        Flickable {
+            anchors { fill: parent; margins: Theme.spacing }
+            contentHeight: column.implicitHeight
+            clip: true
+            Column {
+                id: column
+                width: parent.width
+                spacing: Theme.spacing / 2
+
+                Text {
+                    width: parent.width
+                    text: planModel.planId === "" ? qsTr("No mission open (--mission FILE)")
+                          : qsTr("Plan %1 · %2").arg(planModel.planId).arg(planModel.vehicle) + (planModel.modified ? " •" : "")
+                    color: Theme.text
+                    font.pixelSize: Theme.fontPixelSize
+                    font.bold: true
+                    elide: Text.ElideRight
+                }
+                Flow {
+                    width: parent.width
+                    spacing: Theme.spacing / 2
+                    visible: planModel.planIds.length > 1
+                    Repeater {
+                        model: planModel.planIds
+                        delegate: TouchButton {
+                            required property string modelData
+                            text: modelData
+                            highlighted: planModel.planId === modelData
+                            onClicked: { planModel.planId = modelData; editor.selected = "" }
+                        }
+                    }
+                }
+                Text {
+                    objectName: "planStatistics"
+                    width: parent.width
+                    wrapMode: Text.Wrap
+                    readonly property var s: planModel.statistics
+                    text: qsTr("%1 maneuvers · %2 · %3").arg(s.maneuvers).arg(editor.map.formatDistance(s.length)).arg(editor.formatDuration(s.duration))
+                          + (s.maxDepth >= 0 ? qsTr(" · max %1 m deep").arg(s.maxDepth.toFixed(1)) : "")
+                    color: Theme.textDim
+                    font.pixelSize: Theme.smallFontPixelSize
+                }
+                Flow {
+                    width: parent.width
+                    spacing: Theme.spacing / 2
+                    TouchButton { objectName: "undoButton"; text: "↶"; toolTip: qsTr("Undo"); enabled: planModel.canUndo; onClicked: planModel.undo() }
+                    TouchButton { objectName: "redoButton"; text: "↷"; toolTip: qsTr("Redo"); enabled: planModel.canRedo; onClicked: planModel.redo() }
+                    TouchButton {
+                        objectName: "savePlanButton"
+                        text: qsTr("Save")
+                        enabled: planModel.modified
+                        onClicked: if (planModel.save() && Session.session) Session.session.plans.openMission(planModel.missionPath)
+                    }
+                    TouchButton {
+                        objectName: "removeManeuverButton"
+                        text: qsTr("Remove")
+                        enabled: editor.selected !== ""
+                        onClicked: { planModel.removeManeuver(editor.selected); editor.selected = "" }
+                    }
+                }
+                // Tools: a tap adds a maneuver of the chosen type, or a corner of an area.
+                Flow {
+                    width: parent.width
+                    spacing: Theme.spacing / 2
+                    Repeater {
+                        model: planModel.maneuverTypes
+                        delegate: TouchButton {
+                            required property string modelData
+                            objectName: "add-" + modelData
+                            text: "+ " + modelData
+                            highlighted: editor.tool === "add" && editor.addType === modelData
+                            onClicked: { editor.tool = "add"; editor.addType = modelData }
+                        }
+                    }
+                    TouchButton {
+                        objectName: "areaTool"
+                        text: qsTr("▱ Survey area")
+                        toolTip: qsTr("Tap the area's corners on the map, then lay rows over it")
+                        highlighted: editor.tool === "area"
+                        onClicked: { editor.tool = "area"; editor.area = [] }
+                    }
+                }
+                Row {
+                    visible: editor.tool === "area"
+                    spacing: Theme.spacing / 2
+                    Text {
+                        anchors.verticalCenter: parent.verticalCenter
+                        text: qsTr("%n corner(s), rows", "", editor.area.length)
+                        color: Theme.text
+                        font.pixelSize: Theme.smallFontPixelSize
+                    }
+                    FormField {
+                        objectName: "rowSpacing"
+                        width: Theme.mm(14)
+                        text: editor.rowSpacing
+                        validator: DoubleValidator { bottom: 0.5; top: 10000 }
+                        onCommitted: editor.rowSpacing = Number(text)
+                    }
+                    Text { anchors.verticalCenter: parent.verticalCenter; text: qsTr("m apart"); color: Theme.text; font.pixelSize: Theme.smallFontPixelSize }
+                    TouchButton { objectName: "makeRows"; text: qsTr("Rows"); enabled: editor.area.length >= 3; onClicked: editor.makeRows() }
+                }
+                Text {
+                    objectName: "editorError"
+                    width: parent.width
+                    visible: text !== ""
+                    text: planModel.error
+                    wrapMode: Text.Wrap
+                    color: Theme.levelColor(4)
+                    font.pixelSize: Theme.smallFontPixelSize
+                }
+                // Problems, worst first: a tap goes there.
+                Repeater {
+                    model: planModel.problems
+                    delegate: Rectangle {
+                        required property var modelData
+                        objectName: "problem"
+                        width: column.width
+                        height: Math.max(Theme.touchTarget, problemText.implicitHeight + Theme.spacing)
+                        color: "transparent"
+                        border.color: Theme.levelColor(modelData.severity === "error" ? 4 : 3)
+                        radius: Theme.radius
+                        Text {
+                            id: problemText
+                            anchors { fill: parent; margins: Theme.spacing / 2 }
+                            verticalAlignment: Text.AlignVCenter
+                            wrapMode: Text.Wrap
+                            text: (parent.modelData.severity === "error" ? "✕ " : "! ") + parent.modelData.message
+                            color: Theme.text
+                            font.pixelSize: Theme.smallFontPixelSize
+                        }
+                        TapHandler {
+                            onTapped: {
+                                editor.selected = parent.modelData.maneuver
+                                if (!isNaN(parent.modelData.lat))
+                                    editor.map.centreAt(parent.modelData.lat, parent.modelData.lon)
+                            }
+                        }
+                    }
+                }
+                // The selected maneuver's parameters.
+                Text {
+                    visible: editor.selected !== ""
+                    text: editor.selected
+                    color: Theme.text
+                    font.pixelSize: Theme.fontPixelSize
+                    font.bold: true
+                }
+                Repeater {
+                    model: editor.selected !== "" && planModel.maneuvers.length >= 0 ? planModel.parametersOf(editor.selected) : []
+                    delegate: Column {
+                        id: parameter
+                        required property var modelData
+                        width: column.width
+                        Text {
+                            text: parameter.modelData.name + (parameter.modelData.unit !== "" ? " (" + parameter.modelData.unit + ")" : "")
+                                  + (!isNaN(parameter.modelData.min) || !isNaN(parameter.modelData.max)
+                                     ? "  " + (isNaN(parameter.modelData.min) ? "…" : parameter.modelData.min) + " – "
+                                       + (isNaN(parameter.modelData.max) ? "…" : parameter.modelData.max) : "")
+                            color: Theme.textDim
+                            font.pixelSize: Theme.smallFontPixelSize
+                        }
+                        FormField {
+                            objectName: "parameter:" + parameter.modelData.name
+                            width: parent.width
+                            text: parameter.modelData.value
+                            color: parameter.modelData.problem !== "" ? Theme.levelColor(4) : Theme.text
+                            inputMethodHints: parameter.modelData.type === "number" || parameter.modelData.type === "integer"
+                                              ? Qt.ImhFormattedNumbersOnly : Qt.ImhNone
+                            onCommitted: planModel.setParameter(editor.selected, parameter.modelData.name, text)
+                        }
+                        Text {
+                            objectName: "parameterProblem"
+                            visible: parameter.modelData.problem !== ""
+                            width: parent.width
+                            wrapMode: Text.Wrap
+                            text: parameter.modelData.problem
+                            color: Theme.levelColor(4)
+                            font.pixelSize: Theme.smallFontPixelSize
+                        }
+                    }
+                }
+            }
+        }
+    }
+}

@@ -1,0 +1,173 @@
+import QtQuick
+import QtTest
+import Neptus.Components
+import Neptus.Engine
+import Neptus.Testing
+
+// Drawing a plan on the map as an operator does, by mouse and by touch: ✎
+// opens the editor on the console's mission; a tap adds a Goto where it
+// lands, a drag moves it; a depth past the vehicle's range shows on the
+// field, the marker and the problem list (and the plan cannot be sent);
+// undo and redo; rows over an area tapped out corner by corner; a leg
+// between two taps on either side of a no-go area is flagged where it
+// enters; saved, the mission file has it all.
+TestCase {
+    id: test
+    name: "PlanEditor"
+    when: windowShown
+    visible: true
+    width: 1000
+    height: 700
+
+    readonly property string mission: '<?xml version="1.0" encoding="UTF-8"?>
+<mission format="1" id="editor" name="Editor test">
+  <home lat="41.1405" lon="-8.6110" height="0"/>
+  <vehicle id="lauv-sim-1"/>
+  <map id="m">
+    <polygon id="ops" role="operating-area">
+      <point lat="41.1380" lon="-8.6150"/><point lat="41.1440" lon="-8.6150"/>
+      <point lat="41.1440" lon="-8.6070"/><point lat="41.1380" lon="-8.6070"/>
+    </polygon>
+    <circle id="rock" role="no-go" lat="41.1405" lon="-8.6090" radius="15"/>
+  </map>
+  <plan id="survey" vehicle="lauv-sim-1" start="go">
+    <maneuvers>
+      <Goto id="go" lat="41.1409" lon="-8.6110" z="2" z_units="DEPTH" speed="1.5" speed_units="METERS_PS"/>
+      <Goto id="back" lat="41.1405" lon="-8.6110" z="0" z_units="DEPTH" speed="1.5" speed_units="METERS_PS"/>
+    </maneuvers>
+    <transition from="go" to="back"/>
+  </plan>
+</mission>'
+    property string file: ""
+
+    Map2D { id: map2d; anchors.fill: parent; initialZoomLevel: 17; follow: ""; showTrails: false }
+
+    function initTestCase() {
+        Session.session = Fixtures.session
+        file = Fixtures.makeTempDir() + "/editor.xml"
+        verify(Fixtures.writeFile(file, mission))
+        compare(Fixtures.session.plans.openMission(file), "")
+        map2d.centreAt(41.1405, -8.6105)
+    }
+    function cleanupTestCase() { map2d.editingPlan = false; Session.session = null }
+
+    function editor() { return map2d.planEditor }
+    function model() { return map2d.planEditor.model }
+    function marker(id) { return findChild(map2d, "maneuver:" + id) }
+    function centre(item) { return item.mapToItem(map2d, item.width / 2, item.height / 2) }
+    // Every item below `item` named `name`.
+    function findAll(item, name) {
+        let found = item.objectName === name ? [item] : []
+        for (let i = 0; i < item.children.length; ++i)
+            found = found.concat(findAll(item.children[i], name))
+        return found
+    }
+    function tap(x, y) {
+        const touch = touchEvent(map2d)
+        touch.press(0, map2d, x, y).commit()
+        touch.release(0, map2d, x, y).commit()
+    }
+
+    function test_1_theEditorOpensOnTheConsolesMission() {
+        mouseClick(findChild(map2d, "planButton"))
+        tryVerify(() => editor() !== null && model().planId === "survey")
+        compare(model().missionPath, file)
+        compare(model().maneuvers.length, 2)
+        verify(marker("go") && marker("back"))
+        verify(marker("go").width >= Theme.touchTarget * 0.8 - 1)
+        compare(model().problems.length, 0)
+        verify(findChild(map2d, "planStatistics").text.indexOf("2 maneuvers") === 0, findChild(map2d, "planStatistics").text)
+    }
+
+    function test_2_aTapAddsAGotoWhereItLandsAndADragMovesIt() {
+        mouseClick(findChild(map2d, "add-Goto"))
+        const at = map2d.screenPoint(41.1415, -8.6125)
+        mouseClick(map2d, at.x, at.y)
+        tryCompare(model().maneuvers, "length", 3)
+        const added = model().maneuvers[2]
+        compare(added.id, "goto1")
+        // Where the tap landed, to the pixel (about a metre at zoom 17).
+        fuzzyCompare(added.lat, 41.1415, 2e-5)
+        fuzzyCompare(added.lon, -8.6125, 2e-5)
+        compare(editor().selected, "goto1")
+        // By touch too.
+        const at2 = map2d.screenPoint(41.1418, -8.6100)
+        tap(at2.x, at2.y)
+        tryCompare(model().maneuvers, "length", 4)
+        // Drag the first added 60 px east.
+        const m = marker("goto1")
+        const from = centre(m)
+        const centreBefore = map2d.centerLongitude
+        mouseDrag(map2d, from.x, from.y, 60, 0) // on the map: the marker moves away under the pointer
+        compare(map2d.centerLongitude, centreBefore, "the marker moved, not the map")
+        tryVerify(() => Math.abs(model().maneuvers[2].lon - map2d.toCoordinate(from.x + 60, from.y).lon) < 2e-6, 3000,
+                  "moved to " + model().maneuvers[2].lon)
+        verify(model().canUndo)
+    }
+
+    function test_3_aDepthPastTheVehiclesRangeIsShownEverywhere() {
+        editor().selected = "go"
+        const field = findChild(map2d, "parameter:z")
+        verify(field, "the selected maneuver's form")
+        field.text = "500"
+        field.committed()
+        tryCompare(model(), "errorCount", 1)
+        const shown = findAll(map2d, "parameterProblem").filter(t => t.visible)
+        compare(shown.length, 1, "one field is marked")
+        compare(shown[0].text.indexOf("z = 500 m is outside lauv-sim-1's range"), 0, shown[0].text)
+        verify(Qt.colorEqual(findChild(map2d, "parameter:z").color, Theme.levelColor(4)))
+        verify(Qt.colorEqual(marker("go").color, Theme.levelColor(4)), "the marker is an error's")
+        verify(findAll(map2d, "problem").some(row => row.children[0].text.indexOf("'go' (Goto): z = 500 m") > 0))
+        // Saved and sent: the desk refuses it.
+        mouseClick(findChild(map2d, "savePlanButton"))
+        tryCompare(model(), "modified", false)
+        tryVerify(() => Fixtures.session.plans.missionProblems.some(p => p.indexOf("z = 500 m") >= 0), 3000)
+        // Undo, redo, undo.
+        mouseClick(findChild(map2d, "undoButton"))
+        tryCompare(model(), "errorCount", 0)
+        mouseClick(findChild(map2d, "redoButton"))
+        tryCompare(model(), "errorCount", 1)
+        mouseClick(findChild(map2d, "undoButton"))
+        tryCompare(model(), "errorCount", 0)
+    }
+
+    function test_4_rowsOverAnAreaTappedCornerByCorner() {
+        mouseClick(findChild(map2d, "areaTool"))
+        compare(editor().tool, "area")
+        const before = model().maneuvers.length
+        for (const [lat, lon] of [[41.1420, -8.6100], [41.1432, -8.6100], [41.1432, -8.6080], [41.1420, -8.6080]]) {
+            const p = map2d.screenPoint(lat, lon)
+            tap(p.x, p.y)
+        }
+        compare(editor().area.length, 4)
+        compare(model().maneuvers.length, before, "corners are not maneuvers")
+        mouseClick(findChild(map2d, "makeRows"))
+        tryCompare(model().maneuvers, "length", before + 1)
+        const rows = model().maneuvers[before]
+        compare(rows.type, "FollowPath")
+        verify(model().path.filter(p => p.maneuver === rows.id).length >= 6, "rows drawn as the vehicle will sail them")
+        compare(editor().tool, "add")
+        compare(model().errorCount, 0, model().problems.map(p => p.message).join("; "))
+    }
+
+    function test_5_aLegThroughTheNoGoAreaIsFlaggedWhereItEnters() {
+        mouseClick(findChild(map2d, "add-Goto"))
+        const west = map2d.screenPoint(41.1405, -8.6100), east = map2d.screenPoint(41.1405, -8.6080)
+        tap(west.x, west.y)
+        tap(east.x, east.y)
+        tryVerify(() => model().problems.some(p => p.message.indexOf("a leg crosses the no-go area 'rock'") > 0), 3000,
+                  model().problems.map(p => p.message).join("; "))
+        const problem = model().problems.find(p => p.kind === 4)
+        verify(Math.abs(problem.lat - 41.1405) < 1e-4 && problem.lon > -8.6100 && problem.lon < -8.6090, problem.lat + ", " + problem.lon)
+        verify(findChild(map2d, "problemMark"), "marked on the map")
+        // A tap on the problem goes there.
+        map2d.centreAt(41.1380, -8.6150)
+        mouseClick(findAll(map2d, "problem").find(row => row.children[0].text.indexOf("'rock'") > 0))
+        fuzzyCompare(map2d.centerLatitude, problem.lat, 1e-6)
+        // Saved: the file has every edit.
+        mouseClick(findChild(map2d, "savePlanButton"))
+        tryCompare(model(), "modified", false)
+        const saved = Fixtures.readFile(file)
+        verify(saved.indexOf('id="goto1"') > 0 && saved.indexOf("<FollowPath") > 0, saved)
+    }
+}
