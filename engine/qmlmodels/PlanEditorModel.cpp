@@ -139,10 +139,12 @@ void PlanEditorModel::changed()
             for (const Waypoint &w : g.points)
                 m_pathPoints.append(QVariantMap{{u"lat"_s, w.lat}, {u"lon"_s, w.lon}, {u"maneuver"_s, g.id}});
     }
+    m_maneuverList = maneuverList();
+    m_problemList = problemList();
     emit edited();
 }
 
-QVariantList PlanEditorModel::maneuvers() const
+QVariantList PlanEditorModel::maneuverList() const
 {
     QVariantList list;
     const Plan *p = plan();
@@ -161,7 +163,7 @@ QVariantList PlanEditorModel::maneuvers() const
     return list;
 }
 
-QVariantList PlanEditorModel::problems() const
+QVariantList PlanEditorModel::problemList() const
 {
     QVariantList list;
     const double none = std::numeric_limits<double>::quiet_NaN();

@@ -56,9 +56,9 @@ public:
     void setPlanId(const QString &id);
     QString vehicle() const;
     QStringList maneuverTypes() const;
-    QVariantList maneuvers() const;
+    QVariantList maneuvers() const { return m_maneuverList; }
     QVariantList path() const { return m_pathPoints; }
-    QVariantList problems() const;
+    QVariantList problems() const { return m_problemList; }
     int errorCount() const;
     QVariantMap statistics() const;
     QVariantList areas() const;
@@ -101,6 +101,8 @@ private:
     void fail(const QString &why);
     QString freshId(const QString &type) const;
     neptus::mission::Maneuver *find(const QString &id);
+    QVariantList maneuverList() const;
+    QVariantList problemList() const;
 
     QString m_path, m_planId, m_error;
     neptus::mission::Mission m_mission;
@@ -109,5 +111,5 @@ private:
     bool m_modified = false;
     neptus::mission::PlanGeometry m_geometry;
     QList<neptus::mission::PlanProblem> m_problems;
-    QVariantList m_pathPoints;
+    QVariantList m_pathPoints, m_maneuverList, m_problemList; // made once per edit, read by every view
 };

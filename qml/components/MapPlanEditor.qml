@@ -21,6 +21,10 @@ Item {
     property var area: []       // corners drawn so far: [{lat, lon}]
     property real rowSpacing: 20
 
+    // The model's lists, read once per edit (each read of a C++ list makes a new JS array).
+    readonly property var maneuverList: planModel.maneuvers
+    readonly property var problemList: planModel.problems
+
     PlanEditorModel {
         id: planModel
         objectName: "planEditorModel"
@@ -37,7 +41,7 @@ Item {
     // A tap on the map: select the maneuver under it, else add one there or
     // a corner of the area.
     function tapped(at: point): void {
-        for (const m of planModel.maneuvers) {
+        for (const m of maneuverList) {
             const p = screen(m.lat, m.lon, view)
             if (Math.hypot(p.x - at.x, p.y - at.y) <= Theme.touchTarget / 2) {
                 selected = m.id
@@ -88,15 +92,26 @@ Item {
             }
         }
     }
-    // The legs, transits included.
-    Shape {
+    // The legs, transits included, and (for a plan of more than
+    // `markerLimit` maneuvers) a dot per maneuver: one scene-graph item, not
+    // a binding per point.
+    readonly property int markerLimit: 100
+    PlanOverlayItem {
+        objectName: "planOverlay"
         anchors.fill: parent
-        ShapePath {
-            strokeColor: Theme.accent
-            strokeWidth: Math.max(2, Theme.mm(0.5))
-            fillColor: "transparent"
-            PathPolyline { path: planModel.path.map(p => editor.screen(p.lat, p.lon, editor.view)) }
-        }
+        centerLatitude: editor.map.centerLatitude
+        centerLongitude: editor.map.centerLongitude
+        zoomLevel: editor.map.zoomLevel
+        bearing: editor.map.bearing
+        path: planModel.path
+        maneuvers: editor.maneuverList.length > editor.markerLimit ? editor.maneuverList : []
+        lineColor: Theme.accent
+        lineWidth: Math.max(2, Theme.mm(0.5))
+        dotRadius: Theme.mm(1.6)
+        dotColor: Theme.surface
+        outlineColor: Theme.text
+        warningColor: Theme.levelColor(3)
+        errorColor: Theme.levelColor(4)
     }
     // The area being drawn.
     Shape {
@@ -114,7 +129,7 @@ Item {
     }
     // Problems where they are.
     Repeater {
-        model: planModel.problems.filter(p => !isNaN(p.lat))
+        model: editor.problemList.filter(p => !isNaN(p.lat))
         delegate: Text {
             required property var modelData
             readonly property point at: editor.screen(modelData.lat, modelData.lon, editor.view)
@@ -127,9 +142,12 @@ Item {
             font.bold: true
         }
     }
-    // A marker per maneuver: its number, coloured by its worst problem; drag to move.
+    // A marker per maneuver: its number, coloured by its worst problem; drag
+    // to move. A bigger plan has dots, and a marker for the selected one (a
+    // tap selects the maneuver under it either way).
     Repeater {
-        model: planModel.maneuvers
+        model: editor.maneuverList.length > editor.markerLimit ? editor.maneuverList.filter(m => m.id === editor.selected)
+                                                                : editor.maneuverList
         delegate: Rectangle {
             id: marker
             required property var modelData
@@ -289,7 +307,7 @@ Item {
                 }
                 // Problems, worst first: a tap goes there.
                 Repeater {
-                    model: planModel.problems
+                    model: editor.problemList
                     delegate: Rectangle {
                         required property var modelData
                         objectName: "problem"
@@ -325,7 +343,7 @@ Item {
                     font.bold: true
                 }
                 Repeater {
-                    model: editor.selected !== "" && planModel.maneuvers.length >= 0 ? planModel.parametersOf(editor.selected) : []
+                    model: editor.selected !== "" && editor.maneuverList.length >= 0 ? planModel.parametersOf(editor.selected) : []
                     delegate: Column {
                         id: parameter
                         required property var modelData

@@ -111,7 +111,13 @@ int main(int argc, char **argv)
     neptus::test::measureFrames(window, smoke ? 2 : 20, pan);
     print("editor open, panning", neptus::test::measureFrames(window, frames, pan));
 
-    // The middle maneuver's marker (delegates are the editor's visual children).
+    // The middle maneuver, selected (a big plan has dots, and a draggable
+    // marker for the selected maneuver), and its marker.
+    QObject *planEditor = map->property("planEditor").value<QObject *>();
+    if (!planEditor)
+        return 1;
+    planEditor->setProperty("selected", QStringLiteral("m%1").arg(count / 2));
+    neptus::test::measureFrames(window, 2, [] {});
     QQuickItem *marker = nullptr;
     const QString wanted = QStringLiteral("maneuver:m%1").arg(count / 2);
     std::function<void(QQuickItem *)> look = [&](QQuickItem *item) {
