@@ -20,6 +20,8 @@ Item {
     property string selected: ""
     property var area: []       // corners drawn so far: [{lat, lon}]
     property real rowSpacing: 20
+    property real rowAngle: 0       // the rows' direction, degrees from north
+    property bool crossHatch: false // the rows again at right angles
 
     // The model's lists, read once per edit (each read of a C++ list makes a new JS array).
     readonly property var maneuverList: planModel.maneuvers
@@ -58,7 +60,7 @@ Item {
         }
     }
     function makeRows(): void {
-        const id = planModel.addRows(area, rowSpacing, 0, rowSpacing / 2, false)
+        const id = planModel.addRows(area, rowSpacing, rowAngle, rowSpacing / 2, crossHatch)
         if (id !== "") {
             selected = id
             area = []
@@ -277,11 +279,13 @@ Item {
                         onClicked: { editor.tool = "area"; editor.area = [] }
                     }
                 }
-                Row {
+                Flow {
                     visible: editor.tool === "area"
+                    width: parent.width
                     spacing: Theme.spacing / 2
                     Text {
-                        anchors.verticalCenter: parent.verticalCenter
+                        height: Theme.touchTarget
+                        verticalAlignment: Text.AlignVCenter
                         text: qsTr("%n corner(s), rows", "", editor.area.length)
                         color: Theme.text
                         font.pixelSize: Theme.smallFontPixelSize
@@ -293,7 +297,22 @@ Item {
                         validator: DoubleValidator { bottom: 0.5; top: 10000 }
                         onCommitted: editor.rowSpacing = Number(text)
                     }
-                    Text { anchors.verticalCenter: parent.verticalCenter; text: qsTr("m apart"); color: Theme.text; font.pixelSize: Theme.smallFontPixelSize }
+                    Text { height: Theme.touchTarget; verticalAlignment: Text.AlignVCenter; text: qsTr("m apart, at"); color: Theme.text; font.pixelSize: Theme.smallFontPixelSize }
+                    FormField {
+                        objectName: "rowAngle"
+                        width: Theme.mm(14)
+                        text: editor.rowAngle
+                        validator: DoubleValidator { bottom: -360; top: 360 }
+                        onCommitted: editor.rowAngle = Number(text)
+                    }
+                    Text { height: Theme.touchTarget; verticalAlignment: Text.AlignVCenter; text: qsTr("° from north"); color: Theme.text; font.pixelSize: Theme.smallFontPixelSize }
+                    TouchButton {
+                        objectName: "crossHatch"
+                        text: qsTr("✚ cross-hatch")
+                        toolTip: qsTr("The rows again at right angles")
+                        highlighted: editor.crossHatch
+                        onClicked: editor.crossHatch = !editor.crossHatch
+                    }
                     TouchButton { objectName: "makeRows"; text: qsTr("Rows"); enabled: editor.area.length >= 3; onClicked: editor.makeRows() }
                 }
                 Text {

@@ -145,8 +145,27 @@ TestCase {
         tryCompare(model().maneuvers, "length", before + 1)
         const rows = model().maneuvers[before]
         compare(rows.type, "FollowPath")
-        verify(model().path.filter(p => p.maneuver === rows.id).length >= 6, "rows drawn as the vehicle will sail them")
+        const sailed = model().path.filter(p => p.maneuver === rows.id).length
+        verify(sailed >= 6, "rows drawn as the vehicle will sail them")
         compare(editor().tool, "add")
+        // The same area at 45°, cross-hatched: the rows twice, crossing.
+        mouseClick(findChild(map2d, "areaTool"))
+        for (const [lat, lon] of [[41.1420, -8.6100], [41.1432, -8.6100], [41.1432, -8.6080], [41.1420, -8.6080]]) {
+            const p = map2d.screenPoint(lat, lon)
+            tap(p.x, p.y)
+        }
+        const angle = findChild(map2d, "rowAngle")
+        angle.text = "45"
+        angle.committed()
+        mouseClick(findChild(map2d, "crossHatch"))
+        verify(editor().crossHatch && editor().rowAngle === 45)
+        mouseClick(findChild(map2d, "makeRows"))
+        tryCompare(model().maneuvers, "length", before + 2)
+        const hatched = model().maneuvers[before + 1]
+        const points = model().path.filter(p => p.maneuver === hatched.id)
+        verify(points.length > sailed, points.length + " points, " + sailed + " without the cross-hatch")
+        mouseClick(findChild(map2d, "undoButton"))
+        tryCompare(model().maneuvers, "length", before + 1)
         compare(model().errorCount, 0, model().problems.map(p => p.message).join("; "))
     }
 
