@@ -135,9 +135,14 @@ void PlanEditorModel::changed()
         const VehicleDefinition *v = m_vehicles.find(p->vehicle);
         m_geometry = planGeometry(*p, v ? v->speeds() : SpeedModel{});
         m_problems = checkPlan(*p, m_mission, m_geometry, v);
-        for (const ManeuverGeometry &g : m_geometry.maneuvers)
-            for (const Waypoint &w : g.points)
-                m_pathPoints.append(QVariantMap{{u"lat"_s, w.lat}, {u"lon"_s, w.lon}, {u"maneuver"_s, g.id}});
+        double along = 0;
+        for (const ManeuverGeometry &g : m_geometry.maneuvers) {
+            for (const Waypoint &w : g.points) {
+                along += w.leg;
+                m_pathPoints.append(QVariantMap{{u"lat"_s, w.lat}, {u"lon"_s, w.lon}, {u"maneuver"_s, g.id},
+                                                {u"distance"_s, along}, {u"z"_s, w.z}, {u"zUnits"_s, w.zUnits}});
+            }
+        }
     }
     m_maneuverList = maneuverList();
     m_problemList = problemList();

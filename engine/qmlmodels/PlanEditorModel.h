@@ -30,7 +30,8 @@ class PlanEditorModel : public QObject
     Q_PROPERTY(QStringList maneuverTypes READ maneuverTypes NOTIFY planChanged)
     // [{id, type, lat, lon, index, severity: "error" | "warning" | ""}], in plan order.
     Q_PROPERTY(QVariantList maneuvers READ maneuvers NOTIFY edited)
-    // Every point the vehicle will pass, transits included, in execution order: [{lat, lon, maneuver}].
+    // Every point the vehicle will pass, transits included, in execution
+    // order: [{lat, lon, maneuver, distance (m along the plan), z, zUnits}].
     Q_PROPERTY(QVariantList path READ path NOTIFY edited)
     // [{severity: "error" | "warning", kind, maneuver, message, lat, lon (NaN: none)}], worst first.
     Q_PROPERTY(QVariantList problems READ problems NOTIFY edited)

@@ -239,6 +239,36 @@ Item {
                     color: Theme.textDim
                     font.pixelSize: Theme.smallFontPixelSize
                 }
+                // The depth profile along the plan (points planned in DEPTH).
+                Item {
+                    id: profile
+                    objectName: "depthProfile"
+                    readonly property var points: editor.model.path.filter(p => p.zUnits === "DEPTH")
+                    readonly property real length: Math.max(1, points.length ? points[points.length - 1].distance : 1)
+                    readonly property real deepest: Math.max(1, ...points.map(p => p.z))
+                    width: parent.width
+                    height: Theme.mm(12)
+                    visible: points.length >= 2
+                    Rectangle { anchors.fill: parent; color: Theme.water; radius: Theme.radius }
+                    Shape {
+                        anchors.fill: parent
+                        ShapePath {
+                            strokeColor: Theme.accent
+                            strokeWidth: 2
+                            fillColor: "transparent"
+                            PathPolyline {
+                                path: profile.points.map(p => Qt.point(p.distance / profile.length * profile.width,
+                                                                          Math.max(0, p.z) / profile.deepest * (profile.height - 4) + 2))
+                            }
+                        }
+                    }
+                    Text {
+                        anchors { right: parent.right; bottom: parent.bottom; margins: 2 }
+                        text: qsTr("depth 0–%1 m").arg(profile.deepest.toFixed(1))
+                        color: Theme.textDim
+                        font.pixelSize: Theme.smallFontPixelSize
+                    }
+                }
                 Flow {
                     width: parent.width
                     spacing: Theme.spacing / 2

@@ -77,6 +77,8 @@ TestCase {
         verify(marker("go").width >= Theme.touchTarget * 0.8 - 1)
         compare(model().problems.length, 0)
         verify(findChild(map2d, "planStatistics").text.indexOf("2 maneuvers") === 0, findChild(map2d, "planStatistics").text)
+        const profile = findChild(map2d, "depthProfile")
+        verify(profile.visible && profile.points.length === 2 && profile.deepest === 2, "the depth profile: 2 m, then the surface")
     }
 
     function test_2_aTapAddsAGotoWhereItLandsAndADragMovesIt() {

@@ -45,6 +45,15 @@ TEST(PlanEditor, OpensAMissionAtItsFirstPlanWithItsVehiclesManeuvers)
     EXPECT_EQ(editor.maneuvers().size(), 4);
     EXPECT_EQ(editor.problems().size(), 0);
     EXPECT_GT(editor.statistics().value(u"length"_s).toDouble(), 500);
+    // The path carries the distance along its points and the depth, for the
+    // profile (the plan's length also counts a timed loiter's laps).
+    double along = 0;
+    for (const QVariant &p : editor.path()) {
+        EXPECT_GE(p.toMap().value(u"distance"_s).toDouble(), along);
+        along = p.toMap().value(u"distance"_s).toDouble();
+    }
+    EXPECT_NEAR(along, editor.statistics().value(u"length"_s).toDouble(), 0.05 * along);
+    EXPECT_EQ(editor.path().last().toMap().value(u"zUnits"_s), u"DEPTH"_s);
     EXPECT_FALSE(editor.canUndo());
 
     PlanEditorModel missing;
