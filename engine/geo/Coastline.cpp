@@ -1,4 +1,5 @@
 #include "Coastline.h"
+#include "Polygon.h"
 
 #include <QDir>
 #include <QFileInfo>
@@ -238,14 +239,10 @@ size_t CoastArea::pointCount() const
 
 bool CoastArea::isLand(double lat, double lon) const
 {
+    // Even-odd over all the rings together: a lake's ring inside land's undoes it.
     bool inside = false;
-    for (const auto &ring : rings) {
-        for (size_t i = 1; i < ring.size(); ++i) {
-            const LonLat &a = ring[i - 1], &b = ring[i];
-            if ((a.lat > lat) != (b.lat > lat) && lon < a.lon + (lat - a.lat) * (b.lon - a.lon) / (b.lat - a.lat))
-                inside = !inside;
-        }
-    }
+    for (const auto &ring : rings)
+        inside ^= insideRing(ring, lon, lat, [](const LonLat &p) { return std::pair(p.lon, p.lat); });
     return inside;
 }
 
@@ -255,7 +252,19 @@ QString Coastline::defaultDirectory()
     return set.isEmpty() ? QStringLiteral("/usr/share/gmt-gshhg") : set;
 }
 
-Coastline::Coastline(QString directory) : m_directory(std::move(directory)) {}
+Coastline::Coastline(QString directory) : m_directory(std::move(directory))
+{
+    // Looked for once: the map asks which resolution to use on every frame it moves.
+    for (char r : resolutions) {
+        if (QFileInfo::exists(filePath(r)))
+            m_available += QLatin1Char(r);
+    }
+}
+
+QString Coastline::filePath(char resolution) const
+{
+    return QDir(m_directory).filePath(QStringLiteral("binned_GSHHS_%1.nc").arg(QLatin1Char(resolution)));
+}
 
 Coastline::~Coastline()
 {
@@ -264,22 +273,12 @@ Coastline::~Coastline()
         f.reset();
 }
 
-QString Coastline::available() const
-{
-    QString found;
-    for (char r : resolutions) {
-        if (QFileInfo::exists(QDir(m_directory).filePath(QStringLiteral("binned_GSHHS_%1.nc").arg(QLatin1Char(r)))))
-            found += QLatin1Char(r);
-    }
-    return found;
-}
-
 char Coastline::resolutionFor(double metresPerPixel) const
 {
     // The coarsest whose points are at most three pixels apart: finer only
     // adds points the same pixels draw.
     static constexpr std::array<double, 5> spacing{25000, 5000, 1000, 200, 40};
-    const QString have = available();
+    const QString &have = m_available;
     char best = 0;
     for (size_t i = 0; i < resolutions.size(); ++i) {
         if (!have.contains(QLatin1Char(resolutions[i])))
@@ -303,7 +302,7 @@ CoastArea Coastline::read(char resolution, double west, double south, double eas
         auto &file = m_files[size_t(index)];
         if (!file) {
             file = std::make_unique<File>();
-            file->path = QDir(m_directory).filePath(QStringLiteral("binned_GSHHS_%1.nc").arg(QLatin1Char(resolution)));
+            file->path = filePath(resolution);
             if (!QFileInfo::exists(file->path))
                 file->error = QStringLiteral("%1: no such file (Debian's gmt-gshhg packages install it)").arg(file->path);
             else {

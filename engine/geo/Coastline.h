@@ -52,8 +52,8 @@ public:
     Coastline(const Coastline &) = delete;
     Coastline &operator=(const Coastline &) = delete;
 
-    // The resolutions whose file is there, coarsest first.
-    QString available() const;
+    // The resolutions whose file was there when made, coarsest first.
+    QString available() const { return m_available; }
     // The resolution for a map showing `metresPerPixel` (the coarsest with
     // points at most three pixels apart), among those available; 0 when none is.
     char resolutionFor(double metresPerPixel) const;
@@ -66,7 +66,9 @@ public:
 
 private:
     struct File;
+    QString filePath(char resolution) const;
     QString m_directory;
+    QString m_available;
     mutable std::array<std::unique_ptr<File>, 5> m_files;
 };
 

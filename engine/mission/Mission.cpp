@@ -1,10 +1,23 @@
 #include "mission/Mission.h"
 
+#include "geo/Geodesy.h"
+
 #include <QSet>
 
 #include <charconv>
 
 namespace neptus::mission {
+
+std::optional<GeoPosition> Mission::position(const Feature::Point &point) const
+{
+    if (point.lat && point.lon)
+        return GeoPosition{*point.lat, *point.lon, 0};
+    if (!point.north && !point.east)
+        return std::nullopt;
+    const geo::Geodetic at = geo::fromNed({point.north.value_or(0), point.east.value_or(0), 0},
+                                          {geo::radians(home.lat), geo::radians(home.lon), 0});
+    return GeoPosition{geo::degrees(at.lat), geo::degrees(at.lon), 0};
+}
 
 QString formatNumber(double value)
 {

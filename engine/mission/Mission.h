@@ -179,6 +179,9 @@ struct Mission
     QList<Checklist> checklists;
 
     const Plan *plan(const QString &id) const;
+    // Where a feature's point is (degrees): as given in lat/lon, or placed
+    // north/east metres from home; none when it gives neither.
+    std::optional<GeoPosition> position(const Feature::Point &point) const;
     friend bool operator==(const Mission &, const Mission &) = default;
 };
 

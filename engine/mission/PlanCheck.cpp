@@ -1,6 +1,7 @@
 #include "PlanCheck.h"
 
 #include "geo/Geodesy.h"
+#include "geo/Polygon.h"
 #include "mission/Vehicle.h"
 
 #include <QHash>
@@ -46,15 +47,7 @@ struct Area
 
     bool contains(const Vec &p) const
     {
-        if (!near(p, p))
-            return false;
-        bool inside = false;
-        for (size_t i = 0, j = outline.size() - 1; i < outline.size(); j = i++) {
-            const Vec &a = outline[i], &b = outline[j];
-            if ((a.y() > p.y()) != (b.y() > p.y()) && p.x() < a.x() + (p.y() - a.y()) * (b.x() - a.x()) / (b.y() - a.y()))
-                inside = !inside;
-        }
-        return inside;
+        return near(p, p) && geo::insideRing(outline, p.x(), p.y(), [](const Vec &v) { return std::pair(v.x(), v.y()); });
     }
     // Where the segment first crosses the outline, as a fraction along it.
     std::optional<double> firstCrossing(const Vec &p, const Vec &q) const
@@ -99,28 +92,14 @@ std::optional<double> number(const Feature &f, const QString &name)
 struct Plane
 {
     geo::Geodetic origin;
-    geo::Geodetic home;
     Eigen::Vector3d originEcef;
     Eigen::Matrix3d rotation;
 
-    Plane(const geo::Geodetic &origin, const geo::Geodetic &home)
-        : origin(origin), home(home), originEcef(geo::toEcef(origin)), rotation(geo::ecefToNed(origin))
-    {
-    }
+    explicit Plane(const geo::Geodetic &origin) : origin(origin), originEcef(geo::toEcef(origin)), rotation(geo::ecefToNed(origin)) {}
     Vec toPlane(double lat, double lon) const
     {
         const Eigen::Vector3d ned = rotation * (geo::toEcef({geo::radians(lat), geo::radians(lon), 0}) - originEcef);
         return {ned.x(), ned.y()};
-    }
-    std::optional<Vec> toPlane(const Feature::Point &p) const
-    {
-        if (p.lat && p.lon)
-            return toPlane(*p.lat, *p.lon);
-        if (p.north || p.east) {
-            const geo::Geodetic g = geo::fromNed({p.north.value_or(0), p.east.value_or(0), 0}, home);
-            return toPlane(geo::degrees(g.lat), geo::degrees(g.lon));
-        }
-        return std::nullopt;
     }
     std::pair<double, double> toGeo(const Vec &v) const
     {
@@ -138,25 +117,8 @@ std::vector<Area> areas(const Mission &mission, const QString &role, const Plane
             if (f.attributes.value(u"role"_s, u"area"_s) != role)
                 continue;
             Area a{f.id, f.name, {}, number(f, u"z-min"_s), number(f, u"z-max"_s), f.attributes.value(u"z-units"_s)};
-            if (f.kind == u"polygon") {
-                for (const Feature::Point &p : f.points) {
-                    if (const auto v = plane.toPlane(p))
-                        a.outline.push_back(*v);
-                }
-            } else if (const auto centre = plane.toPlane(f.position)) {
-                // Circles and solids as polygons: 64 sides for round ones (within 0.12 % of the radius).
-                const bool round = f.kind == u"circle" || f.kind == u"cylinder" || f.kind == u"ellipsoid";
-                const double halfEast = f.kind == u"circle" ? number(f, u"radius"_s).value_or(0) : number(f, u"width"_s).value_or(0) / 2;
-                const double halfNorth = f.kind == u"circle" ? halfEast : number(f, u"length"_s).value_or(0) / 2;
-                const double turn = geo::radians(number(f, u"bearing"_s).value_or(0));
-                const int sides = round ? 64 : 4;
-                for (int i = 0; i < sides; ++i) {
-                    const double angle = round ? 2 * std::numbers::pi * i / sides : std::numbers::pi / 4 + std::numbers::pi / 2 * i;
-                    const double n = (round ? std::cos(angle) : (i == 0 || i == 3 ? 1 : -1)) * halfNorth;
-                    const double e = (round ? std::sin(angle) : (i < 2 ? 1 : -1)) * halfEast;
-                    a.outline.push_back(*centre + Vec(n * std::cos(turn) - e * std::sin(turn), n * std::sin(turn) + e * std::cos(turn)));
-                }
-            }
+            for (const GeoPosition &p : areaOutline(f, mission))
+                a.outline.push_back(plane.toPlane(p.lat, p.lon));
             if (a.outline.size() >= 3) {
                 a.bound();
                 out.push_back(std::move(a));
@@ -165,6 +127,45 @@ std::vector<Area> areas(const Mission &mission, const QString &role, const Plane
     }
     return out;
 }
+
+} // namespace
+
+QList<GeoPosition> areaOutline(const Feature &f, const Mission &mission)
+{
+    QList<GeoPosition> outline;
+    if (f.kind == u"polygon") {
+        for (const Feature::Point &p : f.points)
+            if (const auto at = mission.position(p))
+                outline.append(*at);
+        return outline;
+    }
+    const bool round = f.kind == u"circle" || f.kind == u"cylinder" || f.kind == u"ellipsoid";
+    const auto centre = mission.position(f.position);
+    if (!centre || !(round || f.kind == u"box"))
+        return outline;
+    // Metres east and north of the centre, before the turn by bearing.
+    const double halfEast = f.kind == u"circle" ? number(f, u"radius"_s).value_or(0) : number(f, u"width"_s).value_or(0) / 2;
+    const double halfNorth = f.kind == u"circle" ? halfEast : number(f, u"length"_s).value_or(0) / 2;
+    std::vector<Vec> corners; // (north, east)
+    if (round) {
+        for (int i = 0; i < 64; ++i) { // within 0.12 % of the radius
+            const double a = 2 * std::numbers::pi * i / 64;
+            corners.emplace_back(std::cos(a) * halfNorth, std::sin(a) * halfEast);
+        }
+    } else {
+        corners = {{halfNorth, halfEast}, {-halfNorth, halfEast}, {-halfNorth, -halfEast}, {halfNorth, -halfEast}};
+    }
+    const double turn = geo::radians(number(f, u"bearing"_s).value_or(0));
+    const geo::Geodetic origin{geo::radians(centre->lat), geo::radians(centre->lon), 0};
+    for (const Vec &c : corners) {
+        const double n = c.x() * std::cos(turn) - c.y() * std::sin(turn), e = c.x() * std::sin(turn) + c.y() * std::cos(turn);
+        const geo::Geodetic at = geo::fromNed({n, e, 0}, origin);
+        outline.append({geo::degrees(at.lat), geo::degrees(at.lon), 0});
+    }
+    return outline;
+}
+
+namespace {
 
 struct Leg
 {
@@ -313,9 +314,8 @@ QList<PlanProblem> checkPlan(const Plan &plan, const Mission &mission, const Pla
             for (const QString &what : vehicle->checkManeuver(m))
                 add(Severity::Error, Kind::Vehicle, m.id, u"'%1' (%2): %3"_s.arg(m.id, m.type, what));
         }
-        if (vehicle->limits.endurance && geometry.duration && *geometry.duration > *vehicle->limits.endurance)
-            add(Severity::Error, Kind::Endurance, {}, u"plan '%1' lasts %2 min, past %3's endurance of %4 min"_s.arg(plan.id)
-                    .arg(*geometry.duration / 60, 0, 'f', 0).arg(vehicle->id).arg(*vehicle->limits.endurance / 60, 0, 'f', 0));
+        if (const QString past = vehicle->checkEndurance(plan.id, geometry); !past.isEmpty())
+            add(Severity::Error, Kind::Endurance, {}, past);
     }
 
     // Where it goes: every leg, the transits between maneuvers included,
@@ -328,8 +328,7 @@ QList<PlanProblem> checkPlan(const Plan &plan, const Mission &mission, const Pla
         }
     }
     if (first) {
-        const Plane plane({geo::radians(first->lat), geo::radians(first->lon), 0},
-                          {geo::radians(mission.home.lat), geo::radians(mission.home.lon), 0});
+        const Plane plane({geo::radians(first->lat), geo::radians(first->lon), 0});
         const std::vector<Area> noGo = areas(mission, u"no-go"_s, plane), operating = areas(mission, u"operating-area"_s, plane);
         if (!noGo.empty() || !operating.empty()) {
             std::vector<Leg> legs;

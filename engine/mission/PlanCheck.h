@@ -42,6 +42,11 @@ struct PlanProblem
     friend bool operator==(const PlanProblem &, const PlanProblem &) = default;
 };
 
+// An area feature's outline (degrees): a polygon's corners; circles,
+// cylinders and ellipsoids as 64-sided polygons, boxes as their rectangle
+// (turned by bearing); empty for a feature that has no area (a mark, a path).
+QList<GeoPosition> areaOutline(const Feature &feature, const Mission &mission);
+
 // Every problem of `plan` in `mission`, worst first then in plan order.
 // `geometry` is the plan's (planGeometry with the vehicle's speeds);
 // `vehicle` may be null (then only the graph and the areas are checked).

@@ -130,13 +130,18 @@ Errors VehicleDefinition::check(const Plan &plan, const QString &planFile) const
             errors.append(XmlError{planFile, m.line.value, 0, u"plan '%1', maneuver '%2' (%3): %4"_s.arg(plan.id, m.id, m.type, what)});
     }
     if (limits.endurance) {
-        const auto geometry = planGeometry(plan, speeds());
-        if (geometry.duration && *geometry.duration > *limits.endurance)
-            errors.append(XmlError{planFile, plan.line.value, 0,
-                                   u"plan '%1' lasts %2 min, past %3's endurance of %4 min"_s.arg(plan.id)
-                                       .arg(*geometry.duration / 60, 0, 'f', 0).arg(id).arg(*limits.endurance / 60, 0, 'f', 0)});
+        if (const QString past = checkEndurance(plan.id, planGeometry(plan, speeds())); !past.isEmpty())
+            errors.append(XmlError{planFile, plan.line.value, 0, past});
     }
     return errors;
+}
+
+QString VehicleDefinition::checkEndurance(const QString &planId, const PlanGeometry &geometry) const
+{
+    if (!limits.endurance || !geometry.duration || *geometry.duration <= *limits.endurance)
+        return {};
+    return u"plan '%1' lasts %2 min, past %3's endurance of %4 min"_s.arg(planId)
+        .arg(*geometry.duration / 60, 0, 'f', 0).arg(id).arg(*limits.endurance / 60, 0, 'f', 0);
 }
 
 namespace {

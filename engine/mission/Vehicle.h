@@ -98,6 +98,8 @@ struct VehicleDefinition
     Errors check(const Plan &plan, const QString &planFile) const;
     // What of `check` is about one maneuver, each said for people.
     QStringList checkManeuver(const Maneuver &maneuver) const;
+    // "" or why a plan of this geometry is longer than this vehicle can go.
+    QString checkEndurance(const QString &planId, const PlanGeometry &geometry) const;
 
     friend bool operator==(const VehicleDefinition &, const VehicleDefinition &) = default;
 };

@@ -223,15 +223,12 @@ QString Supervisor::scriptName(int exit) const
 std::map<QString, geo::Geodetic> Supervisor::marks() const
 {
     std::map<QString, geo::Geodetic> marks;
-    const geo::Geodetic home{geo::radians(m_mission.home.lat), geo::radians(m_mission.home.lon), 0};
     for (const mission::Map &map : m_mission.maps) {
         for (const mission::Feature &f : map.features) {
-            const auto &p = f.position;
-            if (f.kind != u"mark" || !((p.lat && p.lon) || (p.north && p.east)))
+            if (f.kind != u"mark")
                 continue;
-            // Those given from home placed from it.
-            marks[f.id] = p.lat && p.lon ? geo::Geodetic{geo::radians(*p.lat), geo::radians(*p.lon), 0}
-                                         : geo::fromNed(Eigen::Vector3d(*p.north, *p.east, 0), home);
+            if (const auto at = m_mission.position(f.position)) // those given from home placed from it
+                marks[f.id] = geo::Geodetic{geo::radians(at->lat), geo::radians(at->lon), 0};
         }
     }
     return marks;

@@ -3,7 +3,6 @@
 #include "core/SafeFile.h"
 #include "mission/MissionXml.h"
 #include "mission/Patterns.h"
-#include "geo/Geodesy.h"
 
 #include <QFileInfo>
 
@@ -197,32 +196,11 @@ QVariantMap PlanEditorModel::statistics() const
 QVariantList PlanEditorModel::areas() const
 {
     QVariantList list;
-    const neptus::geo::Geodetic home{neptus::geo::radians(m_mission.home.lat), neptus::geo::radians(m_mission.home.lon), 0};
-    const auto geodetic = [&](const Feature::Point &p) -> std::optional<neptus::geo::Geodetic> {
-        if (p.lat && p.lon)
-            return neptus::geo::Geodetic{neptus::geo::radians(*p.lat), neptus::geo::radians(*p.lon), 0};
-        if (p.north || p.east)
-            return neptus::geo::fromNed({p.north.value_or(0), p.east.value_or(0), 0}, home);
-        return std::nullopt;
-    };
-    const auto point = [](const neptus::geo::Geodetic &g) {
-        return QVariantMap{{u"lat"_s, neptus::geo::degrees(g.lat)}, {u"lon"_s, neptus::geo::degrees(g.lon)}};
-    };
     for (const Map &map : m_mission.maps) {
         for (const Feature &f : map.features) {
             QVariantList points;
-            if (f.kind == u"polygon"_s) {
-                for (const Feature::Point &p : f.points)
-                    if (const auto g = geodetic(p))
-                        points.append(point(*g));
-            } else if (f.kind == u"circle"_s) {
-                const auto centre = geodetic(f.position);
-                const double radius = f.attributes.value(u"radius"_s).toDouble();
-                for (int i = 0; centre && radius > 0 && i < 48; ++i) {
-                    const double a = 2 * M_PI * i / 48;
-                    points.append(point(neptus::geo::fromNed({radius * std::cos(a), radius * std::sin(a), 0}, *centre)));
-                }
-            }
+            for (const GeoPosition &p : areaOutline(f, m_mission))
+                points.append(QVariantMap{{u"lat"_s, p.lat}, {u"lon"_s, p.lon}});
             if (points.size() >= 3)
                 list.append(QVariantMap{{u"id"_s, f.id}, {u"name"_s, f.name}, {u"role"_s, f.attributes.value(u"role"_s, u"area"_s)},
                                         {u"points"_s, points}});

@@ -39,7 +39,7 @@ class PlanEditorModel : public QObject
     // {maneuvers, length (m), duration (s, -1: never ends), maxDepth (m, -1: none)}.
     Q_PROPERTY(QVariantMap statistics READ statistics NOTIFY edited)
     // The mission's areas, to draw under the plan: [{id, name, role, points: [{lat, lon}]}]
-    // (polygons as drawn, circles as 48-sided polygons).
+    // (mission::areaOutline: polygons, circles, boxes, cylinders, ellipsoids).
     Q_PROPERTY(QVariantList areas READ areas NOTIFY missionChanged)
     Q_PROPERTY(bool modified READ modified NOTIFY edited)
     Q_PROPERTY(bool canUndo READ canUndo NOTIFY edited)

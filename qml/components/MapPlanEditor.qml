@@ -33,18 +33,11 @@ Item {
         missionPath: Session.session ? Session.session.plans.missionPath : ""
     }
 
-    // Where positions are drawn: read with the view's values, so that every
-    // binding using it follows the map.
-    function screen(lat: real, lon: real, view: var): point {
-        return Geo.project(lat, lon, view[0], view[1], view[2], view[3], view[4], view[5])
-    }
-    readonly property var view: [map.centerLatitude, map.centerLongitude, map.zoomLevel, map.bearing, map.width, map.height]
-
     // A tap on the map: select the maneuver under it, else add one there or
     // a corner of the area.
     function tapped(at: point): void {
         for (const m of maneuverList) {
-            const p = screen(m.lat, m.lon, view)
+            const p = map.screenPoint(m.lat, m.lon)
             if (Math.hypot(p.x - at.x, p.y - at.y) <= Theme.touchTarget / 2) {
                 selected = m.id
                 return
@@ -89,7 +82,7 @@ Item {
                 strokeStyle: areaShape.noGo ? ShapePath.SolidLine : ShapePath.DashLine
                 fillColor: areaShape.noGo ? Qt.alpha(Theme.levelColor(4), 0.25) : "transparent"
                 PathPolyline {
-                    path: areaShape.modelData.points.concat([areaShape.modelData.points[0]]).map(p => editor.screen(p.lat, p.lon, editor.view))
+                    path: areaShape.modelData.points.concat([areaShape.modelData.points[0]]).map(p => editor.map.screenPoint(p.lat, p.lon))
                 }
             }
         }
@@ -125,7 +118,7 @@ Item {
             strokeStyle: ShapePath.DashLine
             fillColor: Qt.alpha(Theme.levelColor(3), 0.15)
             PathPolyline {
-                path: editor.area.concat(editor.area.length > 2 ? [editor.area[0]] : []).map(p => editor.screen(p.lat, p.lon, editor.view))
+                path: editor.area.concat(editor.area.length > 2 ? [editor.area[0]] : []).map(p => editor.map.screenPoint(p.lat, p.lon))
             }
         }
     }
@@ -134,7 +127,7 @@ Item {
         model: editor.problemList.filter(p => !isNaN(p.lat))
         delegate: Text {
             required property var modelData
-            readonly property point at: editor.screen(modelData.lat, modelData.lon, editor.view)
+            readonly property point at: editor.map.screenPoint(modelData.lat, modelData.lon)
             objectName: "problemMark"
             x: at.x - width / 2
             y: at.y - height - Theme.touchTarget / 2
@@ -153,7 +146,7 @@ Item {
         delegate: Rectangle {
             id: marker
             required property var modelData
-            readonly property point at: editor.screen(modelData.lat, modelData.lon, editor.view)
+            readonly property point at: editor.map.screenPoint(modelData.lat, modelData.lon)
             objectName: "maneuver:" + modelData.id
             width: Theme.touchTarget * 0.8
             height: width

@@ -1,7 +1,6 @@
 #include "CoastlineItem.h"
 
 #include <QHash>
-#include <QSGFlatColorMaterial>
 #include <QSGGeometryNode>
 #include <QSGTransformNode>
 #include <QtConcurrent/QtConcurrentRun>
@@ -223,39 +222,16 @@ void CoastlineItem::finished()
 QSGNode *CoastlineItem::updatePaintNode(QSGNode *old, UpdatePaintNodeData *)
 {
     auto *root = static_cast<QSGTransformNode *>(old);
-    QSGGeometryNode *lines = nullptr;
     if (!root) {
         root = new QSGTransformNode;
-        lines = new QSGGeometryNode;
-        auto *geometry = new QSGGeometry(QSGGeometry::defaultAttributes_Point2D(), 0);
-        geometry->setDrawingMode(QSGGeometry::DrawLines);
-        lines->setGeometry(geometry);
-        lines->setFlag(QSGNode::OwnsGeometry);
-        lines->setMaterial(new QSGFlatColorMaterial);
-        lines->setFlag(QSGNode::OwnsMaterial);
-        root->appendChildNode(lines);
         m_shoreChanged = true;
-    } else {
-        lines = static_cast<QSGGeometryNode *>(root->firstChild());
     }
-    root->setMatrix(m_transform);
-    QSGGeometry *geometry = lines->geometry();
-    if (m_shoreChanged) {
-        geometry->allocate(int(m_shoreLines.size()));
-        auto *v = geometry->vertexDataAsPoint2D();
-        for (size_t i = 0; i < m_shoreLines.size(); ++i)
-            v[i].set(float(m_shoreLines[i].x()), float(m_shoreLines[i].y()));
-        lines->markDirty(QSGNode::DirtyGeometry);
+    root->setMatrix(m_transform); // moving the view moves the shore: no new geometry
+    QSGGeometryNode *lines = flatNode(root, 0, QSGGeometry::DrawLines);
+    if (m_shoreChanged || lines->geometry()->lineWidth() != float(m_shoreWidth)) {
+        setNodePoints(lines, m_shoreLines, m_shoreWidth);
         m_shoreChanged = false;
     }
-    if (geometry->lineWidth() != float(m_shoreWidth)) {
-        geometry->setLineWidth(float(m_shoreWidth));
-        lines->markDirty(QSGNode::DirtyGeometry);
-    }
-    auto *material = static_cast<QSGFlatColorMaterial *>(lines->material());
-    if (material->color() != m_shoreColor) {
-        material->setColor(m_shoreColor);
-        lines->markDirty(QSGNode::DirtyMaterial);
-    }
+    setNodeColor(lines, m_shoreColor);
     return root;
 }

@@ -1,6 +1,5 @@
 #include "MapGridItem.h"
 
-#include <QSGFlatColorMaterial>
 #include <QSGGeometryNode>
 
 #include <cmath>
@@ -12,34 +11,6 @@ namespace {
 
 constexpr double pixelsBetweenLines = 120;
 constexpr int maxLines = 240;
-
-QSGGeometryNode *linesNode(QSGNode *parent, QSGGeometryNode *node, const std::vector<QPointF> &points, const QColor &color,
-                           double width)
-{
-    if (!node) {
-        node = new QSGGeometryNode;
-        auto *geometry = new QSGGeometry(QSGGeometry::defaultAttributes_Point2D(), 0);
-        geometry->setDrawingMode(QSGGeometry::DrawLines);
-        node->setGeometry(geometry);
-        node->setFlag(QSGNode::OwnsGeometry);
-        node->setMaterial(new QSGFlatColorMaterial);
-        node->setFlag(QSGNode::OwnsMaterial);
-        parent->appendChildNode(node);
-    }
-    QSGGeometry *geometry = node->geometry();
-    geometry->allocate(int(points.size()));
-    geometry->setLineWidth(float(width));
-    auto *v = geometry->vertexDataAsPoint2D();
-    for (std::size_t i = 0; i < points.size(); ++i)
-        v[i].set(float(points[i].x()), float(points[i].y()));
-    node->markDirty(QSGNode::DirtyGeometry);
-    auto *material = static_cast<QSGFlatColorMaterial *>(node->material());
-    if (material->color() != color) {
-        material->setColor(color);
-        node->markDirty(QSGNode::DirtyMaterial);
-    }
-    return node;
-}
 
 } // namespace
 
@@ -119,7 +90,10 @@ void MapGridItem::updatePolish()
 QSGNode *MapGridItem::updatePaintNode(QSGNode *old, UpdatePaintNodeData *)
 {
     auto *root = old ? old : new QSGNode;
-    auto *gridNode = linesNode(root, static_cast<QSGGeometryNode *>(root->firstChild()), m_grid, m_color, 1);
-    linesNode(root, static_cast<QSGGeometryNode *>(gridNode->nextSibling()), m_axes, m_axisColor, m_axisWidth);
+    QSGGeometryNode *grid = flatNode(root, 0, QSGGeometry::DrawLines), *axes = flatNode(root, 1, QSGGeometry::DrawLines);
+    setNodePoints(grid, m_grid);
+    setNodeColor(grid, m_color);
+    setNodePoints(axes, m_axes, m_axisWidth);
+    setNodeColor(axes, m_axisColor);
     return root;
 }

@@ -3,7 +3,12 @@
 #include "geo/MapProjection.h"
 
 #include <QQuickItem>
+#include <QSGGeometry>
 #include <QtQml/qqmlregistration.h>
+
+#include <vector>
+
+class QSGGeometryNode;
 
 // An item drawn over Map2D's view: the view (centre, zoom, bearing) is bound
 // from the map, and the projection is the map's (MapProjection). Subclasses
@@ -46,6 +51,13 @@ signals:
     void viewChanged();
 
 protected:
+    // The nodes overlays draw with: 2D points in one flat colour. The child
+    // of `parent` at `index`, made (drawing in `mode`) when there is none yet.
+    static QSGGeometryNode *flatNode(QSGNode *parent, int index, QSGGeometry::DrawingMode mode);
+    // A node's points (in whatever units its transform takes) and line width; marks it dirty.
+    static void setNodePoints(QSGGeometryNode *node, const std::vector<QPointF> &points, double lineWidth = 1);
+    static void setNodeColor(QSGGeometryNode *node, const QColor &color);
+
     // The view or the size changed: redraw (the default), or work out more first.
     virtual void viewUpdated() { update(); }
     void geometryChange(const QRectF &newGeometry, const QRectF &oldGeometry) override;

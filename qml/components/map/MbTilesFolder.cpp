@@ -1,4 +1,5 @@
 #include "MbTilesFolder.h"
+#include "TileProbe.h"
 
 #include <QBuffer>
 #include <QCryptographicHash>
@@ -180,12 +181,13 @@ MbTilesFolder::Result MbTilesFolder::unpack(const QString &file, const QString &
                     buffer.open(QIODevice::WriteOnly);
                     image.save(&buffer, "PNG");
                 }
-                const QString dir = QStringLiteral("%1/%2/%3").arg(partial).arg(z).arg(x);
+                // Where the map reads it (MBTiles rows count from the south).
+                QFile tile(QDir(partial).filePath(TileProbe::tilePath(z, int(x), int(n - 1 - tmsY))));
+                const QString dir = QFileInfo(tile.fileName()).path();
                 if (!made.contains(dir)) {
                     QDir().mkpath(dir);
                     made.insert(dir);
                 }
-                QFile tile(QStringLiteral("%1/%2.png").arg(dir).arg(n - 1 - tmsY)); // MBTiles rows count from the south
                 if (!tile.open(QIODevice::WriteOnly) || tile.write(data) != data.size()) {
                     result.error = QStringLiteral("%1: cannot write %2: %3").arg(file, tile.fileName(), tile.errorString());
                     break;

@@ -1,6 +1,5 @@
 #include "PlanOverlayItem.h"
 
-#include <QSGFlatColorMaterial>
 #include <QSGGeometryNode>
 
 #include <cmath>
@@ -9,33 +8,6 @@
 namespace {
 
 constexpr int sides = 12; // a dot's polygon
-
-QSGGeometryNode *child(QSGNode *root, int index, QSGGeometry::DrawingMode mode)
-{
-    QSGNode *node = root->firstChild();
-    for (int i = 0; node && i < index; ++i)
-        node = node->nextSibling();
-    if (node)
-        return static_cast<QSGGeometryNode *>(node);
-    auto *g = new QSGGeometryNode;
-    auto *geometry = new QSGGeometry(QSGGeometry::defaultAttributes_Point2D(), 0);
-    geometry->setDrawingMode(mode);
-    g->setGeometry(geometry);
-    g->setFlag(QSGNode::OwnsGeometry);
-    g->setMaterial(new QSGFlatColorMaterial);
-    g->setFlag(QSGNode::OwnsMaterial);
-    root->appendChildNode(g);
-    return g;
-}
-
-void setColor(QSGGeometryNode *node, const QColor &color)
-{
-    auto *m = static_cast<QSGFlatColorMaterial *>(node->material());
-    if (m->color() != color) {
-        m->setColor(color);
-        node->markDirty(QSGNode::DirtyMaterial);
-    }
-}
 
 } // namespace
 
@@ -78,17 +50,13 @@ QSGNode *PlanOverlayItem::updatePaintNode(QSGNode *old, UpdatePaintNodeData *)
     const MapProjection view = projection();
 
     // The legs.
-    QSGGeometryNode *legs = child(root, 0, QSGGeometry::DrawLineStrip);
-    QSGGeometry *g = legs->geometry();
-    g->allocate(int(m_path.size()));
-    g->setLineWidth(float(m_lineWidth));
-    auto *v = g->vertexDataAsPoint2D();
-    for (size_t i = 0; i < m_path.size(); ++i) {
-        const QPointF p = view.project(m_path[i].first, m_path[i].second);
-        v[i].set(float(p.x()), float(p.y()));
-    }
-    legs->markDirty(QSGNode::DirtyGeometry);
-    setColor(legs, m_lineColor);
+    QSGGeometryNode *legs = flatNode(root, 0, QSGGeometry::DrawLineStrip);
+    std::vector<QPointF> points;
+    points.reserve(m_path.size());
+    for (const auto &[lat, lon] : m_path)
+        points.push_back(view.project(lat, lon));
+    setNodePoints(legs, points, m_lineWidth);
+    setNodeColor(legs, m_lineColor);
 
     // The dots: an outline under a fill, the fill by severity.
     const auto fan = [&](QSGGeometryNode *node, double radius, int severity) {
@@ -112,14 +80,14 @@ QSGNode *PlanOverlayItem::updatePaintNode(QSGNode *old, UpdatePaintNodeData *)
         }
         node->markDirty(QSGNode::DirtyGeometry);
     };
-    QSGGeometryNode *outline = child(root, 1, QSGGeometry::DrawTriangles);
+    QSGGeometryNode *outline = flatNode(root, 1, QSGGeometry::DrawTriangles);
     fan(outline, m_dotRadius, -1);
-    setColor(outline, m_outlineColor);
+    setNodeColor(outline, m_outlineColor);
     const QColor fills[3] = {m_dotColor, m_warningColor, m_errorColor};
     for (int s = 0; s < 3; ++s) {
-        QSGGeometryNode *fill = child(root, 2 + s, QSGGeometry::DrawTriangles);
+        QSGGeometryNode *fill = flatNode(root, 2 + s, QSGGeometry::DrawTriangles);
         fan(fill, std::max(1.0, m_dotRadius - 2), s);
-        setColor(fill, fills[s]);
+        setNodeColor(fill, fills[s]);
     }
     return root;
 }
