@@ -31,6 +31,7 @@ struct PlanProblem
         OutsideOperatingArea,
         Endurance,        // longer than the vehicle can go
         Vehicle,          // a maneuver or parameter the vehicle cannot do (VehicleDefinition::check)
+        Condition,        // a transition's condition does not compile (found by plans::Supervisor)
     };
     Severity severity = Severity::Error;
     Kind kind = Kind::Vehicle;

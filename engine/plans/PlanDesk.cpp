@@ -73,19 +73,18 @@ void PlanDesk::setMission(mission::Mission mission, const QString &path)
         if (const auto spec = mission::planSpecification(p, *m_schema))
             if (const auto md5 = planMd5(m_codec, *spec))
                 m_md5[p.id] = *md5;
-    // Conditions are checked when the mission opens, not first when a vehicle waits on them.
+    // What the plan editor would say of each plan: a plan with errors (a
+    // condition that does not compile, a leg through a no-go area, a
+    // parameter past its vehicle's range) is not sent. Conditions are checked
+    // when the mission opens, not first when a vehicle waits on them.
     m_problems.clear();
-    // The script host starts only for a mission that has conditions.
-    for (const mission::Plan &p : m_mission.plans) {
-        scripting::ScriptHost *scripts = Supervisor::needed(p) && m_scripts ? m_scripts() : nullptr;
-        if (!scripts)
-            continue;
-        for (const QString &error : Supervisor::conditionErrors(p, *scripts))
-            m_problems << p.id + u": "_s + error;
-    }
-    // What the plan editor would say of each plan: a plan with errors (a leg
-    // through a no-go area, a parameter past its vehicle's range) is not sent.
     m_planErrors.clear();
+    for (const mission::Plan &p : m_mission.plans) {
+        for (const QString &error : Supervisor::conditionErrors(p)) {
+            m_planErrors[p.id] << error;
+            m_problems << p.id + u": "_s + error;
+        }
+    }
     const mission::VehicleCatalog definitions = mission::loadVehicles(mission::vehicleFolders());
     for (const mission::Plan &p : m_mission.plans) {
         const mission::VehicleDefinition *v = definitions.find(p.vehicle);
@@ -298,12 +297,6 @@ std::expected<void, QString> PlanDesk::start(const QString &system, const QStrin
     note((*v)->client->vehicle(), u"starting %1"_s.arg(planId));
     (*v)->client->start(planId);
     return {};
-}
-
-QString PlanDesk::checkCondition(const QString &expression) const
-{
-    const scripting::ScriptHost *scripts = m_scripts ? m_scripts() : nullptr;
-    return scripts ? Supervisor::conditionError(expression, *scripts) : u"conditions cannot be checked: no script host"_s;
 }
 
 bool PlanDesk::evaluatesConditions(const QString &system) const

@@ -59,8 +59,6 @@ public:
     // What is wrong with the open mission for running it: conditions that do
     // not compile ("meet: out → dive: condition '…' does not compile: …").
     QStringList problems() const { return m_problems; }
-    // Why a transition condition does not compile, "" if it does (an editor checks as one types).
-    QString checkCondition(const QString &expression) const;
     QString missionPath() const { return m_missionPath; }
 
     // The mission's plans for a vehicle (each plan names its vehicle).

@@ -259,22 +259,41 @@ QString Supervisor::conditionScript(const QString &expression, const QString &pr
     return prelude + u"return (%1\n) ? Normal : Info(\"waiting\");"_s.arg(expression);
 }
 
-QString Supervisor::conditionError(const QString &expression, const scripting::ScriptHost &scripts)
+std::optional<scripting::CompileError> Supervisor::conditionProblem(const QString &expression)
 {
     if (expression.trimmed().isEmpty())
-        return u"a condition is empty; ManeuverIsDone is the plain one"_s;
+        return scripting::CompileError{1, 1, u"a condition is empty; ManeuverIsDone is the plain one"_s};
     const QString prelude = u"const $elapsed = 0, $waited = 0;\nconst marks = {};\nfunction distance(system, mark) { return NaN; }\n"_s;
-    const QVariantMap check = scripts.check(conditionScript(expression, prelude));
-    return check.value(u"ok"_s).toBool() ? QString() : check.value(u"message"_s).toString();
+    auto problem = scripting::ScriptRunner::check(conditionScript(expression, prelude));
+    if (!problem)
+        return std::nullopt;
+    // The script's line 4 is the expression's first, after "return (".
+    const QStringList lines = expression.split(u'\n');
+    const qsizetype prefix = QStringView(u"return (").size();
+    int line = problem->line - 3;
+    int column = problem->column - (line == 1 ? int(prefix) : 0);
+    if (line > lines.size() || line < 1) { // past its end: the expression is unfinished
+        line = int(lines.size());
+        column = int(lines.last().size()) + 1;
+    }
+    problem->line = line;
+    problem->column = std::clamp(column, 1, int(lines[line - 1].size()) + 1);
+    return problem;
 }
 
-QStringList Supervisor::conditionErrors(const mission::Plan &plan, const scripting::ScriptHost &scripts)
+QString Supervisor::conditionError(const QString &expression)
+{
+    const auto problem = conditionProblem(expression);
+    return problem ? problem->message : QString();
+}
+
+QStringList Supervisor::conditionErrors(const mission::Plan &plan)
 {
     QStringList errors;
     for (const mission::Transition &t : plan.transitions) {
         if (plain(t))
             continue;
-        if (const QString error = conditionError(t.condition, scripts); !error.isEmpty())
+        if (const QString error = conditionError(t.condition); !error.isEmpty())
             errors << u"%1 → %2: condition '%3' does not compile: %4"_s.arg(t.from, t.to, t.condition, error);
     }
     return errors;

@@ -61,10 +61,14 @@ public:
     // A condition as the script it runs as: `prelude` (three lines: $elapsed,
     // $waited, marks and distance()) then the expression on line 4.
     static QString conditionScript(const QString &expression, const QString &prelude);
-    // Why a condition does not compile ("" if it does), for an editor checking as one types.
-    static QString conditionError(const QString &expression, const scripting::ScriptHost &scripts);
+    // Where a condition does not compile, line and column within the
+    // expression itself (1-based), for an editor checking as one types;
+    // none when it compiles.
+    static std::optional<scripting::CompileError> conditionProblem(const QString &expression);
+    // conditionProblem's message ("" if it compiles).
+    static QString conditionError(const QString &expression);
     // What does not compile among a plan's conditions, one line each ("a → b: …").
-    static QStringList conditionErrors(const mission::Plan &plan, const scripting::ScriptHost &scripts);
+    static QStringList conditionErrors(const mission::Plan &plan);
 
     const mission::Plan &plan() const { return m_plan; }
     QString part() const { return m_part; }
@@ -77,8 +81,10 @@ public:
     // The vehicle said a plan ended (PlanControl to a START).
     void ended(const QString &planId, bool ok, const QString &info);
 
-private:
+    // A transition taken when its maneuver is done, with no condition to evaluate.
     static bool plain(const mission::Transition &t);
+
+private:
     std::expected<void, QString> startStretch(const QString &first);
     QString scriptName(int exit) const;
     QString conditionSource(const QString &expression) const;

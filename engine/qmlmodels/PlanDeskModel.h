@@ -1,6 +1,7 @@
 #pragma once
 
 #include "plans/PlanDesk.h"
+#include "plans/Supervisor.h"
 
 #include <QHash>
 #include <QObject>
@@ -38,7 +39,7 @@ public:
     // in execution order; [] while the vehicle's own copy is being fetched.
     Q_INVOKABLE QVariantList pathOf(const QString &system, const QString &planId);
     // "" or why a transition condition does not compile, for an editor checking as one types.
-    Q_INVOKABLE QString checkCondition(const QString &expression) const { return m_desk->checkCondition(expression); }
+    Q_INVOKABLE QString checkCondition(const QString &expression) const { return neptus::plans::Supervisor::conditionError(expression); }
     Q_INVOKABLE QStringList logOf(const QString &system) const { return m_desk->log(system); }
 
     Q_INVOKABLE QString refresh(const QString &system) { return said(m_desk->refresh(system)); }

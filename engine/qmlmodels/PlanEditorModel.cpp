@@ -3,6 +3,7 @@
 #include "core/SafeFile.h"
 #include "mission/MissionXml.h"
 #include "mission/Patterns.h"
+#include "plans/Supervisor.h"
 
 #include <QFileInfo>
 
@@ -134,6 +135,17 @@ void PlanEditorModel::changed()
         const VehicleDefinition *v = m_vehicles.find(p->vehicle);
         m_geometry = planGeometry(*p, v ? v->speeds() : SpeedModel{});
         m_problems = checkPlan(*p, m_mission, m_geometry, v);
+        for (const Transition &t : p->transitions) {
+            if (neptus::plans::Supervisor::plain(t))
+                continue;
+            if (const auto &problem = conditionProblem(t.condition)) {
+                const Maneuver *from = p->maneuver(t.from);
+                m_problems.prepend({PlanProblem::Severity::Error, PlanProblem::Kind::Condition, t.from,
+                                    u"%1 → %2: the condition does not compile (column %3): %4"_s.arg(t.from, t.to).arg(problem->column).arg(problem->message),
+                                    from ? std::optional(from->number(u"lat"_s)) : std::nullopt,
+                                    from ? std::optional(from->number(u"lon"_s)) : std::nullopt, t.line.value});
+            }
+        }
         double along = 0;
         for (const ManeuverGeometry &g : m_geometry.maneuvers) {
             for (const Waypoint &w : g.points) {
@@ -386,6 +398,140 @@ QString PlanEditorModel::addRows(const QVariantList &area, double spacing, doubl
     m->points = rows->points;
     changed();
     return id;
+}
+
+const std::optional<neptus::scripting::CompileError> &PlanEditorModel::conditionProblem(const QString &condition) const
+{
+    auto it = m_conditionChecks.constFind(condition);
+    if (it == m_conditionChecks.cend())
+        it = m_conditionChecks.insert(condition, neptus::plans::Supervisor::conditionProblem(condition));
+    return *it;
+}
+
+QVariantMap PlanEditorModel::checkCondition(const QString &condition) const
+{
+    const auto &problem = conditionProblem(condition);
+    if (!problem)
+        return {{u"ok"_s, true}, {u"line"_s, 0}, {u"column"_s, 0}, {u"message"_s, QString()}};
+    return {{u"ok"_s, false}, {u"line"_s, problem->line}, {u"column"_s, problem->column}, {u"message"_s, problem->message}};
+}
+
+QVariantList PlanEditorModel::nodes() const
+{
+    QVariantList list;
+    const Plan *p = plan();
+    if (!p)
+        return list;
+    // Columns by steps from the start (breadth first); what the start does
+    // not reach goes after, each unreached maneuver starting its own walk.
+    QHash<QString, int> column;
+    QHash<QString, QStringList> next;
+    for (const Transition &t : p->transitions)
+        next[t.from] << t.to;
+    int firstFree = 0;
+    const auto walk = [&](const QString &from) {
+        QList<QString> queue{from};
+        column.insert(from, firstFree);
+        for (qsizetype i = 0; i < queue.size(); ++i) {
+            const int c = column.value(queue[i]);
+            firstFree = std::max(firstFree, c + 1);
+            for (const QString &to : next.value(queue[i])) {
+                if (!column.contains(to) && p->maneuver(to)) {
+                    column.insert(to, c + 1);
+                    queue << to;
+                }
+            }
+        }
+    };
+    if (p->maneuver(p->start))
+        walk(p->start);
+    for (const Maneuver &m : p->maneuvers)
+        if (!column.contains(m.id))
+            walk(m.id);
+    QHash<int, int> rows;
+    for (const QVariant &v : m_maneuverList) {
+        QVariantMap node = v.toMap();
+        const QString id = node.value(u"id"_s).toString();
+        const int c = column.value(id);
+        node.insert(u"column"_s, c);
+        node.insert(u"row"_s, rows[c]++);
+        node.insert(u"start"_s, id == p->start);
+        list.append(node);
+    }
+    return list;
+}
+
+QVariantList PlanEditorModel::transitions() const
+{
+    QVariantList list;
+    const Plan *p = plan();
+    if (!p)
+        return list;
+    for (qsizetype i = 0; i < p->transitions.size(); ++i) {
+        const Transition &t = p->transitions[i];
+        const bool plain = neptus::plans::Supervisor::plain(t);
+        const auto &problem = plain ? std::optional<neptus::scripting::CompileError>() : conditionProblem(t.condition);
+        list.append(QVariantMap{{u"index"_s, int(i)}, {u"from"_s, t.from}, {u"to"_s, t.to}, {u"condition"_s, t.condition},
+                                {u"plain"_s, plain}, {u"problem"_s, problem ? problem->message : QString()},
+                                {u"line"_s, problem ? problem->line : 0}, {u"column"_s, problem ? problem->column : 0}});
+    }
+    return list;
+}
+
+bool PlanEditorModel::addTransition(const QString &from, const QString &to, const QString &condition)
+{
+    const Plan *p = plan();
+    if (!p || !p->maneuver(from) || !p->maneuver(to)) {
+        fail(u"no maneuver %1 or %2 in the plan"_s.arg(from, to));
+        return false;
+    }
+    remember();
+    editable()->transitions.append(Transition{from, to, condition.trimmed().isEmpty() ? u"ManeuverIsDone"_s : condition.trimmed(), {}, {}});
+    m_modified = true;
+    fail({});
+    changed();
+    return true;
+}
+
+bool PlanEditorModel::setCondition(int transition, const QString &condition)
+{
+    const Plan *p = plan();
+    if (!p || transition < 0 || transition >= p->transitions.size())
+        return false;
+    const QString text = condition.trimmed().isEmpty() ? u"ManeuverIsDone"_s : condition.trimmed();
+    if (p->transitions[transition].condition == text)
+        return true;
+    remember();
+    editable()->transitions[transition].condition = text;
+    m_modified = true;
+    changed();
+    return true;
+}
+
+bool PlanEditorModel::removeTransition(int transition)
+{
+    const Plan *p = plan();
+    if (!p || transition < 0 || transition >= p->transitions.size())
+        return false;
+    remember();
+    editable()->transitions.removeAt(transition);
+    m_modified = true;
+    changed();
+    return true;
+}
+
+bool PlanEditorModel::setStart(const QString &id)
+{
+    const Plan *p = plan();
+    if (!p || !p->maneuver(id))
+        return false;
+    if (p->start == id)
+        return true;
+    remember();
+    editable()->start = id;
+    m_modified = true;
+    changed();
+    return true;
 }
 
 bool PlanEditorModel::undo()

@@ -4,6 +4,7 @@
 #include "mission/PlanCheck.h"
 #include "mission/PlanGeometry.h"
 #include "mission/Vehicle.h"
+#include "scripting/ScriptRunner.h"
 
 #include <QObject>
 #include <QStringList>
@@ -35,6 +36,13 @@ class PlanEditorModel : public QObject
     Q_PROPERTY(QVariantList path READ path NOTIFY edited)
     // [{severity: "error" | "warning", kind, maneuver, message, lat, lon (NaN: none)}], worst first.
     Q_PROPERTY(QVariantList problems READ problems NOTIFY edited)
+    // The plan as a graph, laid out in columns by the number of steps from
+    // the start (maneuvers the start does not reach after those):
+    // [{id, type, index, column, row, start, severity}] and
+    // [{index, from, to, condition, plain, problem, line, column}] (problem:
+    // why the condition does not compile, at line/column of the condition).
+    Q_PROPERTY(QVariantList nodes READ nodes NOTIFY edited)
+    Q_PROPERTY(QVariantList transitions READ transitions NOTIFY edited)
     Q_PROPERTY(int errorCount READ errorCount NOTIFY edited)
     // {maneuvers, length (m), duration (s, -1: never ends), maxDepth (m, -1: none)}.
     Q_PROPERTY(QVariantMap statistics READ statistics NOTIFY edited)
@@ -60,6 +68,8 @@ public:
     QVariantList maneuvers() const { return m_maneuverList; }
     QVariantList path() const { return m_pathPoints; }
     QVariantList problems() const { return m_problemList; }
+    QVariantList nodes() const;
+    QVariantList transitions() const;
     int errorCount() const;
     QVariantMap statistics() const;
     QVariantList areas() const;
@@ -81,6 +91,15 @@ public:
     Q_INVOKABLE QVariantList parametersOf(const QString &id) const;
     // Rows over an area drawn as [{lat, lon}]: the new FollowPath's id, or "".
     Q_INVOKABLE QString addRows(const QVariantList &area, double spacing, double angle, double overshoot, bool crossHatch);
+    // The graph: a transition (condition "" is ManeuverIsDone), its
+    // condition (kept even when it does not compile, then shown as a
+    // problem so the plan cannot be sent), removing one, the start.
+    Q_INVOKABLE bool addTransition(const QString &from, const QString &to, const QString &condition);
+    Q_INVOKABLE bool setCondition(int transition, const QString &condition);
+    Q_INVOKABLE bool removeTransition(int transition);
+    Q_INVOKABLE bool setStart(const QString &id);
+    // A condition as it is typed: {ok, line, column, message}.
+    Q_INVOKABLE QVariantMap checkCondition(const QString &condition) const;
     Q_INVOKABLE bool undo();
     Q_INVOKABLE bool redo();
     Q_INVOKABLE bool save();
@@ -112,5 +131,8 @@ private:
     bool m_modified = false;
     neptus::mission::PlanGeometry m_geometry;
     QList<neptus::mission::PlanProblem> m_problems;
+    // Conditions checked so far: compiling one takes milliseconds, a plan is checked on every edit.
+    mutable QHash<QString, std::optional<neptus::scripting::CompileError>> m_conditionChecks;
+    const std::optional<neptus::scripting::CompileError> &conditionProblem(const QString &condition) const;
     QVariantList m_pathPoints, m_maneuverList, m_problemList; // made once per edit, read by every view
 };

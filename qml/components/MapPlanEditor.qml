@@ -22,6 +22,7 @@ Item {
     property real rowSpacing: 20
     property real rowAngle: 0       // the rows' direction, degrees from north
     property bool crossHatch: false // the rows again at right angles
+    property bool showGraph: false  // the plan's graph beside the panel
 
     // The model's lists, read once per edit (each read of a C++ list makes a new JS array).
     readonly property var maneuverList: planModel.maneuvers
@@ -36,6 +37,11 @@ Item {
     // A tap on the map: select the maneuver under it, else add one there or
     // a corner of the area.
     function tapped(at: point): void {
+        // The map's tap handler sees taps on the panels too (pointer
+        // handlers under them still get the event): those are not the map's.
+        for (const over of [panel, graphLoader])
+            if (over.visible && over.contains(over.mapFromItem(editor, at.x, at.y)))
+                return
         for (const m of maneuverList) {
             const p = map.screenPoint(m.lat, m.lon)
             if (Math.hypot(p.x - at.x, p.y - at.y) <= Theme.touchTarget / 2) {
@@ -274,6 +280,13 @@ Item {
                         onClicked: if (planModel.save() && Session.session) Session.session.plans.openMission(planModel.missionPath)
                     }
                     TouchButton {
+                        objectName: "graphButton"
+                        text: qsTr("Graph")
+                        toolTip: qsTr("The plan's maneuvers and transitions, and their conditions")
+                        highlighted: editor.showGraph
+                        onClicked: editor.showGraph = !editor.showGraph
+                    }
+                    TouchButton {
                         objectName: "removeManeuverButton"
                         text: qsTr("Remove")
                         enabled: editor.selected !== ""
@@ -419,6 +432,22 @@ Item {
                     }
                 }
             }
+        }
+    }
+
+    // The graph, beside the panel.
+    Loader {
+        id: graphLoader
+        active: editor.showGraph
+        visible: active
+        x: panel.x + panel.width + Theme.spacing
+        y: Theme.spacing
+        width: editor.width - x - Theme.spacing - Theme.touchTarget * 1.5 // clear of the map's buttons
+        height: item ? Math.min(item.implicitHeight, editor.height - Theme.spacing * 2) : 0
+        sourceComponent: PlanGraphView {
+            model: planModel
+            selected: editor.selected
+            onPicked: (maneuver) => editor.selected = maneuver
         }
     }
 }

@@ -183,12 +183,82 @@ TestCase {
         verify(findChild(map2d, "problemMark"), "marked on the map")
         // A tap on the problem goes there.
         map2d.centreAt(41.1380, -8.6150)
+        const count = model().maneuvers.length
         mouseClick(findAll(map2d, "problem").find(row => row.children[0].text.indexOf("'rock'") > 0))
+        compare(model().maneuvers.length, count, "a tap on the panel is not a tap on the map under it")
         fuzzyCompare(map2d.centerLatitude, problem.lat, 1e-6)
         // Saved: the file has every edit.
         mouseClick(findChild(map2d, "savePlanButton"))
         tryCompare(model(), "modified", false)
         const saved = Fixtures.readFile(file)
         verify(saved.indexOf('id="goto1"') > 0 && saved.indexOf("<FollowPath") > 0, saved)
+    }
+
+    // The graph: a transition added by tapping two maneuvers, its condition
+    // typed with completion from the live tree; a slip is marked at its
+    // column and makes an error of the plan; fixed, it is kept.
+    function test_6_theGraphAndAConditionWithASyntaxError() {
+        Fixtures.nameSystem(30, "lauv-sim-1")
+        Fixtures.ingest("Voltage", 30, { value: 25.5 })
+        mouseClick(findChild(map2d, "graphButton"))
+        tryVerify(() => findChild(map2d, "planGraph") !== null)
+        const graph = findChild(map2d, "planGraph")
+        tryVerify(() => findChild(graph, "node:go") && findChild(graph, "node:goto1"))
+        verify(findChild(graph, "node:go").x < findChild(graph, "node:back").x, "columns by steps from the start")
+        // A tap on a node selects the maneuver on the map too.
+        mouseClick(findChild(graph, "node:back"))
+        compare(editor().selected, "back")
+        const links = model().transitions.length, errors = model().errorCount
+        mouseClick(findChild(graph, "linkTool"))
+        const from = findChild(graph, "node:goto1"), to = findChild(graph, "node:go")
+        const a = from.mapToItem(graph, from.width / 2, from.height / 2), b = to.mapToItem(graph, to.width / 2, to.height / 2)
+        let touch = touchEvent(graph)
+        touch.press(0, graph, a.x, a.y).commit()
+        touch.release(0, graph, a.x, a.y).commit()
+        mouseClick(to)
+        tryCompare(model().transitions, "length", links + 1)
+        const added = model().transitions[links]
+        compare(added.from + "→" + added.to, "goto1→go")
+        verify(added.plain)
+        // Its handle opens the condition editor.
+        verify(findChild(graph, "conditionEditor").visible, "the new link is the one being edited")
+        const field = findChild(graph, "conditionField")
+        field.forceActiveFocus()
+        keyClick(Qt.Key_S); keyClick(Qt.Key_Y); keyClick(Qt.Key_S); keyClick(Qt.Key_BracketLeft); keyClick(Qt.Key_QuoteDbl)
+        compare(field.text, 'sys["')
+        const system = findChild(graph, "conditionCompletion-lauv-sim-1")
+        verify(system, "the live tree's systems offered")
+        mouseClick(system)
+        compare(field.text, 'sys["lauv-sim-1"].')
+        mouseClick(findChild(graph, "conditionCompletion-Voltage"))
+        mouseClick(findChild(graph, "conditionCompletion-value"))
+        compare(field.text, 'sys["lauv-sim-1"].Voltage.value')
+        for (const ch of " > 24 &&& 1")
+            keyClick(ch)
+        const text = 'sys["lauv-sim-1"].Voltage.value > 24 &&& 1'
+        compare(field.text, text)
+        const column = text.indexOf("&&&") + 3
+        tryVerify(() => findChild(graph, "conditionError").text.indexOf("column " + column + ":") === 0, 2000,
+                  findChild(graph, "conditionError").text)
+        const mark = findChild(graph, "conditionErrorMark")
+        verify(mark.visible)
+        const at = field.positionToRectangle(column - 1)
+        verify(Math.abs(mark.x - at.x - field.leftPadding) < 2, "under the third &: " + mark.x + " vs " + at.x)
+        keyClick(Qt.Key_Return)
+        tryCompare(model(), "errorCount", errors + 1)
+        const problem = model().problems.find(p => p.kind === 8) // a condition
+        verify(problem && problem.message.indexOf("column " + column) > 0, JSON.stringify(model().problems))
+        verify(findChild(graph, "condition:goto1→go").children[0].text.indexOf("✕") === 0, "the arrow's label says so")
+        // Fixed: no error, the condition kept; undo brings the slip back.
+        field.text = 'sys["lauv-sim-1"].Voltage.value > 24'
+        mouseClick(findChild(graph, "applyCondition"))
+        tryCompare(model(), "errorCount", errors)
+        compare(model().transitions[links].condition, 'sys["lauv-sim-1"].Voltage.value > 24')
+        mouseClick(findChild(map2d, "undoButton"))
+        compare(model().errorCount, errors + 1)
+        mouseClick(findChild(map2d, "redoButton"))
+        compare(model().errorCount, errors)
+        mouseClick(findChild(map2d, "graphButton"))
+        tryVerify(() => findChild(map2d, "planGraph") === null)
     }
 }

@@ -7,6 +7,8 @@
 #include <QSignalSpy>
 #include <QTemporaryDir>
 
+#include <cmath>
+
 #include <gtest/gtest.h>
 
 using namespace Qt::StringLiterals;
@@ -155,4 +157,49 @@ TEST(PlanEditor, RowsOverADrawnAreaSavedAndReadBack)
     again.setMissionPath(path);
     EXPECT_EQ(again.maneuvers().size(), 5);
     EXPECT_EQ(again.plan()->maneuver(id)->points, editor.plan()->maneuver(id)->points);
+}
+
+TEST(PlanEditor, TheGraphLaidOutInStepsFromTheStartWithConditionsChecked)
+{
+    QTemporaryDir dir;
+    PlanEditorModel editor;
+    editor.setMissionPath(douroCopy(dir));
+    // go → wait → rows → surface: a column each.
+    const auto column = [&](const QString &id) { return byId(editor.nodes(), id).value(u"column"_s).toInt(); };
+    EXPECT_EQ(column(u"go"_s), 0);
+    EXPECT_EQ(column(u"surface"_s), 3);
+    EXPECT_TRUE(byId(editor.nodes(), u"go"_s).value(u"start"_s).toBool());
+
+    // A way back from the surface to the start when the battery is still good.
+    ASSERT_TRUE(editor.addTransition(u"surface"_s, u"go"_s, u"sys[\"lauv-sim-1\"].Voltage.value > 24"_s));
+    EXPECT_EQ(editor.transitions().size(), 4);
+    EXPECT_FALSE(editor.transitions().last().toMap().value(u"plain"_s).toBool());
+    EXPECT_EQ(editor.errorCount(), 0) << editor.problems().value(0).toMap().value(u"message"_s).toString().toStdString();
+
+    // A typing slip: the problem names where, and the plan has an error (not sent).
+    const QVariantMap typed = editor.checkCondition(u"$waited > 60 &&& 1"_s);
+    EXPECT_FALSE(typed.value(u"ok"_s).toBool());
+    EXPECT_EQ(typed.value(u"column"_s).toInt(), 16);
+    ASSERT_TRUE(editor.setCondition(3, u"$waited > 60 &&& 1"_s));
+    EXPECT_EQ(editor.transitions().last().toMap().value(u"column"_s).toInt(), 16);
+    ASSERT_EQ(editor.errorCount(), 1);
+    const QVariantMap problem = editor.problems().first().toMap();
+    EXPECT_EQ(problem.value(u"maneuver"_s), u"surface"_s);
+    EXPECT_TRUE(problem.value(u"message"_s).toString().contains(u"column 16"_s)) << problem.value(u"message"_s).toString().toStdString();
+    EXPECT_FALSE(std::isnan(problem.value(u"lat"_s).toDouble())) << "marked on the map where the transition leaves";
+
+    // Undone, the good condition is back; an unreached maneuver gets a column after the reached ones.
+    ASSERT_TRUE(editor.undo());
+    EXPECT_EQ(editor.errorCount(), 0);
+    ASSERT_TRUE(editor.removeTransition(0)); // go → wait
+    EXPECT_GT(column(u"wait"_s), column(u"go"_s));
+    EXPECT_EQ(editor.problems().first().toMap().value(u"kind"_s).toInt(), int(neptus::mission::PlanProblem::Kind::Unreachable));
+    ASSERT_TRUE(editor.setStart(u"wait"_s));
+    EXPECT_TRUE(byId(editor.nodes(), u"wait"_s).value(u"start"_s).toBool());
+    EXPECT_EQ(column(u"wait"_s), 0);
+    ASSERT_TRUE(editor.save());
+    PlanEditorModel again;
+    again.setMissionPath(editor.missionPath());
+    EXPECT_EQ(again.plan()->start, u"wait"_s);
+    EXPECT_EQ(again.plan()->transitions.last().condition, u"sys[\"lauv-sim-1\"].Voltage.value > 24"_s);
 }

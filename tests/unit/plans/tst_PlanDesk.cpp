@@ -3,6 +3,7 @@
 // START, started, stopped, aborted; a log line for each, and the plan's end
 // as an alarm event.
 #include "plans/PlanDesk.h"
+#include "plans/Supervisor.h"
 
 #include "mission/MissionXml.h"
 #include "sim/SimulatedVehicle.h"
@@ -386,9 +387,20 @@ TEST_F(Desk, ConditionsThatDoNotCompileAreSaidWhenTheMissionOpens)
     broken.plans[1].transitions[0].condition = u"distance(\"caravela-sim\", \"buoy\") <"_s;
     desk.setMission(broken);
     ASSERT_EQ(desk.problems().size(), 1);
-    EXPECT_EQ(desk.checkCondition(u"sys[\"lauv-sim-1\"].EstimatedState.depth < 2 && $waited > 10"_s), QString());
-    EXPECT_FALSE(desk.checkCondition(u"distance(\"caravela-sim\", \"buoy\") <"_s).isEmpty()) << "as one types it";
-    EXPECT_FALSE(desk.checkCondition(u"  "_s).isEmpty());
+    EXPECT_EQ(neptus::plans::Supervisor::conditionProblem(u"sys[\"lauv-sim-1\"].EstimatedState.depth < 2 && $waited > 10"_s), std::nullopt);
+    // Where it goes wrong, in the expression's own columns.
+    const auto unfinished = neptus::plans::Supervisor::conditionProblem(u"distance(\"caravela-sim\", \"buoy\") <"_s);
+    ASSERT_TRUE(unfinished) << "as one types it";
+    EXPECT_EQ(unfinished->line, 1);
+    EXPECT_EQ(unfinished->column, 35) << "just after the end: " << unfinished->message.toStdString();
+    const auto extra = neptus::plans::Supervisor::conditionProblem(u"$elapsed > 60 &&& 1"_s);
+    ASSERT_TRUE(extra);
+    EXPECT_EQ(extra->column, 17) << "at the third &: " << extra->message.toStdString();
+    const auto second = neptus::plans::Supervisor::conditionProblem(u"$elapsed > 60 &&\n  $waited >> > 2"_s);
+    ASSERT_TRUE(second);
+    EXPECT_EQ(second->line, 2);
+    EXPECT_EQ(second->column, 14) << second->message.toStdString();
+    EXPECT_TRUE(neptus::plans::Supervisor::conditionProblem(u"  "_s));
     EXPECT_TRUE(desk.problems()[0].startsWith(u"choice: a → b: condition 'distance(\"caravela-sim\", \"buoy\") <' does not compile: "_s))
         << desk.problems()[0].toStdString();
 }
