@@ -5,7 +5,9 @@
 #include "mission/Patterns.h"
 #include "plans/Supervisor.h"
 
+#include <QDir>
 #include <QFileInfo>
+#include <QRegularExpression>
 
 #include <cmath>
 #include <limits>
@@ -60,7 +62,7 @@ void PlanEditorModel::setMissionPath(const QString &path)
     }
     emit missionChanged();
     emit planChanged();
-    changed();
+    featuresEdited();
 }
 
 QStringList PlanEditorModel::planIds() const
@@ -118,12 +120,10 @@ Maneuver *PlanEditorModel::find(const QString &id)
 
 void PlanEditorModel::remember()
 {
-    if (const Plan *p = plan()) {
-        m_undo.append(*p);
-        if (m_undo.size() > undoDepth)
-            m_undo.removeFirst();
-        m_redo.clear();
-    }
+    m_undo.append(m_mission);
+    if (m_undo.size() > undoDepth)
+        m_undo.removeFirst();
+    m_redo.clear();
 }
 
 void PlanEditorModel::changed()
@@ -205,20 +205,340 @@ QVariantMap PlanEditorModel::statistics() const
             {u"maxDepth"_s, m_geometry.maxDepth.value_or(-1)}};
 }
 
-QVariantList PlanEditorModel::areas() const
+QVariantList PlanEditorModel::featureList() const
 {
     QVariantList list;
+    const double none = std::numeric_limits<double>::quiet_NaN();
+    const QDir folder = QFileInfo(m_path).absoluteDir();
+    const auto latLon = [](const std::optional<GeoPosition> &p) {
+        return QVariantMap{{u"lat"_s, p ? p->lat : std::numeric_limits<double>::quiet_NaN()},
+                           {u"lon"_s, p ? p->lon : std::numeric_limits<double>::quiet_NaN()}};
+    };
     for (const Map &map : m_mission.maps) {
         for (const Feature &f : map.features) {
-            QVariantList points;
+            QVariantList points, outline;
+            for (const Feature::Point &p : f.points)
+                points.append(latLon(m_mission.position(p)));
             for (const GeoPosition &p : areaOutline(f, m_mission))
-                points.append(QVariantMap{{u"lat"_s, p.lat}, {u"lon"_s, p.lon}});
-            if (points.size() >= 3)
-                list.append(QVariantMap{{u"id"_s, f.id}, {u"name"_s, f.name}, {u"role"_s, f.attributes.value(u"role"_s, u"area"_s)},
-                                        {u"points"_s, points}});
+                outline.append(QVariantMap{{u"lat"_s, p.lat}, {u"lon"_s, p.lon}});
+            const auto at = m_mission.position(f.position);
+            const QString file = f.attributes.value(u"file"_s);
+            list.append(QVariantMap{{u"id"_s, f.id}, {u"kind"_s, f.kind}, {u"name"_s, f.name}, {u"color"_s, f.color},
+                                    {u"layer"_s, f.layer}, {u"role"_s, f.attributes.value(u"role"_s, u"area"_s)},
+                                    {u"lat"_s, at ? at->lat : none}, {u"lon"_s, at ? at->lon : none},
+                                    {u"points"_s, points}, {u"outline"_s, outline},
+                                    {u"file"_s, file.isEmpty() ? QString() : folder.absoluteFilePath(file)},
+                                    {u"scale"_s, f.attributes.value(u"scale"_s, u"1"_s).toDouble()},
+                                    {u"rotation"_s, f.attributes.value(u"rotation"_s, u"0"_s).toDouble()}});
         }
     }
     return list;
+}
+
+QStringList PlanEditorModel::layers() const
+{
+    QStringList names;
+    for (const Map &map : m_mission.maps)
+        for (const Feature &f : map.features)
+            if (!names.contains(f.layer))
+                names << f.layer;
+    std::sort(names.begin(), names.end());
+    return names;
+}
+
+void PlanEditorModel::featuresEdited()
+{
+    m_featureList = featureList();
+    emit featuresChanged();
+    changed();
+}
+
+Feature *PlanEditorModel::feature(const QString &id)
+{
+    for (Map &map : m_mission.maps)
+        for (Feature &f : map.features)
+            if (f.id == id)
+                return &f;
+    return nullptr;
+}
+
+namespace {
+
+const QStringList featureKinds{u"mark"_s, u"transponder"_s, u"path"_s, u"polygon"_s, u"circle"_s, u"box"_s,
+                               u"cylinder"_s, u"ellipsoid"_s, u"image"_s, u"model"_s};
+const QStringList areaKinds{u"polygon"_s, u"circle"_s, u"box"_s, u"cylinder"_s, u"ellipsoid"_s};
+const QStringList solidKinds{u"box"_s, u"cylinder"_s, u"ellipsoid"_s};
+
+Feature::Point pointAt(double lat, double lon)
+{
+    Feature::Point p;
+    p.lat = lat;
+    p.lon = lon;
+    return p;
+}
+
+// A point moved to lat/lon keeps its depth or height.
+void placePoint(Feature::Point &p, double lat, double lon)
+{
+    p.lat = lat;
+    p.lon = lon;
+    p.north.reset();
+    p.east.reset();
+}
+
+bool isPosition(double lat, double lon)
+{
+    return std::isfinite(lat) && std::isfinite(lon) && std::abs(lat) <= 90 && std::abs(lon) <= 180;
+}
+
+struct PropertySpec
+{
+    QString name, type, unit;
+    QStringList choices;
+    std::optional<double> min;
+};
+
+// What each kind's form edits, as the mission format (schemas/mission.xsd) allows it.
+QList<PropertySpec> propertiesOf(const QString &kind)
+{
+    QList<PropertySpec> specs{{u"name"_s, u"text"_s, {}, {}, {}}, {u"color"_s, u"color"_s, {}, {}, {}},
+                              {u"layer"_s, u"text"_s, {}, {}, {}}};
+    const QStringList roles{u"area"_s, u"operating-area"_s, u"no-go"_s, u"survey-area"_s};
+    if (areaKinds.contains(kind))
+        specs.append({u"role"_s, u"choice"_s, {}, roles, {}});
+    if (kind == u"circle"_s)
+        specs.append({u"radius"_s, u"number"_s, u"m"_s, {}, 0.0});
+    if (solidKinds.contains(kind)) {
+        specs.append({u"width"_s, u"number"_s, u"m"_s, {}, 0.0});
+        specs.append({u"length"_s, u"number"_s, u"m"_s, {}, 0.0});
+        specs.append({u"bearing"_s, u"number"_s, u"°"_s, {}, {}});
+    }
+    if (areaKinds.contains(kind)) {
+        specs.append({u"z-min"_s, u"number"_s, u"m"_s, {}, {}});
+        specs.append({u"z-max"_s, u"number"_s, u"m"_s, {}, {}});
+        specs.append({u"z-units"_s, u"choice"_s, {}, {u"DEPTH"_s, u"HEIGHT"_s}, {}});
+    }
+    if (kind == u"transponder"_s) {
+        specs.append({u"depth"_s, u"number"_s, u"m"_s, {}, {}});
+        specs.append({u"config"_s, u"text"_s, {}, {}, {}});
+    }
+    if (kind == u"image"_s || kind == u"model"_s) {
+        specs.append({u"file"_s, u"text"_s, {}, {}, {}});
+        specs.append({u"scale"_s, u"number"_s, kind == u"image"_s ? u"m/pixel"_s : QString(), {}, 0.0});
+    }
+    if (kind == u"image"_s)
+        specs.append({u"rotation"_s, u"number"_s, u"°"_s, {}, {}});
+    if (kind == u"model"_s)
+        for (const QString &angle : {u"roll"_s, u"pitch"_s, u"yaw"_s})
+            specs.append({angle, u"number"_s, u"°"_s, {}, {}});
+    return specs;
+}
+
+} // namespace
+
+QString PlanEditorModel::addFeature(const QString &kind, const QVariantList &points)
+{
+    if (!featureKinds.contains(kind)) {
+        fail(u"no map feature '%1' (there are: %2)"_s.arg(kind, featureKinds.join(u", "_s)));
+        return {};
+    }
+    QList<Feature::Point> at;
+    for (const QVariant &v : points) {
+        const QVariantMap c = v.toMap();
+        const double lat = c.value(u"lat"_s).toDouble(), lon = c.value(u"lon"_s).toDouble();
+        if (!isPosition(lat, lon)) {
+            fail(u"not a position: %1, %2"_s.arg(lat).arg(lon));
+            return {};
+        }
+        at.append(pointAt(lat, lon));
+    }
+    const qsizetype needed = kind == u"path"_s ? 2 : kind == u"polygon"_s ? 3 : 1;
+    if (at.size() < needed || (needed == 1 && at.size() != 1)) {
+        fail(u"a %1 takes %2 point%3, not %4"_s.arg(kind).arg(needed == 1 ? u"one"_s : u"%1 or more"_s.arg(needed))
+                 .arg(needed == 1 ? u""_s : u"s"_s).arg(at.size()));
+        return {};
+    }
+    if (m_path.isEmpty()) {
+        fail(u"no mission is open to add to"_s);
+        return {};
+    }
+    remember();
+    if (m_mission.maps.isEmpty())
+        m_mission.maps.append(Map{u"map"_s, {}, {}});
+    Feature f;
+    f.kind = kind;
+    for (int n = 1;; ++n) {
+        f.id = kind + QString::number(n);
+        if (!feature(f.id))
+            break;
+    }
+    if (needed == 1)
+        f.position = at.first();
+    else
+        f.points = at;
+    // What the format requires, at a size that shows at harbour scale.
+    if (kind == u"circle"_s)
+        f.attributes.insert(u"radius"_s, u"25"_s);
+    if (solidKinds.contains(kind)) {
+        f.attributes.insert(u"width"_s, u"40"_s);
+        f.attributes.insert(u"length"_s, u"40"_s);
+    }
+    if (areaKinds.contains(kind) && kind != u"polygon"_s)
+        f.attributes.insert(u"role"_s, u"area"_s);
+    if (kind == u"image"_s || kind == u"model"_s) {
+        f.attributes.insert(u"file"_s, QString());
+        f.attributes.insert(u"scale"_s, kind == u"image"_s ? u"0.5"_s : u"1"_s);
+    }
+    m_mission.maps.first().features.append(f);
+    m_modified = true;
+    fail({});
+    featuresEdited();
+    return f.id;
+}
+
+bool PlanEditorModel::moveFeature(const QString &id, double lat, double lon)
+{
+    Feature *f = feature(id);
+    if (!f || !isPosition(lat, lon))
+        return false;
+    const auto from = m_mission.position(f->position.lat || f->position.north ? f->position
+                                         : f->points.isEmpty() ? Feature::Point{} : f->points.first());
+    if (!from)
+        return false;
+    remember();
+    f = feature(id);
+    const double dLat = lat - from->lat, dLon = lon - from->lon;
+    const auto shift = [&](Feature::Point &p) {
+        if (const auto was = m_mission.position(p))
+            placePoint(p, was->lat + dLat, was->lon + dLon);
+    };
+    shift(f->position);
+    for (Feature::Point &p : f->points)
+        shift(p);
+    m_modified = true;
+    featuresEdited();
+    return true;
+}
+
+bool PlanEditorModel::moveFeaturePoint(const QString &id, int index, double lat, double lon)
+{
+    Feature *f = feature(id);
+    if (!f || index < 0 || index >= f->points.size() || !isPosition(lat, lon))
+        return false;
+    remember();
+    placePoint(feature(id)->points[index], lat, lon);
+    m_modified = true;
+    featuresEdited();
+    return true;
+}
+
+bool PlanEditorModel::insertFeaturePoint(const QString &id, int index, double lat, double lon)
+{
+    Feature *f = feature(id);
+    if (!f || (f->kind != u"path"_s && f->kind != u"polygon"_s) || index < 0 || index >= f->points.size() || !isPosition(lat, lon))
+        return false;
+    remember();
+    feature(id)->points.insert(index + 1, pointAt(lat, lon));
+    m_modified = true;
+    featuresEdited();
+    return true;
+}
+
+bool PlanEditorModel::removeFeaturePoint(const QString &id, int index)
+{
+    Feature *f = feature(id);
+    if (!f || index < 0 || index >= f->points.size())
+        return false;
+    if (f->points.size() <= (f->kind == u"polygon"_s ? 3 : 2)) {
+        fail(u"a %1 keeps at least %2 points"_s.arg(f->kind).arg(f->kind == u"polygon"_s ? 3 : 2));
+        return false;
+    }
+    remember();
+    feature(id)->points.removeAt(index);
+    m_modified = true;
+    featuresEdited();
+    return true;
+}
+
+bool PlanEditorModel::removeFeature(const QString &id)
+{
+    if (!feature(id))
+        return false;
+    remember();
+    for (Map &map : m_mission.maps)
+        map.features.removeIf([&](const Feature &f) { return f.id == id; });
+    m_modified = true;
+    featuresEdited();
+    return true;
+}
+
+QVariantList PlanEditorModel::featureProperties(const QString &id) const
+{
+    QVariantList list;
+    const Feature *f = const_cast<PlanEditorModel *>(this)->feature(id);
+    if (!f)
+        return list;
+    for (const PropertySpec &s : propertiesOf(f->kind)) {
+        QString value = s.name == u"name"_s ? f->name : s.name == u"color"_s ? f->color : s.name == u"layer"_s ? f->layer
+                        : s.name == u"depth"_s ? (f->position.depth ? formatNumber(*f->position.depth) : QString())
+                                               : f->attributes.value(s.name);
+        list.append(QVariantMap{{u"name"_s, s.name}, {u"value"_s, value}, {u"type"_s, s.type}, {u"choices"_s, s.choices}, {u"unit"_s, s.unit}});
+    }
+    return list;
+}
+
+bool PlanEditorModel::setFeatureProperty(const QString &id, const QString &name, const QString &value)
+{
+    Feature *f = feature(id);
+    if (!f)
+        return false;
+    const QList<PropertySpec> specs = propertiesOf(f->kind);
+    const auto spec = std::find_if(specs.begin(), specs.end(), [&](const PropertySpec &s) { return s.name == name; });
+    if (spec == specs.end()) {
+        fail(u"a %1 has no property '%2'"_s.arg(f->kind, name));
+        return false;
+    }
+    const QString text = value.trimmed();
+    bool number = true;
+    const double v = text.toDouble(&number);
+    const bool required = name == u"radius"_s || name == u"width"_s || name == u"length"_s || name == u"file"_s;
+    if (text.isEmpty() && required) {
+        fail(u"%1: a %2 needs one"_s.arg(name, f->kind));
+        return false;
+    }
+    if (!text.isEmpty()) {
+        if (spec->type == u"number"_s && (!number || !std::isfinite(v) || (spec->min && v < *spec->min))) {
+            fail(spec->min ? u"%1: not a number ≥ %2: '%3'"_s.arg(name).arg(*spec->min).arg(text) : u"%1: not a number: '%2'"_s.arg(name, text));
+            return false;
+        }
+        if (spec->type == u"choice"_s && !spec->choices.contains(text)) {
+            fail(u"%1: one of %2, not '%3'"_s.arg(name, spec->choices.join(u", "_s), text));
+            return false;
+        }
+        static const QRegularExpression colour(u"^#[0-9a-fA-F]{6}$"_s);
+        if (spec->type == u"color"_s && !colour.match(text).hasMatch()) {
+            fail(u"%1: a colour as #rrggbb, not '%2'"_s.arg(name, text));
+            return false;
+        }
+    }
+    remember();
+    f = feature(id);
+    if (name == u"name"_s)
+        f->name = text;
+    else if (name == u"color"_s)
+        f->color = text;
+    else if (name == u"layer"_s)
+        f->layer = text;
+    else if (name == u"depth"_s)
+        f->position.depth = text.isEmpty() ? std::nullopt : std::optional(v);
+    else if (text.isEmpty())
+        f->attributes.remove(name);
+    else
+        f->attributes.insert(name, text);
+    m_modified = true;
+    fail({});
+    featuresEdited();
+    return true;
 }
 
 QString PlanEditorModel::freshId(const QString &type) const
@@ -536,25 +856,23 @@ bool PlanEditorModel::setStart(const QString &id)
 
 bool PlanEditorModel::undo()
 {
-    Plan *p = editable();
-    if (!p || m_undo.isEmpty())
+    if (m_undo.isEmpty())
         return false;
-    m_redo.append(*p);
-    *p = m_undo.takeLast();
+    m_redo.append(m_mission);
+    m_mission = m_undo.takeLast();
     m_modified = true;
-    changed();
+    featuresEdited();
     return true;
 }
 
 bool PlanEditorModel::redo()
 {
-    Plan *p = editable();
-    if (!p || m_redo.isEmpty())
+    if (m_redo.isEmpty())
         return false;
-    m_undo.append(*p);
-    *p = m_redo.takeLast();
+    m_undo.append(m_mission);
+    m_mission = m_redo.takeLast();
     m_modified = true;
-    changed();
+    featuresEdited();
     return true;
 }
 

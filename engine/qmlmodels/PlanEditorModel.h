@@ -46,9 +46,13 @@ class PlanEditorModel : public QObject
     Q_PROPERTY(int errorCount READ errorCount NOTIFY edited)
     // {maneuvers, length (m), duration (s, -1: never ends), maxDepth (m, -1: none)}.
     Q_PROPERTY(QVariantMap statistics READ statistics NOTIFY edited)
-    // The mission's areas, to draw under the plan: [{id, name, role, points: [{lat, lon}]}]
-    // (mission::areaOutline: polygons, circles, boxes, cylinders, ellipsoids).
-    Q_PROPERTY(QVariantList areas READ areas NOTIFY missionChanged)
+    // The mission's map features, to draw and edit: [{id, kind, name, color,
+    // layer, role, lat, lon (its position, NaN: none), points: [{lat, lon}]
+    // (path, polygon, image corners), outline: [{lat, lon}] (an area's, by
+    // mission::areaOutline), file (absolute), scale, rotation}].
+    Q_PROPERTY(QVariantList features READ features NOTIFY featuresChanged)
+    // The layers the features are in ("" is the features without one).
+    Q_PROPERTY(QStringList layers READ layers NOTIFY featuresChanged)
     Q_PROPERTY(bool modified READ modified NOTIFY edited)
     Q_PROPERTY(bool canUndo READ canUndo NOTIFY edited)
     Q_PROPERTY(bool canRedo READ canRedo NOTIFY edited)
@@ -72,7 +76,8 @@ public:
     QVariantList transitions() const;
     int errorCount() const;
     QVariantMap statistics() const;
-    QVariantList areas() const;
+    QVariantList features() const { return m_featureList; }
+    QStringList layers() const;
     bool modified() const { return m_modified; }
     bool canUndo() const { return !m_undo.isEmpty(); }
     bool canRedo() const { return !m_redo.isEmpty(); }
@@ -100,6 +105,25 @@ public:
     Q_INVOKABLE bool setStart(const QString &id);
     // A condition as it is typed: {ok, line, column, message}.
     Q_INVOKABLE QVariantMap checkCondition(const QString &condition) const;
+    // The map: a feature of `kind` (mark, transponder, path, polygon, circle,
+    // box, cylinder, ellipsoid, image, model) at the points tapped ([{lat,
+    // lon}]: two or more for a path, three or more for a polygon, one for the
+    // rest), in the mission's first map: its id, or "".
+    Q_INVOKABLE QString addFeature(const QString &kind, const QVariantList &points);
+    // Moves the whole feature so that its position (or first point) is at lat/lon.
+    Q_INVOKABLE bool moveFeature(const QString &id, double lat, double lon);
+    // Reshapes: one point of a path or polygon, or an image's corner.
+    Q_INVOKABLE bool moveFeaturePoint(const QString &id, int index, double lat, double lon);
+    // A point more after `index` (a path's or polygon's), or one less.
+    Q_INVOKABLE bool insertFeaturePoint(const QString &id, int index, double lat, double lon);
+    Q_INVOKABLE bool removeFeaturePoint(const QString &id, int index);
+    Q_INVOKABLE bool removeFeature(const QString &id);
+    // One property (featureProperties' names), checked as the mission
+    // format has it: a bad value is refused with the reason in `error`.
+    Q_INVOKABLE bool setFeatureProperty(const QString &id, const QString &name, const QString &value);
+    // What the feature's properties form shows: [{name, value, type: "text" |
+    // "number" | "choice" | "color", choices, unit}].
+    Q_INVOKABLE QVariantList featureProperties(const QString &id) const;
     Q_INVOKABLE bool undo();
     Q_INVOKABLE bool redo();
     Q_INVOKABLE bool save();
@@ -110,6 +134,7 @@ public:
 signals:
     void missionChanged();
     void planChanged();
+    void featuresChanged();
     void edited();
     void errorChanged();
 
@@ -121,18 +146,21 @@ private:
     void fail(const QString &why);
     QString freshId(const QString &type) const;
     neptus::mission::Maneuver *find(const QString &id);
+    neptus::mission::Feature *feature(const QString &id);
+    void featuresEdited(); // the feature list again, the plan checked again (areas change it)
+    QVariantList featureList() const;
     QVariantList maneuverList() const;
     QVariantList problemList() const;
 
     QString m_path, m_planId, m_error;
     neptus::mission::Mission m_mission;
     neptus::mission::VehicleCatalog m_vehicles;
-    QList<neptus::mission::Plan> m_undo, m_redo;
+    QList<neptus::mission::Mission> m_undo, m_redo; // implicitly shared: a copy is cheap
     bool m_modified = false;
     neptus::mission::PlanGeometry m_geometry;
     QList<neptus::mission::PlanProblem> m_problems;
     // Conditions checked so far: compiling one takes milliseconds, a plan is checked on every edit.
     mutable QHash<QString, std::optional<neptus::scripting::CompileError>> m_conditionChecks;
     const std::optional<neptus::scripting::CompileError> &conditionProblem(const QString &condition) const;
-    QVariantList m_pathPoints, m_maneuverList, m_problemList; // made once per edit, read by every view
+    QVariantList m_pathPoints, m_maneuverList, m_problemList, m_featureList; // made once per edit, read by every view
 };

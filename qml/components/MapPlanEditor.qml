@@ -23,6 +23,11 @@ Item {
     property real rowAngle: 0       // the rows' direction, degrees from north
     property bool crossHatch: false // the rows again at right angles
     property bool showGraph: false  // the plan's graph beside the panel
+    property string mode: "plan"    // "plan": maneuvers; "map": the mission's map features
+    property string featureKind: "" // map mode: what a tap adds ("" selects)
+    property string selectedFeature: ""
+    property var hiddenLayers: []   // layers not drawn
+    readonly property var pointKinds: ["path", "polygon"] // drawn point by point, then finished
 
     // The model's lists, read once per edit (each read of a C++ list makes a new JS array).
     readonly property var maneuverList: planModel.maneuvers
@@ -42,6 +47,20 @@ Item {
         for (const over of [panel, graphLoader])
             if (over.visible && over.contains(over.mapFromItem(editor, at.x, at.y)))
                 return
+        const c = map.toCoordinate(at.x, at.y)
+        if (mode === "map") {
+            if (pointKinds.indexOf(featureKind) >= 0) {
+                area = area.concat([{ lat: c.lat, lon: c.lon }])
+            } else if (featureKind !== "") {
+                const id = planModel.addFeature(featureKind, [{ lat: c.lat, lon: c.lon }])
+                if (id !== "")
+                    selectedFeature = id
+                featureKind = ""
+            } else {
+                selectedFeature = featureLayer.featureAt(at)
+            }
+            return
+        }
         for (const m of maneuverList) {
             const p = map.screenPoint(m.lat, m.lon)
             if (Math.hypot(p.x - at.x, p.y - at.y) <= Theme.touchTarget / 2) {
@@ -49,13 +68,20 @@ Item {
                 return
             }
         }
-        const c = map.toCoordinate(at.x, at.y)
         if (tool === "area") {
             area = area.concat([{ lat: c.lat, lon: c.lon }])
         } else {
             const id = planModel.addManeuver(addType, c.lat, c.lon)
             if (id !== "")
                 selected = id
+        }
+    }
+    function finishShape(): void {
+        const id = planModel.addFeature(featureKind, area)
+        if (id !== "") {
+            selectedFeature = id
+            area = []
+            featureKind = ""
         }
     }
     function makeRows(): void {
@@ -73,25 +99,15 @@ Item {
         return m >= 60 ? qsTr("%1 h %2 min").arg(Math.floor(m / 60)).arg(m % 60) : qsTr("%1 min %2 s").arg(m).arg(Math.round(s % 60))
     }
 
-    // The mission's areas under the plan: operating areas outlined, no-go areas red.
-    Repeater {
-        model: planModel.areas
-        delegate: Shape {
-            id: areaShape
-            required property var modelData
-            readonly property bool noGo: modelData.role === "no-go"
-            objectName: "area:" + modelData.id
-            anchors.fill: parent
-            ShapePath {
-                strokeColor: areaShape.noGo ? Theme.levelColor(4) : Theme.textDim
-                strokeWidth: Math.max(1.5, Theme.mm(0.3))
-                strokeStyle: areaShape.noGo ? ShapePath.SolidLine : ShapePath.DashLine
-                fillColor: areaShape.noGo ? Qt.alpha(Theme.levelColor(4), 0.25) : "transparent"
-                PathPolyline {
-                    path: areaShape.modelData.points.concat([areaShape.modelData.points[0]]).map(p => editor.map.screenPoint(p.lat, p.lon))
-                }
-            }
-        }
+    // The mission's map features under the plan.
+    MapFeatureLayer {
+        id: featureLayer
+        anchors.fill: parent
+        map: editor.map
+        model: planModel
+        hiddenLayers: editor.hiddenLayers
+        selected: editor.selectedFeature
+        editable: editor.mode === "map"
     }
     // The legs, transits included, and (for a plan of more than
     // `markerLimit` maneuvers) a dot per maneuver: one scene-graph item, not
@@ -197,6 +213,8 @@ Item {
         // Taps on the panel are the panel's, not the map's.
         MouseArea { anchors.fill: parent; acceptedButtons: Qt.AllButtons; onWheel: (w) => w.accepted = true }
         Flickable {
+            id: panelFlick
+            objectName: "planEditorFlick"
             anchors { fill: parent; margins: Theme.spacing }
             contentHeight: column.implicitHeight
             clip: true
@@ -214,10 +232,16 @@ Item {
                     font.bold: true
                     elide: Text.ElideRight
                 }
+                // What a tap on the map edits: the plan's maneuvers, or the mission's map.
+                Row {
+                    spacing: Theme.spacing / 2
+                    TouchButton { objectName: "planMode"; text: qsTr("Plan"); highlighted: editor.mode === "plan"; onClicked: { editor.mode = "plan"; editor.area = [] } }
+                    TouchButton { objectName: "mapMode"; text: qsTr("Map"); highlighted: editor.mode === "map"; onClicked: { editor.mode = "map"; editor.area = []; editor.tool = "add" } }
+                }
                 Flow {
                     width: parent.width
                     spacing: Theme.spacing / 2
-                    visible: planModel.planIds.length > 1
+                    visible: planModel.planIds.length > 1 && editor.mode === "plan"
                     Repeater {
                         model: planModel.planIds
                         delegate: TouchButton {
@@ -230,6 +254,7 @@ Item {
                 }
                 Text {
                     objectName: "planStatistics"
+                    visible: editor.mode === "plan"
                     width: parent.width
                     wrapMode: Text.Wrap
                     readonly property var s: planModel.statistics
@@ -247,7 +272,7 @@ Item {
                     readonly property real deepest: Math.max(1, ...points.map(p => p.z))
                     width: parent.width
                     height: Theme.mm(12)
-                    visible: points.length >= 2
+                    visible: points.length >= 2 && editor.mode === "plan"
                     Rectangle { anchors.fill: parent; color: Theme.water; radius: Theme.radius }
                     Shape {
                         anchors.fill: parent
@@ -281,6 +306,7 @@ Item {
                     }
                     TouchButton {
                         objectName: "graphButton"
+                        visible: editor.mode === "plan"
                         text: qsTr("Graph")
                         toolTip: qsTr("The plan's maneuvers and transitions, and their conditions")
                         highlighted: editor.showGraph
@@ -288,15 +314,24 @@ Item {
                     }
                     TouchButton {
                         objectName: "removeManeuverButton"
+                        visible: editor.mode === "plan"
                         text: qsTr("Remove")
                         enabled: editor.selected !== ""
                         onClicked: { planModel.removeManeuver(editor.selected); editor.selected = "" }
+                    }
+                    TouchButton {
+                        objectName: "removeFeatureButton"
+                        visible: editor.mode === "map"
+                        text: qsTr("Remove")
+                        enabled: editor.selectedFeature !== ""
+                        onClicked: { planModel.removeFeature(editor.selectedFeature); editor.selectedFeature = "" }
                     }
                 }
                 // Tools: a tap adds a maneuver of the chosen type, or a corner of an area.
                 Flow {
                     width: parent.width
                     spacing: Theme.spacing / 2
+                    visible: editor.mode === "plan"
                     Repeater {
                         model: planModel.maneuverTypes
                         delegate: TouchButton {
@@ -316,7 +351,7 @@ Item {
                     }
                 }
                 Flow {
-                    visible: editor.tool === "area"
+                    visible: editor.tool === "area" && editor.mode === "plan"
                     width: parent.width
                     spacing: Theme.spacing / 2
                     Text {
@@ -350,6 +385,117 @@ Item {
                         onClicked: editor.crossHatch = !editor.crossHatch
                     }
                     TouchButton { objectName: "makeRows"; text: qsTr("Rows"); enabled: editor.area.length >= 3; onClicked: editor.makeRows() }
+                }
+                // Map mode: a tap adds the chosen kind of feature (a path or
+                // polygon point by point, then Finish), or selects one.
+                Flow {
+                    width: parent.width
+                    spacing: Theme.spacing / 2
+                    visible: editor.mode === "map"
+                    Repeater {
+                        model: [["mark", qsTr("◆ Mark")], ["transponder", qsTr("▲ Transponder")], ["path", qsTr("╱ Path")],
+                                ["polygon", qsTr("▱ Polygon")], ["circle", qsTr("○ Circle")], ["box", qsTr("▭ Box")],
+                                ["cylinder", qsTr("◯ Cylinder")], ["ellipsoid", qsTr("⬭ Ellipsoid")], ["image", qsTr("▣ Image")],
+                                ["model", qsTr("⬢ 3D model")]]
+                        delegate: TouchButton {
+                            required property var modelData
+                            objectName: "addFeature-" + modelData[0]
+                            text: modelData[1]
+                            highlighted: editor.featureKind === modelData[0]
+                            onClicked: {
+                                editor.featureKind = editor.featureKind === modelData[0] ? "" : modelData[0]
+                                editor.area = []
+                            }
+                        }
+                    }
+                }
+                Flow {
+                    width: parent.width
+                    spacing: Theme.spacing / 2
+                    visible: editor.mode === "map" && editor.pointKinds.indexOf(editor.featureKind) >= 0
+                    Text {
+                        height: Theme.touchTarget
+                        verticalAlignment: Text.AlignVCenter
+                        text: qsTr("%n point(s) tapped", "", editor.area.length)
+                        color: Theme.text
+                        font.pixelSize: Theme.smallFontPixelSize
+                    }
+                    TouchButton {
+                        objectName: "finishShape"
+                        text: qsTr("Finish")
+                        enabled: editor.area.length >= (editor.featureKind === "polygon" ? 3 : 2)
+                        onClicked: editor.finishShape()
+                    }
+                }
+                // Layers: tap to show or hide.
+                Flow {
+                    width: parent.width
+                    spacing: Theme.spacing / 2
+                    visible: editor.mode === "map" && planModel.layers.length > 0
+                    Text {
+                        height: Theme.touchTarget
+                        verticalAlignment: Text.AlignVCenter
+                        text: qsTr("Layers")
+                        color: Theme.textDim
+                        font.pixelSize: Theme.smallFontPixelSize
+                    }
+                    Repeater {
+                        model: planModel.layers
+                        delegate: TouchButton {
+                            required property string modelData
+                            readonly property bool hidden: editor.hiddenLayers.indexOf(modelData) >= 0
+                            objectName: "layer-" + modelData
+                            text: (hidden ? "◌ " : "● ") + (modelData === "" ? qsTr("(none)") : modelData)
+                            highlighted: !hidden
+                            onClicked: editor.hiddenLayers = hidden ? editor.hiddenLayers.filter(l => l !== modelData)
+                                                                    : editor.hiddenLayers.concat([modelData])
+                        }
+                    }
+                }
+                // The selected feature's properties.
+                Text {
+                    visible: editor.mode === "map" && editor.selectedFeature !== ""
+                    text: editor.selectedFeature
+                    color: Theme.text
+                    font.pixelSize: Theme.fontPixelSize
+                    font.bold: true
+                }
+                Repeater {
+                    model: editor.mode === "map" && editor.selectedFeature !== "" && planModel.features.length >= 0
+                           ? planModel.featureProperties(editor.selectedFeature) : []
+                    delegate: Column {
+                        id: featureProperty
+                        required property var modelData
+                        width: column.width
+                        Text {
+                            text: featureProperty.modelData.name + (featureProperty.modelData.unit !== "" ? " (" + featureProperty.modelData.unit + ")" : "")
+                            color: Theme.textDim
+                            font.pixelSize: Theme.smallFontPixelSize
+                        }
+                        Flow {
+                            visible: featureProperty.modelData.type === "choice"
+                            width: parent.width
+                            spacing: Theme.spacing / 2
+                            Repeater {
+                                model: featureProperty.modelData.choices
+                                delegate: TouchButton {
+                                    required property string modelData
+                                    objectName: "choice:" + featureProperty.modelData.name + ":" + modelData
+                                    text: modelData
+                                    highlighted: featureProperty.modelData.value === modelData
+                                    onClicked: planModel.setFeatureProperty(editor.selectedFeature, featureProperty.modelData.name, modelData)
+                                }
+                            }
+                        }
+                        FormField {
+                            objectName: "property:" + featureProperty.modelData.name
+                            visible: featureProperty.modelData.type !== "choice"
+                            width: parent.width
+                            text: featureProperty.modelData.value
+                            inputMethodHints: featureProperty.modelData.type === "number" ? Qt.ImhFormattedNumbersOnly : Qt.ImhNone
+                            onCommitted: if (text !== featureProperty.modelData.value) planModel.setFeatureProperty(editor.selectedFeature, featureProperty.modelData.name, text)
+                        }
+                    }
                 }
                 Text {
                     objectName: "editorError"
@@ -391,14 +537,14 @@ Item {
                 }
                 // The selected maneuver's parameters.
                 Text {
-                    visible: editor.selected !== ""
+                    visible: editor.selected !== "" && editor.mode === "plan"
                     text: editor.selected
                     color: Theme.text
                     font.pixelSize: Theme.fontPixelSize
                     font.bold: true
                 }
                 Repeater {
-                    model: editor.selected !== "" && editor.maneuverList.length >= 0 ? planModel.parametersOf(editor.selected) : []
+                    model: editor.mode === "plan" && editor.selected !== "" && editor.maneuverList.length >= 0 ? planModel.parametersOf(editor.selected) : []
                     delegate: Column {
                         id: parameter
                         required property var modelData

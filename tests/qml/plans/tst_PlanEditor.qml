@@ -62,6 +62,14 @@ TestCase {
             found = found.concat(findAll(item.children[i], name))
         return found
     }
+    // Scrolls the editor's panel until `item` is in view (as a finger would).
+    function reveal(item) {
+        const flick = findChild(map2d, "planEditorFlick")
+        waitForItemPolished(flick.contentItem.children[0]) // rows just made are placed
+        const top = item.mapToItem(flick.contentItem, 0, 0).y
+        flick.contentY = Math.max(0, Math.min(top - flick.height / 2, flick.contentHeight - flick.height))
+        return item
+    }
     function tap(x, y) {
         const touch = touchEvent(map2d)
         touch.press(0, map2d, x, y).commit()
@@ -260,5 +268,92 @@ TestCase {
         compare(model().errorCount, errors)
         mouseClick(findChild(map2d, "graphButton"))
         tryVerify(() => findChild(map2d, "planGraph") === null)
+    }
+
+    // The map: features added by touch and mouse, moved, reshaped, given a
+    // role (a no-go area over the plan makes an error), put in a layer and
+    // hidden, an image scaled and turned by its corner; undone; saved.
+    function test_7_mapFeaturesByTouchAndMouse() {
+        map2d.centreAt(41.1415, -8.6100)
+        mouseClick(findChild(map2d, "mapMode"))
+        compare(editor().mode, "map")
+        const features = model().features.length
+        // A mark, by touch, then dragged by its handle (on the map: the handle moves under the pointer).
+        mouseClick(findChild(map2d, "addFeature-mark"))
+        let at = map2d.screenPoint(41.1425, -8.6085)
+        tap(at.x, at.y)
+        tryCompare(model().features, "length", features + 1)
+        compare(editor().selectedFeature, "mark1")
+        verify(findChild(map2d, "feature:mark1"))
+        mouseDrag(map2d, at.x, at.y, 40, 0)
+        let mark = model().features.find(f => f.id === "mark1")
+        verify(mark.lon > -8.6085 + 1e-5, "moved east: " + mark.lon)
+        fuzzyCompare(mark.lat, 41.1425, 2e-5)
+        // A polygon, corner by corner, made a no-go area over the plan's legs.
+        const errors = model().errorCount
+        mouseClick(findChild(map2d, "addFeature-polygon"))
+        for (const c of [[41.1403, -8.6116], [41.1412, -8.6116], [41.1412, -8.6104]]) {
+            at = map2d.screenPoint(c[0], c[1])
+            tap(at.x, at.y)
+        }
+        mouseClick(findChild(map2d, "finishShape"))
+        tryCompare(editor(), "selectedFeature", "polygon1")
+        verify(findChild(map2d, "area:polygon1"))
+        compare(model().errorCount, errors, "an area until it is made a no-go area")
+        mouseClick(reveal(findChild(map2d, "choice:role:no-go")))
+        tryVerify(() => model().errorCount > errors, 2000)
+        verify(model().problems.some(p => p.message.indexOf("polygon1") >= 0), model().problems.map(p => p.message).join("; "))
+        // Reshaped: its first corner dragged by mouse.
+        const corner = findChild(map2d, "featurePoint:0")
+        verify(corner)
+        const from = corner.mapToItem(map2d, corner.width / 2, corner.height / 2)
+        mouseDrag(map2d, from.x, from.y, 0, 30)
+        const polygon = model().features.find(f => f.id === "polygon1")
+        verify(polygon.points[0].lat < 41.1403 - 1e-5, "dragged south: " + polygon.points[0].lat)
+        // In a layer, hidden and shown again.
+        const layerField = reveal(findChild(map2d, "property:layer"))
+        layerField.forceActiveFocus()
+        layerField.text = "hazards"
+        keyClick(Qt.Key_Return)
+        tryVerify(() => model().layers.indexOf("hazards") >= 0)
+        mouseClick(reveal(findChild(map2d, "layer-hazards")))
+        tryVerify(() => findChild(map2d, "area:polygon1") === null)
+        mouseClick(reveal(findChild(map2d, "layer-hazards")))
+        tryVerify(() => findChild(map2d, "area:polygon1") !== null)
+        // A picture of 256 pixels at 0.5 m each, scaled and turned by its corner.
+        const png = Fixtures.makeTempDir() + "/chart.png"
+        verify(Fixtures.writeTile(png, "#3060c0"))
+        mouseClick(reveal(findChild(map2d, "addFeature-image")))
+        at = map2d.screenPoint(41.1428, -8.6095)
+        tap(at.x, at.y)
+        tryCompare(editor(), "selectedFeature", "image1")
+        const fileField = reveal(findChild(map2d, "property:file"))
+        fileField.forceActiveFocus()
+        fileField.text = png
+        keyClick(Qt.Key_Return)
+        tryVerify(() => findChild(map2d, "image:image1") && findChild(map2d, "image:image1").status === Image.Ready, 3000)
+        const image = findChild(map2d, "image:image1")
+        fuzzyCompare(image.width, 256 * 0.5 / map2d.metresPerPixel, 1)
+        const handle = findChild(map2d, "imageCorner")
+        tryVerify(() => handle.visible)
+        const h = handle.mapToItem(map2d, handle.width / 2, handle.height / 2)
+        // Twice as far from the centre, straight east of it: scale ×2, turned by the corner's 45°.
+        const centre = map2d.screenPoint(41.1428, -8.6095)
+        const distance = Math.hypot(h.x - centre.x, h.y - centre.y)
+        mouseDrag(map2d, h.x, h.y, centre.x + 2 * distance - h.x, centre.y - h.y)
+        const placed = model().features.find(f => f.id === "image1")
+        fuzzyCompare(placed.scale, 1.0, 0.03)
+        fuzzyCompare(placed.rotation, 45, 1)
+        tryVerify(() => Math.abs(findChild(map2d, "image:image1").width - 256 / map2d.metresPerPixel) < 2)
+        // Undone twice (rotation and scale), then saved with the rest.
+        mouseClick(reveal(findChild(map2d, "undoButton")))
+        mouseClick(findChild(map2d, "undoButton"))
+        compare(model().features.find(f => f.id === "image1").scale, 0.5)
+        mouseClick(findChild(map2d, "savePlanButton"))
+        tryCompare(model(), "modified", false)
+        const saved = Fixtures.readFile(file)
+        verify(saved.indexOf('<polygon id="polygon1" layer="hazards" role="no-go">') > 0, saved)
+        verify(saved.indexOf('<mark id="mark1"') > 0 && saved.indexOf('<image id="image1"') > 0, saved)
+        mouseClick(findChild(map2d, "planMode"))
     }
 }

@@ -4,6 +4,7 @@
 #include "qmlmodels/PlanEditorModel.h"
 
 #include <QFile>
+#include <QJsonArray>
 #include <QSignalSpy>
 #include <QTemporaryDir>
 
@@ -202,4 +203,76 @@ TEST(PlanEditor, TheGraphLaidOutInStepsFromTheStartWithConditionsChecked)
     again.setMissionPath(editor.missionPath());
     EXPECT_EQ(again.plan()->start, u"wait"_s);
     EXPECT_EQ(again.plan()->transitions.last().condition, u"sys[\"lauv-sim-1\"].Voltage.value > 24"_s);
+}
+
+TEST(PlanEditor, MapFeaturesAddedMovedReshapedAndUndoneWithThePlanCheckedAgainstThem)
+{
+    QTemporaryDir dir;
+    PlanEditorModel editor;
+    editor.setMissionPath(douroCopy(dir));
+    QSignalSpy features(&editor, &PlanEditorModel::featuresChanged);
+    const qsizetype before = editor.features().size();
+    const auto byFeature = [&](const QString &id) { return byId(editor.features(), id); };
+
+    // A mark where tapped; moved.
+    const QString mark = editor.addFeature(u"mark"_s, {QVariantMap{{u"lat"_s, 41.1401}, {u"lon"_s, -8.6201}}});
+    ASSERT_EQ(mark, u"mark1"_s) << editor.error().toStdString();
+    EXPECT_EQ(features.size(), 1);
+    EXPECT_EQ(editor.features().size(), before + 1);
+    ASSERT_TRUE(editor.moveFeature(mark, 41.1402, -8.6202));
+    EXPECT_DOUBLE_EQ(byFeature(mark).value(u"lat"_s).toDouble(), 41.1402);
+
+    // A no-go polygon over the survey plan's first leg: the plan has an error at once.
+    ASSERT_EQ(editor.errorCount(), 0);
+    const auto go = byId(editor.maneuvers(), u"go"_s);
+    const double lat = go.value(u"lat"_s).toDouble(), lon = go.value(u"lon"_s).toDouble();
+    const QString area = editor.addFeature(u"polygon"_s, {QVariantMap{{u"lat"_s, lat - 0.0003}, {u"lon"_s, lon - 0.0003}},
+                                                          QVariantMap{{u"lat"_s, lat + 0.0003}, {u"lon"_s, lon - 0.0003}},
+                                                          QVariantMap{{u"lat"_s, lat + 0.0003}, {u"lon"_s, lon + 0.0003}}});
+    ASSERT_FALSE(area.isEmpty()) << editor.error().toStdString();
+    EXPECT_EQ(editor.errorCount(), 0) << "an area's role is 'area' until said";
+    EXPECT_FALSE(editor.setFeatureProperty(area, u"role"_s, u"forbidden"_s));
+    EXPECT_TRUE(editor.error().contains(u"no-go"_s)) << "the choices named: " << editor.error().toStdString();
+    ASSERT_TRUE(editor.setFeatureProperty(area, u"role"_s, u"no-go"_s));
+    EXPECT_GE(editor.errorCount(), 1);
+    EXPECT_EQ(byFeature(area).value(u"outline"_s).toList().size(), 3);
+    // Reshaped: a fourth corner, one moved.
+    ASSERT_TRUE(editor.insertFeaturePoint(area, 2, lat, lon + 0.0006));
+    EXPECT_EQ(byFeature(area).value(u"points"_s).toList().size(), 4);
+    ASSERT_TRUE(editor.moveFeaturePoint(area, 0, lat - 0.0004, lon - 0.0004));
+    EXPECT_FALSE(editor.removeFeaturePoint(u"mark1"_s, 0));
+    EXPECT_FALSE(editor.setFeatureProperty(area, u"color"_s, u"red"_s)) << "#rrggbb only";
+    EXPECT_FALSE(editor.setFeatureProperty(area, u"z-min"_s, u"deep"_s));
+    ASSERT_TRUE(editor.setFeatureProperty(area, u"layer"_s, u"hazards"_s));
+    EXPECT_TRUE(editor.layers().contains(u"hazards"_s));
+
+    // A circle and a model, each with what the format requires.
+    const QString circle = editor.addFeature(u"circle"_s, {QVariantMap{{u"lat"_s, 41.15}, {u"lon"_s, -8.63}}});
+    EXPECT_EQ(byFeature(circle).value(u"outline"_s).toList().size(), 64);
+    EXPECT_FALSE(editor.setFeatureProperty(circle, u"radius"_s, u"-3"_s));
+    ASSERT_TRUE(editor.setFeatureProperty(circle, u"radius"_s, u"40"_s));
+    const QString model = editor.addFeature(u"model"_s, {QVariantMap{{u"lat"_s, 41.151}, {u"lon"_s, -8.631}}});
+    ASSERT_TRUE(editor.setFeatureProperty(model, u"file"_s, u"pier.obj"_s));
+    EXPECT_EQ(byFeature(model).value(u"file"_s).toString(), dir.filePath(u"pier.obj"_s)) << "beside the mission";
+    EXPECT_TRUE(editor.addFeature(u"polygon"_s, {QVariantMap{{u"lat"_s, 41.0}, {u"lon"_s, -8.0}}}).isEmpty());
+    EXPECT_TRUE(editor.addFeature(u"dragon"_s, {QVariantMap{{u"lat"_s, 41.0}, {u"lon"_s, -8.0}}}).isEmpty());
+
+    // Undo takes the no-go role back with the later edits; redo returns it.
+    while (editor.errorCount() > 0 && editor.canUndo())
+        editor.undo();
+    EXPECT_EQ(byFeature(area).value(u"role"_s), u"area"_s);
+    ASSERT_TRUE(editor.redo());
+    EXPECT_GE(editor.errorCount(), 1);
+    while (editor.canRedo())
+        editor.redo();
+
+    // Saved, read back as it was (the file is valid against the schema).
+    ASSERT_TRUE(editor.save()) << editor.error().toStdString();
+    PlanEditorModel again;
+    again.setMissionPath(editor.missionPath());
+    ASSERT_EQ(again.error(), QString());
+    // (As JSON: a polygon's position is NaN, never equal to itself.)
+    EXPECT_EQ(QJsonArray::fromVariantList(again.features()), QJsonArray::fromVariantList(editor.features()));
+    ASSERT_TRUE(again.removeFeature(mark));
+    EXPECT_EQ(again.features().size(), editor.features().size() - 1);
 }
