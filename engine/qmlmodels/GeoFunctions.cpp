@@ -20,6 +20,12 @@ double GeoFunctions::metresPerPixel(double lat, double zoomLevel) const
     return geo::metresPerPixel(radians(lat), zoomLevel);
 }
 
+QVariantMap GeoFunctions::ned(double lat, double lon, double homeLat, double homeLon) const
+{
+    const Eigen::Vector3d v = toNed({radians(lat), radians(lon), 0}, {radians(homeLat), radians(homeLon), 0});
+    return {{QStringLiteral("north"), v.x()}, {QStringLiteral("east"), v.y()}};
+}
+
 QPointF GeoFunctions::project(double lat, double lon, double centerLat, double centerLon, double zoomLevel,
                               double bearing, double width, double height) const
 {

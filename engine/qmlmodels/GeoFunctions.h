@@ -22,6 +22,8 @@ public:
     // Metres a screen pixel covers at a latitude on a Web Mercator map of
     // 256-pixel tiles at a zoom level.
     Q_INVOKABLE double metresPerPixel(double lat, double zoomLevel) const;
+    // {north, east} metres of (lat, lon) from (homeLat, homeLon), on the ellipsoid's surface.
+    Q_INVOKABLE QVariantMap ned(double lat, double lon, double homeLat, double homeLon) const;
     // Where (lat, lon) is drawn on a map of `width` x `height` pixels centred
     // on (centerLat, centerLon) at a zoom level, turned by `bearing` degrees;
     // and the {lat, lon} drawn at a point of it (MapProjection).

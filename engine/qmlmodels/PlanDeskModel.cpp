@@ -1,6 +1,7 @@
 #include "qmlmodels/PlanDeskModel.h"
 
 #include "mission/PlanGeometry.h"
+#include "qmlmodels/MissionFeatures.h"
 
 #include <QVariantMap>
 
@@ -14,6 +15,7 @@ PlanDeskModel::PlanDeskModel(neptus::plans::PlanDesk *desk, QObject *parent)
     connect(desk, &neptus::plans::PlanDesk::changed, this, &PlanDeskModel::changed);
     connect(desk, &neptus::plans::PlanDesk::missionChanged, this, [this] {
         m_summaries.clear();
+        m_features = missionFeatures(m_desk->mission(), m_desk->missionPath());
         emit missionChanged();
     });
 }

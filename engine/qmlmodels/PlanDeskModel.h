@@ -20,6 +20,8 @@ class PlanDeskModel : public QObject
     Q_PROPERTY(QString missionPath READ missionPath NOTIFY missionChanged)
     // Conditions of the mission's plans that do not compile, one line each.
     Q_PROPERTY(QStringList missionProblems READ missionProblems NOTIFY missionChanged)
+    // The mission's map features (missionFeatures()), for Scene3D.
+    Q_PROPERTY(QVariantList features READ features NOTIFY missionChanged)
 
 public:
     explicit PlanDeskModel(neptus::plans::PlanDesk *desk, QObject *parent = nullptr);
@@ -27,6 +29,7 @@ public:
     QString missionName() const;
     QString missionPath() const { return m_desk->missionPath(); }
     QStringList missionProblems() const { return m_desk->problems(); }
+    QVariantList features() const { return m_features; }
 
     // "" when opened, else why not (file and line).
     Q_INVOKABLE QString openMission(const QString &path);
@@ -58,4 +61,5 @@ private:
 
     neptus::plans::PlanDesk *m_desk;
     QHash<QString, QVariantMap> m_summaries; // the mission's plans: id, length, duration …
+    QVariantList m_features;
 };

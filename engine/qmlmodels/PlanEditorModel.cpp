@@ -3,6 +3,7 @@
 #include "core/SafeFile.h"
 #include "mission/MissionXml.h"
 #include "mission/Patterns.h"
+#include "qmlmodels/MissionFeatures.h"
 #include "plans/Supervisor.h"
 
 #include <QDir>
@@ -205,36 +206,6 @@ QVariantMap PlanEditorModel::statistics() const
             {u"maxDepth"_s, m_geometry.maxDepth.value_or(-1)}};
 }
 
-QVariantList PlanEditorModel::featureList() const
-{
-    QVariantList list;
-    const double none = std::numeric_limits<double>::quiet_NaN();
-    const QDir folder = QFileInfo(m_path).absoluteDir();
-    const auto latLon = [](const std::optional<GeoPosition> &p) {
-        return QVariantMap{{u"lat"_s, p ? p->lat : std::numeric_limits<double>::quiet_NaN()},
-                           {u"lon"_s, p ? p->lon : std::numeric_limits<double>::quiet_NaN()}};
-    };
-    for (const Map &map : m_mission.maps) {
-        for (const Feature &f : map.features) {
-            QVariantList points, outline;
-            for (const Feature::Point &p : f.points)
-                points.append(latLon(m_mission.position(p)));
-            for (const GeoPosition &p : areaOutline(f, m_mission))
-                outline.append(QVariantMap{{u"lat"_s, p.lat}, {u"lon"_s, p.lon}});
-            const auto at = m_mission.position(f.position);
-            const QString file = f.attributes.value(u"file"_s);
-            list.append(QVariantMap{{u"id"_s, f.id}, {u"kind"_s, f.kind}, {u"name"_s, f.name}, {u"color"_s, f.color},
-                                    {u"layer"_s, f.layer}, {u"role"_s, f.attributes.value(u"role"_s, u"area"_s)},
-                                    {u"lat"_s, at ? at->lat : none}, {u"lon"_s, at ? at->lon : none},
-                                    {u"points"_s, points}, {u"outline"_s, outline},
-                                    {u"file"_s, file.isEmpty() ? QString() : folder.absoluteFilePath(file)},
-                                    {u"scale"_s, f.attributes.value(u"scale"_s, u"1"_s).toDouble()},
-                                    {u"rotation"_s, f.attributes.value(u"rotation"_s, u"0"_s).toDouble()}});
-        }
-    }
-    return list;
-}
-
 QStringList PlanEditorModel::layers() const
 {
     QStringList names;
@@ -248,7 +219,7 @@ QStringList PlanEditorModel::layers() const
 
 void PlanEditorModel::featuresEdited()
 {
-    m_featureList = featureList();
+    m_featureList = missionFeatures(m_mission, m_path);
     emit featuresChanged();
     changed();
 }

@@ -46,10 +46,7 @@ class PlanEditorModel : public QObject
     Q_PROPERTY(int errorCount READ errorCount NOTIFY edited)
     // {maneuvers, length (m), duration (s, -1: never ends), maxDepth (m, -1: none)}.
     Q_PROPERTY(QVariantMap statistics READ statistics NOTIFY edited)
-    // The mission's map features, to draw and edit: [{id, kind, name, color,
-    // layer, role, lat, lon (its position, NaN: none), points: [{lat, lon}]
-    // (path, polygon, image corners), outline: [{lat, lon}] (an area's, by
-    // mission::areaOutline), file (absolute), scale, rotation}].
+    // The mission's map features, to draw and edit (missionFeatures()).
     Q_PROPERTY(QVariantList features READ features NOTIFY featuresChanged)
     // The layers the features are in ("" is the features without one).
     Q_PROPERTY(QStringList layers READ layers NOTIFY featuresChanged)
@@ -148,7 +145,6 @@ private:
     neptus::mission::Maneuver *find(const QString &id);
     neptus::mission::Feature *feature(const QString &id);
     void featuresEdited(); // the feature list again, the plan checked again (areas change it)
-    QVariantList featureList() const;
     QVariantList maneuverList() const;
     QVariantList problemList() const;
 

@@ -320,6 +320,15 @@ Rectangle {
         }
     }
 
+    // The console's mission's map, under the plans and systems (the editor
+    // draws its own copy while it is open).
+    MapFeatureLayer {
+        objectName: "missionMap"
+        anchors.fill: parent
+        visible: !root.editingPlan
+        map: root
+        features: Session.session && !root.editingPlan ? Session.session.plans.features : []
+    }
     // Plans running, one layer per system drawn (its own reports say which).
     Repeater {
         model: root.tracks
@@ -513,7 +522,6 @@ Rectangle {
         return formatDistance(m.distance) + " " + String(bearing).padStart(3, "0") + "°"
     }
 
-    // Measuring: the points tapped, the line between them, distance and bearing.
     // The plan editor, over the systems and under the controls.
     Loader {
         id: planEditorLoader

@@ -14,12 +14,13 @@ Item {
     id: layer
 
     required property var map           // the Map2D (var: it refers to this type)
-    required property PlanEditorModel model
+    required property var features      // missionFeatures(): the editor's or the plan desk's
+    property PlanEditorModel model: null // the editor's, to edit them
     property var hiddenLayers: []
     property string selected: ""
     property bool editable: false
 
-    readonly property var shown: model.features.filter(f => hiddenLayers.indexOf(f.layer) < 0)
+    readonly property var shown: features.filter(f => hiddenLayers.indexOf(f.layer) < 0)
     readonly property var selectedFeature: shown.find(f => f.id === selected) || null
 
     function colourOf(f: var): color {
@@ -180,59 +181,64 @@ Item {
             }
         }
     }
-    Item {
+    // Only an editing layer has handles.
+    Loader {
         anchors.fill: parent
-        visible: layer.editable && layer.selectedFeature !== null
-        Handle {
-            objectName: "featureMiddle"
-            readonly property var middle: layer.selectedFeature ? layer.middleOf(layer.selectedFeature) : ({ lat: 0, lon: 0 })
-            at: layer.map.screenPoint(middle.lat, middle.lon)
-            radius: Theme.radius
-            onDropped: (to) => {
-                const c = layer.map.toCoordinate(to.x, to.y)
-                // The middle of a shape by points moves by the same offset as the handle.
-                const f = layer.selectedFeature
-                const first = isNaN(f.lat) ? f.points[0] : { lat: f.lat, lon: f.lon }
-                layer.model.moveFeature(f.id, first.lat + c.lat - middle.lat, first.lon + c.lon - middle.lon)
-            }
-        }
-        Repeater {
-            model: layer.selectedFeature ? layer.selectedFeature.points : []
-            delegate: Handle {
-                required property var modelData
-                required property int index
-                objectName: "featurePoint:" + index
-                at: layer.map.screenPoint(modelData.lat, modelData.lon)
+        active: layer.editable && layer.model !== null
+        sourceComponent: Item {
+            anchors.fill: parent
+            visible: layer.selectedFeature !== null
+            Handle {
+                objectName: "featureMiddle"
+                readonly property var middle: layer.selectedFeature ? layer.middleOf(layer.selectedFeature) : ({ lat: 0, lon: 0 })
+                at: layer.map.screenPoint(middle.lat, middle.lon)
+                radius: Theme.radius
                 onDropped: (to) => {
                     const c = layer.map.toCoordinate(to.x, to.y)
-                    layer.model.moveFeaturePoint(layer.selected, index, c.lat, c.lon)
+                    // The middle of a shape by points moves by the same offset as the handle.
+                    const f = layer.selectedFeature
+                    const first = isNaN(f.lat) ? f.points[0] : { lat: f.lat, lon: f.lon }
+                    layer.model.moveFeature(f.id, first.lat + c.lat - middle.lat, first.lon + c.lon - middle.lon)
                 }
             }
-        }
-        // A centre-placed image: its top-right corner scales and turns it.
-        Handle {
-            id: imageCorner
-            objectName: "imageCorner"
-            readonly property Item picture: layer.selectedFeature && layer.selectedFeature.kind === "image" && layer.selectedFeature.points.length === 0
-                                            ? layer.findImage(layer.selected) : null
-            visible: picture !== null && picture.status === Image.Ready
-            // The top-right corner, turned with the picture about its centre.
-            readonly property real turn: picture ? picture.rotation * Math.PI / 180 : 0
-            at: picture ? Qt.point(picture.x + picture.width / 2 + Math.cos(turn) * picture.width / 2 + Math.sin(turn) * picture.height / 2,
-                                   picture.y + picture.height / 2 + Math.sin(turn) * picture.width / 2 - Math.cos(turn) * picture.height / 2)
-                        : Qt.point(0, 0)
-            onDropped: (to) => {
-                const centre = layer.map.screenPoint(layer.selectedFeature.lat, layer.selectedFeature.lon)
-                const halfDiagonal = Math.hypot(picture.sourceSize.width, picture.sourceSize.height) / 2
-                const metres = Math.hypot(to.x - centre.x, to.y - centre.y) * layer.map.metresPerPixel
-                // The corner's own angle from the image's up, and north's on the screen.
-                const north = layer.map.screenPoint(layer.selectedFeature.lat + 1e-4, layer.selectedFeature.lon)
-                const cornerAngle = Math.atan2(picture.sourceSize.width, picture.sourceSize.height) * 180 / Math.PI
-                const screenAngle = Math.atan2(to.x - centre.x, centre.y - to.y) * 180 / Math.PI
-                const northAngle = Math.atan2(north.x - centre.x, centre.y - north.y) * 180 / Math.PI
-                const turn = ((screenAngle - northAngle - cornerAngle) % 360 + 540) % 360 - 180
-                layer.model.setFeatureProperty(layer.selected, "scale", String(Number((metres / halfDiagonal).toPrecision(4))))
-                layer.model.setFeatureProperty(layer.selected, "rotation", String(Math.round(turn * 10) / 10))
+            Repeater {
+                model: layer.selectedFeature ? layer.selectedFeature.points : []
+                delegate: Handle {
+                    required property var modelData
+                    required property int index
+                    objectName: "featurePoint:" + index
+                    at: layer.map.screenPoint(modelData.lat, modelData.lon)
+                    onDropped: (to) => {
+                        const c = layer.map.toCoordinate(to.x, to.y)
+                        layer.model.moveFeaturePoint(layer.selected, index, c.lat, c.lon)
+                    }
+                }
+            }
+            // A centre-placed image: its top-right corner scales and turns it.
+            Handle {
+                id: imageCorner
+                objectName: "imageCorner"
+                readonly property Item picture: layer.selectedFeature && layer.selectedFeature.kind === "image" && layer.selectedFeature.points.length === 0
+                                                ? layer.findImage(layer.selected) : null
+                visible: picture !== null && picture.status === Image.Ready
+                // The top-right corner, turned with the picture about its centre.
+                readonly property real turn: picture ? picture.rotation * Math.PI / 180 : 0
+                at: picture ? Qt.point(picture.x + picture.width / 2 + Math.cos(turn) * picture.width / 2 + Math.sin(turn) * picture.height / 2,
+                                       picture.y + picture.height / 2 + Math.sin(turn) * picture.width / 2 - Math.cos(turn) * picture.height / 2)
+                            : Qt.point(0, 0)
+                onDropped: (to) => {
+                    const centre = layer.map.screenPoint(layer.selectedFeature.lat, layer.selectedFeature.lon)
+                    const halfDiagonal = Math.hypot(picture.sourceSize.width, picture.sourceSize.height) / 2
+                    const metres = Math.hypot(to.x - centre.x, to.y - centre.y) * layer.map.metresPerPixel
+                    // The corner's own angle from the image's up, and north's on the screen.
+                    const north = layer.map.screenPoint(layer.selectedFeature.lat + 1e-4, layer.selectedFeature.lon)
+                    const cornerAngle = Math.atan2(picture.sourceSize.width, picture.sourceSize.height) * 180 / Math.PI
+                    const screenAngle = Math.atan2(to.x - centre.x, centre.y - to.y) * 180 / Math.PI
+                    const northAngle = Math.atan2(north.x - centre.x, centre.y - north.y) * 180 / Math.PI
+                    const turn = ((screenAngle - northAngle - cornerAngle) % 360 + 540) % 360 - 180
+                    layer.model.setFeatureProperty(layer.selected, "scale", String(Number((metres / halfDiagonal).toPrecision(4))))
+                    layer.model.setFeatureProperty(layer.selected, "rotation", String(Math.round(turn * 10) / 10))
+                }
             }
         }
     }

@@ -104,6 +104,7 @@ Item {
         id: featureLayer
         anchors.fill: parent
         map: editor.map
+        features: planModel.features
         model: planModel
         hiddenLayers: editor.hiddenLayers
         selected: editor.selectedFeature

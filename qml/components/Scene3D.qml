@@ -25,6 +25,9 @@ Rectangle {
     property real vehicleScale: 1
 
     readonly property Tracks tracks: Session.tracks
+    // The scene's origin (the tracks' home) and the console's mission's map features.
+    readonly property var home: tracks ? tracks.home : ({ valid: false })
+    readonly property var features: Session.session ? Session.session.plans.features : []
     readonly property list<string> systems: tracks ? tracks.systems : []
     property bool following: follow !== ""
     // The system followed now: "" when not following or "$main" is not chosen yet.
@@ -142,6 +145,62 @@ Rectangle {
                     baseColor: root.colorOf(trail.system)
                     lineWidth: 2
                 }
+            }
+        }
+
+        // The mission's map features (the console's mission, as last saved):
+        // areas and paths as lines (an area with a depth range as the prism
+        // of water it covers), marks and transponders as buoys, 3D models
+        // read from their files through the model import helper.
+        Repeater3D {
+            model: root.home.valid ? root.features.filter(f => f.outline.length >= 3 || (f.kind === "path" && f.points.length >= 2)) : []
+            Model {
+                id: outline
+                required property var modelData
+                readonly property bool ranged: !isNaN(modelData.zMin) && !isNaN(modelData.zMax)
+                readonly property real sign: modelData.zUnits === "HEIGHT" ? -1 : 1
+                objectName: "featureOutline:" + modelData.id
+                geometry: OutlineGeometry {
+                    points: (outline.modelData.kind === "path" ? outline.modelData.points : outline.modelData.outline)
+                            .map(p => Geo.ned(p.lat, p.lon, root.home.lat, root.home.lon))
+                    closed: outline.modelData.kind !== "path"
+                    top: outline.ranged ? outline.sign * outline.modelData.zMin : 0
+                    bottom: outline.ranged ? outline.sign * outline.modelData.zMax : 0
+                }
+                materials: PrincipledMaterial {
+                    lighting: PrincipledMaterial.NoLighting
+                    baseColor: outline.modelData.role === "no-go" ? Theme.levelColor(4)
+                               : outline.modelData.role === "survey-area" ? Theme.levelColor(3)
+                               : outline.modelData.color !== "" ? outline.modelData.color : Theme.accent
+                    lineWidth: 2
+                }
+            }
+        }
+        Repeater3D {
+            model: root.home.valid ? root.features.filter(f => (f.kind === "mark" || f.kind === "transponder") && !isNaN(f.lat)) : []
+            Model {
+                id: buoy
+                required property var modelData
+                readonly property var ned: Geo.ned(modelData.lat, modelData.lon, root.home.lat, root.home.lon)
+                objectName: "featureMark:" + modelData.id
+                source: modelData.kind === "mark" ? "#Sphere" : "#Cone"
+                position: root.scenePosition(ned.north, ned.east, isNaN(modelData.depth) ? 0 : modelData.depth)
+                scale: Qt.vector3d(0.012, 0.012, 0.012)
+                materials: PrincipledMaterial { baseColor: buoy.modelData.color !== "" ? buoy.modelData.color : Theme.accent; roughness: 0.5 }
+            }
+        }
+        Repeater3D {
+            model: root.home.valid ? root.features.filter(f => f.kind === "model" && f.file !== "" && !isNaN(f.lat)) : []
+            Model {
+                id: placed
+                required property var modelData
+                readonly property var ned: Geo.ned(modelData.lat, modelData.lon, root.home.lat, root.home.lon)
+                objectName: "featureModel:" + modelData.id
+                position: root.scenePosition(ned.north, ned.east, isNaN(modelData.depth) ? (isNaN(modelData.height) ? 0 : -modelData.height) : modelData.depth)
+                rotation: root.attitude(modelData.roll, modelData.pitch, modelData.yaw)
+                scale: Qt.vector3d(modelData.scale, modelData.scale, modelData.scale)
+                geometry: ModelGeometry { source: "file://" + placed.modelData.file }
+                materials: PrincipledMaterial { vertexColorsEnabled: true; baseColor: Theme.palette === Theme.Night ? "#600000" : "#ffffff"; roughness: 0.8 }
             }
         }
 

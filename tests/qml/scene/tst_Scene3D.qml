@@ -171,4 +171,43 @@ TestCase {
         // (The first few pixels only start the pinch.)
         verify(scene.distance < d * 0.8, "spreading the fingers brings the camera closer: " + scene.distance)
     }
+
+    // The console's mission's map in 3D: a no-go area barring 5–20 m as a
+    // prism of lines, a mark at its depth, a 3D model read from its file.
+    function test_9z_theMissionsMapFeaturesAreInTheScene() {
+        const dir = Fixtures.makeTempDir()
+        verify(Fixtures.writeFile(dir + "/pier.obj", "v 0 0 0\nv 10 0 0\nv 10 0 4\nv 0 0 4\nf 1 2 3 4\n"))
+        verify(Fixtures.writeFile(dir + "/harbour.xml", '<?xml version="1.0" encoding="UTF-8"?>
+<mission format="1" id="harbour" name="Harbour">
+  <home lat="41.18" lon="-8.70" height="0"/>
+  <map id="m">
+    <polygon id="wreck" role="no-go" z-min="5" z-max="20" z-units="DEPTH">
+      <point north="0" east="100"/><point north="50" east="100"/><point north="50" east="150"/>
+    </polygon>
+    <mark id="buoy" north="30" east="-20" depth="3"/>
+    <model id="pier" file="pier.obj" north="-40" east="10" yaw="90"/>
+  </map>
+</mission>'))
+        compare(Fixtures.session.plans.openMission(dir + "/harbour.xml"), "")
+        tryVerify(() => findChild(scene.view, "featureOutline:wreck") !== null, 2000)
+        const wreck = findChild(scene.view, "featureOutline:wreck")
+        compare(wreck.geometry.lineCount, 9, "the ring at 5 m and at 20 m, and three uprights")
+        fuzzyCompare(wreck.geometry.points[1].north, 50, 0.5)
+        fuzzyCompare(wreck.geometry.points[2].east, 150, 0.5)
+        compare(wreck.geometry.top, 5)
+        compare(wreck.geometry.bottom, 20)
+        const buoy = findChild(scene.view, "featureMark:buoy")
+        near(buoy.position, -20, -3, -30, 0.5, "30 m north, 20 m west, 3 m down")
+        const pier = findChild(scene.view, "featureModel:pier")
+        near(pier.position, 10, 0, 40, 0.5, "40 m south, 10 m east")
+        tryCompare(pier.geometry, "triangleCount", 2, 10000, "read through the model import helper: " + pier.geometry.errorString)
+        // Something is drawn where the buoy is.
+        scene.target = buoy.position
+        scene.distance = 6
+        waitForRendering(scene)
+        const p = scene.view.mapFrom3DScene(buoy.scenePosition)
+        const image = grabImage(scene.view)
+        verify(!Qt.colorEqual(image.pixel(Math.round(p.x), Math.round(p.y)), image.pixel(5, 5)), "the buoy is drawn")
+        scene.resetView()
+    }
 }
