@@ -82,6 +82,7 @@ void PlanEditorModel::setPlanId(const QString &id)
     m_undo.clear();
     m_redo.clear();
     emit planChanged();
+    otherPlansAgain();
     changed();
 }
 
@@ -221,7 +222,24 @@ void PlanEditorModel::featuresEdited()
 {
     m_featureList = missionFeatures(m_mission, m_path);
     emit featuresChanged();
+    otherPlansAgain();
     changed();
+}
+
+void PlanEditorModel::otherPlansAgain()
+{
+    m_otherPlans.clear();
+    for (const Plan &p : m_mission.plans) {
+        if (p.id == m_planId)
+            continue;
+        const VehicleDefinition *v = m_vehicles.find(p.vehicle);
+        QVariantList path;
+        for (const ManeuverGeometry &g : planGeometry(p, v ? v->speeds() : SpeedModel{}).maneuvers)
+            for (const Waypoint &w : g.points)
+                path.append(QVariantMap{{u"lat"_s, w.lat}, {u"lon"_s, w.lon}});
+        m_otherPlans.append(QVariantMap{{u"id"_s, p.id}, {u"vehicle"_s, p.vehicle}, {u"path"_s, path}});
+    }
+    emit otherPlansChanged();
 }
 
 Feature *PlanEditorModel::feature(const QString &id)

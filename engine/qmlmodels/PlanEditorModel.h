@@ -46,6 +46,9 @@ class PlanEditorModel : public QObject
     Q_PROPERTY(int errorCount READ errorCount NOTIFY edited)
     // {maneuvers, length (m), duration (s, -1: never ends), maxDepth (m, -1: none)}.
     Q_PROPERTY(QVariantMap statistics READ statistics NOTIFY edited)
+    // The mission's other plans, drawn fainter in their vehicles' colours:
+    // [{id, vehicle, path: [{lat, lon}]}].
+    Q_PROPERTY(QVariantList otherPlans READ otherPlans NOTIFY otherPlansChanged)
     // The mission's map features, to draw and edit (missionFeatures()).
     Q_PROPERTY(QVariantList features READ features NOTIFY featuresChanged)
     // The layers the features are in ("" is the features without one).
@@ -74,6 +77,7 @@ public:
     int errorCount() const;
     QVariantMap statistics() const;
     QVariantList features() const { return m_featureList; }
+    QVariantList otherPlans() const { return m_otherPlans; }
     QStringList layers() const;
     bool modified() const { return m_modified; }
     bool canUndo() const { return !m_undo.isEmpty(); }
@@ -132,6 +136,7 @@ signals:
     void missionChanged();
     void planChanged();
     void featuresChanged();
+    void otherPlansChanged();
     void edited();
     void errorChanged();
 
@@ -159,4 +164,6 @@ private:
     mutable QHash<QString, std::optional<neptus::scripting::CompileError>> m_conditionChecks;
     const std::optional<neptus::scripting::CompileError> &conditionProblem(const QString &condition) const;
     QVariantList m_pathPoints, m_maneuverList, m_problemList, m_featureList; // made once per edit, read by every view
+    QVariantList m_otherPlans; // when the mission or the plan being edited changes
+    void otherPlansAgain();
 };

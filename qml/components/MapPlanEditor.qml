@@ -114,6 +114,45 @@ Item {
     // `markerLimit` maneuvers) a dot per maneuver: one scene-graph item, not
     // a binding per point.
     readonly property int markerLimit: 100
+    // Each vehicle's colour: its trail's when it is heard, else one of the
+    // next ones by its place among the mission's plans.
+    readonly property var planVehicles: [planModel.vehicle].concat(planModel.otherPlans.map(p => p.vehicle))
+    function vehicleColour(vehicle: string): color {
+        const heard = editor.map.systems.indexOf(vehicle)
+        return Theme.traceColor(heard >= 0 ? heard : editor.map.systems.length + planVehicles.indexOf(vehicle))
+    }
+    // The mission's other plans, fainter, in their vehicles' colours, named where they begin.
+    Repeater {
+        model: planModel.otherPlans
+        delegate: Item {
+            id: other
+            required property var modelData
+            objectName: "otherPlan:" + modelData.id
+            anchors.fill: parent
+            opacity: 0.6
+            PlanOverlayItem {
+                anchors.fill: parent
+                centerLatitude: editor.map.centerLatitude
+                centerLongitude: editor.map.centerLongitude
+                zoomLevel: editor.map.zoomLevel
+                bearing: editor.map.bearing
+                path: other.modelData.path
+                lineColor: editor.vehicleColour(other.modelData.vehicle)
+                lineWidth: Math.max(1.5, Theme.mm(0.35))
+            }
+            Text {
+                readonly property point at: other.modelData.path.length ? editor.map.screenPoint(other.modelData.path[0].lat, other.modelData.path[0].lon)
+                                                                        : Qt.point(-1000, -1000)
+                x: at.x + Theme.mm(2)
+                y: at.y - height
+                text: other.modelData.id + " · " + other.modelData.vehicle
+                color: editor.vehicleColour(other.modelData.vehicle)
+                style: Text.Outline
+                styleColor: Theme.background
+                font.pixelSize: Theme.smallFontPixelSize
+            }
+        }
+    }
     PlanOverlayItem {
         objectName: "planOverlay"
         anchors.fill: parent
@@ -123,7 +162,7 @@ Item {
         bearing: editor.map.bearing
         path: planModel.path
         maneuvers: editor.maneuverList.length > editor.markerLimit ? editor.maneuverList : []
-        lineColor: Theme.accent
+        lineColor: editor.vehicleColour(planModel.vehicle)
         lineWidth: Math.max(2, Theme.mm(0.5))
         dotRadius: Theme.mm(1.6)
         dotColor: Theme.surface

@@ -58,6 +58,12 @@ TEST(PlanEditor, OpensAMissionAtItsFirstPlanWithItsVehiclesManeuvers)
     EXPECT_NEAR(along, editor.statistics().value(u"length"_s).toDouble(), 0.05 * along);
     EXPECT_EQ(editor.path().last().toMap().value(u"zUnits"_s), u"DEPTH"_s);
     EXPECT_FALSE(editor.canUndo());
+    // The other vehicle's plan, drawn beside it.
+    ASSERT_EQ(editor.otherPlans().size(), 1);
+    EXPECT_EQ(editor.otherPlans()[0].toMap().value(u"vehicle"_s), u"caravela-sim"_s);
+    EXPECT_GE(editor.otherPlans()[0].toMap().value(u"path"_s).toList().size(), 3);
+    editor.setPlanId(u"patrol"_s);
+    EXPECT_EQ(editor.otherPlans()[0].toMap().value(u"id"_s), u"survey"_s);
 
     PlanEditorModel missing;
     missing.setMissionPath(dir.filePath(u"none.xml"_s));
