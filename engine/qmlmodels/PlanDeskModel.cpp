@@ -5,6 +5,8 @@
 
 #include <QVariantMap>
 
+#include <limits>
+
 using namespace Qt::StringLiterals;
 using neptus::plans::Sync;
 
@@ -18,6 +20,28 @@ PlanDeskModel::PlanDeskModel(neptus::plans::PlanDesk *desk, QObject *parent)
         m_features = missionFeatures(m_desk->mission(), m_desk->missionPath());
         emit missionChanged();
     });
+}
+
+QVariantList PlanDeskModel::checklistFor(const QString &system) const
+{
+    QVariantList items;
+    const auto &mission = m_desk->mission();
+    const double none = std::numeric_limits<double>::quiet_NaN();
+    for (const neptus::mission::Checklist &list : mission.checklists) {
+        if (list.id != system && mission.vehicles.contains(list.id))
+            continue; // another vehicle's
+        for (const auto &group : list.groups) {
+            for (const neptus::mission::ChecklistItem &item : group.items) {
+                QString variable = item.variable;
+                if (!variable.isEmpty() && variable.count(u'/') == 1)
+                    variable = system + u'/' + variable;
+                items.append(QVariantMap{{u"checklist"_s, list.name.isEmpty() ? list.id : list.name}, {u"group"_s, group.name},
+                                         {u"text"_s, item.text}, {u"note"_s, item.note}, {u"checked"_s, item.checked},
+                                         {u"variable"_s, variable}, {u"min"_s, item.min.value_or(none)}, {u"max"_s, item.max.value_or(none)}});
+            }
+        }
+    }
+    return items;
 }
 
 QString PlanDeskModel::missionName() const

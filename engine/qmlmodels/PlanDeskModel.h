@@ -44,6 +44,12 @@ public:
     // "" or why a transition condition does not compile, for an editor checking as one types.
     Q_INVOKABLE QString checkCondition(const QString &expression) const { return neptus::plans::Supervisor::conditionError(expression); }
     Q_INVOKABLE QStringList logOf(const QString &system) const { return m_desk->log(system); }
+    // What to check before starting a plan on `system`: the items of the
+    // mission's checklists but those named after another of its vehicles,
+    // [{checklist, group, text, note, checked, variable, min, max}], the
+    // variable a full tree path ("message/field" taken as the system's own)
+    // and min/max NaN when not given.
+    Q_INVOKABLE QVariantList checklistFor(const QString &system) const;
 
     Q_INVOKABLE QString refresh(const QString &system) { return said(m_desk->refresh(system)); }
     Q_INVOKABLE QString send(const QString &system, const QString &planId) { return said(m_desk->send(system, planId)); }

@@ -843,6 +843,103 @@ bool PlanEditorModel::setStart(const QString &id)
     return true;
 }
 
+QVariantList PlanEditorModel::checklistItems() const
+{
+    QVariantList items;
+    const double none = std::numeric_limits<double>::quiet_NaN();
+    for (qsizetype l = 0; l < m_mission.checklists.size(); ++l) {
+        const Checklist &list = m_mission.checklists[l];
+        for (qsizetype g = 0; g < list.groups.size(); ++g) {
+            for (qsizetype i = 0; i < list.groups[g].items.size(); ++i) {
+                const ChecklistItem &item = list.groups[g].items[i];
+                items.append(QVariantMap{{u"list"_s, int(l)}, {u"group"_s, int(g)}, {u"item"_s, int(i)},
+                                         {u"checklist"_s, list.name.isEmpty() ? list.id : list.name}, {u"groupName"_s, list.groups[g].name},
+                                         {u"text"_s, item.text}, {u"note"_s, item.note}, {u"variable"_s, item.variable},
+                                         {u"min"_s, item.min.value_or(none)}, {u"max"_s, item.max.value_or(none)}});
+            }
+        }
+    }
+    return items;
+}
+
+bool PlanEditorModel::addChecklistItem(const QString &text)
+{
+    if (text.trimmed().isEmpty()) {
+        fail(u"a checklist item needs its text"_s);
+        return false;
+    }
+    if (m_path.isEmpty()) {
+        fail(u"no mission is open to add to"_s);
+        return false;
+    }
+    remember();
+    if (m_mission.checklists.isEmpty())
+        m_mission.checklists.append(Checklist{u"checks"_s, u"Checks"_s, {}});
+    Checklist &list = m_mission.checklists.first();
+    if (list.groups.isEmpty())
+        list.groups.append({u"General"_s, {}});
+    ChecklistItem item;
+    item.text = text.trimmed();
+    list.groups.last().items.append(item);
+    m_modified = true;
+    fail({});
+    featuresEdited();
+    return true;
+}
+
+bool PlanEditorModel::setChecklistItem(int list, int group, int item, const QString &field, const QString &value)
+{
+    if (list < 0 || list >= m_mission.checklists.size() || group < 0 || group >= m_mission.checklists[list].groups.size()
+        || item < 0 || item >= m_mission.checklists[list].groups[group].items.size())
+        return false;
+    const QString text = value.trimmed();
+    std::optional<double> number;
+    if (field == u"min"_s || field == u"max"_s) {
+        bool ok = true;
+        const double v = text.toDouble(&ok);
+        if (!text.isEmpty() && (!ok || !std::isfinite(v))) {
+            fail(u"%1: not a number: '%2'"_s.arg(field, text));
+            return false;
+        }
+        if (!text.isEmpty())
+            number = v;
+    } else if (field == u"text"_s && text.isEmpty()) {
+        fail(u"a checklist item needs its text"_s);
+        return false;
+    } else if (field != u"text"_s && field != u"note"_s && field != u"variable"_s) {
+        fail(u"a checklist item has no field '%1'"_s.arg(field));
+        return false;
+    }
+    remember();
+    ChecklistItem &i = m_mission.checklists[list].groups[group].items[item];
+    if (field == u"text"_s)
+        i.text = text;
+    else if (field == u"note"_s)
+        i.note = text;
+    else if (field == u"variable"_s)
+        i.variable = text;
+    else if (field == u"min"_s)
+        i.min = number;
+    else
+        i.max = number;
+    m_modified = true;
+    fail({});
+    featuresEdited();
+    return true;
+}
+
+bool PlanEditorModel::removeChecklistItem(int list, int group, int item)
+{
+    if (list < 0 || list >= m_mission.checklists.size() || group < 0 || group >= m_mission.checklists[list].groups.size()
+        || item < 0 || item >= m_mission.checklists[list].groups[group].items.size())
+        return false;
+    remember();
+    m_mission.checklists[list].groups[group].items.removeAt(item);
+    m_modified = true;
+    featuresEdited();
+    return true;
+}
+
 bool PlanEditorModel::undo()
 {
     if (m_undo.isEmpty())

@@ -46,6 +46,10 @@ class PlanEditorModel : public QObject
     Q_PROPERTY(int errorCount READ errorCount NOTIFY edited)
     // {maneuvers, length (m), duration (s, -1: never ends), maxDepth (m, -1: none)}.
     Q_PROPERTY(QVariantMap statistics READ statistics NOTIFY edited)
+    // The mission's checklists' items, in order: [{list, group, item
+    // (indices), checklist (its name or id), groupName, text, note, variable,
+    // min, max (NaN: none)}].
+    Q_PROPERTY(QVariantList checklistItems READ checklistItems NOTIFY featuresChanged)
     // The mission's other plans, drawn fainter in their vehicles' colours:
     // [{id, vehicle, path: [{lat, lon}]}].
     Q_PROPERTY(QVariantList otherPlans READ otherPlans NOTIFY otherPlansChanged)
@@ -78,6 +82,7 @@ public:
     QVariantMap statistics() const;
     QVariantList features() const { return m_featureList; }
     QVariantList otherPlans() const { return m_otherPlans; }
+    QVariantList checklistItems() const;
     QStringList layers() const;
     bool modified() const { return m_modified; }
     bool canUndo() const { return !m_undo.isEmpty(); }
@@ -125,6 +130,13 @@ public:
     // What the feature's properties form shows: [{name, value, type: "text" |
     // "number" | "choice" | "color", choices, unit}].
     Q_INVOKABLE QVariantList featureProperties(const QString &id) const;
+    // Checklists: an item at the end of the first checklist's last group
+    // (a checklist "checks" with a group "General" made when there is none);
+    // one field of an item (text, note, variable, min, max; a bad number is
+    // refused); removing one.
+    Q_INVOKABLE bool addChecklistItem(const QString &text);
+    Q_INVOKABLE bool setChecklistItem(int list, int group, int item, const QString &field, const QString &value);
+    Q_INVOKABLE bool removeChecklistItem(int list, int group, int item);
     Q_INVOKABLE bool undo();
     Q_INVOKABLE bool redo();
     Q_INVOKABLE bool save();

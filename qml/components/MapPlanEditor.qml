@@ -23,7 +23,7 @@ Item {
     property real rowAngle: 0       // the rows' direction, degrees from north
     property bool crossHatch: false // the rows again at right angles
     property bool showGraph: false  // the plan's graph beside the panel
-    property string mode: "plan"    // "plan": maneuvers; "map": the mission's map features
+    property string mode: "plan"    // "plan": maneuvers; "map": the mission's map features; "checks": its checklists
     property string featureKind: "" // map mode: what a tap adds ("" selects)
     property string selectedFeature: ""
     property var hiddenLayers: []   // layers not drawn
@@ -47,6 +47,8 @@ Item {
         for (const over of [panel, graphLoader])
             if (over.visible && over.contains(over.mapFromItem(editor, at.x, at.y)))
                 return
+        if (mode === "checks")
+            return
         const c = map.toCoordinate(at.x, at.y)
         if (mode === "map") {
             if (pointKinds.indexOf(featureKind) >= 0) {
@@ -277,6 +279,7 @@ Item {
                     spacing: Theme.spacing / 2
                     TouchButton { objectName: "planMode"; text: qsTr("Plan"); highlighted: editor.mode === "plan"; onClicked: { editor.mode = "plan"; editor.area = [] } }
                     TouchButton { objectName: "mapMode"; text: qsTr("Map"); highlighted: editor.mode === "map"; onClicked: { editor.mode = "map"; editor.area = []; editor.tool = "add" } }
+                    TouchButton { objectName: "checksMode"; text: qsTr("Checks"); highlighted: editor.mode === "checks"; onClicked: { editor.mode = "checks"; editor.area = [] } }
                 }
                 Flow {
                     width: parent.width
@@ -535,6 +538,99 @@ Item {
                             inputMethodHints: featureProperty.modelData.type === "number" ? Qt.ImhFormattedNumbersOnly : Qt.ImhNone
                             onCommitted: if (text !== featureProperty.modelData.value) planModel.setFeatureProperty(editor.selectedFeature, featureProperty.modelData.name, text)
                         }
+                    }
+                }
+                // Checks mode: the mission's checklists (shown before a plan starts).
+                Repeater {
+                    model: editor.mode === "checks" ? planModel.checklistItems : []
+                    delegate: Rectangle {
+                        id: checkRow
+                        required property var modelData
+                        required property int index
+                        objectName: "checkRow:" + index
+                        width: column.width
+                        height: checkColumn.implicitHeight + Theme.spacing
+                        color: "transparent"
+                        border.color: Theme.border
+                        radius: Theme.radius
+                        function set(field: string, value: string): void {
+                            planModel.setChecklistItem(modelData.list, modelData.group, modelData.item, field, value)
+                        }
+                        Column {
+                            id: checkColumn
+                            x: Theme.spacing / 2
+                            y: Theme.spacing / 2
+                            width: parent.width - Theme.spacing
+                            spacing: Theme.spacing / 4
+                            Text {
+                                text: checkRow.modelData.checklist + " · " + checkRow.modelData.groupName
+                                color: Theme.textDim
+                                font.pixelSize: Theme.smallFontPixelSize
+                            }
+                            FormField {
+                                objectName: "checkText"
+                                width: parent.width
+                                text: checkRow.modelData.text
+                                onCommitted: if (text !== checkRow.modelData.text) checkRow.set("text", text)
+                            }
+                            FormField {
+                                objectName: "checkVariable"
+                                width: parent.width
+                                text: checkRow.modelData.variable
+                                placeholderText: qsTr("ticked by hand, or a variable: Voltage/value")
+                                font.family: Theme.monospaceFont
+                                onCommitted: if (text !== checkRow.modelData.variable) checkRow.set("variable", text)
+                            }
+                            Row {
+                                visible: checkRow.modelData.variable !== ""
+                                spacing: Theme.spacing / 2
+                                FormField {
+                                    objectName: "checkMin"
+                                    width: Theme.mm(16)
+                                    text: isNaN(checkRow.modelData.min) ? "" : checkRow.modelData.min
+                                    placeholderText: qsTr("min")
+                                    inputMethodHints: Qt.ImhFormattedNumbersOnly
+                                    onCommitted: checkRow.set("min", text)
+                                }
+                                Text { height: Theme.touchTarget; verticalAlignment: Text.AlignVCenter; text: "–"; color: Theme.text }
+                                FormField {
+                                    objectName: "checkMax"
+                                    width: Theme.mm(16)
+                                    text: isNaN(checkRow.modelData.max) ? "" : checkRow.modelData.max
+                                    placeholderText: qsTr("max")
+                                    inputMethodHints: Qt.ImhFormattedNumbersOnly
+                                    onCommitted: checkRow.set("max", text)
+                                }
+                                TouchButton {
+                                    text: "✕"
+                                    toolTip: qsTr("Remove the item")
+                                    onClicked: planModel.removeChecklistItem(checkRow.modelData.list, checkRow.modelData.group, checkRow.modelData.item)
+                                }
+                            }
+                            TouchButton {
+                                visible: checkRow.modelData.variable === ""
+                                text: qsTr("✕ Remove")
+                                onClicked: planModel.removeChecklistItem(checkRow.modelData.list, checkRow.modelData.group, checkRow.modelData.item)
+                            }
+                        }
+                    }
+                }
+                Row {
+                    visible: editor.mode === "checks"
+                    spacing: Theme.spacing / 2
+                    FormField {
+                        id: newCheck
+                        objectName: "newCheck"
+                        width: column.width - addCheck.width - Theme.spacing / 2
+                        placeholderText: qsTr("A new item: what to check")
+                        onAccepted: if (planModel.addChecklistItem(text)) text = ""
+                    }
+                    TouchButton {
+                        id: addCheck
+                        objectName: "addCheck"
+                        text: qsTr("+ Item")
+                        enabled: newCheck.text.trim() !== ""
+                        onClicked: if (planModel.addChecklistItem(newCheck.text)) newCheck.text = ""
                     }
                 }
                 Text {

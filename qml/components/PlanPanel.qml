@@ -269,16 +269,111 @@ Rectangle {
                 onClicked: panel.run(panel.desk.stop(panel.target))
             }
         }
+        // The vehicle's checklist, before starting: items bound to a variable
+        // tick themselves while its value is in range (and untick when it
+        // leaves), the others by hand. Start waits for every tick, or for
+        // "Start anyway".
+        Column {
+            id: checklist
+            objectName: "checklist"
+            width: parent.width
+            spacing: Theme.spacing / 2
+            visible: panel.selectedPlan !== undefined && items.length > 0
+            readonly property var items: panel.desk && panel.hasTarget ? (panel.revision, panel.desk.checklistFor(panel.target)) : []
+            property var ticked: ({})        // by hand: index → true
+            property bool overridden: false  // "Start anyway"
+            property int done: 0
+            readonly property bool complete: overridden || done === items.length
+            function recount(): void {
+                let n = 0
+                for (let i = 0; i < rows.count; ++i)
+                    if (rows.itemAt(i) && rows.itemAt(i).isChecked)
+                        ++n
+                done = n
+            }
+            Connections {
+                target: panel
+                function onSelectedChanged(): void { checklist.ticked = {}; checklist.overridden = false }
+                function onTargetChanged(): void { checklist.ticked = {}; checklist.overridden = false }
+            }
+            Text {
+                width: parent.width
+                text: qsTr("Checklist · %1 of %2").arg(checklist.done).arg(checklist.items.length)
+                color: checklist.complete ? Theme.text : Theme.levelColor(3)
+                font.pixelSize: Theme.smallFontPixelSize
+                font.bold: true
+            }
+            Repeater {
+                id: rows
+                model: checklist.items
+                delegate: Rectangle {
+                    id: item
+                    required property var modelData
+                    required property int index
+                    readonly property bool bound: modelData.variable !== ""
+                    readonly property real value: bound && reading.present ? Number(reading.value) : NaN
+                    readonly property bool inRange: !isNaN(value) && (isNaN(modelData.min) || value >= modelData.min)
+                                                    && (isNaN(modelData.max) || value <= modelData.max)
+                    readonly property bool isChecked: bound ? inRange : (modelData.checked || checklist.ticked[index] === true)
+                    onIsCheckedChanged: checklist.recount()
+                    Component.onCompleted: checklist.recount()
+                    Component.onDestruction: Qt.callLater(checklist.recount)
+                    objectName: "checkItem:" + modelData.text
+                    width: checklist.width
+                    height: Math.max(Theme.touchTarget, label.implicitHeight + Theme.spacing)
+                    radius: Theme.radius
+                    color: "transparent"
+                    border.color: isChecked ? Theme.border : Theme.levelColor(3)
+                    Variable { id: reading; tree: Session.tree; path: item.modelData.variable }
+                    Text {
+                        id: box
+                        x: Theme.spacing
+                        anchors.verticalCenter: parent.verticalCenter
+                        text: item.isChecked ? "☑" : "☐"
+                        color: item.isChecked ? Theme.levelColor(1) : Theme.text
+                        font.pixelSize: Theme.largeFontPixelSize
+                    }
+                    Text {
+                        id: label
+                        anchors { left: box.right; right: parent.right; verticalCenter: parent.verticalCenter; margins: Theme.spacing }
+                        wrapMode: Text.Wrap
+                        text: item.modelData.text
+                              + (item.bound ? "  ·  " + (reading.present ? reading.text + (reading.unit !== "" ? " " + reading.unit : "") : qsTr("no value"))
+                                              + qsTr(" (auto)") : "")
+                              + (item.modelData.note !== "" ? "\n" + item.modelData.note : "")
+                        color: Theme.text
+                        font.pixelSize: Theme.smallFontPixelSize
+                    }
+                    TapHandler {
+                        enabled: !item.bound
+                        onTapped: {
+                            const t = Object.assign({}, checklist.ticked)
+                            t[item.index] = !(t[item.index] === true)
+                            checklist.ticked = t
+                        }
+                    }
+                }
+            }
+            TouchButton {
+                objectName: "startAnyway"
+                visible: !checklist.complete
+                text: qsTr("Start anyway")
+                toolTip: qsTr("Start without every item ticked")
+                onClicked: checklist.overridden = true
+            }
+        }
         SlideToConfirm {
             id: startSlide
             objectName: "start"
             width: parent.width
-            enabled: panel.selectedPlan !== undefined && (panel.selectedPlan.sync === "same" || panel.selectedPlan.sync === "vehicle")
+            readonly property bool onVehicle: panel.selectedPlan !== undefined && (panel.selectedPlan.sync === "same" || panel.selectedPlan.sync === "vehicle")
+            enabled: onVehicle && checklist.complete
             opacity: enabled ? 1 : 0.45
             tint: Theme.accent
             text: panel.selectedPlan === undefined ? qsTr("Pick a plan to start")
-                : enabled ? qsTr("Start %1 · %2").arg(panel.selected).arg(panel.target)
-                : qsTr("Send %1 before starting it").arg(panel.selected)
+                : !onVehicle ? qsTr("Send %1 before starting it").arg(panel.selected)
+                : !checklist.complete ? qsTr("Tick the checklist to start %1").arg(panel.selected)
+                : qsTr("Start %1 · %2").arg(panel.selected).arg(panel.target)
             onConfirmed: { panel.run(panel.desk.start(panel.target, panel.selected)); reset() }
         }
         SlideToConfirm {

@@ -356,4 +356,39 @@ TestCase {
         verify(saved.indexOf('<mark id="mark1"') > 0 && saved.indexOf('<image id="image1"') > 0, saved)
         mouseClick(findChild(map2d, "planMode"))
     }
+
+    // Checklists edited in the editor: an item added, bound to a variable
+    // with a range, saved; the plan panel's checklist reads it.
+    function test_8_checklistsEdited() {
+        mouseClick(findChild(map2d, "checksMode"))
+        const field = reveal(findChild(map2d, "newCheck"))
+        field.forceActiveFocus()
+        field.text = "Battery in range"
+        keyClick(Qt.Key_Return)
+        tryCompare(model().checklistItems, "length", 1)
+        const row = findChild(map2d, "checkRow:0")
+        const variable = reveal(findChild(row, "checkVariable"))
+        variable.forceActiveFocus()
+        variable.text = "Voltage/value"
+        keyClick(Qt.Key_Return)
+        tryCompare(model().checklistItems[0], "variable", "Voltage/value")
+        const min = reveal(findChild(findChild(map2d, "checkRow:0"), "checkMin"))
+        min.forceActiveFocus()
+        min.text = "24"
+        keyClick(Qt.Key_Return)
+        tryCompare(model().checklistItems[0], "min", 24)
+        verify(!model().setChecklistItem(0, 0, 0, "max", "lots"), "not a number")
+        // A tap on the map adds nothing here.
+        const count = model().maneuvers.length
+        tap(700, 400)
+        compare(model().maneuvers.length, count)
+        mouseClick(reveal(findChild(map2d, "savePlanButton")))
+        tryCompare(model(), "modified", false)
+        const saved = Fixtures.readFile(file)
+        verify(saved.indexOf('<item text="Battery in range" variable="Voltage/value" min="24"/>') > 0, saved)
+        const items = Fixtures.session.plans.checklistFor("lauv-sim-1")
+        compare(items.length, 1, "the desk read the saved mission")
+        compare(items[0].variable, "lauv-sim-1/Voltage/value")
+        mouseClick(findChild(map2d, "planMode"))
+    }
 }

@@ -114,4 +114,56 @@ TestCase {
         verify(plans.checkCondition('sys["lauv-sim-1"].EstimatedState.depth <') !== "", "an unfinished expression")
         verify(plans.checkCondition('distance("caravela-sim", "buoy") < 50 &&& 1') !== "")
     }
+
+    // Before starting, the vehicle's checklist: an item bound to the battery
+    // ticks itself in range and unticks out of it; one is ticked by hand;
+    // another vehicle's checklist is not shown; Start waits for every tick
+    // (or "Start anyway").
+    function test_5_theChecklistBeforeStarting() {
+        const withChecks = mission.replace("</mission>", `  <checklist id="before" name="Before launch">
+    <group name="Power">
+      <item text="Battery in range" variable="Voltage/value" min="24" max="30"/>
+      <item text="Hull closed" note="Two people check"/>
+    </group>
+  </checklist>
+  <checklist id="lauv-sim-2"><group name="Other"><item text="Not this vehicle's"/></group></checklist>
+</mission>`)
+        const file = Fixtures.makeTempDir() + "/checks.xml"
+        verify(Fixtures.writeFile(file, withChecks))
+        compare(Fixtures.session.plans.openMission(file), "")
+        Fixtures.ingest("Voltage", 0x1f, { value: 23 })
+        panel.revision++
+        tryVerify(() => syncOf("survey") !== "", 2000)
+        mouseClick(findChild(panel, "plan-survey"))
+        if (syncOf("survey") !== "same") {
+            mouseClick(findChild(panel, "send"))
+            tryVerify(() => syncOf("survey") === "same", 2000, syncOf("survey"))
+        }
+        const list = findChild(panel, "checklist")
+        verify(list.visible)
+        compare(list.items.length, 2, "not the other vehicle's")
+        compare(list.items[0].variable, "lauv-sim-1/Voltage/value", "the vehicle's own message")
+        const start = findChild(panel, "start")
+        const battery = findChild(panel, "checkItem:Battery in range")
+        tryVerify(() => battery.value === 23, 2000)
+        verify(!battery.isChecked && !start.enabled, start.text)
+        verify(start.text.indexOf("Tick the checklist") === 0, start.text)
+        Fixtures.ingest("Voltage", 0x1f, { value: 25.5 })
+        tryVerify(() => battery.isChecked, 2000, "ticked by itself: " + battery.value)
+        compare(list.done, 1)
+        verify(!start.enabled)
+        mouseClick(findChild(panel, "checkItem:Hull closed"))
+        compare(list.done, 2)
+        verify(start.enabled, "every item ticked")
+        Fixtures.ingest("Voltage", 0x1f, { value: 31 })
+        tryVerify(() => !battery.isChecked, 2000, "unticked when it leaves the range")
+        verify(!start.enabled)
+        mouseClick(findChild(panel, "startAnyway"))
+        verify(start.enabled)
+        verify(start.text.indexOf("Start survey") === 0, start.text)
+        // Another plan: the ticks by hand start again.
+        panel.selected = ""
+        panel.selected = "survey"
+        compare(list.done, 0)
+    }
 }
