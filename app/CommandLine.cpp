@@ -85,10 +85,16 @@ std::expected<CommandLine, QString> CommandLine::parse(const QStringList &argume
     const QCommandLineOption mission(QStringLiteral("mission"),
         QStringLiteral("A mission file (docs/missions.md) whose plans the plan panel offers to send and start."),
         QStringLiteral("file"));
+    const QCommandLineOption share(QStringLiteral("share"),
+        QStringLiteral("Share the --mission with the other consoles on DDS (their edits come here, ours go there); "
+                       "with no --mission, join the first shared mission heard."));
+    const QCommandLineOption name(QStringLiteral("console-name"),
+        QStringLiteral("This console's name to the others, said with every change it shares (default: user@host)."),
+        QStringLiteral("name"));
     const QCommandLineOption quitAfter(QStringLiteral("quit-after"),
         QStringLiteral("Exit after this many milliseconds."), QStringLiteral("ms"));
     parser.addOptions({console, screenshot, screenshotDelay, components, edit, select, system, palette, uiScale, gps, size, selfTest,
-                       imcPort, imcBind, imcPeer, ddsDomain, ddsConfig, ddsKeys, ddsIdentity, defs, defsFor, imcDiscovery, dumpTree, quitAfter, forgetAfter, mission});
+                       imcPort, imcBind, imcPeer, ddsDomain, ddsConfig, ddsKeys, ddsIdentity, defs, defsFor, imcDiscovery, dumpTree, quitAfter, forgetAfter, mission, share, name});
     // "--defs-for SYSTEM FILE" (two words, as the documentation writes it) is
     // "--defs-for SYSTEM=FILE" to the parser, which takes one value per option.
     QStringList words = arguments;
@@ -208,6 +214,10 @@ std::expected<CommandLine, QString> CommandLine::parse(const QStringList &argume
         result.imcDiscovery = value == u"on";
     }
     result.dumpTreeFile = parser.value(dumpTree);
+    result.share = parser.isSet(share);
+    result.name = parser.value(name).trimmed();
+    if (parser.isSet(name) && result.name.isEmpty())
+        return std::unexpected(QStringLiteral("--console-name: give this console a name"));
     if (parser.isSet(quitAfter)) {
         bool ok = false;
         result.quitAfterMs = parser.value(quitAfter).toInt(&ok);

@@ -13,6 +13,8 @@ struct CommandLine
 {
     QString consoleFile;     // layout to open
     QString missionFile;     // mission whose plans are offered (--mission)
+    bool share = false;      // share it with the other consoles (--share)
+    QString name;            // this console's name to the others (--console-name)
     QString screenshotFile;  // render, save a PNG, exit
     int screenshotDelayMs = 0; // wait this long after the first frame
     QString palette;         // day, dusk or night; empty = as last time

@@ -128,6 +128,16 @@ int main(int argc, char *argv[])
                         qPrintable(config.security.keys));
     }
 
+    // Sharing the mission (DDS): after the link is up, so the others hear it.
+    if (!commandLine->name.isEmpty())
+        session.missionShare().setAuthor(commandLine->name);
+    if (commandLine->share) {
+        if (const QString why = session.plansModel()->share(true); !why.isEmpty())
+            std::fprintf(stderr, "neptus: %s\n", qPrintable(why));
+        else
+            std::printf("neptus: sharing the mission as %s\n", qPrintable(session.missionShare().author()));
+    }
+
     // Components from --components, then the user's own and the system's
     // (the user's directory is made so there is a place to drop them).
     const QStringList standard = ComponentPalette::standardDirectories();

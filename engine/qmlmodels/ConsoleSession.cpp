@@ -49,8 +49,11 @@ ConsoleSession::ConsoleSession(std::shared_ptr<const msg::Schema> schema, const 
     , m_planDesk(m_console.sharedSchema(), m_console.tree(), m_console.alarmGraph(),
                  [this](quint16 system, const msg::Message &message) { return m_console.send(system, message); },
                  [this] { return m_console.scripts(); }, clock)
+    , m_share(m_console.sharedSchema(), plans::MissionShare::defaultAuthor(),
+              [this](const msg::Message &message) { return m_console.broadcast(message); })
 {
     connect(&m_console, &session::Console::planMessageReceived, &m_planDesk, &plans::PlanDesk::receive);
+    connect(&m_console, &session::Console::sharedMissionReceived, &m_share, &plans::MissionShare::receive);
 }
 
 ConsoleSession::~ConsoleSession() = default;

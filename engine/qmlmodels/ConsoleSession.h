@@ -38,6 +38,7 @@ public:
     neptus::scripting::ScriptHost *scripts() { return m_console.scripts(); }
     neptus::geo::Tracks *tracks() { return &m_tracks; }
     neptus::plans::PlanDesk &planDesk() { return m_planDesk; }
+    neptus::plans::MissionShare &missionShare() { return m_share; }
     PlanDeskModel *plansModel() { return &m_plansModel; }
 
     // For components (a joystick, a command button): sends a message, given
@@ -65,5 +66,6 @@ private:
     neptus::alarms::AlarmListModel m_alarmModel{&m_console.alarmGraph()};
     neptus::transport::LinkStatisticsModel m_linksModel{&m_console.linkStatistics(), &m_console.tree()};
     neptus::plans::PlanDesk m_planDesk;
-    PlanDeskModel m_plansModel{&m_planDesk};
+    neptus::plans::MissionShare m_share;
+    PlanDeskModel m_plansModel{&m_planDesk, &m_share};
 };

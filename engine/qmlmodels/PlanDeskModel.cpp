@@ -1,7 +1,13 @@
 #include "qmlmodels/PlanDeskModel.h"
 
 #include "mission/PlanGeometry.h"
+#include "core/SafeFile.h"
+#include "mission/MissionXml.h"
 #include "qmlmodels/MissionFeatures.h"
+
+#include <QDir>
+#include <QStandardPaths>
+#include <QTime>
 
 #include <QVariantMap>
 
@@ -10,10 +16,23 @@
 using namespace Qt::StringLiterals;
 using neptus::plans::Sync;
 
-PlanDeskModel::PlanDeskModel(neptus::plans::PlanDesk *desk, QObject *parent)
+PlanDeskModel::PlanDeskModel(neptus::plans::PlanDesk *desk, neptus::plans::MissionShare *share, QObject *parent)
     : QObject(parent)
     , m_desk(desk)
+    , m_share(share)
 {
+    if (share) {
+        connect(share, &neptus::plans::MissionShare::remoteChange, this, &PlanDeskModel::remoteChange);
+        connect(share, &neptus::plans::MissionShare::problem, this, [this](const QString &why) {
+            m_shareStatus = why;
+            emit sharingChanged();
+        });
+        // Changes arrive in bursts (a console joining gets every object): the
+        // file is written and the desk told once per burst.
+        m_store.setSingleShot(true);
+        m_store.setInterval(100);
+        connect(&m_store, &QTimer::timeout, this, &PlanDeskModel::storeShared);
+    }
     connect(desk, &neptus::plans::PlanDesk::changed, this, &PlanDeskModel::changed);
     connect(desk, &neptus::plans::PlanDesk::missionChanged, this, [this] {
         m_summaries.clear();
@@ -42,6 +61,64 @@ QVariantList PlanDeskModel::checklistFor(const QString &system) const
         }
     }
     return items;
+}
+
+QVariantMap PlanDeskModel::home() const
+{
+    const auto &m = m_desk->mission();
+    return {{u"lat"_s, m.home.lat}, {u"lon"_s, m.home.lon}, {u"valid"_s, !m.id.isEmpty()}};
+}
+
+QString PlanDeskModel::share(bool on)
+{
+    if (!m_share)
+        return tr("this console cannot share missions");
+    if (!on) {
+        m_share->stop();
+        m_shareStatus.clear();
+        emit sharingChanged();
+        return {};
+    }
+    auto started = m_share->start(m_desk->mission());
+    m_shareStatus = !started ? started.error()
+                  : m_desk->mission().id.isEmpty() ? tr("waiting for a shared mission") : tr("shared as %1").arg(m_share->author());
+    emit sharingChanged();
+    return started ? QString() : started.error();
+}
+
+void PlanDeskModel::shareEdits(const neptus::mission::Mission &mission)
+{
+    if (sharing())
+        m_share->update(mission);
+}
+
+void PlanDeskModel::remoteChange(const QString &author, const QString &what)
+{
+    m_shareStatus = tr("%1 changed by %2, %3").arg(what, author, QTime::currentTime().toString(u"HH:mm:ss"_s));
+    m_changes.append({author, what});
+    m_store.start();
+    emit sharingChanged();
+}
+
+void PlanDeskModel::storeShared()
+{
+    const neptus::mission::Mission &shared = m_share->mission();
+    if (shared.id.isEmpty())
+        return; // its header has not come yet
+    QString path = m_desk->missionPath();
+    if (path.isEmpty() || m_desk->mission().id != shared.id) {
+        const QString folder = QStandardPaths::writableLocation(QStandardPaths::AppDataLocation) + u"/shared"_s;
+        QDir().mkpath(folder);
+        path = folder + u'/' + shared.id + u".xml"_s;
+    }
+    // The file follows (nothing lost if the console stops), the previous one kept.
+    if (auto saved = neptus::saveFileKeepingPrevious(path, neptus::mission::writeMission(shared)); !saved) {
+        m_shareStatus = tr("the shared mission was not saved: %1").arg(saved.error());
+        emit sharingChanged();
+    }
+    m_desk->setMission(shared, path);
+    for (const auto &[author, what] : std::exchange(m_changes, {}))
+        emit sharedChange(author, what);
 }
 
 QString PlanDeskModel::missionName() const

@@ -1,10 +1,12 @@
 #pragma once
 
+#include "plans/MissionShare.h"
 #include "plans/PlanDesk.h"
 #include "plans/Supervisor.h"
 
 #include <QHash>
 #include <QObject>
+#include <QTimer>
 #include <QVariantList>
 #include <QtQml/qqmlregistration.h>
 
@@ -20,16 +22,31 @@ class PlanDeskModel : public QObject
     Q_PROPERTY(QString missionPath READ missionPath NOTIFY missionChanged)
     // Conditions of the mission's plans that do not compile, one line each.
     Q_PROPERTY(QStringList missionProblems READ missionProblems NOTIFY missionChanged)
+    // Whether the mission is shared with the other consoles on DDS, and what
+    // was last said of it ("plan survey changed by ana@boat, 12:41:07", or why not).
+    Q_PROPERTY(bool sharing READ sharing NOTIFY sharingChanged)
+    Q_PROPERTY(QString shareStatus READ shareStatus NOTIFY sharingChanged)
+    // The mission's home: {lat, lon, valid} (valid: a mission is open).
+    Q_PROPERTY(QVariantMap home READ home NOTIFY missionChanged)
     // The mission's map features (missionFeatures()), for Scene3D.
     Q_PROPERTY(QVariantList features READ features NOTIFY missionChanged)
 
 public:
-    explicit PlanDeskModel(neptus::plans::PlanDesk *desk, QObject *parent = nullptr);
+    PlanDeskModel(neptus::plans::PlanDesk *desk, neptus::plans::MissionShare *share, QObject *parent = nullptr);
 
     QString missionName() const;
     QString missionPath() const { return m_desk->missionPath(); }
     QStringList missionProblems() const { return m_desk->problems(); }
     QVariantList features() const { return m_features; }
+    QVariantMap home() const;
+    bool sharing() const { return m_share && m_share->sharing(); }
+    QString shareStatus() const { return m_shareStatus; }
+    // Starts or stops sharing the open mission (with none open: joins the
+    // first shared mission heard): "" or why not.
+    Q_INVOKABLE QString share(bool on);
+    // The mission as edited now (the plan editor, after every edit): what changed goes to the others.
+    void shareEdits(const neptus::mission::Mission &mission);
+    const neptus::mission::Mission *sharedMission() const { return sharing() ? &m_share->mission() : nullptr; }
 
     // "" when opened, else why not (file and line).
     Q_INVOKABLE QString openMission(const QString &path);
@@ -61,11 +78,20 @@ public:
 signals:
     void changed(const QString &system);
     void missionChanged();
+    void sharingChanged();
+    // Another console changed the shared mission (the desk has it, and the file).
+    void sharedChange(const QString &author, const QString &what);
 
 private:
     static QString said(const std::expected<void, QString> &result) { return result ? QString() : result.error(); }
 
     neptus::plans::PlanDesk *m_desk;
+    neptus::plans::MissionShare *m_share;
+    QString m_shareStatus;
+    QTimer m_store;
+    QList<std::pair<QString, QString>> m_changes; // (author, what) not yet told
+    void remoteChange(const QString &author, const QString &what);
+    void storeShared();
     QHash<QString, QVariantMap> m_summaries; // the mission's plans: id, length, duration …
     QVariantList m_features;
 };

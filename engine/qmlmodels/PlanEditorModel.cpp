@@ -128,6 +128,32 @@ void PlanEditorModel::remember()
     m_redo.clear();
 }
 
+void PlanEditorModel::setDesk(PlanDeskModel *desk)
+{
+    if (desk == m_desk)
+        return;
+    if (m_desk)
+        disconnect(m_desk, nullptr, this, nullptr);
+    m_desk = desk;
+    if (desk)
+        connect(desk, &PlanDeskModel::sharedChange, this, &PlanEditorModel::adoptShared);
+    emit deskChanged();
+}
+
+void PlanEditorModel::adoptShared()
+{
+    const Mission *shared = m_desk ? m_desk->sharedMission() : nullptr;
+    if (!shared || m_path.isEmpty() || m_desk->missionPath() != m_path || shared->id != m_mission.id)
+        return;
+    remember();
+    m_mission = *shared;
+    if (!plan() && !m_mission.plans.isEmpty())
+        m_planId = m_mission.plans.first().id;
+    m_modified = false; // the desk wrote the file as it is now
+    emit missionChanged();
+    featuresEdited();
+}
+
 void PlanEditorModel::changed()
 {
     m_pathPoints.clear();
@@ -159,6 +185,8 @@ void PlanEditorModel::changed()
     }
     m_maneuverList = maneuverList();
     m_problemList = problemList();
+    if (m_desk)
+        m_desk->shareEdits(m_mission); // only what changed goes out
     emit edited();
 }
 

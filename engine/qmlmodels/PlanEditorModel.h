@@ -4,9 +4,11 @@
 #include "mission/PlanCheck.h"
 #include "mission/PlanGeometry.h"
 #include "mission/Vehicle.h"
+#include "qmlmodels/PlanDeskModel.h"
 #include "scripting/ScriptRunner.h"
 
 #include <QObject>
+#include <QPointer>
 #include <QStringList>
 #include <QVariantList>
 #include <QtQml/qqmlregistration.h>
@@ -60,6 +62,9 @@ class PlanEditorModel : public QObject
     Q_PROPERTY(bool modified READ modified NOTIFY edited)
     Q_PROPERTY(bool canUndo READ canUndo NOTIFY edited)
     Q_PROPERTY(bool canRedo READ canRedo NOTIFY edited)
+    // The console's plan desk: with the mission shared, every edit goes to
+    // the other consoles and theirs come here (the last change wins).
+    Q_PROPERTY(PlanDeskModel *desk READ desk WRITE setDesk NOTIFY deskChanged)
     // Why the last open, save or edit did not happen ("" when it did).
     Q_PROPERTY(QString error READ error NOTIFY errorChanged)
 
@@ -88,6 +93,8 @@ public:
     bool canUndo() const { return !m_undo.isEmpty(); }
     bool canRedo() const { return !m_redo.isEmpty(); }
     QString error() const { return m_error; }
+    PlanDeskModel *desk() const { return m_desk; }
+    void setDesk(PlanDeskModel *desk);
 
     // A maneuver of `type` at a position, after the plan's last one (a
     // transition from it), with its vehicle's defaults: its id, or "".
@@ -149,6 +156,7 @@ signals:
     void planChanged();
     void featuresChanged();
     void otherPlansChanged();
+    void deskChanged();
     void edited();
     void errorChanged();
 
@@ -177,5 +185,7 @@ private:
     const std::optional<neptus::scripting::CompileError> &conditionProblem(const QString &condition) const;
     QVariantList m_pathPoints, m_maneuverList, m_problemList, m_featureList; // made once per edit, read by every view
     QVariantList m_otherPlans; // when the mission or the plan being edited changes
+    QPointer<PlanDeskModel> m_desk;
+    void adoptShared(); // another console's change
     void otherPlansAgain();
 };

@@ -171,6 +171,15 @@ void Console::ingest(const msg::Message &message, const QString &link, qsizetype
     m_linkStatistics.received(source, link, message.id(), message.abbrev(), !message.isOpaque(), bytes);
     if (const msg::MessageDef *def = message.def(); def && (def->abbrev == u"PlanDB" || def->abbrev == u"PlanControl"))
         emit planMessageReceived(message);
+    else if (def && def->abbrev == u"MissionChange")
+        emit sharedMissionReceived(message);
+}
+
+std::expected<void, QString> Console::broadcast(const msg::Message &message)
+{
+    if (!m_dds)
+        return std::unexpected(QStringLiteral("no DDS link (consoles share missions over DDS)"));
+    return m_dds->publish(0xFFFF, message);
 }
 
 void Console::heardOn(quint16 system, const QString &link)

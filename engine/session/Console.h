@@ -83,6 +83,8 @@ public:
     // an error says why it was not sent.
     std::expected<void, QString> send(quint16 system, msg::Message message);
     std::expected<void, QString> send(const QString &system, msg::Message message);
+    // Sends `message` to every console and vehicle on DDS (consoles sharing a mission).
+    std::expected<void, QString> broadcast(const msg::Message &message);
 
     // Several hosts (IMC/UDP) or participants (DDS, "dds:<GUID prefix>")
     // send as `system` (an impostor, or a vehicle on two networks): commands
@@ -109,6 +111,8 @@ signals:
     // A vehicle's plan database or plan control spoke (PlanDB, PlanControl):
     // for plans::PlanClient. Emitted from the thread that received it.
     void planMessageReceived(const neptus::msg::Message &message);
+    // Another console changed a shared mission (MissionChange): for plans::MissionShare.
+    void sharedMissionReceived(const neptus::msg::Message &message);
 
 private:
     // Link health: decode errors in the last few seconds, and message types

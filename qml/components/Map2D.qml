@@ -210,10 +210,14 @@ Rectangle {
                 root.centreOn(root.followed)
         }
     }
+    // Before any vehicle is heard: the mission's home.
+    readonly property var missionHome: Session.session ? Session.session.plans.home : ({ valid: false })
+    onMissionHomeChanged: placeAtHome()
     function placeAtHome() {
-        if (placed || !home.valid)
+        const at = home.valid ? home : missionHome
+        if (placed || !at.valid)
             return
-        centreAt(home.lat, home.lon)
+        centreAt(at.lat, at.lon)
         placed = true
     }
     Component.onCompleted: placeAtHome()

@@ -37,6 +37,7 @@ Item {
         id: planModel
         objectName: "planEditorModel"
         missionPath: Session.session ? Session.session.plans.missionPath : ""
+        desk: Session.session ? Session.session.plans : null
     }
 
     // A tap on the map: select the maneuver under it, else add one there or
@@ -348,6 +349,14 @@ Item {
                         onClicked: if (planModel.save() && Session.session) Session.session.plans.openMission(planModel.missionPath)
                     }
                     TouchButton {
+                        objectName: "shareButton"
+                        text: qsTr("⇄ Share")
+                        toolTip: qsTr("The mission shared with the other consoles on the network: their edits come here, yours go there")
+                        highlighted: planModel.desk !== null && planModel.desk.sharing
+                        enabled: planModel.desk !== null
+                        onClicked: planModel.desk.share(!planModel.desk.sharing)
+                    }
+                    TouchButton {
                         objectName: "graphButton"
                         visible: editor.mode === "plan"
                         text: qsTr("Graph")
@@ -632,6 +641,15 @@ Item {
                         enabled: newCheck.text.trim() !== ""
                         onClicked: if (planModel.addChecklistItem(newCheck.text)) newCheck.text = ""
                     }
+                }
+                Text {
+                    objectName: "shareStatus"
+                    width: parent.width
+                    visible: text !== ""
+                    text: planModel.desk ? planModel.desk.shareStatus : ""
+                    wrapMode: Text.Wrap
+                    color: Theme.textDim
+                    font.pixelSize: Theme.smallFontPixelSize
                 }
                 Text {
                     objectName: "editorError"

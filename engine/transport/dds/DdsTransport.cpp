@@ -246,6 +246,9 @@ dds_qos_t *DdsTransport::qosFor(const QString &abbrev) const
         dds_qset_reliability(qos, DDS_RELIABILITY_RELIABLE, DDS_MSECS(100));
         dds_qset_durability(qos, DDS_DURABILITY_TRANSIENT_LOCAL);
         dds_qset_history(qos, DDS_HISTORY_KEEP_LAST, 1);
+    } else if (m_config.complete.contains(abbrev)) {
+        dds_qset_reliability(qos, DDS_RELIABILITY_RELIABLE, DDS_SECS(1));
+        dds_qset_history(qos, DDS_HISTORY_KEEP_ALL, 0);
     } else if (m_config.reliable.contains(abbrev)) {
         dds_qset_reliability(qos, DDS_RELIABILITY_RELIABLE, DDS_MSECS(100));
         dds_qset_history(qos, DDS_HISTORY_KEEP_LAST, 32);

@@ -43,6 +43,9 @@ struct DdsConfig
     // Who a participant is: kept for late joiners (transient-local, the
     // latest per sender), so a console started later still learns names.
     QStringList lasting{QStringLiteral("Announce"), QStringLiteral("EntityList"), QStringLiteral("EntityInfo")};
+    // Every sample matters, in order (a shared mission's objects: a console
+    // joining gets them all at once): reliable, keep-all.
+    QStringList complete{QStringLiteral("MissionChange")};
     const Clock *clock = &Clock::system(); // stamps what it sends
     // How long two participants sending as one system id must be apart to be one.
     int conflictWindowMs = 10000;

@@ -1,6 +1,9 @@
 // The plan editor's model: edits on a mission file's plan, each checked at
 // once, undone and redone, saved and read back.
 #include "Paths.h"
+#include "Schemas.h"
+#include "plans/MissionShare.h"
+#include "plans/PlanDesk.h"
 #include "qmlmodels/PlanEditorModel.h"
 
 #include <QFile>
@@ -281,4 +284,66 @@ TEST(PlanEditor, MapFeaturesAddedMovedReshapedAndUndoneWithThePlanCheckedAgainst
     EXPECT_EQ(QJsonArray::fromVariantList(again.features()), QJsonArray::fromVariantList(editor.features()));
     ASSERT_TRUE(again.removeFeature(mark));
     EXPECT_EQ(again.features().size(), editor.features().size() - 1);
+}
+
+// The editor on a shared mission: its edits go to another console as they
+// are made; the other's come into the editor (and the desk's file), said with who.
+TEST(PlanEditor, ASharedMissionsEditsGoOutAndComeIn)
+{
+    QTemporaryDir dir;
+    const auto schema = neptus::test::shippedSchema();
+    neptus::tree::VariableTree tree;
+    neptus::alarms::AlarmGraph graph;
+    neptus::plans::PlanDesk desk(schema, tree, graph, [](quint16, const neptus::msg::Message &) -> std::expected<void, QString> {
+        return std::unexpected(u"no vehicles here"_s);
+    });
+    // The other console, and the network between them (messages as they are).
+    neptus::plans::MissionShare *ours = nullptr;
+    neptus::plans::MissionShare theirs(schema, u"console-b"_s, [&](const neptus::msg::Message &m) -> std::expected<void, QString> {
+        ours->receive(m);
+        return {};
+    });
+    neptus::plans::MissionShare share(schema, u"console-a"_s, [&](const neptus::msg::Message &m) -> std::expected<void, QString> {
+        theirs.receive(m);
+        return {};
+    });
+    ours = &share;
+    PlanDeskModel deskModel(&desk, &share);
+    ASSERT_TRUE(desk.openMission(douroCopy(dir)).has_value());
+    PlanEditorModel editor;
+    editor.setDesk(&deskModel);
+    editor.setMissionPath(desk.missionPath());
+    ASSERT_EQ(deskModel.share(true), QString());
+    EXPECT_TRUE(deskModel.sharing());
+    ASSERT_TRUE(theirs.start({}).has_value());
+    ASSERT_EQ(theirs.mission().plans.size(), 2) << "the other console joined and got it all";
+
+    // Ours: a Goto, at once on the other console.
+    const QString id = editor.addManeuver(u"Goto"_s, 41.1420, -8.6100);
+    ASSERT_NE(theirs.mission().plans[0].maneuver(id), nullptr);
+    EXPECT_EQ(theirs.authorOf(u"plan:survey"_s), u"console-a"_s);
+
+    // Theirs: a mark; the desk writes the file (after a burst) and the editor has it.
+    neptus::mission::Mission edited = theirs.mission();
+    neptus::mission::Feature mark;
+    mark.kind = u"mark"_s;
+    mark.id = u"from-b"_s;
+    mark.position.lat = 41.1411;
+    mark.position.lon = -8.6111;
+    edited.maps[0].features.append(mark);
+    QSignalSpy told(&deskModel, &PlanDeskModel::sharedChange);
+    theirs.update(edited);
+    ASSERT_TRUE(told.wait(2000));
+    EXPECT_EQ(told[0][0].toString(), u"console-b"_s);
+    EXPECT_TRUE(deskModel.shareStatus().contains(u"console-b"_s)) << deskModel.shareStatus().toStdString();
+    EXPECT_FALSE(byId(editor.features(), u"from-b"_s).isEmpty()) << "in the editor";
+    EXPECT_NE(editor.plan()->maneuver(id), nullptr) << "with our own edit kept";
+    EXPECT_FALSE(editor.modified()) << "the desk saved it";
+    QFile file(editor.missionPath());
+    ASSERT_TRUE(file.open(QIODevice::ReadOnly));
+    EXPECT_TRUE(file.readAll().contains("id=\"from-b\""));
+    // Undone here, it is undone there too.
+    ASSERT_TRUE(editor.undo());
+    EXPECT_TRUE(byId(editor.features(), u"from-b"_s).isEmpty());
+    EXPECT_EQ(theirs.mission().maps[0].features.size(), edited.maps[0].features.size() - 1);
 }

@@ -1,0 +1,160 @@
+// Consoles sharing a mission: objects published as edits happen, the last
+// change winning on every console, a console joining late getting it all,
+// through the real codec (what DDS carries).
+#include "Paths.h"
+#include "Schemas.h"
+#include "messages/Codec.h"
+#include "mission/MissionXml.h"
+#include "plans/MissionShare.h"
+
+#include <QRandomGenerator>
+#include <QSignalSpy>
+
+#include <gtest/gtest.h>
+
+using namespace neptus;
+using namespace Qt::StringLiterals;
+using plans::MissionShare;
+
+namespace {
+
+// Consoles on one network: what one publishes reaches all the others as
+// bytes, encoded and decoded as the DDS link does.
+struct Network
+{
+    std::shared_ptr<const msg::Schema> schema = neptus::test::shippedSchema();
+    msg::Codec codec{schema};
+    std::vector<MissionShare *> consoles;
+    int published = 0;
+
+    MissionShare::Publish publisherFor(MissionShare **self)
+    {
+        return [this, self](const msg::Message &message) -> std::expected<void, QString> {
+            ++published;
+            const auto packet = codec.encode(message);
+            if (!packet)
+                return std::unexpected(packet.error().toString());
+            for (MissionShare *c : consoles) {
+                if (c == *self)
+                    continue;
+                auto decoded = codec.decode(*packet);
+                if (!decoded)
+                    return std::unexpected(decoded.error().toString());
+                c->receive(*decoded);
+            }
+            return {};
+        };
+    }
+};
+
+mission::Mission douro()
+{
+    auto m = mission::loadMission(neptus::test::sourcePath(u"docs/examples/douro.xml"_s));
+    EXPECT_TRUE(m.has_value());
+    return m ? *m : mission::Mission{};
+}
+
+} // namespace
+
+TEST(MissionShare, AConsoleJoiningLateGetsTheMissionThenEditsFlowBothWays)
+{
+    Network net;
+    MissionShare *a = nullptr, *b = nullptr;
+    MissionShare shareA(net.schema, u"console-a"_s, net.publisherFor(&a));
+    MissionShare shareB(net.schema, u"console-b"_s, net.publisherFor(&b));
+    a = &shareA;
+    b = &shareB;
+    net.consoles = {a, b};
+
+    const mission::Mission mission = douro();
+    ASSERT_TRUE(a->start(mission));
+    QSignalSpy heardByB(b, &MissionShare::remoteChange);
+    ASSERT_TRUE(b->start({})); // no mission yet: HELLO, and A sends everything
+    EXPECT_EQ(mission::writeMission(b->mission()), mission::writeMission(mission));
+    EXPECT_EQ(b->mission().id, u"douro"_s);
+    EXPECT_GE(heardByB.size(), 4) << "header, plans, features";
+
+    // A moves a maneuver: B has it, and knows who.
+    mission::Mission edited = a->mission();
+    edited.plans[0].maneuvers[0].set(u"lat"_s, 41.1420);
+    heardByB.clear();
+    const int before = net.published;
+    a->update(edited);
+    EXPECT_EQ(net.published, before + 1) << "only the plan changed";
+    ASSERT_EQ(heardByB.size(), 1);
+    EXPECT_EQ(heardByB[0][0].toString(), u"console-a"_s);
+    EXPECT_EQ(heardByB[0][1].toString(), u"plan survey"_s);
+    EXPECT_DOUBLE_EQ(b->mission().plans[0].maneuvers[0].number(u"lat"_s), 41.1420);
+    EXPECT_EQ(b->authorOf(u"plan:survey"_s), u"console-a"_s);
+
+    // B adds a mark and removes the pier: A follows.
+    mission::Mission fromB = b->mission();
+    mission::Feature buoy;
+    buoy.kind = u"mark"_s;
+    buoy.id = u"buoy"_s;
+    buoy.position.lat = 41.141;
+    buoy.position.lon = -8.612;
+    fromB.maps[0].features.append(buoy);
+    fromB.maps[0].features.removeIf([](const mission::Feature &f) { return f.id == u"pier"_s; });
+    b->update(fromB);
+    EXPECT_EQ(mission::writeMission(a->mission()), mission::writeMission(fromB));
+
+    // Both change the same plan at once: the same version, and both end
+    // with the same one (the author's name decides).
+    mission::Mission byA = a->mission(), byB = b->mission();
+    byA.plans[0].description = u"A's"_s;
+    byB.plans[0].description = u"B's"_s;
+    net.consoles = {}; // neither hears the other yet
+    a->update(byA);
+    b->update(byB);
+    net.consoles = {a, b};
+    a->update(byA.plans[0].description == u"A's"_s ? a->mission() : byA); // nothing new
+    // Each says its version again as a late joiner would ask for it.
+    MissionShare *c = nullptr;
+    MissionShare shareC(net.schema, u"console-c"_s, net.publisherFor(&c));
+    c = &shareC;
+    net.consoles = {a, b, c};
+    ASSERT_TRUE(c->start({}));
+    EXPECT_EQ(a->mission().plans[0].description, u"B's"_s) << "console-b > console-a at the same version";
+    EXPECT_EQ(b->mission().plans[0].description, u"B's"_s);
+    EXPECT_EQ(c->mission().plans[0].description, u"B's"_s);
+}
+
+TEST(MissionShare, DamagedOrForeignObjectsAreIgnoredAndSaid)
+{
+    Network net;
+    MissionShare *a = nullptr;
+    MissionShare shareA(net.schema, u"console-a"_s, net.publisherFor(&a));
+    a = &shareA;
+    net.consoles = {a};
+    ASSERT_TRUE(a->start(douro()));
+    QSignalSpy problems(a, &MissionShare::problem);
+    const msg::MessageDef *def = net.schema->byAbbrev(u"MissionChange");
+    ASSERT_NE(def, nullptr) << "msgdefs/sharing.xml";
+    msg::Message m(def);
+    m.setBytes(def->indexOf(u"mission"), "douro");
+    m.setInteger(def->indexOf(u"op"), 0);
+    m.setBytes(def->indexOf(u"object"), "plan:survey");
+    m.setInteger(def->indexOf(u"version"), 9);
+    m.setBytes(def->indexOf(u"author"), "mallory");
+    m.setBytes(def->indexOf(u"data"), "\xff\xff\xff\xff junk"); // claims 4 GB
+    a->receive(m);
+    ASSERT_EQ(problems.size(), 1);
+    EXPECT_TRUE(problems[0][0].toString().contains(u"damaged"_s));
+    m.setBytes(def->indexOf(u"data"), qCompress("<mission format=\"1\" id=\"x\"><plan id=\"other\"/></mission>"));
+    a->receive(m);
+    EXPECT_EQ(problems.size(), 2) << "a plan object holding another plan";
+    EXPECT_EQ(a->mission().plans[0].id, u"survey"_s);
+    m.setBytes(def->indexOf(u"mission"), "another-mission");
+    a->receive(m);
+    EXPECT_EQ(problems.size(), 2) << "another mission's objects are not ours to judge";
+
+    // An object too big for a message is not cut: it is said.
+    mission::Mission big = a->mission();
+    QRandomGenerator random(7); // notes that do not compress
+    for (int i = 0; i < 120000; ++i)
+        big.plans[0].description += QChar(u'a' + random.bounded(26));
+    a->update(big);
+    ASSERT_EQ(problems.size(), 3);
+    EXPECT_TRUE(problems[2][0].toString().contains(u"not shared"_s)) << problems[2][0].toString().toStdString();
+}
