@@ -218,7 +218,7 @@ Item {
             Handle {
                 id: imageCorner
                 objectName: "imageCorner"
-                readonly property Item picture: layer.selectedFeature && layer.selectedFeature.kind === "image" && layer.selectedFeature.points.length === 0
+                readonly property Image picture: layer.selectedFeature && layer.selectedFeature.kind === "image" && layer.selectedFeature.points.length === 0
                                                 ? layer.findImage(layer.selected) : null
                 visible: picture !== null && picture.status === Image.Ready
                 // The top-right corner, turned with the picture about its centre.
@@ -242,10 +242,10 @@ Item {
             }
         }
     }
-    function findImage(id: string): Item {
+    function findImage(id: string): Image {
         for (let i = 0; i < children.length; ++i)
             if (children[i].objectName === "image:" + id)
-                return children[i]
+                return children[i] as Image
         return null
     }
 }

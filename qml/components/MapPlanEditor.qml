@@ -743,7 +743,7 @@ Item {
         x: panel.x + panel.width + Theme.spacing
         y: Theme.spacing
         width: editor.width - x - Theme.spacing - Theme.touchTarget * 1.5 // clear of the map's buttons
-        height: item ? Math.min(item.implicitHeight, editor.height - Theme.spacing * 2) : 0
+        height: Math.min(implicitHeight, editor.height - Theme.spacing * 2) // the view's own implicit height
         sourceComponent: PlanGraphView {
             model: planModel
             selected: editor.selected

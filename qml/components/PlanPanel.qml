@@ -282,14 +282,13 @@ Rectangle {
             readonly property var items: panel.desk && panel.hasTarget ? (panel.revision, panel.desk.checklistFor(panel.target)) : []
             property var ticked: ({})        // by hand: index → true
             property bool overridden: false  // "Start anyway"
-            property int done: 0
+            property var states: ({})        // "index:text" → ticked or not, as each row says
+            readonly property int done: items.reduce((n, item, i) => n + (states[i + ":" + item.text] === true ? 1 : 0), 0)
             readonly property bool complete: overridden || done === items.length
-            function recount(): void {
-                let n = 0
-                for (let i = 0; i < rows.count; ++i)
-                    if (rows.itemAt(i) && rows.itemAt(i).isChecked)
-                        ++n
-                done = n
+            function mark(index: int, text: string, checked: bool): void {
+                const s = Object.assign({}, states)
+                s[index + ":" + text] = checked
+                states = s
             }
             Connections {
                 target: panel
@@ -304,7 +303,6 @@ Rectangle {
                 font.bold: true
             }
             Repeater {
-                id: rows
                 model: checklist.items
                 delegate: Rectangle {
                     id: item
@@ -315,9 +313,8 @@ Rectangle {
                     readonly property bool inRange: !isNaN(value) && (isNaN(modelData.min) || value >= modelData.min)
                                                     && (isNaN(modelData.max) || value <= modelData.max)
                     readonly property bool isChecked: bound ? inRange : (modelData.checked || checklist.ticked[index] === true)
-                    onIsCheckedChanged: checklist.recount()
-                    Component.onCompleted: checklist.recount()
-                    Component.onDestruction: Qt.callLater(checklist.recount)
+                    onIsCheckedChanged: checklist.mark(index, modelData.text, isChecked)
+                    Component.onCompleted: checklist.mark(index, modelData.text, isChecked)
                     objectName: "checkItem:" + modelData.text
                     width: checklist.width
                     height: Math.max(Theme.touchTarget, label.implicitHeight + Theme.spacing)
