@@ -5,10 +5,13 @@
 #include "mission/Patterns.h"
 #include "qmlmodels/MissionFeatures.h"
 #include "plans/Supervisor.h"
+#include "processor/MissionTranslator.h"
 
 #include <QDir>
 #include <QFileInfo>
+#include <QDateTime>
 #include <QRegularExpression>
+#include <QThreadPool>
 
 #include <cmath>
 #include <limits>
@@ -965,6 +968,68 @@ bool PlanEditorModel::removeChecklistItem(int list, int group, int item)
     m_mission.checklists[list].groups[group].items.removeAt(item);
     m_modified = true;
     featuresEdited();
+    return true;
+}
+
+QVariantList PlanEditorModel::exportTargets() const
+{
+    QVariantList list;
+    if (const VehicleDefinition *v = m_vehicles.find(vehicle()))
+        for (const Translation &t : v->translations)
+            list.append(QVariantMap{{u"target"_s, t.target}, {u"name"_s, t.name}, {u"extension"_s, t.extension}});
+    return list;
+}
+
+bool PlanEditorModel::exportPlan(const QString &target)
+{
+    const Plan *p = plan();
+    const VehicleDefinition *v = p ? m_vehicles.find(p->vehicle) : nullptr;
+    const Translation *t = v ? v->translation(target) : nullptr;
+    if (!t) {
+        fail(u"%1 has no translation to '%2'"_s.arg(p ? p->vehicle : u"no plan"_s, target));
+        return false;
+    }
+    if (m_export.value(u"busy"_s).toBool()) {
+        fail(u"an export is under way"_s);
+        return false;
+    }
+    if (errorCount() > 0) {
+        fail(u"%1 has errors: mend them before exporting it (the problems list)"_s.arg(p->id));
+        return false;
+    }
+    const QString path = QFileInfo(m_path).absoluteDir().filePath(p->id + u'.' + (t->extension.isEmpty() ? u"txt"_s : t->extension));
+    m_export = {{u"busy"_s, true}, {u"target"_s, target}, {u"step"_s, 1}, {u"steps"_s, 3}, {u"what"_s, u"checking the plan"_s},
+                {u"path"_s, QString()}, {u"error"_s, QString()}, {u"started"_s, QDateTime::currentMSecsSinceEpoch()}};
+    emit exportChanged();
+    fail({});
+    // On a worker: a 10,000-maneuver plan takes seconds in the helper.
+    const QPointer<PlanEditorModel> self(this);
+    const auto step = [self](QVariantMap changes) {
+        QMetaObject::invokeMethod(self.data(), [self, changes] {
+            if (!self)
+                return;
+            for (auto it = changes.cbegin(); it != changes.cend(); ++it)
+                self->m_export.insert(it.key(), it.value());
+            emit self->exportChanged();
+        }, Qt::QueuedConnection);
+    };
+    QThreadPool::globalInstance()->start([mission = m_mission, planId = p->id, vehicle = *v, target, path, step] {
+        step({{u"step"_s, 2}, {u"what"_s, u"translating (the mission processor)"_s}});
+        auto made = neptus::processor::translatePlan(mission, planId, vehicle, target);
+        if (!made) {
+            QStringList lines;
+            for (const auto &e : made.error())
+                lines << e.toString();
+            step({{u"busy"_s, false}, {u"error"_s, lines.join(u'\n')}});
+            return;
+        }
+        step({{u"step"_s, 3}, {u"what"_s, u"writing %1"_s.arg(path)}});
+        if (auto saved = neptus::saveFileKeepingPrevious(path, *made); !saved) {
+            step({{u"busy"_s, false}, {u"error"_s, saved.error()}});
+            return;
+        }
+        step({{u"busy"_s, false}, {u"path"_s, path}, {u"what"_s, u"%1 bytes"_s.arg(made->size())}});
+    });
     return true;
 }
 

@@ -62,6 +62,11 @@ class PlanEditorModel : public QObject
     Q_PROPERTY(bool modified READ modified NOTIFY edited)
     Q_PROPERTY(bool canUndo READ canUndo NOTIFY edited)
     Q_PROPERTY(bool canRedo READ canRedo NOTIFY edited)
+    // What the plan's vehicle's definition translates it to: [{target, name, extension}].
+    Q_PROPERTY(QVariantList exportTargets READ exportTargets NOTIFY planChanged)
+    // The export under way or last done: {busy, target, step (1-3), steps (3),
+    // what, path (written), error, started (ms since the epoch)}.
+    Q_PROPERTY(QVariantMap exporting READ exporting NOTIFY exportChanged)
     // The console's plan desk: with the mission shared, every edit goes to
     // the other consoles and theirs come here (the last change wins).
     Q_PROPERTY(PlanDeskModel *desk READ desk WRITE setDesk NOTIFY deskChanged)
@@ -94,6 +99,12 @@ public:
     bool canRedo() const { return !m_redo.isEmpty(); }
     QString error() const { return m_error; }
     PlanDeskModel *desk() const { return m_desk; }
+    QVariantList exportTargets() const;
+    QVariantMap exporting() const { return m_export; }
+    // Translates the plan (the mission processor, off the GUI thread) to
+    // `target`, into the mission's folder as <plan>.<extension>: false (and
+    // `error`) when it cannot start: errors in the plan, no such target, one under way.
+    Q_INVOKABLE bool exportPlan(const QString &target);
     void setDesk(PlanDeskModel *desk);
 
     // A maneuver of `type` at a position, after the plan's last one (a
@@ -157,6 +168,7 @@ signals:
     void featuresChanged();
     void otherPlansChanged();
     void deskChanged();
+    void exportChanged();
     void edited();
     void errorChanged();
 
@@ -186,6 +198,7 @@ private:
     QVariantList m_pathPoints, m_maneuverList, m_problemList, m_featureList; // made once per edit, read by every view
     QVariantList m_otherPlans; // when the mission or the plan being edited changes
     QPointer<PlanDeskModel> m_desk;
+    QVariantMap m_export;
     void adoptShared(); // another console's change
     void otherPlansAgain();
 };

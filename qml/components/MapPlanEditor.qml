@@ -307,32 +307,63 @@ Item {
                     color: Theme.textDim
                     font.pixelSize: Theme.smallFontPixelSize
                 }
-                // The depth profile along the plan (points planned in DEPTH).
+                // The profile along the plan: depth drawn down from the top,
+                // altitude (above the bottom) and height (above the surface)
+                // up from the bottom, each on its own scale, broken where the
+                // plan changes units.
                 Item {
                     id: profile
                     objectName: "depthProfile"
-                    readonly property var points: editor.model.path.filter(p => p.zUnits === "DEPTH")
-                    readonly property real length: Math.max(1, points.length ? points[points.length - 1].distance : 1)
-                    readonly property real deepest: Math.max(1, ...points.map(p => p.z))
+                    readonly property var path: editor.model.path
+                    readonly property real length: Math.max(1, path.length ? path[path.length - 1].distance : 1)
+                    readonly property var units: ["DEPTH", "ALTITUDE", "HEIGHT"].filter(u => path.some(p => p.zUnits === u))
+                    function runsOf(unit: string): var {
+                        const runs = []
+                        let run = []
+                        for (const p of path) {
+                            if (p.zUnits === unit) {
+                                run.push(p)
+                            } else if (run.length) {
+                                runs.push(run)
+                                run = []
+                            }
+                        }
+                        if (run.length)
+                            runs.push(run)
+                        return runs
+                    }
+                    function highest(unit: string): real { return Math.max(1, ...path.filter(p => p.zUnits === unit).map(p => p.z)) }
                     width: parent.width
                     height: Theme.mm(12)
-                    visible: points.length >= 2 && editor.mode === "plan"
+                    visible: path.length >= 2 && units.length > 0 && editor.mode === "plan"
                     Rectangle { anchors.fill: parent; color: Theme.water; radius: Theme.radius }
-                    Shape {
-                        anchors.fill: parent
-                        ShapePath {
-                            strokeColor: Theme.accent
-                            strokeWidth: 2
-                            fillColor: "transparent"
-                            PathPolyline {
-                                path: profile.points.map(p => Qt.point(p.distance / profile.length * profile.width,
-                                                                          Math.max(0, p.z) / profile.deepest * (profile.height - 4) + 2))
+                    Repeater {
+                        model: profile.units
+                        delegate: Shape {
+                            id: series
+                            required property string modelData
+                            required property int index
+                            readonly property real highest: profile.highest(modelData)
+                            objectName: "profile:" + modelData
+                            anchors.fill: parent
+                            ShapePath {
+                                strokeColor: series.modelData === "DEPTH" ? Theme.accent : Theme.traceColor(series.index + 1)
+                                strokeWidth: 2
+                                fillColor: "transparent"
+                                PathMultiline {
+                                    paths: profile.runsOf(series.modelData).map(run => run.map(p => {
+                                        const f = Math.max(0, p.z) / series.highest * (profile.height - 4)
+                                        return Qt.point(p.distance / profile.length * profile.width,
+                                                        series.modelData === "DEPTH" ? f + 2 : profile.height - 2 - f)
+                                    }))
+                                }
                             }
                         }
                     }
                     Text {
+                        objectName: "profileLegend"
                         anchors { right: parent.right; bottom: parent.bottom; margins: 2 }
-                        text: qsTr("depth 0–%1 m").arg(profile.deepest.toFixed(1))
+                        text: profile.units.map(u => qsTr("%1 0–%2 m").arg(u.toLowerCase()).arg(profile.highest(u).toFixed(1))).join(" · ")
                         color: Theme.textDim
                         font.pixelSize: Theme.smallFontPixelSize
                     }
@@ -377,6 +408,63 @@ Item {
                         text: qsTr("Remove")
                         enabled: editor.selectedFeature !== ""
                         onClicked: { planModel.removeFeature(editor.selectedFeature); editor.selectedFeature = "" }
+                    }
+                }
+                // Export: the plan in its vehicle's own formats (the mission processor).
+                Flow {
+                    width: parent.width
+                    spacing: Theme.spacing / 2
+                    visible: editor.mode === "plan" && planModel.exportTargets.length > 0
+                    Text {
+                        height: Theme.touchTarget
+                        verticalAlignment: Text.AlignVCenter
+                        text: qsTr("Export")
+                        color: Theme.textDim
+                        font.pixelSize: Theme.smallFontPixelSize
+                    }
+                    Repeater {
+                        model: planModel.exportTargets
+                        delegate: TouchButton {
+                            required property var modelData
+                            objectName: "export-" + modelData.target
+                            text: modelData.name !== "" ? modelData.name : modelData.target
+                            toolTip: qsTr("Write %1.%2 beside the mission file").arg(planModel.planId).arg(modelData.extension)
+                            enabled: !planModel.exporting.busy
+                            onClicked: planModel.exportPlan(modelData.target)
+                        }
+                    }
+                }
+                Column {
+                    objectName: "exportProgress"
+                    width: parent.width
+                    spacing: Theme.spacing / 4
+                    visible: editor.mode === "plan" && planModel.exporting.target !== undefined
+                    // Seconds since it began, while it runs.
+                    property real now: Date.now()
+                    Timer { interval: 250; repeat: true; running: planModel.exporting.busy === true; onTriggered: parent.now = Date.now() }
+                    Rectangle {
+                        width: parent.width
+                        height: Theme.mm(1.5)
+                        radius: height / 2
+                        color: Theme.border
+                        visible: planModel.exporting.busy === true
+                        Rectangle {
+                            width: parent.width * (planModel.exporting.step || 0) / (planModel.exporting.steps || 3)
+                            height: parent.height
+                            radius: parent.radius
+                            color: Theme.accent
+                        }
+                    }
+                    Text {
+                        objectName: "exportStatus"
+                        width: parent.width
+                        wrapMode: Text.Wrap
+                        readonly property var e: planModel.exporting
+                        text: e.busy ? qsTr("%1 of %2: %3 · %4 s").arg(e.step).arg(e.steps).arg(e.what).arg(Math.round((parent.now - e.started) / 100) / 10)
+                              : e.error ? qsTr("Not exported: %1").arg(e.error)
+                              : e.path ? qsTr("Exported %1 (%2)").arg(e.path).arg(e.what) : ""
+                        color: e.error ? Theme.levelColor(4) : Theme.textDim
+                        font.pixelSize: Theme.smallFontPixelSize
                     }
                 }
                 // Tools: a tap adds a maneuver of the chosen type, or a corner of an area.

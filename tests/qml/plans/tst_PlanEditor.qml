@@ -86,7 +86,13 @@ TestCase {
         compare(model().problems.length, 0)
         verify(findChild(map2d, "planStatistics").text.indexOf("2 maneuvers") === 0, findChild(map2d, "planStatistics").text)
         const profile = findChild(map2d, "depthProfile")
-        verify(profile.visible && profile.points.length === 2 && profile.deepest === 2, "the depth profile: 2 m, then the surface")
+        verify(profile.visible && profile.units.join() === "DEPTH" && profile.highest("DEPTH") === 2, "the depth profile: 2 m, then the surface")
+        // The last leg at 5 m altitude: a second series, drawn up from the bottom.
+        verify(model().setParameter("back", "z_units", "ALTITUDE") && model().setParameter("back", "z", "5"))
+        tryVerify(() => findChild(map2d, "profile:ALTITUDE") !== null)
+        compare(findChild(map2d, "profileLegend").text, "depth 0–2.0 m · altitude 0–5.0 m")
+        verify(model().undo() && model().undo())
+        tryVerify(() => findChild(map2d, "profile:ALTITUDE") === null)
     }
 
     function test_2_aTapAddsAGotoWhereItLandsAndADragMovesIt() {
@@ -390,5 +396,16 @@ TestCase {
         compare(items.length, 1, "the desk read the saved mission")
         compare(items[0].variable, "lauv-sim-1/Voltage/value")
         mouseClick(findChild(map2d, "planMode"))
+    }
+
+    // Export from the panel: this plan has errors (earlier tests), so it is
+    // refused with the reason; nothing is written.
+    function test_9_exportRefusedWhileThePlanHasErrors() {
+        verify(model().errorCount > 0)
+        const button = reveal(findChild(map2d, "export-imc"))
+        verify(button, "the vehicle's targets offered")
+        mouseClick(button)
+        tryVerify(() => findChild(map2d, "editorError").text.indexOf("has errors") > 0, 2000, findChild(map2d, "editorError").text)
+        verify(!Fixtures.fileExists(file.replace("editor.xml", "survey.imc.xml")))
     }
 }

@@ -9,6 +9,7 @@
 #include <QFile>
 #include <QJsonArray>
 #include <QSignalSpy>
+#include <QTest>
 #include <QTemporaryDir>
 
 #include <cmath>
@@ -346,4 +347,35 @@ TEST(PlanEditor, ASharedMissionsEditsGoOutAndComeIn)
     ASSERT_TRUE(editor.undo());
     EXPECT_TRUE(byId(editor.features(), u"from-b"_s).isEmpty());
     EXPECT_EQ(theirs.mission().maps[0].features.size(), edited.maps[0].features.size() - 1);
+}
+
+// Export from the editor: off the GUI thread, step by step, into the
+// mission's folder; a plan with errors is not exported.
+TEST(PlanEditor, ExportsThePlanToItsVehiclesTargetsStepByStep)
+{
+    QTemporaryDir dir;
+    PlanEditorModel editor;
+    editor.setMissionPath(douroCopy(dir));
+    QStringList targets;
+    for (const QVariant &t : editor.exportTargets())
+        targets << t.toMap().value(u"target"_s).toString();
+    ASSERT_TRUE(targets.contains(u"imc"_s)) << targets.join(u' ').toStdString();
+    QSignalSpy progress(&editor, &PlanEditorModel::exportChanged);
+    ASSERT_TRUE(editor.exportPlan(u"imc"_s)) << editor.error().toStdString();
+    EXPECT_TRUE(editor.exporting().value(u"busy"_s).toBool());
+    EXPECT_FALSE(editor.exportPlan(u"imc"_s)) << "one at a time";
+    ASSERT_TRUE(QTest::qWaitFor([&] { return !editor.exporting().value(u"busy"_s).toBool(); }, 20000));
+    EXPECT_GE(progress.size(), 4) << "began, translating, writing, done";
+    EXPECT_EQ(editor.exporting().value(u"error"_s).toString(), QString());
+    const QString path = editor.exporting().value(u"path"_s).toString();
+    EXPECT_EQ(path, dir.filePath(u"survey.imc.xml"_s));
+    QFile written(path);
+    ASSERT_TRUE(written.open(QIODevice::ReadOnly));
+    EXPECT_TRUE(written.readAll().contains("PlanSpecification"));
+
+    EXPECT_FALSE(editor.exportPlan(u"iver"_s)) << "not this vehicle's";
+    EXPECT_TRUE(editor.error().contains(u"iver"_s));
+    ASSERT_TRUE(editor.setParameter(u"go"_s, u"z"_s, u"500"_s));
+    EXPECT_FALSE(editor.exportPlan(u"imc"_s)) << "errors first";
+    EXPECT_TRUE(editor.error().contains(u"errors"_s)) << editor.error().toStdString();
 }
