@@ -105,8 +105,8 @@ int main(int argc, char *argv[])
 
     // The mission whose plans the plan panel offers; a bad file is said, and the console carries on.
     if (!commandLine->missionFile.isEmpty()) {
-        if (auto opened = session.planDesk().openMission(commandLine->missionFile); !opened)
-            std::fprintf(stderr, "neptus: %s; no mission open\n", qPrintable(opened.error()));
+        if (const QString why = session.plansModel()->openMission(commandLine->missionFile); !why.isEmpty())
+            std::fprintf(stderr, "neptus: %s; no mission open\n", qPrintable(why));
         else
             std::printf("neptus: mission %s\n", qPrintable(commandLine->missionFile));
     }

@@ -3,9 +3,13 @@
 #include "mission/PlanGeometry.h"
 #include "core/SafeFile.h"
 #include "mission/MissionXml.h"
+#include "mission/NeptusImport.h"
 #include "qmlmodels/MissionFeatures.h"
 
 #include <QDir>
+#include <QFileInfo>
+#include <QRegularExpression>
+#include <QSettings>
 #include <QStandardPaths>
 #include <QTime>
 
@@ -129,7 +133,88 @@ QString PlanDeskModel::missionName() const
 
 QString PlanDeskModel::openMission(const QString &path)
 {
-    return said(m_desk->openMission(path)); // missionChanged comes from the desk
+    QString file = path;
+    m_importWarnings.clear();
+    const QString suffix = QFileInfo(path).suffix().toLower();
+    if (suffix == u"nmisz"_s || suffix == u"nmis"_s || suffix == u"nmap"_s) {
+        auto imported = neptus::mission::importNeptus(path);
+        if (!imported) {
+            QStringList lines;
+            for (const auto &e : imported.error())
+                lines << e.toString();
+            return lines.join(u'\n');
+        }
+        for (const auto &w : imported->warnings)
+            m_importWarnings << w.toString();
+        // Not beside it: a USB stick or a colleague's folder is not ours to write.
+        QDir().mkpath(missionsFolder());
+        file = QDir(missionsFolder()).filePath(QFileInfo(path).completeBaseName() + u".xml"_s);
+        if (auto saved = neptus::saveFileKeepingPrevious(file, neptus::mission::writeMission(imported->mission)); !saved)
+            return saved.error();
+    }
+    const QString why = said(m_desk->openMission(file)); // missionChanged comes from the desk
+    if (why.isEmpty())
+        remember(file);
+    return why;
+}
+
+QString PlanDeskModel::newMission(const QString &name, const QString &vehicle, double lat, double lon)
+{
+    static const QRegularExpression notId(u"[^A-Za-z0-9_.-]+"_s);
+    QString id = name.trimmed().toLower().replace(notId, u"-"_s);
+    while (id.startsWith(u'-') || id.startsWith(u'.'))
+        id.remove(0, 1);
+    if (id.isEmpty())
+        return tr("give the mission a name");
+    if (vehicle.isEmpty())
+        return tr("choose the vehicle its first plan is for");
+    if (!std::isfinite(lat) || !std::isfinite(lon) || std::abs(lat) > 90 || std::abs(lon) > 180)
+        return tr("not a position: %1, %2").arg(lat).arg(lon);
+    QDir().mkpath(missionsFolder());
+    const QString file = QDir(missionsFolder()).filePath(id.left(64) + u".xml"_s);
+    if (QFileInfo::exists(file))
+        return tr("%1 exists: open it, or give another name").arg(file);
+    neptus::mission::Mission m;
+    m.id = id.left(64);
+    m.name = name.trimmed();
+    m.home = {lat, lon, 0};
+    m.vehicles = {vehicle};
+    neptus::mission::Maneuver first;
+    first.id = u"goto1"_s;
+    first.type = u"Goto"_s;
+    first.parameters = {{u"lat"_s, QString::number(lat, 'f', 8)}, {u"lon"_s, QString::number(lon, 'f', 8)}, {u"z"_s, u"0"_s},
+                        {u"z_units"_s, u"DEPTH"_s}, {u"speed"_s, u"1.5"_s}, {u"speed_units"_s, u"METERS_PS"_s}};
+    neptus::mission::Plan plan;
+    plan.id = u"plan1"_s;
+    plan.vehicle = vehicle;
+    plan.start = first.id;
+    plan.maneuvers = {first};
+    m.plans = {plan};
+    if (auto saved = neptus::saveFileKeepingPrevious(file, neptus::mission::writeMission(m)); !saved)
+        return saved.error();
+    return openMission(file);
+}
+
+QString PlanDeskModel::missionsFolder()
+{
+    return QStandardPaths::writableLocation(QStandardPaths::AppDataLocation) + u"/missions"_s;
+}
+
+QStringList PlanDeskModel::recentMissions() const
+{
+    QStringList recent = QSettings().value(u"missions/recent"_s).toStringList();
+    recent.removeIf([](const QString &p) { return !QFileInfo::exists(p); });
+    return recent;
+}
+
+void PlanDeskModel::remember(const QString &path)
+{
+    QStringList recent = QSettings().value(u"missions/recent"_s).toStringList();
+    const QString absolute = QFileInfo(path).absoluteFilePath();
+    recent.removeAll(absolute);
+    recent.prepend(absolute);
+    QSettings().setValue(u"missions/recent"_s, recent.mid(0, 8));
+    emit recentChanged();
 }
 
 QVariantList PlanDeskModel::plansFor(const QString &system)

@@ -26,6 +26,10 @@ class PlanDeskModel : public QObject
     // was last said of it ("plan survey changed by ana@boat, 12:41:07", or why not).
     Q_PROPERTY(bool sharing READ sharing NOTIFY sharingChanged)
     Q_PROPERTY(QString shareStatus READ shareStatus NOTIFY sharingChanged)
+    // Missions opened lately, newest first (kept in the settings).
+    Q_PROPERTY(QStringList recentMissions READ recentMissions NOTIFY recentChanged)
+    // Where new and imported missions are written (the user's data folder).
+    Q_PROPERTY(QString missionsFolder READ missionsFolder CONSTANT)
     // The mission's home: {lat, lon, valid} (valid: a mission is open).
     Q_PROPERTY(QVariantMap home READ home NOTIFY missionChanged)
     // The mission's map features (missionFeatures()), for Scene3D.
@@ -48,8 +52,16 @@ public:
     void shareEdits(const neptus::mission::Mission &mission);
     const neptus::mission::Mission *sharedMission() const { return sharing() ? &m_share->mission() : nullptr; }
 
-    // "" when opened, else why not (file and line).
+    // "" when opened, else why not (file and line). A Neptus mission
+    // (.nmisz, .nmis, .nmap) is imported first, into missionsFolder as .xml
+    // (what did not fit is said in `importWarnings`).
     Q_INVOKABLE QString openMission(const QString &path);
+    Q_INVOKABLE QStringList importWarnings() const { return m_importWarnings; }
+    // A new mission file in missionsFolder: `name`, home at lat/lon, one plan
+    // for `vehicle` starting with a Goto there; opened. "" or why not.
+    Q_INVOKABLE QString newMission(const QString &name, const QString &vehicle, double lat, double lon);
+    QStringList recentMissions() const;
+    static QString missionsFolder();
     // The mission's plans for `system`, then those only the vehicle holds:
     // {id, description, maneuvers, length (m), duration (s, -1: no end),
     // sync: "same" | "differs" | "absent" | "unknown" (not asked yet) | "vehicle" (only there)}.
@@ -79,6 +91,7 @@ signals:
     void changed(const QString &system);
     void missionChanged();
     void sharingChanged();
+    void recentChanged();
     // Another console changed the shared mission (the desk has it, and the file).
     void sharedChange(const QString &author, const QString &what);
 
@@ -88,6 +101,8 @@ private:
     neptus::plans::PlanDesk *m_desk;
     neptus::plans::MissionShare *m_share;
     QString m_shareStatus;
+    QStringList m_importWarnings;
+    void remember(const QString &path); // in the recent missions
     QTimer m_store;
     QList<std::pair<QString, QString>> m_changes; // (author, what) not yet told
     void remoteChange(const QString &author, const QString &what);

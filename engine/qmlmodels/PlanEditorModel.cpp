@@ -1055,6 +1055,33 @@ bool PlanEditorModel::redo()
     return true;
 }
 
+bool PlanEditorModel::saveAs(const QString &path)
+{
+    if (path.isEmpty() || QFileInfo(path).isDir()) {
+        fail(u"no file to save to"_s);
+        return false;
+    }
+    if (auto saved = neptus::saveFileKeepingPrevious(path, writeMission(m_mission)); !saved) {
+        fail(saved.error());
+        return false;
+    }
+    m_path = path;
+    m_modified = false;
+    fail({});
+    emit missionChanged();
+    emit edited();
+    return true;
+}
+
+QStringList PlanEditorModel::knownVehicles() const
+{
+    QStringList ids;
+    for (const VehicleDefinition &v : m_vehicles.vehicles)
+        ids << v.id;
+    std::sort(ids.begin(), ids.end());
+    return ids;
+}
+
 bool PlanEditorModel::save()
 {
     if (m_path.isEmpty()) {

@@ -158,6 +158,10 @@ public:
     Q_INVOKABLE bool undo();
     Q_INVOKABLE bool redo();
     Q_INVOKABLE bool save();
+    // Writes the mission to another file and edits that one from now on.
+    Q_INVOKABLE bool saveAs(const QString &path);
+    // The vehicles with a definition (what a new mission's plan may be for).
+    Q_INVOKABLE QStringList knownVehicles() const;
 
     // The editor's own copy (tests, benchmarks).
     const neptus::mission::Plan *plan() const;

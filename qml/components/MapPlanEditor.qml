@@ -28,6 +28,19 @@ Item {
     property string selectedFeature: ""
     property var hiddenLayers: []   // layers not drawn
     readonly property var pointKinds: ["path", "polygon"] // drawn point by point, then finished
+    readonly property PlanDeskModel desk: Session.session ? Session.session.plans : null
+    property string fileTask: ""    // "open", "new", "saveAs": the file row's form shown
+    property string fileMessage: "" // why the last file task failed (or what an import left out)
+    property string newVehicle: ""
+    function openFile(path: string): void {
+        fileMessage = desk ? desk.openMission(path) : qsTr("no console session")
+        if (fileMessage === "") {
+            fileTask = ""
+            const left = desk.importWarnings()
+            if (left.length > 0)
+                fileMessage = qsTr("Imported; %n thing(s) had no place here: ", "", left.length) + left.slice(0, 3).join("; ")
+        }
+    }
 
     // The model's lists, read once per edit (each read of a C++ list makes a new JS array).
     readonly property var maneuverList: planModel.maneuvers
@@ -45,7 +58,7 @@ Item {
     function tapped(at: point): void {
         // The map's tap handler sees taps on the panels too (pointer
         // handlers under them still get the event): those are not the map's.
-        for (const over of [panel, graphLoader])
+        for (const over of [panel, graphLoader, missionChooser])
             if (over.visible && over.contains(over.mapFromItem(editor, at.x, at.y)))
                 return
         if (mode === "checks")
@@ -274,6 +287,106 @@ Item {
                     font.pixelSize: Theme.fontPixelSize
                     font.bold: true
                     elide: Text.ElideRight
+                }
+                // The mission file: open (recent, or any file: a Neptus
+                // .nmisz is imported), new, save as.
+                Row {
+                    spacing: Theme.spacing / 2
+                    TouchButton { objectName: "fileOpen"; text: qsTr("Open…"); highlighted: editor.fileTask === "open"; onClicked: editor.fileTask = editor.fileTask === "open" ? "" : "open" }
+                    TouchButton { objectName: "fileNew"; text: qsTr("New…"); highlighted: editor.fileTask === "new"; onClicked: editor.fileTask = editor.fileTask === "new" ? "" : "new" }
+                    TouchButton {
+                        objectName: "fileSaveAs"
+                        text: qsTr("Save as…")
+                        enabled: planModel.missionPath !== ""
+                        highlighted: editor.fileTask === "saveAs"
+                        onClicked: editor.fileTask = editor.fileTask === "saveAs" ? "" : "saveAs"
+                    }
+                }
+                Flow {
+                    width: parent.width
+                    spacing: Theme.spacing / 2
+                    visible: editor.fileTask === "open"
+                    Repeater {
+                        model: editor.desk ? editor.desk.recentMissions.slice(0, 6) : []
+                        delegate: TouchButton {
+                            required property string modelData
+                            objectName: "recent:" + modelData.substring(modelData.lastIndexOf("/") + 1)
+                            text: modelData.substring(modelData.lastIndexOf("/") + 1)
+                            toolTip: modelData
+                            onClicked: editor.openFile(modelData)
+                        }
+                    }
+                    TouchButton {
+                        objectName: "fileBrowse"
+                        text: qsTr("Browse…")
+                        onClicked: missionChooser.open(editor.desk && editor.desk.missionPath !== ""
+                                                       ? editor.desk.missionPath.substring(0, editor.desk.missionPath.lastIndexOf("/")) : "")
+                    }
+                }
+                Column {
+                    width: parent.width
+                    spacing: Theme.spacing / 2
+                    visible: editor.fileTask === "new"
+                    FormField { id: newName; objectName: "newMissionName"; width: parent.width; placeholderText: qsTr("The mission's name") }
+                    Flow {
+                        width: parent.width
+                        spacing: Theme.spacing / 2
+                        Repeater {
+                            model: editor.fileTask === "new" ? planModel.knownVehicles() : []
+                            delegate: TouchButton {
+                                required property string modelData
+                                objectName: "newVehicle:" + modelData
+                                text: modelData
+                                highlighted: editor.newVehicle === modelData
+                                onClicked: editor.newVehicle = modelData
+                            }
+                        }
+                    }
+                    TouchButton {
+                        objectName: "createMission"
+                        text: qsTr("Create here")
+                        toolTip: qsTr("Home at the map's centre; the first plan's Goto there")
+                        enabled: newName.text.trim() !== "" && editor.newVehicle !== ""
+                        onClicked: {
+                            editor.fileMessage = editor.desk.newMission(newName.text, editor.newVehicle, editor.map.centerLatitude, editor.map.centerLongitude)
+                            if (editor.fileMessage === "")
+                                editor.fileTask = ""
+                        }
+                    }
+                }
+                Row {
+                    spacing: Theme.spacing / 2
+                    visible: editor.fileTask === "saveAs"
+                    FormField {
+                        id: saveAsName
+                        objectName: "saveAsName"
+                        width: column.width - saveAsButton.width - Theme.spacing / 2
+                        placeholderText: qsTr("A new name, beside the mission")
+                    }
+                    TouchButton {
+                        id: saveAsButton
+                        objectName: "saveAsButton"
+                        text: qsTr("Save")
+                        enabled: saveAsName.text.trim() !== ""
+                        onClicked: {
+                            const folder = planModel.missionPath.substring(0, planModel.missionPath.lastIndexOf("/"))
+                            const name = saveAsName.text.trim().replace(/[\/\\]/g, "-")
+                            const path = folder + "/" + (name.endsWith(".xml") ? name : name + ".xml")
+                            if (planModel.saveAs(path)) {
+                                editor.fileMessage = editor.desk ? editor.desk.openMission(path) : ""
+                                editor.fileTask = ""
+                            }
+                        }
+                    }
+                }
+                Text {
+                    objectName: "fileMessage"
+                    width: parent.width
+                    visible: text !== ""
+                    text: editor.fileMessage
+                    wrapMode: Text.Wrap
+                    color: Theme.levelColor(4)
+                    font.pixelSize: Theme.smallFontPixelSize
                 }
                 // What a tap on the map edits: the plan's maneuvers, or the mission's map.
                 Row {
@@ -837,5 +950,18 @@ Item {
             selected: editor.selected
             onPicked: (maneuver) => editor.selected = maneuver
         }
+    }
+
+    // Any mission file, by touch: ours (.xml) or a Neptus one to import.
+    FileChooser {
+        id: missionChooser
+        objectName: "missionChooser"
+        anchors.centerIn: parent
+        width: Math.min(parent.width - Theme.spacing * 2, Theme.mm(160))
+        height: parent.height - Theme.spacing * 2
+        title: qsTr("Open a mission")
+        nameFilters: ["*.xml", "*.nmisz", "*.nmis", "*.nmap"]
+        extraPlaces: editor.desk ? [editor.desk.missionsFolder] : []
+        onChosen: path => editor.openFile(path)
     }
 }

@@ -408,4 +408,66 @@ TestCase {
         tryVerify(() => findChild(map2d, "editorError").text.indexOf("has errors") > 0, 2000, findChild(map2d, "editorError").text)
         verify(!Fixtures.fileExists(file.replace("editor.xml", "survey.imc.xml")))
     }
+
+    // Missions from the editor: the console's mission among the recent
+    // ones; a new one made at the map's centre for a vehicle; saved under
+    // another name; the recent one opened again.
+    function test_9b_newSaveAsAndRecentMissions() {
+        mouseClick(reveal(findChild(map2d, "fileOpen")))
+        const recent = findChild(map2d, "recent:editor.xml")
+        verify(recent, "the mission opened is a recent one")
+        mouseClick(findChild(map2d, "fileNew"))
+        const name = "Harbour " + Date.now()
+        const field = findChild(map2d, "newMissionName")
+        field.forceActiveFocus()
+        field.text = name
+        mouseClick(reveal(findChild(map2d, "newVehicle:lauv-sim-1")))
+        mouseClick(reveal(findChild(map2d, "createMission")))
+        compare(editor().fileMessage, "")
+        const made = Fixtures.session.plans.missionPath
+        verify(made.indexOf(Fixtures.session.plans.missionsFolder) === 0 && made.endsWith(".xml"), made)
+        tryCompare(model(), "missionPath", made)
+        compare(model().planId, "plan1")
+        compare(model().vehicle, "lauv-sim-1")
+        compare(model().maneuvers.length, 1)
+        fuzzyCompare(model().maneuvers[0].lat, map2d.centerLatitude, 1e-6)
+        // Saved as another file beside it: the desk and the editor follow.
+        const id = model().addManeuver("Goto", map2d.centerLatitude + 0.001, map2d.centerLongitude)
+        verify(id !== "")
+        mouseClick(reveal(findChild(map2d, "fileSaveAs")))
+        const saveAsField = findChild(map2d, "saveAsName")
+        saveAsField.forceActiveFocus()
+        saveAsField.text = "copy-" + Date.now()
+        mouseClick(findChild(map2d, "saveAsButton"))
+        tryVerify(() => model().missionPath.indexOf("/copy-") > 0, 2000, model().missionPath)
+        compare(Fixtures.session.plans.missionPath, model().missionPath)
+        verify(!model().modified)
+        verify(Fixtures.readFile(model().missionPath).indexOf('id="' + id + '"') > 0)
+        // Back to the first by its recent button.
+        mouseClick(reveal(findChild(map2d, "fileOpen")))
+        mouseClick(reveal(findChild(map2d, "recent:editor.xml")))
+        tryCompare(model(), "missionPath", file)
+        compare(Fixtures.session.plans.missionPath, file)
+    }
+
+    // A Neptus mission (.nmisz) picked in the chooser is imported, then edited.
+    function test_9c_aNeptusMissionIsImportedWhenOpened() {
+        const nmisz = Fixtures.sourceDir() + "/../shared/fixtures/neptus/missions/Split.nmisz"
+        if (!Fixtures.fileExists(nmisz))
+            skip("../shared/fixtures is not beside the project (a user's clone): " + nmisz)
+        mouseClick(reveal(findChild(map2d, "fileOpen")))
+        mouseClick(reveal(findChild(map2d, "fileBrowse")))
+        const chooser = findChild(map2d, "missionChooser")
+        tryVerify(() => chooser.visible)
+        // As a tap on its row would: the chooser says which file.
+        chooser.chosen(nmisz)
+        tryVerify(() => model().missionPath.endsWith("/Split.xml"), 5000, model().missionPath + " " + editor().fileMessage)
+        verify(model().missionPath.indexOf(Fixtures.session.plans.missionsFolder) === 0, "written to the missions folder, not beside the original")
+        verify(model().planIds.length > 0)
+        chooser.close()
+        // Taps on the chooser are not taps on the map.
+        mouseClick(reveal(findChild(map2d, "fileOpen")))
+        mouseClick(reveal(findChild(map2d, "recent:editor.xml")))
+        tryCompare(model(), "missionPath", file)
+    }
 }

@@ -1,6 +1,6 @@
 pragma ComponentBehavior: Bound
 import QtQuick
-import Neptus.Components
+import Neptus.Engine
 
 // Choosing a file with a gloved finger: places (home, a USB stick, the
 // user's consoles) as big buttons, then the folder's subfolders and files as
