@@ -66,6 +66,8 @@ TestCase {
     function reveal(item) {
         const flick = findChild(map2d, "planEditorFlick")
         waitForItemPolished(flick.contentItem.children[0]) // rows just made are placed
+        if (item.parent)
+            waitForItemPolished(item.parent) // and buttons in a row just made
         const top = item.mapToItem(flick.contentItem, 0, 0).y
         flick.contentY = Math.max(0, Math.min(top - flick.height / 2, flick.contentHeight - flick.height))
         return item
@@ -145,6 +147,33 @@ TestCase {
         tryCompare(model(), "errorCount", 1)
         mouseClick(findChild(map2d, "undoButton"))
         tryCompare(model(), "errorCount", 0)
+    }
+
+    // A number by gloved finger: a tap on a number field opens the keypad;
+    // the first key replaces the value, ✓ commits it.
+    function test_3b_aNumberByTheKeypad() {
+        editor().selected = "go"
+        const field = reveal(findChild(map2d, "parameter:speed"))
+        verify(field.numeric)
+        const at = field.mapToItem(map2d, field.width / 2, field.height / 2)
+        tap(at.x, at.y)
+        const keypad = field.keypad
+        tryVerify(() => keypad.opened, 2000, "opened by a finger")
+        for (const key of ["1", ".", "2", "⌫", "3"])
+            mouseClick(findChild(keypad.contentItem, "key:" + key))
+        compare(field.text, "1.3")
+        mouseClick(findChild(keypad.contentItem, "key:✓"))
+        tryVerify(() => !keypad.opened)
+        compare(model().parametersOf("go").find(p => p.name === "speed").value, "1.3")
+        verify(model().undo())
+        // A mouse click does not open it (a keyboard is there): the field
+        // of the form made again after the edit.
+        const again = reveal(findChild(map2d, "parameter:speed"))
+        compare(again.text, "1.5")
+        mouseClick(again)
+        wait(100)
+        verify(!again.keypad.opened)
+        editor().selected = ""
     }
 
     function test_4_rowsOverAnAreaTappedCornerByCorner() {
