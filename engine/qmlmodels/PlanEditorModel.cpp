@@ -25,6 +25,16 @@ namespace {
 const QStringList knownTypes{u"Goto"_s, u"Loiter"_s, u"StationKeeping"_s, u"Rows"_s, u"YoYo"_s, u"FollowPath"_s,
                              u"ExpandingSquare"_s, u"PopUp"_s, u"Elevator"_s};
 
+QList<LatLon> latLons(const QVariantList &points)
+{
+    QList<LatLon> list;
+    for (const QVariant &v : points) {
+        const QVariantMap c = v.toMap();
+        list.append({c.value(u"lat"_s).toDouble(), c.value(u"lon"_s).toDouble()});
+    }
+    return list;
+}
+
 // Undo keeps this many edits.
 constexpr qsizetype undoDepth = 200;
 
@@ -720,24 +730,37 @@ QString PlanEditorModel::addRows(const QVariantList &area, double spacing, doubl
         fail(u"no plan is open to add to"_s);
         return {};
     }
-    QList<LatLon> corners;
-    for (const QVariant &v : area) {
-        const QVariantMap c = v.toMap();
-        corners.append({c.value(u"lat"_s).toDouble(), c.value(u"lon"_s).toDouble()});
-    }
-    auto rows = rowsOver(corners, {spacing, angle, overshoot, crossHatch}, {}, {});
+    auto rows = rowsOver(latLons(area), {spacing, angle, overshoot, crossHatch}, {}, {});
     if (!rows) {
         fail(rows.error());
         return {};
     }
+    return addPattern(*rows);
+}
+
+QString PlanEditorModel::addPattern(const Maneuver &made)
+{
     // Placed like any maneuver (after the last), then given the path.
-    const QString id = addManeuver(u"FollowPath"_s, rows->number(u"lat"_s), rows->number(u"lon"_s));
+    const QString id = addManeuver(u"FollowPath"_s, made.number(u"lat"_s), made.number(u"lon"_s));
     if (id.isEmpty())
         return {};
-    Maneuver *m = find(id);
-    m->points = rows->points;
+    find(id)->points = made.points;
     changed();
     return id;
+}
+
+QString PlanEditorModel::addPathAlong(const QVariantList &line)
+{
+    if (!editable()) {
+        fail(u"no plan is open to add to"_s);
+        return {};
+    }
+    auto path = pathAlong(latLons(line), {}, {});
+    if (!path) {
+        fail(path.error());
+        return {};
+    }
+    return addPattern(*path);
 }
 
 const std::optional<neptus::scripting::CompileError> &PlanEditorModel::conditionProblem(const QString &condition) const

@@ -120,6 +120,8 @@ public:
     Q_INVOKABLE QVariantList parametersOf(const QString &id) const;
     // Rows over an area drawn as [{lat, lon}]: the new FollowPath's id, or "".
     Q_INVOKABLE QString addRows(const QVariantList &area, double spacing, double angle, double overshoot, bool crossHatch);
+    // A FollowPath along a line drawn as [{lat, lon}] (two points or more): its id, or "".
+    Q_INVOKABLE QString addPathAlong(const QVariantList &line);
     // The graph: a transition (condition "" is ManeuverIsDone), its
     // condition (kept even when it does not compile, then shown as a
     // problem so the plan cannot be sent), removing one, the start.
@@ -184,6 +186,7 @@ private:
     void fail(const QString &why);
     QString freshId(const QString &type) const;
     neptus::mission::Maneuver *find(const QString &id);
+    QString addPattern(const neptus::mission::Maneuver &made); // a FollowPath made by a pattern generator
     neptus::mission::Feature *feature(const QString &id);
     void featuresEdited(); // the feature list again, the plan checked again (areas change it)
     QVariantList maneuverList() const;

@@ -1,3 +1,4 @@
+pragma ComponentBehavior: Bound
 import QtQuick
 import QtQuick.Controls.Basic as Basic
 
@@ -72,6 +73,7 @@ Basic.TextField {
             Repeater {
                 model: ["7", "8", "9", "4", "5", "6", "1", "2", "3", "±", "0", ".", "⌫", "", "✓"]
                 delegate: TouchButton {
+                    id: key
                     required property string modelData
                     objectName: "key:" + modelData
                     visible: modelData !== ""
@@ -81,8 +83,8 @@ Basic.TextField {
                     focusPolicy: Qt.NoFocus // the field keeps the cursor
                     highlighted: modelData === "✓"
                     onClicked: {
-                        if (modelData !== "✓") {
-                            field.press(modelData)
+                        if (key.modelData !== "✓") {
+                            field.press(key.modelData)
                             return
                         }
                         keypad.close()

@@ -28,6 +28,8 @@ Item {
     property string selectedFeature: ""
     property var hiddenLayers: []   // layers not drawn
     readonly property var pointKinds: ["path", "polygon"] // drawn point by point, then finished
+    // What is being drawn point by point is an area (closed) or a line.
+    readonly property bool closedShape: mode === "plan" ? tool === "area" : featureKind === "polygon"
     readonly property PlanDeskModel desk: Session.session ? Session.session.plans : null
     property string fileTask: ""    // "open", "new", "saveAs": the file row's form shown
     property string fileMessage: "" // why the last file task failed (or what an import left out)
@@ -84,7 +86,7 @@ Item {
                 return
             }
         }
-        if (tool === "area") {
+        if (tool === "area" || tool === "line") {
             area = area.concat([{ lat: c.lat, lon: c.lon }])
         } else {
             const id = planModel.addManeuver(addType, c.lat, c.lon)
@@ -194,9 +196,9 @@ Item {
             strokeColor: Theme.levelColor(3)
             strokeWidth: Math.max(2, Theme.mm(0.4))
             strokeStyle: ShapePath.DashLine
-            fillColor: Qt.alpha(Theme.levelColor(3), 0.15)
+            fillColor: editor.closedShape ? Qt.alpha(Theme.levelColor(3), 0.15) : "transparent"
             PathPolyline {
-                path: editor.area.concat(editor.area.length > 2 ? [editor.area[0]] : []).map(p => editor.map.screenPoint(p.lat, p.lon))
+                path: editor.area.concat(editor.closedShape && editor.area.length > 2 ? [editor.area[0]] : []).map(p => editor.map.screenPoint(p.lat, p.lon))
             }
         }
     }
@@ -596,11 +598,43 @@ Item {
                         }
                     }
                     TouchButton {
+                        objectName: "lineTool"
+                        text: qsTr("╱ Along a line")
+                        toolTip: qsTr("Tap the points of a line on the map, then Path: the vehicle follows it")
+                        highlighted: editor.tool === "line"
+                        onClicked: { editor.tool = "line"; editor.area = [] }
+                    }
+                    TouchButton {
                         objectName: "areaTool"
                         text: qsTr("▱ Survey area")
                         toolTip: qsTr("Tap the area's corners on the map, then lay rows over it")
                         highlighted: editor.tool === "area"
                         onClicked: { editor.tool = "area"; editor.area = [] }
+                    }
+                }
+                Flow {
+                    visible: editor.tool === "line" && editor.mode === "plan"
+                    width: parent.width
+                    spacing: Theme.spacing / 2
+                    Text {
+                        height: Theme.touchTarget
+                        verticalAlignment: Text.AlignVCenter
+                        text: qsTr("%n point(s) of the line", "", editor.area.length)
+                        color: Theme.text
+                        font.pixelSize: Theme.smallFontPixelSize
+                    }
+                    TouchButton {
+                        objectName: "makePath"
+                        text: qsTr("Path")
+                        enabled: editor.area.length >= 2
+                        onClicked: {
+                            const id = planModel.addPathAlong(editor.area)
+                            if (id !== "") {
+                                editor.selected = id
+                                editor.area = []
+                                editor.tool = "add"
+                            }
+                        }
                     }
                 }
                 Flow {

@@ -214,6 +214,28 @@ TestCase {
         compare(model().errorCount, 0, model().problems.map(p => p.message).join("; "))
     }
 
+    // A path along a line tapped point by point: a FollowPath through them.
+    function test_4b_aPathAlongADrawnLine() {
+        const count = model().maneuvers.length
+        mouseClick(reveal(findChild(map2d, "lineTool")))
+        for (const c of [[41.1412, -8.6095], [41.1418, -8.6090], [41.1415, -8.6080]]) {
+            const at = map2d.screenPoint(c[0], c[1])
+            tap(at.x, at.y)
+        }
+        compare(editor().area.length, 3)
+        mouseClick(reveal(findChild(map2d, "makePath")))
+        tryCompare(model().maneuvers, "length", count + 1)
+        const id = model().maneuvers[count].id
+        compare(model().maneuvers[count].type, "FollowPath")
+        const along = model().path.filter(p => p.maneuver === id)
+        verify(along.length >= 3, "through the three points: " + along.length)
+        fuzzyCompare(along[along.length - 1].lat, 41.1415, 2e-5)
+        fuzzyCompare(along[along.length - 1].lon, -8.6080, 2e-5)
+        verify(model().undo())
+        compare(model().maneuvers.length, count)
+        mouseClick(reveal(findChild(map2d, "add-Goto")))
+    }
+
     function test_5_aLegThroughTheNoGoAreaIsFlaggedWhereItEnters() {
         mouseClick(findChild(map2d, "add-Goto"))
         const west = map2d.screenPoint(41.1405, -8.6100), east = map2d.screenPoint(41.1405, -8.6080)
