@@ -214,10 +214,21 @@ QVariantList PlanEditorModel::maneuverList() const
         if (!problem.maneuver.isEmpty() && !worst.contains(problem.maneuver))
             worst.insert(problem.maneuver, severityName(problem.severity)); // worst first
     }
+    // When the vehicle reaches each maneuver, seconds from the start along
+    // the plan (-1: after one that never ends, or one it does not reach).
+    QHash<QString, double> arrival;
+    double elapsed = 0;
+    for (const ManeuverGeometry &g : m_geometry.maneuvers) {
+        if (elapsed < 0)
+            break;
+        const double transit = g.speed > 0 ? g.transit / g.speed : 0;
+        arrival.insert(g.id, elapsed + transit);
+        elapsed = g.duration ? elapsed + *g.duration : -1;
+    }
     for (qsizetype i = 0; i < p->maneuvers.size(); ++i) {
         const Maneuver &m = p->maneuvers[i];
         list.append(QVariantMap{{u"id"_s, m.id}, {u"type"_s, m.type}, {u"lat"_s, m.number(u"lat"_s)}, {u"lon"_s, m.number(u"lon"_s)},
-                                {u"index"_s, int(i)}, {u"severity"_s, worst.value(m.id)}});
+                                {u"index"_s, int(i)}, {u"severity"_s, worst.value(m.id)}, {u"arrival"_s, arrival.value(m.id, -1)}});
     }
     return list;
 }

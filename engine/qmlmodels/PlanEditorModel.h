@@ -31,7 +31,8 @@ class PlanEditorModel : public QObject
     Q_PROPERTY(QString vehicle READ vehicle NOTIFY planChanged)
     // The maneuvers its vehicle can do (its definition's; every known type without one).
     Q_PROPERTY(QStringList maneuverTypes READ maneuverTypes NOTIFY planChanged)
-    // [{id, type, lat, lon, index, severity: "error" | "warning" | ""}], in plan order.
+    // [{id, type, lat, lon, index, severity: "error" | "warning" | "", arrival
+    // (seconds from the start when the vehicle gets there; -1: never)}], in plan order.
     Q_PROPERTY(QVariantList maneuvers READ maneuvers NOTIFY edited)
     // Every point the vehicle will pass, transits included, in execution
     // order: [{lat, lon, maneuver, distance (m along the plan), z, zUnits}].

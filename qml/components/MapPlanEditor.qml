@@ -21,6 +21,7 @@ Item {
     property var area: []       // corners drawn so far: [{lat, lon}]
     property real rowSpacing: 20
     property real rowAngle: 0       // the rows' direction, degrees from north
+    property real rowOvershoot: 10  // metres past the area's edge, to turn outside it
     property bool crossHatch: false // the rows again at right angles
     property bool showGraph: false  // the plan's graph beside the panel
     property string mode: "plan"    // "plan": maneuvers; "map": the mission's map features; "checks": its checklists
@@ -103,7 +104,7 @@ Item {
         }
     }
     function makeRows(): void {
-        const id = planModel.addRows(area, rowSpacing, rowAngle, rowSpacing / 2, crossHatch)
+        const id = planModel.addRows(area, rowSpacing, rowAngle, rowOvershoot, crossHatch)
         if (id !== "") {
             selected = id
             area = []
@@ -655,7 +656,17 @@ Item {
                         validator: DoubleValidator { bottom: 0.5; top: 10000 }
                         onCommitted: editor.rowSpacing = Number(text)
                     }
-                    Text { height: Theme.touchTarget; verticalAlignment: Text.AlignVCenter; text: qsTr("m apart, at"); color: Theme.text; font.pixelSize: Theme.smallFontPixelSize }
+                    Text { height: Theme.touchTarget; verticalAlignment: Text.AlignVCenter; text: qsTr("m apart,"); color: Theme.text; font.pixelSize: Theme.smallFontPixelSize }
+                    Text { height: Theme.touchTarget; verticalAlignment: Text.AlignVCenter; text: qsTr("overshoot"); color: Theme.text; font.pixelSize: Theme.smallFontPixelSize }
+                    FormField {
+                        objectName: "rowOvershoot"
+                        width: Theme.mm(14)
+                        text: editor.rowOvershoot
+                        validator: DoubleValidator { bottom: 0; top: 10000 }
+                        inputMethodHints: Qt.ImhFormattedNumbersOnly
+                        onCommitted: editor.rowOvershoot = Number(text)
+                    }
+                    Text { height: Theme.touchTarget; verticalAlignment: Text.AlignVCenter; text: qsTr("m, at"); color: Theme.text; font.pixelSize: Theme.smallFontPixelSize }
                     FormField {
                         objectName: "rowAngle"
                         width: Theme.mm(14)
@@ -926,8 +937,11 @@ Item {
                 }
                 // The selected maneuver's parameters.
                 Text {
+                    objectName: "selectedManeuver"
                     visible: editor.selected !== "" && editor.mode === "plan"
-                    text: editor.selected
+                    readonly property var maneuver: editor.maneuverList.find(m => m.id === editor.selected)
+                    text: editor.selected + (maneuver && maneuver.arrival >= 0 ? qsTr(" · reached after %1").arg(editor.formatDuration(maneuver.arrival))
+                                           : maneuver ? qsTr(" · not reached (a maneuver before it never ends)") : "")
                     color: Theme.text
                     font.pixelSize: Theme.fontPixelSize
                     font.bold: true

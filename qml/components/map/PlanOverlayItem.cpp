@@ -89,5 +89,33 @@ QSGNode *PlanOverlayItem::updatePaintNode(QSGNode *old, UpdatePaintNodeData *)
         fan(fill, std::max(1.0, m_dotRadius - 2), s);
         setNodeColor(fill, fills[s]);
     }
+
+    // Which way the vehicle goes: an arrowhead every so many pixels along the
+    // legs (node 5: the nodes are found by their order).
+    QSGGeometryNode *arrows = flatNode(root, 5, QSGGeometry::DrawTriangles);
+    const double every = 140, size = std::max(7.0, m_lineWidth * 4);
+    std::vector<QPointF> heads; // tip, then the two back corners
+    double along = every / 2;
+    for (size_t i = 1; i < points.size() && heads.size() < 3 * 4000; ++i) {
+        const QPointF a = points[i - 1], b = points[i];
+        const double length = std::hypot(b.x() - a.x(), b.y() - a.y());
+        if (length <= 0)
+            continue;
+        const QPointF unit((b.x() - a.x()) / length, (b.y() - a.y()) / length), normal(-unit.y(), unit.x());
+        for (; along <= length; along += every) {
+            const QPointF tip = a + unit * (along + size / 2);
+            heads.push_back(tip);
+            heads.push_back(tip - unit * size + normal * (size / 2));
+            heads.push_back(tip - unit * size - normal * (size / 2));
+        }
+        along -= length;
+    }
+    QSGGeometry *headGeometry = arrows->geometry();
+    headGeometry->allocate(int(heads.size()));
+    auto *out = headGeometry->vertexDataAsPoint2D();
+    for (size_t i = 0; i < heads.size(); ++i)
+        out[i].set(float(heads[i].x()), float(heads[i].y()));
+    arrows->markDirty(QSGNode::DirtyGeometry);
+    setNodeColor(arrows, m_lineColor);
     return root;
 }

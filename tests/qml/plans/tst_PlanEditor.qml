@@ -153,6 +153,7 @@ TestCase {
     // the first key replaces the value, ✓ commits it.
     function test_3b_aNumberByTheKeypad() {
         editor().selected = "go"
+        verify(findChild(map2d, "selectedManeuver").text.indexOf("go · reached after 0 min 0 s") === 0, findChild(map2d, "selectedManeuver").text)
         const field = reveal(findChild(map2d, "parameter:speed"))
         verify(field.numeric)
         const at = field.mapToItem(map2d, field.width / 2, field.height / 2)

@@ -62,6 +62,14 @@ TEST(PlanEditor, OpensAMissionAtItsFirstPlanWithItsVehiclesManeuvers)
     EXPECT_NEAR(along, editor.statistics().value(u"length"_s).toDouble(), 0.05 * along);
     EXPECT_EQ(editor.path().last().toMap().value(u"zUnits"_s), u"DEPTH"_s);
     EXPECT_FALSE(editor.canUndo());
+    // When the vehicle gets to each maneuver: after the loiter's minute, then the rows.
+    const double wait = byId(editor.maneuvers(), u"wait"_s).value(u"arrival"_s).toDouble();
+    const double rows = byId(editor.maneuvers(), u"rows"_s).value(u"arrival"_s).toDouble();
+    const double surface = byId(editor.maneuvers(), u"surface"_s).value(u"arrival"_s).toDouble();
+    EXPECT_EQ(byId(editor.maneuvers(), u"go"_s).value(u"arrival"_s).toDouble(), 0);
+    EXPECT_GE(rows, wait + 60);
+    EXPECT_GT(surface, rows);
+    EXPECT_LE(surface, editor.statistics().value(u"duration"_s).toDouble());
     // The other vehicle's plan, drawn beside it.
     ASSERT_EQ(editor.otherPlans().size(), 1);
     EXPECT_EQ(editor.otherPlans()[0].toMap().value(u"vehicle"_s), u"caravela-sim"_s);
