@@ -24,7 +24,7 @@ Basic.TextField {
     onEditingFinished: if (acceptableInput) committed()
 
     readonly property bool numeric: (inputMethodHints & (Qt.ImhFormattedNumbersOnly | Qt.ImhDigitsOnly)) !== 0
-    readonly property alias keypad: keypad
+    readonly property Basic.Popup keypad: keypadLoader.item as Basic.Popup // null until first opened
 
     // A key of the keypad: the first one after it opens replaces the value;
     // then digits and the point go in at the cursor.
@@ -57,39 +57,46 @@ Basic.TextField {
         onTapped: {
             field.forceActiveFocus()
             field.freshKeypad = true
-            keypad.open()
+            keypadLoader.active = true
+            field.keypad.open()
         }
     }
-    Basic.Popup {
-        id: keypad
-        objectName: "keypad"
-        y: field.height + 2
-        padding: Theme.spacing / 2
-        closePolicy: Basic.Popup.CloseOnEscape | Basic.Popup.CloseOnPressOutsideParent
-        background: Rectangle { color: Theme.surface; border.color: Theme.border; radius: Theme.radius }
-        contentItem: Grid {
-            columns: 3
-            spacing: Theme.spacing / 2
-            Repeater {
-                model: ["7", "8", "9", "4", "5", "6", "1", "2", "3", "±", "0", ".", "⌫", "", "✓"]
-                delegate: TouchButton {
-                    id: key
-                    required property string modelData
-                    objectName: "key:" + modelData
-                    visible: modelData !== ""
-                    width: Theme.touchTarget * 1.3
-                    height: Theme.touchTarget * 1.1
-                    text: modelData
-                    focusPolicy: Qt.NoFocus // the field keeps the cursor
-                    highlighted: modelData === "✓"
-                    onClicked: {
-                        if (key.modelData !== "✓") {
-                            field.press(key.modelData)
-                            return
+    // The keypad is made the first time a finger asks for it: a form has
+    // many number fields, and a parameter form is made again on every edit.
+    Loader {
+        id: keypadLoader
+        active: false
+        sourceComponent: Basic.Popup {
+            id: keypad
+            objectName: "keypad"
+            y: field.height + 2
+            padding: Theme.spacing / 2
+            closePolicy: Basic.Popup.CloseOnEscape | Basic.Popup.CloseOnPressOutsideParent
+            background: Rectangle { color: Theme.surface; border.color: Theme.border; radius: Theme.radius }
+            contentItem: Grid {
+                columns: 3
+                spacing: Theme.spacing / 2
+                Repeater {
+                    model: ["7", "8", "9", "4", "5", "6", "1", "2", "3", "±", "0", ".", "⌫", "", "✓"]
+                    delegate: TouchButton {
+                        id: key
+                        required property string modelData
+                        objectName: "key:" + modelData
+                        visible: modelData !== ""
+                        width: Theme.touchTarget * 1.3
+                        height: Theme.touchTarget * 1.1
+                        text: modelData
+                        focusPolicy: Qt.NoFocus // the field keeps the cursor
+                        highlighted: modelData === "✓"
+                        onClicked: {
+                            if (key.modelData !== "✓") {
+                                field.press(key.modelData)
+                                return
+                            }
+                            keypad.close()
+                            if (field.acceptableInput)
+                                field.committed()
                         }
-                        keypad.close()
-                        if (field.acceptableInput)
-                            field.committed()
                     }
                 }
             }

@@ -432,23 +432,24 @@ Item {
                     objectName: "depthProfile"
                     readonly property var path: editor.model.path
                     readonly property real length: Math.max(1, path.length ? path[path.length - 1].distance : 1)
-                    readonly property var units: ["DEPTH", "ALTITUDE", "HEIGHT"].filter(u => path.some(p => p.zUnits === u))
-                    function runsOf(unit: string): var {
-                        const runs = []
-                        let run = []
+                    // One pass over the path per edit: each unit's runs and highest z.
+                    readonly property var series: {
+                        const runs = {}, top = {}
+                        let unit = "", run = null
                         for (const p of path) {
-                            if (p.zUnits === unit) {
-                                run.push(p)
-                            } else if (run.length) {
-                                runs.push(run)
+                            if (p.zUnits !== unit || run === null) {
+                                unit = p.zUnits
                                 run = []
+                                ;(runs[unit] = runs[unit] || []).push(run)
                             }
+                            run.push(p)
+                            top[unit] = Math.max(top[unit] || 1, p.z)
                         }
-                        if (run.length)
-                            runs.push(run)
-                        return runs
+                        return { runs: runs, top: top }
                     }
-                    function highest(unit: string): real { return Math.max(1, ...path.filter(p => p.zUnits === unit).map(p => p.z)) }
+                    readonly property var units: ["DEPTH", "ALTITUDE", "HEIGHT"].filter(u => series.runs[u] !== undefined)
+                    function runsOf(unit: string): var { return series.runs[unit] || [] }
+                    function highest(unit: string): real { return series.top[unit] || 1 }
                     width: parent.width
                     height: Theme.mm(12)
                     visible: path.length >= 2 && units.length > 0 && editor.mode === "plan"

@@ -158,8 +158,8 @@ TestCase {
         verify(field.numeric)
         const at = field.mapToItem(map2d, field.width / 2, field.height / 2)
         tap(at.x, at.y)
+        tryVerify(() => field.keypad && field.keypad.opened, 2000, "opened by a finger")
         const keypad = field.keypad
-        tryVerify(() => keypad.opened, 2000, "opened by a finger")
         for (const key of ["1", ".", "2", "⌫", "3"])
             mouseClick(findChild(keypad.contentItem, "key:" + key))
         compare(field.text, "1.3")
@@ -173,7 +173,7 @@ TestCase {
         compare(again.text, "1.5")
         mouseClick(again)
         wait(100)
-        verify(!again.keypad.opened)
+        verify(!again.keypad || !again.keypad.opened)
         editor().selected = ""
     }
 
