@@ -24,7 +24,7 @@ set(NEPTUS_LAYERS
   "neptus-model-reader models      neptus-models"
   "neptus-simulation   sim         neptus-messages neptus-geo neptus-plans"
   "neptus-session      session     neptus-scripting neptus-transport"
-  "neptus-engine       qmlmodels   neptus-session neptus-geo neptus-plans neptus-processor"
+  "neptus-engine       qmlmodels   neptus-session neptus-geo neptus-plans neptus-processor neptus-models"
   # Programs: the command-line tools link no QML.
   "neptus-msg          -           neptus-messages"
   "neptus-sim          -           neptus-simulation neptus-transport"

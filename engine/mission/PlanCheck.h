@@ -32,6 +32,7 @@ struct PlanProblem
         Endurance,        // longer than the vehicle can go
         Vehicle,          // a maneuver or parameter the vehicle cannot do (VehicleDefinition::check)
         Condition,        // a transition's condition does not compile (found by plans::Supervisor)
+        BelowBottom,      // planned deeper than the mission's terrain (found by the plan editor)
     };
     Severity severity = Severity::Error;
     Kind kind = Kind::Vehicle;

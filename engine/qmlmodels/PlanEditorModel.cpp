@@ -5,6 +5,7 @@
 #include "mission/Patterns.h"
 #include "qmlmodels/MissionFeatures.h"
 #include "plans/Supervisor.h"
+#include "geo/Geodesy.h"
 #include "processor/MissionTranslator.h"
 
 #include <QDir>
@@ -176,6 +177,7 @@ void PlanEditorModel::changed()
         const VehicleDefinition *v = m_vehicles.find(p->vehicle);
         m_geometry = planGeometry(*p, v ? v->speeds() : SpeedModel{});
         m_problems = checkPlan(*p, m_mission, m_geometry, v);
+        checkBottom();
         for (const Transition &t : p->transitions) {
             if (neptus::plans::Supervisor::plain(t))
                 continue;
@@ -275,7 +277,68 @@ void PlanEditorModel::featuresEdited()
     m_featureList = missionFeatures(m_mission, m_path);
     emit featuresChanged();
     otherPlansAgain();
+    terrainAgain();
     changed();
+}
+
+void PlanEditorModel::terrainAgain()
+{
+    QString file;
+    GeoPosition origin = m_mission.home;
+    for (const Map &map : m_mission.maps) {
+        for (const Feature &f : map.features) {
+            if (f.kind != u"model"_s || f.attributes.value(u"role"_s) != u"terrain"_s || f.attributes.value(u"file"_s).isEmpty() || !file.isEmpty())
+                continue;
+            file = QFileInfo(m_path).absoluteDir().absoluteFilePath(f.attributes.value(u"file"_s));
+            if (const auto at = m_mission.position(f.position))
+                origin = *at;
+        }
+    }
+    if (file == m_terrainFile && origin == m_terrainOrigin)
+        return;
+    m_terrainFile = file;
+    m_terrainOrigin = origin;
+    m_seabed.reset();
+    m_terrainImport.reset();
+    m_terrainState = file.isEmpty() ? QString() : u"reading %1"_s.arg(QFileInfo(file).fileName());
+    emit terrainChanged();
+    if (file.isEmpty())
+        return;
+    // In the helper process, off the GUI thread: a terrain may be large, or damaged.
+    m_terrainImport = std::make_unique<neptus::models::ModelImport>();
+    connect(m_terrainImport.get(), &neptus::models::ModelImport::finished, this, [this] {
+        const auto &mesh = m_terrainImport->result();
+        if (!mesh) {
+            m_terrainState = mesh.error();
+        } else {
+            m_seabed.emplace(*mesh);
+            m_terrainState = u"%1: %2 triangles"_s.arg(QFileInfo(m_terrainFile).fileName()).arg(mesh->triangleCount());
+        }
+        emit terrainChanged();
+        changed();
+    });
+    m_terrainImport->start(file);
+}
+
+void PlanEditorModel::checkBottom()
+{
+    if (!m_seabed || m_seabed->empty())
+        return;
+    const neptus::geo::Geodetic origin{neptus::geo::radians(m_terrainOrigin.lat), neptus::geo::radians(m_terrainOrigin.lon), 0};
+    for (const ManeuverGeometry &g : m_geometry.maneuvers) {
+        for (const Waypoint &w : g.points) {
+            if (w.zUnits != u"DEPTH"_s)
+                continue;
+            const Eigen::Vector3d ned = neptus::geo::toNed({neptus::geo::radians(w.lat), neptus::geo::radians(w.lon), 0}, origin);
+            const auto ground = m_seabed->heightAt(ned.y(), ned.x());
+            if (!ground || w.z <= -*ground)
+                continue;
+            m_problems.prepend({PlanProblem::Severity::Error, PlanProblem::Kind::BelowBottom, g.id,
+                                u"'%1' (%2): %3 m deep where the bottom is %4 m deep"_s.arg(g.id, g.type).arg(w.z, 0, 'f', 1).arg(-*ground, 0, 'f', 1),
+                                w.lat, w.lon, 0});
+            break; // once per maneuver
+        }
+    }
 }
 
 void PlanEditorModel::otherPlansAgain()
@@ -369,6 +432,8 @@ QList<PropertySpec> propertiesOf(const QString &kind)
     }
     if (kind == u"image"_s)
         specs.append({u"rotation"_s, u"number"_s, u"°"_s, {}, {}});
+    if (kind == u"model"_s)
+        specs.append({u"role"_s, u"choice"_s, {}, {u"object"_s, u"terrain"_s}, {}});
     if (kind == u"model"_s)
         for (const QString &angle : {u"roll"_s, u"pitch"_s, u"yaw"_s})
             specs.append({angle, u"number"_s, u"°"_s, {}, {}});

@@ -5,10 +5,15 @@
 #include "mission/PlanGeometry.h"
 #include "mission/Vehicle.h"
 #include "qmlmodels/PlanDeskModel.h"
+#include "models/ModelImport.h"
+#include "models/Seabed.h"
 #include "scripting/ScriptRunner.h"
 
 #include <QObject>
 #include <QPointer>
+
+#include <memory>
+#include <optional>
 #include <QStringList>
 #include <QVariantList>
 #include <QtQml/qqmlregistration.h>
@@ -68,6 +73,11 @@ class PlanEditorModel : public QObject
     // The export under way or last done: {busy, target, step (1-3), steps (3),
     // what, path (written), error, started (ms since the epoch)}.
     Q_PROPERTY(QVariantMap exporting READ exporting NOTIFY exportChanged)
+    // The mission's terrain (a 3D model with role "terrain"): "" when it
+    // has none, else what became of it ("reading seabed.obj", "seabed.obj:
+    // 2 triangles", or why it could not be read). Points planned deeper than
+    // it are errors of the plan.
+    Q_PROPERTY(QString terrain READ terrain NOTIFY terrainChanged)
     // The console's plan desk: with the mission shared, every edit goes to
     // the other consoles and theirs come here (the last change wins).
     Q_PROPERTY(PlanDeskModel *desk READ desk WRITE setDesk NOTIFY deskChanged)
@@ -100,6 +110,7 @@ public:
     bool canRedo() const { return !m_redo.isEmpty(); }
     QString error() const { return m_error; }
     PlanDeskModel *desk() const { return m_desk; }
+    QString terrain() const { return m_terrainState; }
     QVariantList exportTargets() const;
     QVariantMap exporting() const { return m_export; }
     // Translates the plan (the mission processor, off the GUI thread) to
@@ -176,6 +187,7 @@ signals:
     void otherPlansChanged();
     void deskChanged();
     void exportChanged();
+    void terrainChanged();
     void edited();
     void errorChanged();
 
@@ -207,6 +219,13 @@ private:
     QVariantList m_otherPlans; // when the mission or the plan being edited changes
     QPointer<PlanDeskModel> m_desk;
     QVariantMap m_export;
+    // The terrain: read by the model import helper, asked at every planned point.
+    std::unique_ptr<neptus::models::ModelImport> m_terrainImport;
+    std::optional<neptus::models::Seabed> m_seabed;
+    QString m_terrainFile, m_terrainState;
+    neptus::mission::GeoPosition m_terrainOrigin;
+    void terrainAgain(); // when the features change: another terrain to read?
+    void checkBottom();  // the plan's points against it, into m_problems
     void adoptShared(); // another console's change
     void otherPlansAgain();
 };

@@ -890,6 +890,15 @@ Item {
                     }
                 }
                 Text {
+                    objectName: "terrainStatus"
+                    width: parent.width
+                    visible: planModel.terrain !== ""
+                    text: qsTr("Terrain: %1").arg(planModel.terrain)
+                    wrapMode: Text.Wrap
+                    color: Theme.textDim
+                    font.pixelSize: Theme.smallFontPixelSize
+                }
+                Text {
                     objectName: "shareStatus"
                     width: parent.width
                     visible: text !== ""

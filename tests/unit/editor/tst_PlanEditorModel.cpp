@@ -12,6 +12,8 @@
 #include <QTest>
 #include <QTemporaryDir>
 
+#include <array>
+
 #include <cmath>
 
 #include <gtest/gtest.h>
@@ -386,4 +388,66 @@ TEST(PlanEditor, ExportsThePlanToItsVehiclesTargetsStepByStep)
     ASSERT_TRUE(editor.setParameter(u"go"_s, u"z"_s, u"500"_s));
     EXPECT_FALSE(editor.exportPlan(u"imc"_s)) << "errors first";
     EXPECT_TRUE(editor.error().contains(u"errors"_s)) << editor.error().toStdString();
+}
+
+// A terrain in the mission (a 3D model with role "terrain", read through the
+// model import helper): a point planned deeper than it is an error.
+TEST(PlanEditor, APointPlannedBelowTheTerrainIsAnError)
+{
+    QTemporaryDir dir;
+    PlanEditorModel editor;
+    editor.setMissionPath(douroCopy(dir));
+    // A flat seabed 10 m down, 600 m square around the survey's start (Y up, as .obj files are).
+    QFile obj(dir.filePath(u"seabed.obj"_s));
+    ASSERT_TRUE(obj.open(QIODevice::WriteOnly));
+    obj.write("v -300 -10 -300\nv 300 -10 -300\nv 300 -10 300\nv -300 -10 300\nf 1 2 3 4\n");
+    obj.close();
+    const auto go = byId(editor.maneuvers(), u"go"_s);
+    const QString model = editor.addFeature(u"model"_s, {QVariantMap{{u"lat"_s, go.value(u"lat"_s)}, {u"lon"_s, go.value(u"lon"_s)}}});
+    ASSERT_TRUE(editor.setFeatureProperty(model, u"file"_s, u"seabed.obj"_s));
+    EXPECT_TRUE(editor.terrain().isEmpty()) << "an object until it is the terrain";
+    ASSERT_TRUE(editor.setFeatureProperty(model, u"role"_s, u"terrain"_s));
+    EXPECT_TRUE(editor.terrain().startsWith(u"reading seabed.obj"_s)) << editor.terrain().toStdString();
+    ASSERT_TRUE(QTest::qWaitFor([&] { return editor.terrain().contains(u"triangles"_s); }, 20000)) << editor.terrain().toStdString();
+    EXPECT_EQ(editor.errorCount(), 0) << "3 m deep over a 10 m bottom";
+
+    ASSERT_TRUE(editor.setParameter(u"go"_s, u"z"_s, u"12"_s));
+    ASSERT_EQ(editor.errorCount(), 1) << editor.terrain().toStdString() << " "
+                                      << editor.problems().value(0).toMap().value(u"message"_s).toString().toStdString();
+    const QVariantMap problem = editor.problems().first().toMap();
+    EXPECT_EQ(problem.value(u"kind"_s).toInt(), int(neptus::mission::PlanProblem::Kind::BelowBottom));
+    EXPECT_EQ(problem.value(u"maneuver"_s), u"go"_s);
+    EXPECT_TRUE(problem.value(u"message"_s).toString().contains(u"12.0 m deep where the bottom is 10.0 m deep"_s))
+        << problem.value(u"message"_s).toString().toStdString();
+    ASSERT_TRUE(editor.undo());
+    EXPECT_EQ(editor.errorCount(), 0);
+    // Saved and opened again, the terrain is read again.
+    ASSERT_TRUE(editor.save());
+    PlanEditorModel again;
+    again.setMissionPath(editor.missionPath());
+    ASSERT_TRUE(QTest::qWaitFor([&] { return again.terrain().contains(u"triangles"_s); }, 20000)) << again.terrain().toStdString();
+    EXPECT_TRUE(again.setParameter(u"go"_s, u"z"_s, u"11"_s));
+    EXPECT_EQ(again.errorCount(), 1);
+}
+
+// The terrain asked for its height: interpolated on a slope, the highest of
+// two layers, nothing off the mesh.
+TEST(PlanEditor, TheSeabedIsInterpolatedUnderAPoint)
+{
+    neptus::models::Mesh mesh;
+    const auto vertex = [](float east, float north, float up) {
+        return neptus::models::Mesh::Vertex{{east, north, up}, {0, 0, 1}, {1, 1, 1, 1}};
+    };
+    // A slope from 20 m down at the west edge to 10 m down at the east, and a pier deck at 2 m up over x 40..60.
+    mesh.vertices = {vertex(0, 0, -20), vertex(100, 0, -10), vertex(100, 100, -10), vertex(0, 100, -20),
+                     vertex(40, 40, 2), vertex(60, 40, 2), vertex(60, 60, 2)};
+    mesh.indices = {0, 1, 2, 0, 2, 3, 4, 5, 6};
+    std::copy_n(std::array<float, 3>{0, 0, -20}.begin(), 3, mesh.boundsMin);
+    std::copy_n(std::array<float, 3>{100, 100, 2}.begin(), 3, mesh.boundsMax);
+    const neptus::models::Seabed seabed(mesh);
+    EXPECT_NEAR(*seabed.heightAt(25, 70), -17.5, 1e-4);
+    EXPECT_NEAR(*seabed.heightAt(75, 10), -12.5, 1e-4);
+    EXPECT_NEAR(*seabed.heightAt(59, 45), 2, 1e-4) << "the deck over the slope";
+    EXPECT_FALSE(seabed.heightAt(150, 50).has_value());
+    EXPECT_FALSE(seabed.heightAt(std::nan(""), 50).has_value());
 }
