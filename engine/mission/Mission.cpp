@@ -19,6 +19,16 @@ std::optional<GeoPosition> Mission::position(const Feature::Point &point) const
     return GeoPosition{geo::degrees(at.lat), geo::degrees(at.lon), 0};
 }
 
+QString validId(const QString &id)
+{
+    QString result;
+    for (const QChar c : id)
+        result += (c.isLetterOrNumber() && c.unicode() < 128) || c == u'_' || c == u'.' || c == u'-' ? c : u'_';
+    if (result.isEmpty() || result.front() == u'.' || result.front() == u'-')
+        result.prepend(u'_');
+    return result.left(64);
+}
+
 QString formatNumber(double value)
 {
     char buffer[32];

@@ -188,4 +188,8 @@ struct Mission
 // Our text for a number: the shortest that reads back to the same double.
 QString formatNumber(double value);
 
+// An id as our schema takes it: letters, digits, '_', '.', '-' (anything
+// else becomes '_'), not starting with '.' or '-', 64 at most.
+QString validId(const QString &id);
+
 } // namespace neptus::mission

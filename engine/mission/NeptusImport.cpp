@@ -48,17 +48,6 @@ namespace {
 // Reads one file the mission refers to (a map), relative to the mission.
 using FileSource = std::function<std::expected<QByteArray, QString>(const QString &relative)>;
 
-// Ids as our schema takes them: letters, digits, '_', '.', '-'; 64 at most.
-QString validId(const QString &id)
-{
-    QString result;
-    for (const QChar c : id)
-        result += (c.isLetterOrNumber() && c.unicode() < 128) || c == u'_' || c == u'.' || c == u'-' ? c : u'_';
-    if (result.isEmpty() || result.front() == u'.' || result.front() == u'-')
-        result.prepend(u'_');
-    return result.left(64);
-}
-
 QString colorText(int r, int g, int b)
 {
     return QStringLiteral("#%1%2%3").arg(r & 255, 2, 16, QChar(u'0')).arg(g & 255, 2, 16, QChar(u'0')).arg(b & 255, 2, 16, QChar(u'0'));

@@ -8,7 +8,6 @@
 
 #include <QDir>
 #include <QFileInfo>
-#include <QRegularExpression>
 #include <QSettings>
 #include <QStandardPaths>
 #include <QTime>
@@ -160,22 +159,19 @@ QString PlanDeskModel::openMission(const QString &path)
 
 QString PlanDeskModel::newMission(const QString &name, const QString &vehicle, double lat, double lon)
 {
-    static const QRegularExpression notId(u"[^A-Za-z0-9_.-]+"_s);
-    QString id = name.trimmed().toLower().replace(notId, u"-"_s);
-    while (id.startsWith(u'-') || id.startsWith(u'.'))
-        id.remove(0, 1);
-    if (id.isEmpty())
+    if (name.trimmed().isEmpty())
         return tr("give the mission a name");
+    const QString id = neptus::mission::validId(name.trimmed().toLower());
     if (vehicle.isEmpty())
         return tr("choose the vehicle its first plan is for");
     if (!std::isfinite(lat) || !std::isfinite(lon) || std::abs(lat) > 90 || std::abs(lon) > 180)
         return tr("not a position: %1, %2").arg(lat).arg(lon);
     QDir().mkpath(missionsFolder());
-    const QString file = QDir(missionsFolder()).filePath(id.left(64) + u".xml"_s);
+    const QString file = QDir(missionsFolder()).filePath(id + u".xml"_s);
     if (QFileInfo::exists(file))
         return tr("%1 exists: open it, or give another name").arg(file);
     neptus::mission::Mission m;
-    m.id = id.left(64);
+    m.id = id;
     m.name = name.trimmed();
     m.home = {lat, lon, 0};
     m.vehicles = {vehicle};

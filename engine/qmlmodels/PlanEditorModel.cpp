@@ -77,7 +77,7 @@ void PlanEditorModel::setMissionPath(const QString &path)
     }
     emit missionChanged();
     emit planChanged();
-    featuresEdited();
+    missionReplaced();
 }
 
 QStringList PlanEditorModel::planIds() const
@@ -165,7 +165,7 @@ void PlanEditorModel::adoptShared()
         m_planId = m_mission.plans.first().id;
     m_modified = false; // the desk wrote the file as it is now
     emit missionChanged();
-    featuresEdited();
+    missionReplaced();
 }
 
 void PlanEditorModel::changed()
@@ -276,9 +276,23 @@ void PlanEditorModel::featuresEdited()
 {
     m_featureList = missionFeatures(m_mission, m_path);
     emit featuresChanged();
-    otherPlansAgain();
     terrainAgain();
     changed();
+}
+
+void PlanEditorModel::checklistsEdited()
+{
+    emit checklistsChanged();
+    if (m_desk)
+        m_desk->shareEdits(m_mission);
+    emit edited(); // modified
+}
+
+void PlanEditorModel::missionReplaced()
+{
+    otherPlansAgain();
+    emit checklistsChanged();
+    featuresEdited();
 }
 
 void PlanEditorModel::terrainAgain()
@@ -1013,7 +1027,7 @@ bool PlanEditorModel::addChecklistItem(const QString &text)
     list.groups.last().items.append(item);
     m_modified = true;
     fail({});
-    featuresEdited();
+    checklistsEdited();
     return true;
 }
 
@@ -1054,7 +1068,7 @@ bool PlanEditorModel::setChecklistItem(int list, int group, int item, const QStr
         i.max = number;
     m_modified = true;
     fail({});
-    featuresEdited();
+    checklistsEdited();
     return true;
 }
 
@@ -1066,7 +1080,7 @@ bool PlanEditorModel::removeChecklistItem(int list, int group, int item)
     remember();
     m_mission.checklists[list].groups[group].items.removeAt(item);
     m_modified = true;
-    featuresEdited();
+    checklistsEdited();
     return true;
 }
 
@@ -1137,9 +1151,7 @@ bool PlanEditorModel::undo()
     if (m_undo.isEmpty())
         return false;
     m_redo.append(m_mission);
-    m_mission = m_undo.takeLast();
-    m_modified = true;
-    featuresEdited();
+    restore(m_undo.takeLast());
     return true;
 }
 
@@ -1148,26 +1160,49 @@ bool PlanEditorModel::redo()
     if (m_redo.isEmpty())
         return false;
     m_undo.append(m_mission);
-    m_mission = m_redo.takeLast();
-    m_modified = true;
-    featuresEdited();
+    restore(m_redo.takeLast());
     return true;
+}
+
+void PlanEditorModel::restore(Mission mission)
+{
+    // Only what differs is worked out again. Parts the edit did not touch
+    // are still shared with the snapshot, and comparing those is a pointer test.
+    const Mission before = std::exchange(m_mission, std::move(mission));
+    m_modified = true;
+    if (before.maps != m_mission.maps)
+        featuresEdited();
+    else
+        changed();
+    if (before.checklists != m_mission.checklists)
+        emit checklistsChanged();
+    const auto others = [this](const Mission &m) {
+        QList<Plan> list;
+        for (const Plan &p : m.plans)
+            if (p.id != m_planId)
+                list << p;
+        return list;
+    };
+    if (others(before) != others(m_mission)) // undoing another console's change
+        otherPlansAgain();
 }
 
 bool PlanEditorModel::saveAs(const QString &path)
 {
     if (path.isEmpty() || QFileInfo(path).isDir()) {
-        fail(u"no file to save to"_s);
+        fail(u"no mission file to save to"_s);
         return false;
     }
     if (auto saved = neptus::saveFileKeepingPrevious(path, writeMission(m_mission)); !saved) {
         fail(saved.error());
         return false;
     }
+    const bool moved = path != m_path;
     m_path = path;
     m_modified = false;
     fail({});
-    emit missionChanged();
+    if (moved)
+        emit missionChanged();
     emit edited();
     return true;
 }
@@ -1183,16 +1218,5 @@ QStringList PlanEditorModel::knownVehicles() const
 
 bool PlanEditorModel::save()
 {
-    if (m_path.isEmpty()) {
-        fail(u"no mission file to save to"_s);
-        return false;
-    }
-    if (auto saved = neptus::saveFileKeepingPrevious(m_path, writeMission(m_mission)); !saved) {
-        fail(saved.error());
-        return false;
-    }
-    m_modified = false;
-    fail({});
-    emit edited();
-    return true;
+    return saveAs(m_path);
 }

@@ -57,7 +57,7 @@ class PlanEditorModel : public QObject
     // The mission's checklists' items, in order: [{list, group, item
     // (indices), checklist (its name or id), groupName, text, note, variable,
     // min, max (NaN: none)}].
-    Q_PROPERTY(QVariantList checklistItems READ checklistItems NOTIFY featuresChanged)
+    Q_PROPERTY(QVariantList checklistItems READ checklistItems NOTIFY checklistsChanged)
     // The mission's other plans, drawn fainter in their vehicles' colours:
     // [{id, vehicle, path: [{lat, lon}]}].
     Q_PROPERTY(QVariantList otherPlans READ otherPlans NOTIFY otherPlansChanged)
@@ -184,6 +184,7 @@ signals:
     void missionChanged();
     void planChanged();
     void featuresChanged();
+    void checklistsChanged();
     void otherPlansChanged();
     void deskChanged();
     void exportChanged();
@@ -201,7 +202,10 @@ private:
     neptus::mission::Maneuver *find(const QString &id);
     QString addPattern(const neptus::mission::Maneuver &made); // a FollowPath made by a pattern generator
     neptus::mission::Feature *feature(const QString &id);
-    void featuresEdited(); // the feature list again, the plan checked again (areas change it)
+    void featuresEdited();   // the feature list again, the plan checked again (areas change it)
+    void checklistsEdited(); // told and shared; nothing else depends on them
+    void missionReplaced();  // opened, or another console's: everything again
+    void restore(neptus::mission::Mission mission); // undo, redo
     QVariantList maneuverList() const;
     QVariantList problemList() const;
 
