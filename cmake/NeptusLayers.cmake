@@ -23,7 +23,8 @@ set(NEPTUS_LAYERS
   "neptus-models       models      neptus-core"
   "neptus-model-reader models      neptus-models"
   "neptus-simulation   sim         neptus-messages neptus-geo neptus-plans"
-  "neptus-session      session     neptus-scripting neptus-transport"
+  "neptus-logs         log         neptus-messages neptus-geo"
+  "neptus-session      session     neptus-scripting neptus-transport neptus-logs"
   "neptus-engine       qmlmodels   neptus-session neptus-geo neptus-plans neptus-processor neptus-models"
   # Programs: the command-line tools link no QML.
   "neptus-msg          -           neptus-messages"
@@ -32,6 +33,7 @@ set(NEPTUS_LAYERS
   "neptus-script-host  -           neptus-scripting"
   "neptus-xslt         -           neptus-processor"
   "neptus-mission      -           neptus-processor neptus-models"
+  "neptus-log          -           neptus-logs"
 )
 
 # neptus_layer(LIBRARY <folder-var> <uses-var> <allowed-var>): the table's

@@ -71,6 +71,7 @@ std::expected<void, QString> Console::startImc(transport::ImcUdpConfig config)
 transport::ImcUdpTransport *Console::attachImc(std::unique_ptr<transport::ImcUdpTransport> imc)
 {
     const QString link = QStringLiteral("IMC/UDP");
+    imc->setPacketTap([this](QByteArrayView packet) { tap(packet); });
     connect(imc.get(), &transport::ImcUdpTransport::received, this,
             [this, link](const msg::Message &m, qsizetype bytes) { ingest(m, link, bytes); });
     connect(imc.get(), &transport::ImcUdpTransport::decodeFailed, this,
@@ -114,6 +115,7 @@ std::expected<void, QString> Console::startDds(transport::DdsConfig config)
     const QString link = QStringLiteral("DDS");
     // Straight into the session from Cyclone's threads: the tree, alarms and statistics are thread-safe.
     dds->setDirectReceiver([this, link](const msg::Message &m, qsizetype bytes) { ingest(m, link, bytes); });
+    dds->setPacketTap([this](QByteArrayView packet) { tap(packet); });
     if (auto started = dds->start(); !started)
         return started;
     connect(dds.get(), &transport::DdsTransport::decodeFailed, this,
@@ -130,8 +132,30 @@ std::expected<void, QString> Console::startDds(transport::DdsConfig config)
     return {};
 }
 
+void Console::setRecorder(log::Recorder *recorder)
+{
+    disconnect(m_recorderProblems);
+    m_recorder = recorder;
+    if (!recorder)
+        return;
+    const auto node = m_graph.ensure(QStringLiteral("recording"));
+    const auto said = [this, node](const QString &problem) {
+        m_graph.raise(node, problem.isEmpty() ? alarms::Normal : alarms::Warning, problem);
+    };
+    m_recorderProblems = connect(recorder, &log::Recorder::problemChanged, this, said);
+    said(recorder->status().problem);
+}
+
+void Console::tap(QByteArrayView packet)
+{
+    if (log::Recorder *recorder = m_recorder.load(std::memory_order_relaxed))
+        recorder->record(packet);
+}
+
 std::expected<void, QString> Console::send(quint16 system, msg::Message message)
 {
+    if (m_replaying)
+        return std::unexpected(tr("this console replays a log: nothing is sent to vehicles"));
     if (auto sent = m_router.publish(system, message); !sent)
         return sent;
     m_tree.recordSent(system, std::move(message));
@@ -177,6 +201,8 @@ void Console::ingest(const msg::Message &message, const QString &link, qsizetype
 
 std::expected<void, QString> Console::broadcast(const msg::Message &message)
 {
+    if (m_replaying)
+        return std::unexpected(tr("this console replays a log: nothing is sent"));
     if (!m_dds)
         return std::unexpected(QStringLiteral("no DDS link (consoles share missions over DDS)"));
     return m_dds->publish(0xFFFF, message);

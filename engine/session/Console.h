@@ -3,6 +3,7 @@
 #include "alarms/AlarmGraph.h"
 #include "alarms/HealthMonitor.h"
 #include "core/Clock.h"
+#include "log/Recorder.h"
 #include "messages/SchemaSet.h"
 #include "scripting/ScriptHost.h"
 #include "session/EntityNaming.h"
@@ -15,6 +16,7 @@
 #include <QObject>
 #include <QTimer>
 
+#include <atomic>
 #include <memory>
 
 namespace neptus::session {
@@ -48,6 +50,13 @@ public:
     // Made on first use: a console that runs no alarm scripts (a headless
     // recorder, the receive-path fuzz target) starts no script engine.
     scripting::ScriptHost *scripts();
+
+    // Every packet the links receive and send goes to `recorder` too (null:
+    // none); its problems (a full disk) raise the "recording" alarm. Any time.
+    void setRecorder(log::Recorder *recorder);
+    // A console fed from a log (review): nothing is sent to anyone.
+    void setReplaying(bool replaying) { m_replaying = replaying; }
+    bool replaying() const { return m_replaying; }
 
     // Decodes what `system` (an IMC id such as "0x00d1", or the name it
     // announces) sends with the definitions in `file` (IMC.xml or IMC.xml.gz),
@@ -125,7 +134,13 @@ private:
     // A link says who sends as `system` now, and where commands go ("" held).
     void sourcesChanged(quint16 system, const QStringList &senders, const QString &destination);
 
+    // Hands a link's packet to the recorder, if there is one.
+    void tap(QByteArrayView packet);
+
     const Clock *m_clock;
+    std::atomic<log::Recorder *> m_recorder = nullptr;
+    QMetaObject::Connection m_recorderProblems;
+    bool m_replaying = false;
     std::shared_ptr<const msg::Schema> m_schema;
     std::shared_ptr<msg::SchemaSet> m_schemas;
     tree::VariableTree m_tree;

@@ -2,9 +2,11 @@
 
 #include "messages/Message.h"
 
+#include <QByteArrayView>
 #include <QString>
 
 #include <expected>
+#include <functional>
 
 namespace neptus::transport {
 
@@ -14,6 +16,12 @@ namespace neptus::transport {
 // "socket: Network unreachable").
 class OutputSink
 {
+public:
+    // Sees every IMC packet a link receives (decoded well, not its own) and
+    // sends, exactly as on the wire: the recorder. Called on the link's
+    // threads; set before the link starts.
+    using PacketTap = std::function<void(QByteArrayView packet)>;
+
 public:
     virtual ~OutputSink() = default;
     virtual std::expected<void, QString> publish(quint16 system, const msg::Message &message) = 0;

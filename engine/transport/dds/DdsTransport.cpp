@@ -321,6 +321,8 @@ void DdsTransport::onData(dds_entity_t reader, void *self)
                 }, Qt::QueuedConnection);
                 continue;
             }
+            if (transport->m_tap)
+                transport->m_tap(QByteArrayView(envelope.packet._buffer, bytes));
             if (transport->m_direct) {
                 transport->m_direct(*message, bytes);
                 continue;
@@ -477,6 +479,8 @@ std::expected<void, QString> DdsTransport::write(dds_entity_t writer, const msg:
     if (const dds_return_t written = dds_write(writer, &envelope); written != DDS_RETCODE_OK)
         return std::unexpected(QStringLiteral("DDS: cannot write %1: %2")
                                    .arg(message.abbrev(), QString::fromUtf8(dds_strretcode(written))));
+    if (m_tap)
+        m_tap(packet);
     return {};
 }
 

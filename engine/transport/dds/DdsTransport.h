@@ -86,6 +86,8 @@ public:
         m_direct = std::move(receiver);
     }
 
+    void setPacketTap(PacketTap tap) { m_tap = std::move(tap); }
+
     // Sends a message of this node to everyone (vehicles, simulators).
     bool broadcast(const msg::Message &message);
     // Sends several at once (a burst of telemetry, a log replayed): messages
@@ -164,6 +166,7 @@ private:
     QHash<dds_instance_handle_t, QString> m_participantOfWriter; // by publication handle
     QHash<quint16, Peer> m_peers;
     std::function<void(const msg::Message &, qsizetype)> m_direct;
+    PacketTap m_tap;
 };
 
 } // namespace neptus::transport

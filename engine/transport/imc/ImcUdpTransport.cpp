@@ -210,6 +210,8 @@ void ImcUdpTransport::process(QByteArrayView datagram, const QHostAddress &from,
             sender->data = Endpoint{from, fromPort}; // reachable where it talks from
         resolve(source);
     }
+    if (m_tap)
+        m_tap(datagram);
     emit received(*message, datagram.size());
     if (!announce)
         return;
@@ -441,6 +443,8 @@ std::expected<void, QString> ImcUdpTransport::send(const msg::Message &message, 
     if (::sendto(m_fd, m_buffer.constData(), size_t(m_buffer.size()), 0, reinterpret_cast<sockaddr *>(&address), size)
         != m_buffer.size())
         return std::unexpected(QStringLiteral("cannot send to %1: %2").arg(to.name(), qt_error_string(errno)));
+    if (m_tap)
+        m_tap(m_buffer);
     return {};
 }
 

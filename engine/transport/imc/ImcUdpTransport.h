@@ -97,6 +97,7 @@ public:
     // Datagrams dropped unread over their host's budget or queue, since the start.
     quint64 droppedDatagrams() const { return m_dropped; }
     const msg::SchemaSet &schemas() const { return *m_schemas; }
+    void setPacketTap(PacketTap tap) { m_tap = std::move(tap); }
 
     // One datagram as it arrived from `from`:`fromPort`, within its host's
     // budget (tests and the fuzz target call it without any socket).
@@ -200,6 +201,7 @@ private:
     QList<Endpoint> discoveryTargets() const;
 
     std::shared_ptr<msg::SchemaSet> m_schemas;
+    PacketTap m_tap;
     ImcUdpConfig m_config;
     int m_fd = -1;          // bound by start(); sends go from it
     int m_discoveryFd = -1;

@@ -1,0 +1,390 @@
+#include "log/LogExport.h"
+
+#include "geo/Geodesy.h"
+#include "messages/MessageJson.h"
+
+#include <QDateTime>
+#include <QDir>
+#include <QFile>
+#include <QFileInfo>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QSaveFile>
+#include <QTimeZone>
+#include <QXmlStreamWriter>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+namespace neptus::log {
+
+namespace {
+
+constexpr quint16 announceId = 151;
+
+// Calls `progress` about a hundred times over `count` steps.
+class Ticker
+{
+public:
+    Ticker(const Progress &progress, qsizetype count)
+        : m_progress(progress)
+        , m_every(std::max<qsizetype>(1, count / 100))
+        , m_count(std::max<qsizetype>(1, count))
+    {
+    }
+    // False when the caller asked to stop.
+    bool at(qsizetype step)
+    {
+        if (!m_progress || step % m_every != 0)
+            return true;
+        return m_progress(double(step) / double(m_count));
+    }
+    bool done() { return !m_progress || m_progress(1.0); }
+
+private:
+    const Progress &m_progress;
+    qsizetype m_every, m_count;
+};
+
+QString label(const QHash<quint16, QString> &names, quint16 id)
+{
+    return names.value(id, msg::systemLabel(id));
+}
+
+QString isoTime(double t)
+{
+    return QDateTime::fromMSecsSinceEpoch(qint64(std::llround(t * 1000)), QTimeZone::UTC).toString(Qt::ISODateWithMs);
+}
+
+QString csvText(QString text)
+{
+    if (text.contains(u',') || text.contains(u'"') || text.contains(u'\n') || text.contains(u'\r')) {
+        text.replace(QStringLiteral("\""), QStringLiteral("\"\""));
+        return u'"' + text + u'"';
+    }
+    return text;
+}
+
+QString csvValue(const msg::Message &m, int i)
+{
+    const msg::FieldDef &field = m.field(i);
+    switch (field.type) {
+    case msg::FieldType::PlainText:
+        return csvText(m.text(i));
+    case msg::FieldType::RawData:
+        return QString::fromLatin1(m.bytes(i).toHex());
+    case msg::FieldType::Message: {
+        const msg::Message *inner = m.inlineMessage(i);
+        return inner ? csvText(QString::fromUtf8(QJsonDocument(msg::toJson(*inner)).toJson(QJsonDocument::Compact)))
+                     : QString();
+    }
+    case msg::FieldType::MessageList: {
+        QJsonArray list;
+        for (const msg::Message &inner : m.messages(i))
+            list.append(msg::toJson(inner));
+        return csvText(QString::fromUtf8(QJsonDocument(list).toJson(QJsonDocument::Compact)));
+    }
+    case msg::FieldType::Fp32:
+    case msg::FieldType::Fp64:
+        return QString::number(m.number(i), 'g', 17);
+    default:
+        return QString::number(m.integer(i));
+    }
+}
+
+struct TrackPoint
+{
+    double time, lat, lon, depth; // degrees, metres
+};
+
+std::expected<std::map<quint16, std::vector<TrackPoint>>, QString> tracksOf(const LogSet &logs, const Progress &progress)
+{
+    std::map<quint16, std::vector<TrackPoint>> tracks;
+    Ticker ticker(progress, logs.count());
+    for (qsizetype k = 0; k < logs.count(); ++k) {
+        if (!ticker.at(k))
+            return std::unexpected(QStringLiteral("stopped"));
+        const LogFile &log = logs.logOf(k);
+        const qsizetype i = logs.indexInLog(k);
+        const msg::MessageDef *def = log.schemas().codecFor(log.source(i))->schema().byId(log.messageId(i));
+        if (!def || def->abbrev != u"EstimatedState")
+            continue;
+        const auto m = logs.decode(k);
+        if (!m)
+            continue;
+        const geo::Geodetic p = geo::imcPosition(m->number(u"lat"), m->number(u"lon"), m->number(u"height"),
+                                                 m->number(u"x"), m->number(u"y"), m->number(u"z"));
+        const double lat = p.lat * 180 / M_PI, lon = p.lon * 180 / M_PI;
+        if (!std::isfinite(lat) || !std::isfinite(lon) || (lat == 0 && lon == 0))
+            continue; // no position yet
+        tracks[m->header.src].push_back({m->header.timestamp, lat, lon, m->number(u"depth")});
+    }
+    return tracks;
+}
+
+} // namespace
+
+QHash<quint16, QString> systemNames(const LogSet &logs)
+{
+    QHash<quint16, QString> names;
+    for (qsizetype k = 0; k < logs.count(); ++k) {
+        const LogFile &log = logs.logOf(k);
+        const qsizetype i = logs.indexInLog(k);
+        if (log.messageId(i) != announceId || names.contains(log.source(i)))
+            continue;
+        if (const auto m = logs.decode(k); m && m->def() && m->def()->abbrev == u"Announce")
+            names.insert(m->header.src, m->text(u"sys_name"));
+    }
+    return names;
+}
+
+LogSummary summarize(const LogSet &logs)
+{
+    LogSummary summary;
+    summary.begin = logs.begin();
+    summary.end = logs.end();
+    summary.packets = logs.count();
+    const QHash<quint16, QString> names = systemNames(logs);
+    std::map<quint16, qint64> bySystem;
+    QHash<QString, qint64> byType;
+    for (qsizetype k = 0; k < logs.count(); ++k) {
+        const LogFile &log = logs.logOf(k);
+        const qsizetype i = logs.indexInLog(k);
+        ++bySystem[log.source(i)];
+        const msg::MessageDef *def = log.schemas().codecFor(log.source(i))->schema().byId(log.messageId(i));
+        ++byType[def ? def->abbrev : QStringLiteral("unknown id %1").arg(log.messageId(i))];
+    }
+    for (const auto &[id, count] : bySystem)
+        summary.systems.append({id, label(names, id), count});
+    for (auto it = byType.cbegin(); it != byType.cend(); ++it)
+        summary.types.append({it.key(), it.value()});
+    std::sort(summary.types.begin(), summary.types.end(),
+              [](const auto &a, const auto &b) { return a.second != b.second ? a.second > b.second : a.first < b.first; });
+    for (const auto &log : logs.logs()) {
+        if (!log->damage().isEmpty())
+            summary.damage.append(log->damage());
+    }
+    return summary;
+}
+
+std::expected<QStringList, QString> exportCsv(const LogSet &logs, const QString &folder, const Progress &progress)
+{
+    if (!QDir().mkpath(folder))
+        return std::unexpected(QStringLiteral("%1: cannot make the folder").arg(folder));
+    const QHash<quint16, QString> names = systemNames(logs);
+    struct Out
+    {
+        std::unique_ptr<QSaveFile> file;
+        QByteArray buffer;
+    };
+    std::map<QString, Out> files;
+    Ticker ticker(progress, logs.count());
+    for (qsizetype k = 0; k < logs.count(); ++k) {
+        if (!ticker.at(k))
+            return std::unexpected(QStringLiteral("stopped"));
+        const auto m = logs.decode(k);
+        if (!m || !m->def())
+            continue;
+        auto [it, made] = files.try_emplace(m->def()->abbrev);
+        Out &out = it->second;
+        if (made) {
+            out.file = std::make_unique<QSaveFile>(QDir(folder).filePath(m->def()->abbrev + QStringLiteral(".csv")));
+            if (!out.file->open(QIODevice::WriteOnly))
+                return std::unexpected(QStringLiteral("%1: %2").arg(out.file->fileName(), out.file->errorString()));
+            QStringList header{QStringLiteral("time"), QStringLiteral("system"), QStringLiteral("entity")};
+            for (int i = 0; i < m->fieldCount(); ++i)
+                header.append(m->field(i).unit.isEmpty() || m->field(i).unit == u"Enumerated" || m->field(i).unit == u"Bitfield"
+                                  ? m->field(i).abbrev
+                                  : QStringLiteral("%1 (%2)").arg(m->field(i).abbrev, m->field(i).unit));
+            out.buffer = header.join(u',').toUtf8() + '\n';
+        }
+        QString line = QString::number(m->header.timestamp, 'f', 6) + u',' + csvText(label(names, m->header.src)) + u','
+                       + QString::number(m->header.srcEnt);
+        for (int i = 0; i < m->fieldCount(); ++i)
+            line += u',' + csvValue(*m, i);
+        out.buffer += line.toUtf8() + '\n';
+        if (out.buffer.size() > (1 << 20)) {
+            out.file->write(out.buffer);
+            out.buffer.clear();
+        }
+    }
+    QStringList written;
+    for (auto &[abbrev, out] : files) {
+        out.file->write(out.buffer);
+        if (!out.file->commit())
+            return std::unexpected(QStringLiteral("%1: %2").arg(out.file->fileName(), out.file->errorString()));
+        written.append(out.file->fileName());
+    }
+    ticker.done();
+    return written;
+}
+
+std::optional<TrackFormat> trackFormat(const QString &name)
+{
+    if (name == u"kml")
+        return TrackFormat::Kml;
+    if (name == u"geojson")
+        return TrackFormat::GeoJson;
+    if (name == u"gpx")
+        return TrackFormat::Gpx;
+    return std::nullopt;
+}
+
+std::expected<void, QString> exportTracks(const LogSet &logs, TrackFormat format, const QString &file,
+                                          const Progress &progress)
+{
+    const QHash<quint16, QString> names = systemNames(logs);
+    auto tracks = tracksOf(logs, progress);
+    if (!tracks)
+        return std::unexpected(tracks.error());
+    if (tracks->empty())
+        return std::unexpected(QStringLiteral("no positions in the log (no EstimatedState with a position)"));
+    QSaveFile out(file);
+    if (!out.open(QIODevice::WriteOnly))
+        return std::unexpected(QStringLiteral("%1: %2").arg(file, out.errorString()));
+    const QString title = QFileInfo(logs.logs().front()->folder()).fileName();
+    if (format == TrackFormat::GeoJson) {
+        // RFC 7946: one LineString per system, [lon, lat, -depth]; the times alongside.
+        QJsonArray features;
+        for (const auto &[id, points] : *tracks) {
+            QJsonArray coordinates, times;
+            for (const TrackPoint &p : points) {
+                coordinates.append(QJsonArray{p.lon, p.lat, -p.depth});
+                times.append(isoTime(p.time));
+            }
+            features.append(QJsonObject{
+                {QStringLiteral("type"), QStringLiteral("Feature")},
+                {QStringLiteral("geometry"), QJsonObject{{QStringLiteral("type"), QStringLiteral("LineString")},
+                                                         {QStringLiteral("coordinates"), coordinates}}},
+                {QStringLiteral("properties"), QJsonObject{{QStringLiteral("system"), label(names, id)},
+                                                           {QStringLiteral("imc_id"), int(id)},
+                                                           {QStringLiteral("times"), times}}},
+            });
+        }
+        out.write(QJsonDocument(QJsonObject{{QStringLiteral("type"), QStringLiteral("FeatureCollection")},
+                                            {QStringLiteral("features"), features}})
+                      .toJson(QJsonDocument::Compact));
+    } else {
+        QXmlStreamWriter xml(&out);
+        xml.setAutoFormatting(true);
+        xml.writeStartDocument();
+        if (format == TrackFormat::Kml) {
+            // KML 2.2 (OGC): a Placemark per system with its path and time span.
+            xml.writeDefaultNamespace(QStringLiteral("http://www.opengis.net/kml/2.2"));
+            xml.writeStartElement(QStringLiteral("kml"));
+            xml.writeStartElement(QStringLiteral("Document"));
+            xml.writeTextElement(QStringLiteral("name"), title);
+            for (const auto &[id, points] : *tracks) {
+                xml.writeStartElement(QStringLiteral("Placemark"));
+                xml.writeTextElement(QStringLiteral("name"), label(names, id));
+                xml.writeStartElement(QStringLiteral("TimeSpan"));
+                xml.writeTextElement(QStringLiteral("begin"), isoTime(points.front().time));
+                xml.writeTextElement(QStringLiteral("end"), isoTime(points.back().time));
+                xml.writeEndElement();
+                xml.writeStartElement(QStringLiteral("LineString"));
+                xml.writeTextElement(QStringLiteral("tessellate"), QStringLiteral("1"));
+                QString coordinates;
+                for (const TrackPoint &p : points)
+                    coordinates += QStringLiteral("%1,%2,%3 ").arg(p.lon, 0, 'f', 8).arg(p.lat, 0, 'f', 8).arg(-p.depth, 0, 'f', 2);
+                xml.writeTextElement(QStringLiteral("coordinates"), coordinates.trimmed());
+                xml.writeEndElement();
+                xml.writeEndElement();
+            }
+            xml.writeEndElement();
+            xml.writeEndElement();
+        } else {
+            // GPX 1.1: a track per system; elevation is minus the depth.
+            xml.writeDefaultNamespace(QStringLiteral("http://www.topografix.com/GPX/1/1"));
+            xml.writeStartElement(QStringLiteral("gpx"));
+            xml.writeAttribute(QStringLiteral("version"), QStringLiteral("1.1"));
+            xml.writeAttribute(QStringLiteral("creator"), QStringLiteral("Neptus-Qt neptus-log"));
+            xml.writeStartElement(QStringLiteral("metadata"));
+            xml.writeTextElement(QStringLiteral("name"), title);
+            xml.writeTextElement(QStringLiteral("time"), isoTime(logs.begin()));
+            xml.writeEndElement();
+            for (const auto &[id, points] : *tracks) {
+                xml.writeStartElement(QStringLiteral("trk"));
+                xml.writeTextElement(QStringLiteral("name"), label(names, id));
+                xml.writeStartElement(QStringLiteral("trkseg"));
+                for (const TrackPoint &p : points) {
+                    xml.writeStartElement(QStringLiteral("trkpt"));
+                    xml.writeAttribute(QStringLiteral("lat"), QString::number(p.lat, 'f', 8));
+                    xml.writeAttribute(QStringLiteral("lon"), QString::number(p.lon, 'f', 8));
+                    xml.writeTextElement(QStringLiteral("ele"), QString::number(-p.depth, 'f', 2));
+                    xml.writeTextElement(QStringLiteral("time"), isoTime(p.time));
+                    xml.writeEndElement();
+                }
+                xml.writeEndElement();
+                xml.writeEndElement();
+            }
+            xml.writeEndElement();
+        }
+        xml.writeEndDocument();
+    }
+    if (!out.commit())
+        return std::unexpected(QStringLiteral("%1: %2").arg(file, out.errorString()));
+    return {};
+}
+
+std::expected<qint64, QString> writeLog(const LogSet &logs, double from, double to, const QString &folder,
+                                        const Progress &progress)
+{
+    if (logs.logs().empty())
+        return std::unexpected(QStringLiteral("no logs"));
+    const QByteArray digest = logs.logs().front()->schemas().defaultSchema().digest();
+    for (const auto &log : logs.logs()) {
+        if (log->schemas().defaultSchema().digest() != digest)
+            return std::unexpected(QStringLiteral("%1 and %2 were written with different definitions: they cannot share one log")
+                                       .arg(logs.logs().front()->folder(), log->folder()));
+    }
+    const QDir target(folder);
+    if (target.exists() && !target.isEmpty())
+        return std::unexpected(QStringLiteral("%1 is not empty: a new log goes in a new folder").arg(folder));
+    if (!QDir().mkpath(folder))
+        return std::unexpected(QStringLiteral("%1: cannot make the folder").arg(folder));
+    // The definitions (and who recorded) come along as they were.
+    const QDir source(logs.logs().front()->folder());
+    for (const QString &name : source.entryList({QStringLiteral("IMC*.xml"), QStringLiteral("IMC*.xml.gz"),
+                                                 QStringLiteral("Meta.json")}, QDir::Files)) {
+        if (!QFile::copy(source.filePath(name), target.filePath(name)))
+            return std::unexpected(QStringLiteral("%1: cannot copy it to %2").arg(source.filePath(name), folder));
+    }
+    const QString dataFile = target.filePath(QStringLiteral("Data.lsf"));
+    QFile data(dataFile);
+    if (!data.open(QIODevice::WriteOnly))
+        return std::unexpected(QStringLiteral("%1: %2").arg(dataFile, data.errorString()));
+    std::vector<quint64> offsets;
+    std::vector<double> times;
+    const qsizetype first = logs.upperBound(std::nextafter(from, -INFINITY));
+    const qsizetype last = logs.upperBound(to);
+    Ticker ticker(progress, last - first);
+    QByteArray buffer;
+    quint64 at = 0;
+    for (qsizetype k = first; k < last; ++k) {
+        if (!ticker.at(k - first)) {
+            data.close();
+            QDir(folder).removeRecursively();
+            return std::unexpected(QStringLiteral("stopped"));
+        }
+        const QByteArrayView packet = logs.packet(k);
+        offsets.push_back(at);
+        times.push_back(logs.logOf(k).time(logs.indexInLog(k)));
+        buffer.append(packet.data(), packet.size());
+        at += quint64(packet.size());
+        if (buffer.size() > (4 << 20)) {
+            if (data.write(buffer) != buffer.size())
+                return std::unexpected(QStringLiteral("%1: %2").arg(dataFile, data.errorString()));
+            buffer.clear();
+        }
+    }
+    if (data.write(buffer) != buffer.size() || !data.flush())
+        return std::unexpected(QStringLiteral("%1: %2").arg(dataFile, data.errorString()));
+    data.close();
+    writeLogIndex(dataFile, offsets, times);
+    ticker.done();
+    return qint64(offsets.size());
+}
+
+} // namespace neptus::log

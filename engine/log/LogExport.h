@@ -1,0 +1,55 @@
+#pragma once
+
+#include "log/Replay.h"
+
+#include <QHash>
+#include <QString>
+#include <QStringList>
+
+#include <expected>
+#include <functional>
+
+namespace neptus::log {
+
+// Progress of a long export, 0 to 1; return false to stop it.
+using Progress = std::function<bool(double fraction)>;
+
+// What a log holds: for `neptus-log info` and the review's summary.
+struct LogSummary
+{
+    struct System
+    {
+        quint16 id = 0;
+        QString name;      // from its Announce, else "0x00d1"
+        qint64 packets = 0;
+    };
+    double begin = 0, end = 0;
+    qint64 packets = 0;
+    QList<System> systems;                 // by id
+    QList<std::pair<QString, qint64>> types; // message abbrev and count, most frequent first
+    QStringList damage;                    // each log's damage, if any
+};
+LogSummary summarize(const LogSet &logs);
+
+// The names systems announce in the logs (Announce sys_name), by id.
+QHash<quint16, QString> systemNames(const LogSet &logs);
+
+// One CSV file per message type in `folder` (<Abbrev>.csv): time (s since
+// 1970, UTC), system, entity, then a column per field (numbers as numbers,
+// enumerations by value, text quoted, nested messages as JSON). Returns the
+// files written.
+std::expected<QStringList, QString> exportCsv(const LogSet &logs, const QString &folder, const Progress &progress = {});
+
+// Each system's track (its EstimatedState positions) as one file:
+enum class TrackFormat { Kml, GeoJson, Gpx };
+std::expected<void, QString> exportTracks(const LogSet &logs, TrackFormat format, const QString &file,
+                                          const Progress &progress = {});
+std::optional<TrackFormat> trackFormat(const QString &name); // "kml", "geojson", "gpx"
+
+// A new log in `folder` (which must not exist or be empty) of the packets
+// between `from` and `to` (log times, inclusive), with the definitions of
+// the first log: a slice, or with the whole span, the logs merged.
+std::expected<qint64, QString> writeLog(const LogSet &logs, double from, double to, const QString &folder,
+                                        const Progress &progress = {});
+
+} // namespace neptus::log

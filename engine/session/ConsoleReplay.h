@@ -1,0 +1,28 @@
+#pragma once
+
+#include "core/Clock.h"
+#include "log/Replay.h"
+#include "session/Console.h"
+
+namespace neptus::session {
+
+// A console fed from a log instead of the network (review): what the log's
+// systems said goes in as if heard on a link, what the recording console
+// sent goes under "system/out", and the console's clock is the replay's, so
+// staleness, alarms and scripts see the log's time. The console is marked
+// as replaying: it sends nothing.
+class ConsoleReplay final : public log::ReplayTarget
+{
+public:
+    ConsoleReplay(Console &console, ManualClock &clock);
+
+    void clear() override;
+    void setTime(double t) override;
+    void deliver(const msg::Message &message, bool sent) override;
+
+private:
+    Console &m_console;
+    ManualClock &m_clock;
+};
+
+} // namespace neptus::session
