@@ -93,6 +93,19 @@ std::expected<CommandLine, QString> CommandLine::parse(const QStringList &argume
         QStringLiteral("name"));
     const QCommandLineOption quitAfter(QStringLiteral("quit-after"),
         QStringLiteral("Exit after this many milliseconds."), QStringLiteral("ms"));
+    const QCommandLineOption logDir(QStringLiteral("log-dir"),
+        QStringLiteral("Where the console records what it receives and sends (a folder per session; default: the settings' "
+                       "log/folder, else logs/ in the user's data folder)."),
+        QStringLiteral("folder"));
+    const QCommandLineOption noRecord(QStringLiteral("no-record"), QStringLiteral("Record nothing this time."));
+    const QCommandLineOption replay(QStringLiteral("replay"),
+        QStringLiteral("Review a log (a folder with Data.lsf[.gz] and IMC.xml[.gz]; repeat for several logs of one mission): "
+                       "the console is fed from it, with a timeline, and sends nothing."),
+        QStringLiteral("log"));
+    const QCommandLineOption replayFrom(QStringLiteral("replay-from"),
+        QStringLiteral("With --replay: open the logs this many seconds after their start."), QStringLiteral("seconds"));
+    const QCommandLineOption replayPlay(QStringLiteral("replay-play"), QStringLiteral("With --replay: start playing at once."));
+    parser.addOptions({logDir, noRecord, replay, replayFrom, replayPlay});
     parser.addOptions({console, screenshot, screenshotDelay, components, edit, select, system, palette, uiScale, gps, size, selfTest,
                        imcPort, imcBind, imcPeer, ddsDomain, ddsConfig, ddsKeys, ddsIdentity, defs, defsFor, imcDiscovery, dumpTree, quitAfter, forgetAfter, mission, share, name});
     // "--defs-for SYSTEM FILE" (two words, as the documentation writes it) is
@@ -129,6 +142,22 @@ std::expected<CommandLine, QString> CommandLine::parse(const QStringList &argume
                                        .arg(parser.value(screenshotDelay)));
     }
     result.selfTest = parser.isSet(selfTest);
+    result.logDirectory = parser.isSet(logDir) ? QFileInfo(parser.value(logDir)).absoluteFilePath() : QString();
+    result.record = !parser.isSet(noRecord);
+    for (const QString &log : parser.values(replay)) {
+        if (!QFileInfo::exists(log))
+            return std::unexpected(QStringLiteral("--replay: '%1' does not exist").arg(log));
+        result.replayLogs << QFileInfo(log).absoluteFilePath();
+    }
+    if (parser.isSet(replayFrom)) {
+        bool ok = false;
+        result.replayFrom = parser.value(replayFrom).toDouble(&ok);
+        if (!ok || result.replayFrom < 0)
+            return std::unexpected(QStringLiteral("--replay-from must be seconds from the log's start, not '%1'").arg(parser.value(replayFrom)));
+    }
+    result.replayPlay = parser.isSet(replayPlay);
+    if ((parser.isSet(replayFrom) || result.replayPlay) && result.replayLogs.isEmpty())
+        return std::unexpected(QStringLiteral("--replay-from and --replay-play go with --replay LOG"));
     for (const QString &directory : parser.values(components)) {
         if (!QFileInfo(directory).isDir())
             return std::unexpected(QStringLiteral("--components: '%1' is not a directory").arg(directory));

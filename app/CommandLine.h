@@ -37,6 +37,11 @@ struct CommandLine
     int ddsDomain = 0;                  // -1: no DDS
     QString ddsConfig;                  // Cyclone XML; empty: dds/loopback.xml
     QString ddsKeys, ddsIdentity;       // DDS Security; empty: none
+    QString logDirectory;               // where recordings go (--log-dir); empty: the settings', else the user's data folder
+    bool record = true;                 // record every message received and sent (off: --no-record)
+    QStringList replayLogs;             // --replay: feed the console from these logs instead of the network
+    double replayFrom = 0;              // --replay-from: seconds into the logs to open them at
+    bool replayPlay = false;            // --replay-play: start playing at once
     bool selfTest = false;
 
     // Parses arguments (argv[0] included). An error is a message for the user.

@@ -5,8 +5,10 @@
 #include "ComponentPalette.h"
 #include "ConsoleCatalog.h"
 #include "JsWatchdog.h"
+#include "log/Recorder.h"
 #include "qmlmodels/ConsoleSession.h"
 #include "SelfTest.h"
+#include "session/ConsoleReplay.h"
 
 #include <QDir>
 #include <QFile>
@@ -15,6 +17,7 @@
 #include <QQuickStyle>
 #include <QQuickWindow>
 #include <QSettings>
+#include <QStandardPaths>
 #include <QTimer>
 #include <QUrl>
 #include <QtQml/qqmlextensionplugin.h>
@@ -63,12 +66,80 @@ int main(int argc, char *argv[])
     const QStringList definitionFiles = commandLine->definitionFiles.isEmpty()
         ? neptus::msg::Schema::filesIn(neptus::dataPath(QStringLiteral("msgdefs")))
         : commandLine->definitionFiles;
-    auto schema = neptus::msg::Schema::load(definitionFiles);
-    if (!schema) {
-        std::fprintf(stderr, "neptus: %s\n", qPrintable(schema.error().toString()));
-        return 1;
+    // Review (--replay): the console is fed from logs, decoded with their own
+    // definitions, on the replay's clock; no links, nothing recorded or sent.
+    std::shared_ptr<const neptus::log::LogSet> replayLogs;
+    std::shared_ptr<const neptus::msg::Schema> schema;
+    if (!commandLine->replayLogs.isEmpty()) {
+        std::vector<std::shared_ptr<const neptus::log::LogFile>> files;
+        for (const QString &path : commandLine->replayLogs) {
+            auto file = neptus::log::LogFile::open(path);
+            if (!file) {
+                std::fprintf(stderr, "neptus: %s\n", qPrintable(file.error()));
+                return 1;
+            }
+            if (!(*file)->damage().isEmpty())
+                std::fprintf(stderr, "neptus: %s\n", qPrintable((*file)->damage()));
+            files.push_back(*file);
+        }
+        replayLogs = std::make_shared<const neptus::log::LogSet>(files);
+        const auto &first = files.front();
+        schema = std::shared_ptr<const neptus::msg::Schema>(first->sharedSchemas(), &first->schemas().defaultSchema());
+    } else {
+        auto loaded = neptus::msg::Schema::load(definitionFiles);
+        if (!loaded) {
+            std::fprintf(stderr, "neptus: %s\n", qPrintable(loaded.error().toString()));
+            return 1;
+        }
+        schema = *loaded;
     }
-    ConsoleSession session(*schema);
+
+    // Everything received and sent is recorded unless told not to (before the
+    // session, so it outlives the links that feed it).
+    std::unique_ptr<neptus::log::Recorder> recorder;
+    QString recorderProblem;
+    if (!replayLogs && commandLine->record) {
+        neptus::log::RecorderConfig config;
+        config.root = commandLine->logDirectory;
+        if (config.root.isEmpty())
+            config.root = QSettings().value(QStringLiteral("log/folder")).toString();
+        if (config.root.isEmpty())
+            config.root = QDir(QStandardPaths::writableLocation(QStandardPaths::AppLocalDataLocation)).filePath(QStringLiteral("logs"));
+        config.name = commandLine->name.isEmpty() ? QFileInfo(commandLine->consoleFile).completeBaseName() : commandLine->name;
+        config.system = neptus::transport::ImcUdpConfig{}.systemId;
+        config.definitionFiles = definitionFiles;
+        config.definitionsFor = commandLine->definitionsFor;
+        recorder = std::make_unique<neptus::log::Recorder>(config);
+        if (auto started = recorder->start(); !started) {
+            recorderProblem = started.error();
+            std::fprintf(stderr, "neptus: recording: %s; carrying on without it\n", qPrintable(recorderProblem));
+            recorder.reset();
+        } else {
+            std::printf("neptus: recording in %s\n", qPrintable(recorder->status().folder));
+        }
+    }
+
+    neptus::ManualClock replayClock;
+    ConsoleSession session(schema, replayLogs ? static_cast<const neptus::Clock *>(&replayClock) : &neptus::Clock::system());
+    std::unique_ptr<neptus::session::ConsoleReplay> replayTarget;
+    std::unique_ptr<ReplayModel> replay;
+    if (replayLogs) {
+        replayTarget = std::make_unique<neptus::session::ConsoleReplay>(session.console(), replayClock);
+        replay = std::make_unique<ReplayModel>(replayLogs, replayTarget.get());
+        replay->seek(replayLogs->begin() + commandLine->replayFrom);
+        if (commandLine->replayPlay)
+            replay->play();
+        session.setReplay(replay.get());
+        std::printf("neptus: replaying %s (%lld messages, %.1f s)\n", qPrintable(replay->name()),
+                    static_cast<long long>(replayLogs->count()), replayLogs->end() - replayLogs->begin());
+    }
+    if (recorder)
+        session.console().setRecorder(recorder.get());
+    else if (!recorderProblem.isEmpty()) {
+        auto &graph = session.console().alarmGraph();
+        graph.raise(graph.ensure(QStringLiteral("recording")), neptus::alarms::Warning,
+                    QStringLiteral("not recording: %1").arg(recorderProblem));
+    }
     for (const auto &[system, file] : commandLine->definitionsFor) {
         if (auto set = session.console().setDefinitionsFor(system, file); !set) {
             std::fprintf(stderr, "neptus: %s\n", qPrintable(set.error()));
@@ -78,7 +149,7 @@ int main(int argc, char *argv[])
 
     // IMC over UDP, on loopback unless told another address (--imc-bind, or
     // imc/bind in the settings file).
-    if (commandLine->imcPort != 0) {
+    if (commandLine->imcPort != 0 && !replay) {
         neptus::transport::ImcUdpConfig config;
         config.port = commandLine->imcPort;
         QString bind = commandLine->imcBind;
@@ -118,7 +189,7 @@ int main(int argc, char *argv[])
         session.console().health().setForgetAfter(forget);
 
     // Cyclone DDS on the loopback configuration unless told otherwise.
-    if (commandLine->ddsDomain >= 0) {
+    if (commandLine->ddsDomain >= 0 && !replay) {
         neptus::transport::DdsConfig config{static_cast<dds_domainid_t>(commandLine->ddsDomain), commandLine->ddsConfig};
         config.security = {commandLine->ddsKeys, commandLine->ddsIdentity};
         if (auto started = session.console().startDds(config); !started)
@@ -131,7 +202,7 @@ int main(int argc, char *argv[])
     // Sharing the mission (DDS): after the link is up, so the others hear it.
     if (!commandLine->name.isEmpty())
         session.missionShare().setAuthor(commandLine->name);
-    if (commandLine->share) {
+    if (commandLine->share && !replay) {
         if (const QString why = session.plansModel()->share(true); !why.isEmpty())
             std::fprintf(stderr, "neptus: %s\n", qPrintable(why));
         else

@@ -106,6 +106,13 @@ ApplicationWindow {
         alarms: window.session ? window.session.alarms : null
         onPaletteToggleRequested: window.togglePalette()
         onConsolesRequested: { catalog.refresh(); switcher.shown = !switcher.shown }
+        replay: window.session ? window.session.replay : null
+    }
+
+    // Reviewing a log: its timeline under the console.
+    footer: Loader {
+        active: window.session !== null && window.session.replay !== null
+        sourceComponent: ReplayBar { replay: window.session.replay }
     }
 
     OwnShip { source: window.gpsSource }

@@ -15,6 +15,9 @@ Rectangle {
     // Edit mode (the designer) or operate mode.
     property bool editing: false
     property bool canEdit: true
+    // A console fed from a log: the clock shows the log's time and a REPLAY
+    // badge says nothing here is live.
+    property ReplayModel replay: null
     signal paletteToggleRequested()
     signal editToggleRequested()
     // The console's title was tapped: show every console (and the way back).
@@ -74,9 +77,25 @@ Rectangle {
                 font.pixelSize: Theme.largeFontPixelSize
             }
         }
+        Rectangle {
+            objectName: "replayBadge"
+            visible: bar.replay !== null
+            color: Theme.levelColor(AlarmLevel.Warning)
+            radius: Theme.radius
+            implicitWidth: badgeText.implicitWidth + Theme.spacing * 2
+            implicitHeight: badgeText.implicitHeight + Theme.spacing
+            Text {
+                id: badgeText
+                anchors.centerIn: parent
+                text: qsTr("REPLAY · nothing is sent")
+                color: Theme.background
+                font.bold: true
+                font.pixelSize: Theme.fontPixelSize
+            }
+        }
         Text {
             objectName: "utcClock"
-            text: clock.text
+            text: bar.replay ? new Date(bar.replay.position * 1000).toISOString().substring(11, 19) + " UTC" : clock.text
             color: Theme.text
             font.family: Theme.monospaceFont
             font.pixelSize: Theme.largeFontPixelSize

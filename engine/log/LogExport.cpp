@@ -140,6 +140,86 @@ QHash<quint16, QString> systemNames(const LogSet &logs)
     return names;
 }
 
+std::vector<LogMarker> markersOf(const LogSet &logs)
+{
+    std::vector<LogMarker> markers;
+    if (logs.logs().empty())
+        return markers;
+    const msg::Schema &schema = logs.logs().front()->schemas().defaultSchema();
+    const auto idOf = [&](QStringView abbrev) {
+        const msg::MessageDef *def = schema.byAbbrev(abbrev);
+        return def ? def->id : msg::Schema::noMessage;
+    };
+    const quint16 logBook = idOf(u"LogBookEntry"), entityState = idOf(u"EntityState"),
+                  planState = idOf(u"PlanControlState"), planControl = idOf(u"PlanControl");
+    const QHash<quint16, QString> names = systemNames(logs);
+    QHash<quint32, qint64> entityLevels; // (system, entity) → last state
+    QHash<quint16, std::pair<QString, double>> executing; // system → the plan it runs, since when
+    QHash<quint16, QString> finished; // a plan said over while its state still says EXECUTING
+    for (qsizetype k = 0; k < logs.count(); ++k) {
+        const LogFile &log = logs.logOf(k);
+        const qsizetype i = logs.indexInLog(k);
+        const quint16 id = log.messageId(i);
+        if (id != logBook && id != entityState && id != planState && id != planControl)
+            continue;
+        const auto m = logs.decode(k);
+        if (!m || !m->def())
+            continue;
+        const QString who = label(names, m->header.src);
+        const double t = logs.time(k);
+        if (id == logBook) {
+            const qint64 type = m->integer(u"type"); // INFO, WARNING, ERROR, CRITICAL, DEBUG
+            if (type == 4)
+                continue;
+            markers.push_back({t, type >= 2 ? LogMarker::Alarm : LogMarker::Note,
+                               QStringLiteral("%1 %2: %3").arg(who, m->text(u"context"), m->text(u"text"))});
+        } else if (id == entityState) {
+            const quint32 key = (quint32(m->header.src) << 8) | m->header.srcEnt;
+            const qint64 state = m->integer(u"state"); // BOOT, NORMAL, FAULT, ERROR, FAILURE
+            const qint64 before = entityLevels.value(key, 1);
+            entityLevels.insert(key, state);
+            if (state >= 2 && state != before)
+                markers.push_back({t, LogMarker::Alarm, QStringLiteral("%1 entity %2: %3 %4")
+                                                            .arg(who).arg(m->header.srcEnt)
+                                                            .arg(m->enumText(m->def()->fieldIndex.value(QStringLiteral("state"))),
+                                                                 m->text(u"description"))});
+        } else if (id == planControl) {
+            // A vehicle's final reply to START (SUCCESS or FAILURE) for the plan it runs, after
+            // its first reply (the start): the plan is over. DUNE's logs end there.
+            const qint64 type = m->integer(u"type"), op = m->integer(u"op");
+            const auto running = executing.constFind(m->header.src);
+            if (op != 0 || (type != 1 && type != 2) || running == executing.cend()
+                || running->first != m->text(u"plan_id") || t - running->second < 1.0)
+                continue;
+            markers.push_back({t, type == 2 ? LogMarker::Alarm : LogMarker::PlanEnd,
+                               QStringLiteral("%1: plan %2 ended (%3): %4")
+                                   .arg(who, running->first, type == 2 ? QStringLiteral("FAILURE") : QStringLiteral("SUCCESS"),
+                                        m->text(u"info"))});
+            finished.insert(m->header.src, running->first);
+            executing.remove(m->header.src);
+        } else {
+            const bool running = m->integer(u"state") == 3; // EXECUTING
+            const QString plan = m->text(u"plan_id");
+            const QString was = executing.value(m->header.src).first;
+            if (!running)
+                finished.remove(m->header.src);
+            else if (finished.value(m->header.src) == plan)
+                continue;
+            if (running && was != plan) {
+                if (!was.isEmpty())
+                    markers.push_back({t, LogMarker::PlanEnd, QStringLiteral("%1: plan %2 ended").arg(who, was)});
+                markers.push_back({t, LogMarker::PlanStart, QStringLiteral("%1: plan %2 started").arg(who, plan)});
+                executing.insert(m->header.src, {plan, t});
+            } else if (!running && !was.isEmpty()) {
+                markers.push_back({t, LogMarker::PlanEnd, QStringLiteral("%1: plan %2 ended (%3)")
+                                                             .arg(who, was, m->enumText(m->def()->fieldIndex.value(QStringLiteral("last_outcome"))))});
+                executing.remove(m->header.src);
+            }
+        }
+    }
+    return markers;
+}
+
 LogSummary summarize(const LogSet &logs)
 {
     LogSummary summary;

@@ -34,6 +34,18 @@ LogSummary summarize(const LogSet &logs);
 // The names systems announce in the logs (Announce sys_name), by id.
 QHash<quint16, QString> systemNames(const LogSet &logs);
 
+// What a review's timeline marks: the vehicles' log-book entries (errors
+// and critical ones as alarms), entities going to fault, error or failure,
+// and plans starting and ending (PlanControlState), in time order.
+struct LogMarker
+{
+    enum Kind { Note, Alarm, PlanStart, PlanEnd };
+    double time = 0;
+    Kind kind = Note;
+    QString text; // "lauv-simulator-1: plan goto-and-wait started"
+};
+std::vector<LogMarker> markersOf(const LogSet &logs);
+
 // One CSV file per message type in `folder` (<Abbrev>.csv): time (s since
 // 1970, UTC), system, entity, then a column per field (numbers as numbers,
 // enumerations by value, text quoted, nested messages as JSON). Returns the

@@ -3,6 +3,7 @@
 #include "qmlmodels/AlarmListModel.h"
 #include "qmlmodels/LinkStatisticsModel.h"
 #include "qmlmodels/PlanDeskModel.h"
+#include "qmlmodels/ReplayModel.h"
 #include "qmlmodels/Tracks.h"
 #include "qmlmodels/VariableTreeModel.h"
 #include "session/Console.h"
@@ -25,6 +26,8 @@ class ConsoleSession : public QObject
     Q_PROPERTY(neptus::geo::Tracks *tracks READ tracks CONSTANT)
     Q_PROPERTY(neptus::transport::LinkStatisticsModel *links READ linksModel CONSTANT)
     Q_PROPERTY(PlanDeskModel *plans READ plansModel CONSTANT)
+    // The replay when this console is fed from a log (--replay), else null: nothing is sent then.
+    Q_PROPERTY(ReplayModel *replay READ replay CONSTANT)
 
 public:
     explicit ConsoleSession(std::shared_ptr<const neptus::msg::Schema> schema,
@@ -40,6 +43,9 @@ public:
     neptus::plans::PlanDesk &planDesk() { return m_planDesk; }
     neptus::plans::MissionShare &missionShare() { return m_share; }
     PlanDeskModel *plansModel() { return &m_plansModel; }
+    ReplayModel *replay() const { return m_replay; }
+    // Before QML sees the session: this console replays `replay` (kept by the caller).
+    void setReplay(ReplayModel *replay) { m_replay = replay; }
 
     // For components (a joystick, a command button): sends a message, given
     // as JSON ({"abbrev": "Abort", "fields": {...}}), to a system. Returns ""
@@ -68,4 +74,5 @@ private:
     neptus::plans::PlanDesk m_planDesk;
     neptus::plans::MissionShare m_share;
     PlanDeskModel m_plansModel{&m_planDesk, &m_share};
+    ReplayModel *m_replay = nullptr;
 };

@@ -552,3 +552,32 @@ TEST(Log, ASliceHoldsItsTimeRangeAndTwoSlicesMergeIntoTheWhole)
     ASSERT_FALSE(refused.has_value());
     EXPECT_TRUE(refused.error().contains(QStringLiteral("not empty"))) << qPrintable(refused.error());
 }
+
+TEST(Log, TheTimelineMarksTheDuneLogsPlanItsLogBookAndNothingElse)
+{
+    NEPTUS_REQUIRE_FIXTURE(folder, "dune-log");
+    auto log = openLog(folder);
+    ASSERT_TRUE(log);
+    const log::LogSet logs(std::vector{log});
+    const auto markers = log::markersOf(logs);
+    std::vector<log::LogMarker> starts, ends, notes;
+    for (const auto &m : markers) {
+        (m.kind == log::LogMarker::PlanStart ? starts : m.kind == log::LogMarker::PlanEnd ? ends : notes).push_back(m);
+        EXPECT_GE(m.time, logs.begin());
+        EXPECT_LE(m.time, logs.end());
+    }
+    ASSERT_EQ(starts.size(), 1u);
+    EXPECT_EQ(starts[0].text, QStringLiteral("lauv-simulator-1: plan goto-and-wait started"));
+    EXPECT_NEAR(starts[0].time - logs.begin(), 0, 0.5);
+    ASSERT_EQ(ends.size(), 1u) << qPrintable(ends.empty() ? QString() : ends[0].text);
+    EXPECT_TRUE(ends[0].text.startsWith(QStringLiteral("lauv-simulator-1: plan goto-and-wait ended (SUCCESS)")))
+        << qPrintable(ends[0].text);
+    EXPECT_NEAR(ends[0].time - logs.begin(), 137.8, 0.5);
+    // The log book's 16 entries (none is DEBUG), no entity went to fault.
+    int logBook = 0;
+    for (const auto &m : notes)
+        logBook += m.text.contains(QStringLiteral("lauv-simulator-1 "));
+    EXPECT_EQ(logBook, 16);
+    EXPECT_TRUE(std::is_sorted(markers.begin(), markers.end(),
+                               [](const auto &a, const auto &b) { return a.time < b.time; }));
+}

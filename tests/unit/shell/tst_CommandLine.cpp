@@ -154,3 +154,31 @@ TEST(CommandLine, ImcBindTakesAnAddressOrAnInterfaceOfThisMachine)
         << line.error().toStdString();
     EXPECT_TRUE(line.error().contains(QStringLiteral("127.0.0.1 (lo)"))) << "and says what there is";
 }
+
+TEST(CommandLine, RecordingAndReplayOptions)
+{
+    QTemporaryDir dir;
+    auto line = parse({});
+    ASSERT_TRUE(line);
+    EXPECT_TRUE(line->record) << "recording is on by default";
+    EXPECT_TRUE(line->replayLogs.isEmpty());
+    line = parse({QStringLiteral("--no-record"), QStringLiteral("--log-dir"), dir.path()});
+    ASSERT_TRUE(line) << line.error().toStdString();
+    EXPECT_FALSE(line->record);
+    EXPECT_EQ(line->logDirectory, dir.path());
+    line = parse({QStringLiteral("--replay"), dir.path(), QStringLiteral("--replay"), dir.path(),
+                  QStringLiteral("--replay-from"), QStringLiteral("71.5"), QStringLiteral("--replay-play")});
+    ASSERT_TRUE(line) << line.error().toStdString();
+    EXPECT_EQ(line->replayLogs.size(), 2);
+    EXPECT_DOUBLE_EQ(line->replayFrom, 71.5);
+    EXPECT_TRUE(line->replayPlay);
+    for (const auto &[arguments, expected] :
+         {std::pair{QStringList{QStringLiteral("--replay"), QStringLiteral("/no/such/log")}, "--replay: '/no/such/log' does not exist"},
+          std::pair{QStringList{QStringLiteral("--replay-from"), QStringLiteral("3")}, "go with --replay LOG"},
+          std::pair{QStringList{QStringLiteral("--replay"), dir.path(), QStringLiteral("--replay-from"), QStringLiteral("-3")},
+                    "--replay-from must be seconds"}}) {
+        const auto refused = parse(arguments);
+        ASSERT_FALSE(refused.has_value()) << arguments.join(u' ').toStdString();
+        EXPECT_TRUE(refused.error().contains(QString::fromUtf8(expected))) << refused.error().toStdString();
+    }
+}

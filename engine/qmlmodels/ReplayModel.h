@@ -1,0 +1,64 @@
+#pragma once
+
+#include "log/LogExport.h"
+#include "log/Replay.h"
+
+#include <QObject>
+#include <QVariantList>
+#include <QtQml/qqmlregistration.h>
+
+// A console's replay as QML sees it (review: a console fed from a log): the
+// logs' time span, where the replay is, play/pause, speed, step, seek, and
+// the timeline's markers (alarms, log-book entries, plan starts and ends).
+// Null on a live console.
+class ReplayModel : public QObject
+{
+    Q_OBJECT
+    QML_ELEMENT
+    QML_UNCREATABLE("made by the program for --replay")
+    Q_PROPERTY(QString name READ name CONSTANT)
+    Q_PROPERTY(double begin READ begin CONSTANT)
+    Q_PROPERTY(double end READ end CONSTANT)
+    Q_PROPERTY(double position READ position NOTIFY positionChanged)
+    Q_PROPERTY(bool playing READ playing NOTIFY playingChanged)
+    // 0.1 to 100, or 0: as fast as it goes.
+    Q_PROPERTY(double speed READ speed WRITE setSpeed NOTIFY speedChanged)
+    // [{time, kind ("note", "alarm", "planStart", "planEnd"), text}], by time.
+    Q_PROPERTY(QVariantList markers READ markers CONSTANT)
+    // Damage found in the logs, and packets that did not decode: "" when none.
+    Q_PROPERTY(QString problems READ problems NOTIFY problemsChanged)
+
+public:
+    ReplayModel(std::shared_ptr<const neptus::log::LogSet> logs, neptus::log::ReplayTarget *target,
+                QObject *parent = nullptr);
+
+    QString name() const { return m_name; }
+    double begin() const { return m_player.logs().begin(); }
+    double end() const { return m_player.logs().end(); }
+    double position() const { return m_player.position(); }
+    bool playing() const { return m_player.playing(); }
+    double speed() const { return m_player.speed(); }
+    void setSpeed(double speed) { m_player.setSpeed(speed); }
+    QVariantList markers() const { return m_markers; }
+    QString problems() const { return m_problems.join(QLatin1Char('\n')); }
+    neptus::log::Player &player() { return m_player; }
+
+    Q_INVOKABLE void play() { m_player.play(); }
+    Q_INVOKABLE void pause() { m_player.pause(); }
+    Q_INVOKABLE void seek(double t) { m_player.seek(t); }
+    Q_INVOKABLE void step(double seconds) { m_player.step(seconds); }
+    // The next (or previous, direction < 0) marker's time from where the replay is; -1 if none.
+    Q_INVOKABLE double nextMarker(int direction) const;
+
+signals:
+    void positionChanged();
+    void playingChanged();
+    void speedChanged();
+    void problemsChanged();
+
+private:
+    neptus::log::Player m_player;
+    QString m_name;
+    QVariantList m_markers;
+    QStringList m_problems;
+};
