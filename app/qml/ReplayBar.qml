@@ -52,7 +52,7 @@ Rectangle {
             replay.seek(t)
     }
 
-    implicitHeight: content.item ? content.item.implicitHeight + Theme.spacing * 2 : 0
+    implicitHeight: content.implicitHeight + Theme.spacing * 2
     color: Theme.titleBar
 
     Rectangle {

@@ -24,9 +24,12 @@ void ConsoleReplay::setTime(double t)
 
 void ConsoleReplay::deliver(const msg::Message &message, bool sent)
 {
-    if (sent)
-        m_console.tree().recordSent(message.header.dst, message);
-    else
+    if (sent) {
+        // The links' own upkeep (Announce, Heartbeat) is recorded but never shown under "out".
+        const QString abbrev = message.abbrev();
+        if (abbrev != u"Announce" && abbrev != u"Heartbeat")
+            m_console.tree().recordSent(message.header.dst, message);
+    } else
         m_console.ingest(message);
 }
 

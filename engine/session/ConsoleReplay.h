@@ -7,8 +7,9 @@
 namespace neptus::session {
 
 // A console fed from a log instead of the network (review): what the log's
-// systems said goes in as if heard on a link, what the recording console
-// sent goes under "system/out", and the console's clock is the replay's, so
+// systems said goes in as if heard on a link, the commands the recording
+// console sent go under "system/out" (as they did live; its links' Announce
+// and Heartbeat are in the log but were never there), and the console's clock is the replay's, so
 // staleness, alarms and scripts see the log's time. The console is marked
 // as replaying: it sends nothing.
 class ConsoleReplay final : public log::ReplayTarget
