@@ -5,6 +5,7 @@
 #include "ComponentPalette.h"
 #include "ConsoleCatalog.h"
 #include "JsWatchdog.h"
+#include "log/LogExport.h"
 #include "log/Recorder.h"
 #include "qmlmodels/ConsoleSession.h"
 #include "SelfTest.h"
@@ -119,6 +120,7 @@ int main(int argc, char *argv[])
         }
     }
 
+    QString mainSystem = commandLine->system;
     neptus::ManualClock replayClock;
     ConsoleSession session(schema, replayLogs ? static_cast<const neptus::Clock *>(&replayClock) : &neptus::Clock::system());
     std::unique_ptr<neptus::session::ConsoleReplay> replayTarget;
@@ -130,6 +132,17 @@ int main(int argc, char *argv[])
         if (commandLine->replayPlay)
             replay->play();
         session.setReplay(replay.get());
+        // The console follows the system the log is most about, unless told (--system).
+        if (mainSystem.isEmpty()) {
+            const neptus::log::LogSummary summary = neptus::log::summarize(*replayLogs);
+            qint64 most = 0;
+            for (const auto &system : summary.systems) {
+                if (system.packets > most && system.id != replayLogs->logs().front()->recorder()) {
+                    most = system.packets;
+                    mainSystem = system.name;
+                }
+            }
+        }
         std::printf("neptus: replaying %s (%lld messages, %.1f s)\n", qPrintable(replay->name()),
                     static_cast<long long>(replayLogs->count()), replayLogs->end() - replayLogs->begin());
     }
@@ -227,7 +240,7 @@ int main(int argc, char *argv[])
         {QStringLiteral("consoleDirectories"), ConsoleCatalog::standardDirectories()},
         {QStringLiteral("editing"), commandLine->edit},
         {QStringLiteral("initialSelection"), commandLine->select},
-        {QStringLiteral("mainSystem"), commandLine->system},
+        {QStringLiteral("mainSystem"), mainSystem},
         {QStringLiteral("width"), commandLine->windowSize.width()},
         {QStringLiteral("height"), commandLine->windowSize.height()},
     });

@@ -1,5 +1,6 @@
 pragma ComponentBehavior: Bound
 import QtQuick
+import QtQuick.Controls
 import QtQuick.Layouts
 import Neptus.Components
 import Neptus.Engine
@@ -117,6 +118,61 @@ Rectangle {
                         text: "▶|"
                         toolTip: qsTr("The next marker (PgDn)")
                         onClicked: bar.jumpToMarker(1)
+                    }
+                    TouchButton {
+                        id: plansButton
+                        objectName: "plansButton"
+                        readonly property Popup popup: plansPopup
+                        text: qsTr("Plans (%1)").arg(bar.replay.plans.length)
+                        enabled: bar.replay.plans.length > 0
+                        highlighted: plansPopup.visible
+                        toolTip: qsTr("The plans the vehicles ran: duration, distance, deepest point")
+                        onClicked: plansPopup.visible ? plansPopup.close() : plansPopup.open()
+                        Popup {
+                            id: plansPopup
+                            objectName: "plansPopup"
+                            y: -height - Theme.spacing
+                            padding: Theme.spacing
+                            background: Rectangle { color: Theme.surface; border.color: Theme.border; radius: Theme.radius }
+                            contentItem: Column {
+                                spacing: Theme.spacing / 2
+                                Text {
+                                    text: qsTr("Plans run — tap one to go to its start")
+                                    color: Theme.textDim
+                                    font.pixelSize: Theme.smallFontPixelSize
+                                }
+                                Repeater {
+                                    model: bar.replay.plans
+                                    delegate: Rectangle {
+                                        id: planRow
+                                        required property var modelData
+                                        objectName: "planRow"
+                                        width: planText.implicitWidth + Theme.spacing * 2
+                                        height: Math.max(Theme.touchTarget, planText.implicitHeight + Theme.spacing)
+                                        radius: Theme.radius
+                                        color: planTap.pressed ? Theme.accent : "transparent"
+                                        border.color: Theme.border
+                                        Text {
+                                            id: planText
+                                            anchors.verticalCenter: parent.verticalCenter
+                                            x: Theme.spacing
+                                            textFormat: Text.PlainText
+                                            text: planRow.modelData.system + " · " + planRow.modelData.plan + " · "
+                                                  + (planRow.modelData.outcome || qsTr("running when the log ends")) + "\n"
+                                                  + bar.seconds(planRow.modelData.duration) + " · "
+                                                  + Math.round(planRow.modelData.distance) + " m · "
+                                                  + qsTr("deepest %1 m").arg(planRow.modelData.maxDepth.toFixed(1))
+                                            color: Theme.text
+                                            font.pixelSize: Theme.fontPixelSize
+                                        }
+                                        TapHandler {
+                                            id: planTap
+                                            onTapped: { bar.replay.seek(planRow.modelData.begin); plansPopup.close() }
+                                        }
+                                    }
+                                }
+                            }
+                        }
                     }
                     TouchButton {
                         objectName: "slower"

@@ -94,14 +94,9 @@ QString csvValue(const msg::Message &m, int i)
     }
 }
 
-struct TrackPoint
-{
-    double time, lat, lon, depth; // degrees, metres
-};
-
 std::expected<std::map<quint16, std::vector<TrackPoint>>, QString> tracksOf(const LogSet &logs, const Progress &progress)
 {
-    std::map<quint16, std::vector<TrackPoint>> tracks;
+    std::map<quint16, std::vector<TrackPoint>> byId;
     Ticker ticker(progress, logs.count());
     for (qsizetype k = 0; k < logs.count(); ++k) {
         if (!ticker.at(k))
@@ -119,12 +114,143 @@ std::expected<std::map<quint16, std::vector<TrackPoint>>, QString> tracksOf(cons
         const double lat = p.lat * 180 / M_PI, lon = p.lon * 180 / M_PI;
         if (!std::isfinite(lat) || !std::isfinite(lon) || (lat == 0 && lon == 0))
             continue; // no position yet
-        tracks[m->header.src].push_back({m->header.timestamp, lat, lon, m->number(u"depth")});
+        byId[m->header.src].push_back({m->header.timestamp, lat, lon, m->number(u"depth"), m->number(u"alt")});
     }
-    return tracks;
+    return byId;
 }
 
 } // namespace
+
+std::map<quint16, std::vector<TrackPoint>> tracks(const LogSet &logs)
+{
+    return *tracksOf(logs, {});
+}
+
+std::vector<PlanRun> planRuns(const LogSet &logs)
+{
+    std::vector<PlanRun> runs;
+    if (logs.logs().empty())
+        return runs;
+    const QHash<quint16, QString> names = systemNames(logs);
+    const msg::MessageDef *stateDef = logs.logs().front()->schemas().defaultSchema().byAbbrev(u"PlanControlState");
+    if (!stateDef)
+        return runs;
+    QHash<quint16, size_t> open; // system → its run in `runs`
+    for (qsizetype k = 0; k < logs.count(); ++k) {
+        const LogFile &log = logs.logOf(k);
+        const qsizetype i = logs.indexInLog(k);
+        if (log.messageId(i) != stateDef->id)
+            continue;
+        const auto m = logs.decode(k);
+        if (!m || !m->def())
+            continue;
+        const quint16 system = m->header.src;
+        const bool executing = m->integer(u"state") == 3;
+        const QString plan = m->text(u"plan_id");
+        const auto current = open.constFind(system);
+        if (current != open.cend() && (!executing || runs[*current].plan != plan)) {
+            PlanRun &run = runs[*current];
+            run.end = logs.time(k);
+            if (!executing)
+                run.outcome = m->enumText(m->def()->fieldIndex.value(QStringLiteral("last_outcome")));
+            open.remove(system);
+        }
+        if (executing && !open.contains(system)) {
+            runs.push_back({system, label(names, system), plan, {}, logs.time(k), logs.time(k), 0, 0});
+            open.insert(system, runs.size() - 1);
+        } else if (executing) {
+            runs[open.value(system)].end = logs.time(k);
+        }
+    }
+    // What the tracks say of each run.
+    const auto all = tracks(logs);
+    for (PlanRun &run : runs) {
+        const auto track = all.find(run.system);
+        if (track == all.end())
+            continue;
+        const TrackPoint *previous = nullptr;
+        for (const TrackPoint &p : track->second) {
+            if (p.time < run.begin || p.time > run.end)
+                continue;
+            run.maxDepth = std::max(run.maxDepth, p.depth);
+            if (previous) {
+                const Eigen::Vector3d step = geo::toNed({p.lat * M_PI / 180, p.lon * M_PI / 180, 0},
+                                                        {previous->lat * M_PI / 180, previous->lon * M_PI / 180, 0});
+                run.distance += std::hypot(step.x(), step.y(), p.depth - previous->depth);
+            }
+            previous = &p;
+        }
+    }
+    return runs;
+}
+
+std::expected<std::vector<std::pair<double, double>>, QString> fieldSeries(const LogSet &logs, const QString &path)
+{
+    const QStringList parts = path.split(u'/');
+    if (parts.size() != 3 || parts.contains(QString()))
+        return std::unexpected(QStringLiteral("'%1' is not system/Message/field").arg(path));
+    if (logs.logs().empty())
+        return std::unexpected(QStringLiteral("no logs"));
+    const QHash<quint16, QString> names = systemNames(logs);
+    std::optional<quint16> system;
+    for (auto it = names.cbegin(); it != names.cend(); ++it) {
+        if (it.value() == parts[0])
+            system = it.key();
+    }
+    bool isId = false;
+    if (const uint id = parts[0].toUInt(&isId, 0); !system && isId && id < 0xFFFF)
+        system = quint16(id);
+    if (!system)
+        return std::unexpected(QStringLiteral("no system called '%1' in the log").arg(parts[0]));
+    const QString message = parts[1].section(u'@', 0, 0);
+    const QString entity = parts[1].contains(u'@') ? parts[1].section(u'@', 1) : QString();
+    const msg::Schema &schema = logs.logs().front()->schemas().codecFor(*system)->schema();
+    const msg::MessageDef *def = schema.byAbbrev(message);
+    if (!def)
+        return std::unexpected(QStringLiteral("no message '%1' in the log's definitions").arg(message));
+    const int field = def->fieldIndex.value(parts[2], -1);
+    if (field < 0 || !(msg::isInteger(def->fields[size_t(field)].type) || msg::isFloat(def->fields[size_t(field)].type)))
+        return std::unexpected(QStringLiteral("%1 has no number field '%2'").arg(message, parts[2]));
+    // An entity by number, or by the label the system gave it (EntityInfo, EntityList).
+    std::optional<int> entityId;
+    if (!entity.isEmpty()) {
+        bool isNumber = false;
+        const int n = entity.toInt(&isNumber);
+        if (isNumber)
+            entityId = n;
+        const msg::MessageDef *info = schema.byAbbrev(u"EntityInfo");
+        const msg::MessageDef *list = schema.byAbbrev(u"EntityList");
+        for (qsizetype k = 0; k < logs.count() && !entityId; ++k) {
+            const LogFile &log = logs.logOf(k);
+            const qsizetype i = logs.indexInLog(k);
+            if (log.source(i) != *system || !((info && log.messageId(i) == info->id) || (list && log.messageId(i) == list->id)))
+                continue;
+            const auto m = logs.decode(k);
+            if (!m)
+                continue;
+            if (m->def() == info && m->text(u"label") == entity)
+                entityId = int(m->integer(u"id"));
+            if (m->def() == list) {
+                for (const QString &pair : m->text(u"list").split(u';')) {
+                    if (pair.section(u'=', 0, 0) == entity)
+                        entityId = pair.section(u'=', 1).toInt();
+                }
+            }
+        }
+        if (!entityId)
+            return std::unexpected(QStringLiteral("%1 has no entity '%2' in the log").arg(parts[0], entity));
+    }
+    std::vector<std::pair<double, double>> points;
+    for (qsizetype k = 0; k < logs.count(); ++k) {
+        const LogFile &log = logs.logOf(k);
+        const qsizetype i = logs.indexInLog(k);
+        if (log.messageId(i) != def->id || log.source(i) != *system || (entityId && log.sourceEntity(i) != *entityId))
+            continue;
+        if (const auto m = logs.decode(k); m && m->def())
+            points.emplace_back(m->header.timestamp, m->number(field));
+    }
+    return points;
+}
 
 QHash<quint16, QString> systemNames(const LogSet &logs)
 {
@@ -316,10 +442,10 @@ std::expected<void, QString> exportTracks(const LogSet &logs, TrackFormat format
                                           const Progress &progress)
 {
     const QHash<quint16, QString> names = systemNames(logs);
-    auto tracks = tracksOf(logs, progress);
-    if (!tracks)
-        return std::unexpected(tracks.error());
-    if (tracks->empty())
+    auto positions = tracksOf(logs, progress);
+    if (!positions)
+        return std::unexpected(positions.error());
+    if (positions->empty())
         return std::unexpected(QStringLiteral("no positions in the log (no EstimatedState with a position)"));
     QSaveFile out(file);
     if (!out.open(QIODevice::WriteOnly))
@@ -328,7 +454,7 @@ std::expected<void, QString> exportTracks(const LogSet &logs, TrackFormat format
     if (format == TrackFormat::GeoJson) {
         // RFC 7946: one LineString per system, [lon, lat, -depth]; the times alongside.
         QJsonArray features;
-        for (const auto &[id, points] : *tracks) {
+        for (const auto &[id, points] : *positions) {
             QJsonArray coordinates, times;
             for (const TrackPoint &p : points) {
                 coordinates.append(QJsonArray{p.lon, p.lat, -p.depth});
@@ -356,7 +482,7 @@ std::expected<void, QString> exportTracks(const LogSet &logs, TrackFormat format
             xml.writeStartElement(QStringLiteral("kml"));
             xml.writeStartElement(QStringLiteral("Document"));
             xml.writeTextElement(QStringLiteral("name"), title);
-            for (const auto &[id, points] : *tracks) {
+            for (const auto &[id, points] : *positions) {
                 xml.writeStartElement(QStringLiteral("Placemark"));
                 xml.writeTextElement(QStringLiteral("name"), label(names, id));
                 xml.writeStartElement(QStringLiteral("TimeSpan"));
@@ -384,7 +510,7 @@ std::expected<void, QString> exportTracks(const LogSet &logs, TrackFormat format
             xml.writeTextElement(QStringLiteral("name"), title);
             xml.writeTextElement(QStringLiteral("time"), isoTime(logs.begin()));
             xml.writeEndElement();
-            for (const auto &[id, points] : *tracks) {
+            for (const auto &[id, points] : *positions) {
                 xml.writeStartElement(QStringLiteral("trk"));
                 xml.writeTextElement(QStringLiteral("name"), label(names, id));
                 xml.writeStartElement(QStringLiteral("trkseg"));

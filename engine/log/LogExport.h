@@ -8,6 +8,7 @@
 
 #include <expected>
 #include <functional>
+#include <map>
 
 namespace neptus::log {
 
@@ -45,6 +46,31 @@ struct LogMarker
     QString text; // "lauv-simulator-1: plan goto-and-wait started"
 };
 std::vector<LogMarker> markersOf(const LogSet &logs);
+
+// A numeric field's values against time (the messages' own timestamps),
+// from a tree path: "system/Message/field", the system by the name it
+// announces or its id ("0x001f"), "Message@Entity" for one entity (by label
+// or number; all entities otherwise). An error says which part is unknown.
+std::expected<std::vector<std::pair<double, double>>, QString> fieldSeries(const LogSet &logs, const QString &path);
+
+// Each system's track: its EstimatedState positions (degrees, metres).
+struct TrackPoint
+{
+    double time, lat, lon, depth, altitude;
+};
+std::map<quint16, std::vector<TrackPoint>> tracks(const LogSet &logs);
+
+// The plans the vehicles ran (from PlanControlState: executing from … to),
+// with what their tracks say of them.
+struct PlanRun
+{
+    quint16 system = 0;
+    QString systemName, plan, outcome; // outcome: SUCCESS, FAILURE, … or "" if the log ends first
+    double begin = 0, end = 0;         // log times (LogSet::time)
+    double distance = 0;               // metres along the track
+    double maxDepth = 0;
+};
+std::vector<PlanRun> planRuns(const LogSet &logs);
 
 // One CSV file per message type in `folder` (<Abbrev>.csv): time (s since
 // 1970, UTC), system, entity, then a column per field (numbers as numbers,

@@ -145,6 +145,7 @@ void Player::seek(double t)
         m_next = m_logs->upperBound(t);
         m_position = t;
         m_target->setTime(t);
+        emit jumped(t);
         emit positionChanged(m_position);
     }
     m_wall.start();

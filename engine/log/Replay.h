@@ -105,6 +105,9 @@ signals:
     void playingChanged(bool playing);
     void speedChanged(double speed);
     void decodeFailed(const QString &why);
+    // The replay went to `t` from a checkpoint (back in time, or far ahead):
+    // what accumulates over time (trails) is to be made again.
+    void jumped(double t);
     void finished();
 
 private:

@@ -344,7 +344,7 @@ void PlanDesk::receive(const msg::Message &message)
 // (views ask on every look; an unreachable vehicle would pile them up).
 void PlanDesk::ask(Vehicle &v)
 {
-    if (v.asking)
+    if (v.asking || m_quiet)
         return;
     v.asking = true;
     v.client->getState(true);

@@ -78,6 +78,8 @@ public:
     // Commands. An error says why nothing was sent; what the vehicle answers
     // (or its silence, after retries) comes to the log.
     std::expected<void, QString> refresh(const QString &system);
+    // A console that replays a log asks vehicles nothing (its commands are refused by the console).
+    void setQuiet(bool quiet) { m_quiet = quiet; }
     std::expected<void, QString> send(const QString &system, const QString &planId);
     std::expected<void, QString> remove(const QString &system, const QString &planId);
     std::expected<void, QString> start(const QString &system, const QString &planId);
@@ -117,6 +119,7 @@ private:
     std::expected<msg::Message, QString> specification(const QString &system, const QString &planId) const;
     void note(quint16 id, const QString &line);
     void ask(Vehicle &v);
+    bool m_quiet = false;
     void replied(quint16 id, const PlanClient::Reply &reply);
     void ended(quint16 id, const QString &planId, bool ok, const QString &info);
 

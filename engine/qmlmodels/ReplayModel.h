@@ -2,8 +2,11 @@
 
 #include "log/LogExport.h"
 #include "log/Replay.h"
+#include "qmlmodels/Tracks.h"
 
+#include <QHash>
 #include <QObject>
+#include <QPointF>
 #include <QVariantList>
 #include <QtQml/qqmlregistration.h>
 
@@ -27,6 +30,8 @@ class ReplayModel : public QObject
     Q_PROPERTY(QVariantList markers READ markers CONSTANT)
     // Damage found in the logs, and packets that did not decode: "" when none.
     Q_PROPERTY(QString problems READ problems NOTIFY problemsChanged)
+    // The plans the vehicles ran: [{system, plan, outcome, begin, end, duration, distance, maxDepth}].
+    Q_PROPERTY(QVariantList plans READ plans CONSTANT)
 
 public:
     ReplayModel(std::shared_ptr<const neptus::log::LogSet> logs, neptus::log::ReplayTarget *target,
@@ -42,6 +47,8 @@ public:
     QVariantList markers() const { return m_markers; }
     QString problems() const { return m_problems.join(QLatin1Char('\n')); }
     neptus::log::Player &player() { return m_player; }
+    // The console's trails, redrawn up to the replay's time after each jump.
+    void setTracks(neptus::geo::Tracks *tracks);
 
     Q_INVOKABLE void play() { m_player.play(); }
     Q_INVOKABLE void pause() { m_player.pause(); }
@@ -49,6 +56,9 @@ public:
     Q_INVOKABLE void step(double seconds) { m_player.step(seconds); }
     // The next (or previous, direction < 0) marker's time from where the replay is; -1 if none.
     Q_INVOKABLE double nextMarker(int direction) const;
+    // A number field's whole series in the logs ("lauv/EstimatedState/depth"), x the time; empty if unknown.
+    Q_INVOKABLE QList<QPointF> series(const QString &path);
+    QVariantList plans() const { return m_plans; }
 
 signals:
     void positionChanged();
@@ -61,4 +71,16 @@ private:
     QString m_name;
     QVariantList m_markers;
     QStringList m_problems;
+    QVariantList m_plans;
+    QHash<QString, QList<QPointF>> m_series;
+    neptus::geo::Tracks *m_tracks = nullptr;
+    // The logs' tracks by the name each system is shown by (made on the first jump).
+    struct Trail
+    {
+        quint16 id;
+        QString system;
+        std::vector<neptus::log::TrackPoint> points;
+    };
+    std::optional<std::vector<Trail>> m_trails;
+    void redrawTrails(double t);
 };

@@ -329,6 +329,19 @@ void Tracks::append(const QString &system, const Fix &fix)
     notifyChanged();
 }
 
+void Tracks::append(quint16 id, const QString &system, const std::vector<Fix> &fixes)
+{
+    if (fixes.empty())
+        return;
+    Track &t = trackFor(id, system, true);
+    homeOnce(fixes.front().lat, fixes.front().lon, 0);
+    for (const Fix &fix : fixes)
+        add(t, fix);
+    updateRows();
+    flushSystems();
+    notifyChanged();
+}
+
 void Tracks::add(Track &t, const Fix &fix)
 {
     t.latest = fix;

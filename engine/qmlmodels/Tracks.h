@@ -126,6 +126,8 @@ public:
 
     // Adds a fix directly (replay, tests, benchmarks).
     void append(const QString &system, const Fix &fix);
+    // Many at once for a system by its IMC id, oldest first (a replay's trail after a jump in time).
+    void append(quint16 id, const QString &system, const std::vector<Fix> &fixes);
 
     // Takes the tree's changes; runs after every model sync.
     void update();

@@ -39,6 +39,26 @@ Rectangle {
     readonly property real axisWidth: Theme.mm(13)
     readonly property int leftAxes: Math.ceil(units.length / 2)
     readonly property int rightAxes: Math.floor(units.length / 2)
+    // Reviewing a log: each series is the log's whole and the plot ends at
+    // the replay's moment, so every plot shows the same time; dragging one
+    // moves the replay.
+    readonly property ReplayModel replay: Session.session ? Session.session.replay : null
+    function loadFromLog() {
+        if (!replay)
+            return
+        for (let i = 0; i < paths.length; ++i)
+            series.setPoints(i, replay.series(Session.resolve(paths[i])))
+    }
+    onPathsChanged: Qt.callLater(loadFromLog)
+    onReplayChanged: Qt.callLater(loadFromLog)
+    Connections {
+        target: Session
+        function onMainSystemChanged() { Qt.callLater(plot.loadFromLog) }
+    }
+    Component.onCompleted: Qt.callLater(loadFromLog)
+    Binding { target: series; property: "live"; value: false; when: plot.replay !== null }
+    Binding { target: series; property: "end"; value: plot.replay ? plot.replay.position : 0; when: plot.replay !== null }
+
     readonly property bool stale: {
         let any = false
         for (let i = 0; i < sources.count; ++i) {
@@ -69,7 +89,7 @@ Rectangle {
             // One point per message: a change of anything else (a rename) is not a new sample.
             property real lastStamp: -1
             onChanged: {
-                if (!present || typeof value !== "number" || (timestamp > 0 && timestamp === lastStamp))
+                if (plot.replay || !present || typeof value !== "number" || (timestamp > 0 && timestamp === lastStamp))
                     return
                 lastStamp = timestamp
                 series.append(index, timestamp > 0 ? timestamp : Date.now() / 1000, value)
@@ -89,7 +109,7 @@ Rectangle {
         tickSpacing: Theme.mm(10)
         colors: plot.seriesColors
         span: plot.span
-        opacity: plot.stale ? 0.4 : 1
+        opacity: plot.stale && !plot.replay ? 0.4 : 1
         clip: true
 
         property real dragEnd: 0
@@ -97,8 +117,16 @@ Rectangle {
             target: null
             xAxis.enabled: true
             yAxis.enabled: false
-            onActiveChanged: if (active) { series.live = false; series.dragEnd = series.end }
-            onTranslationChanged: if (active) series.end = series.dragEnd - translation.x / series.width * series.span
+            onActiveChanged: if (active) { if (!plot.replay) series.live = false; series.dragEnd = series.end }
+            onTranslationChanged: {
+                if (!active)
+                    return
+                const end = series.dragEnd - translation.x / series.width * series.span
+                if (plot.replay)
+                    plot.replay.seek(end)
+                else
+                    series.end = end
+            }
         }
         PinchHandler {
             target: null
@@ -208,6 +236,7 @@ Rectangle {
         id: liveButton
         objectName: "liveButton"
         anchors { right: parent.right; top: parent.top; margins: Theme.spacing / 2 }
+        visible: plot.replay === null
         text: series.live ? qsTr("Pause") : qsTr("Live")
         highlighted: !series.live
         onClicked: series.live = !series.live

@@ -8,7 +8,9 @@
 #include "messages/Codec.h"
 #include "messages/MessageJson.h"
 #include "messages/Schema.h"
+#include "log/LogFile.h"
 #include "qmlmodels/ConsoleSession.h"
+#include "session/ConsoleReplay.h"
 #include "sim/SimulatedVehicle.h"
 
 #include <QBuffer>
@@ -336,6 +338,31 @@ public:
         return error;
     }
     Q_INVOKABLE QString sourceDir() const { return test::sourcePath({}); }
+    Q_INVOKABLE QString sharedDir() const { return test::sharedPath({}); }
+
+    // A second console, fed from the log at `folder` (review), made once per
+    // log; null (and `replayError` says why) when the log does not open.
+    Q_INVOKABLE ConsoleSession *replaySession(const QString &folder)
+    {
+        auto file = log::LogFile::open(folder);
+        if (!file) {
+            m_replayError = file.error();
+            return nullptr;
+        }
+        auto replay = std::make_unique<Replay>();
+        auto logs = std::make_shared<const log::LogSet>(std::vector{*file});
+        replay->session = std::make_unique<ConsoleSession>(
+            std::shared_ptr<const msg::Schema>((*file)->sharedSchemas(), &(*file)->schemas().defaultSchema()), &replay->clock);
+        replay->target = std::make_unique<session::ConsoleReplay>(replay->session->console(), replay->clock);
+        replay->model = std::make_unique<ReplayModel>(logs, replay->target.get());
+        replay->model->seek(logs->begin());
+        replay->session->setReplay(replay->model.get());
+        // Kept here: QML must not collect what a Q_INVOKABLE hands it.
+        QJSEngine::setObjectOwnership(replay->session.get(), QJSEngine::CppOwnership);
+        m_replays.push_back(std::move(replay));
+        return m_replays.back()->session.get();
+    }
+    Q_INVOKABLE QString replayError() const { return m_replayError; }
     // A tile server on loopback serving a folder's files over HTTP/1.0 (404
     // for what it lacks), as a boat's LAN server would: its base URL.
     Q_INVOKABLE QString startTileServer(const QString &folder)
@@ -380,6 +407,15 @@ private:
     double m_vehicleTime = 0;
     std::vector<std::unique_ptr<QTemporaryDir>> m_dirs;
     std::vector<std::unique_ptr<QTcpServer>> m_servers;
+    struct Replay
+    {
+        ManualClock clock;
+        std::unique_ptr<ConsoleSession> session;
+        std::unique_ptr<session::ConsoleReplay> target;
+        std::unique_ptr<ReplayModel> model; // destroyed first: the player before the console it feeds
+    };
+    std::vector<std::unique_ptr<Replay>> m_replays;
+    QString m_replayError;
 };
 
 class Setup : public QObject

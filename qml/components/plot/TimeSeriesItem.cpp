@@ -115,6 +115,24 @@ void TimeSeriesItem::append(int series, double time, double value)
     changed();
 }
 
+void TimeSeriesItem::setPoints(int series, const QList<QPointF> &points)
+{
+    if (series < 0 || series >= seriesCount())
+        return;
+    Series &s = m_series[static_cast<size_t>(series)];
+    s = Series{};
+    const qsizetype first = std::max<qsizetype>(0, points.size() - m_capacity);
+    for (qsizetype i = first; i < points.size(); ++i) {
+        const QPointF &p = points[i];
+        if (!std::isfinite(p.x()) || (!s.t.empty() && p.x() < s.t.back()))
+            continue;
+        s.t.push_back(p.x());
+        s.v.push_back(p.y());
+    }
+    emit pointsChanged();
+    changed();
+}
+
 void TimeSeriesItem::clear()
 {
     for (Series &s : m_series)

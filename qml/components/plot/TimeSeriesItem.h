@@ -1,6 +1,7 @@
 #pragma once
 
 #include <QColor>
+#include <QPointF>
 #include <QQuickItem>
 #include <QtQml/qqmlregistration.h>
 
@@ -71,6 +72,8 @@ public:
     // Adds a point; times must not go backwards within a series (an older
     // point is dropped). Non-finite values are gaps in the data, not drawn.
     Q_INVOKABLE void append(int series, double time, double value);
+    // Replaces a series with these (time, value) points (a log's whole series); times going back are left out.
+    Q_INVOKABLE void setPoints(int series, const QList<QPointF> &points);
     Q_INVOKABLE void clear();
     // The newest time of any series (0 when empty).
     Q_INVOKABLE double newest() const;

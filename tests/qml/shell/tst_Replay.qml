@@ -1,0 +1,134 @@
+import QtQuick
+import QtTest
+import Neptus.Components
+import Neptus.Engine
+import Neptus.Shell
+import Neptus.Testing
+
+// Review: the console fed from the real DUNE log (../shared/fixtures/dune-log),
+// as an operator drives it: the badge, the timeline by touch and keys, the
+// markers, speed, the plans run, the plots filled from the log, nothing sent.
+TestCase {
+    id: test
+    name: "Replay"
+    when: windowShown
+    width: 1280
+    height: 800
+
+    Component { id: mainComponent; Main { visible: false } }
+
+    function find(item, name) {
+        if (!item)
+            return null
+        if (item.objectName === name)
+            return item
+        const children = item.children || []
+        for (let i = 0; i < children.length; ++i) {
+            const found = find(children[i], name)
+            if (found)
+                return found
+        }
+        if (item.contentItem && item.contentItem !== item) {
+            const found = find(item.contentItem, name)
+            if (found)
+                return found
+        }
+        return null
+    }
+    function tapOn(item, x, y) {
+        const touch = touchEvent(item)
+        touch.press(0, item, x, y).commit()
+        touch.release(0, item, x, y).commit()
+    }
+
+    function test_reviewTheDuneLog() {
+        const folder = Fixtures.sharedDir() + "/fixtures/dune-log"
+        const session = Fixtures.replaySession(folder)
+        if (!session)
+            skip("no DUNE log fixture (" + Fixtures.replayError() + "): ../shared is absent")
+        const replay = session.replay
+        verify(replay)
+        const window = createTemporaryObject(mainComponent, test, {
+            consoleUrl: "file://" + Fixtures.sourceDir() + "/qml/consoles/Default.qml", visible: true,
+            session: session, mainSystem: "lauv-simulator-1" })
+        tryCompare(window.consoleLoader, "title", "Generic console")
+        const root = window.contentItem.parent
+
+        // It says it is a replay, with the log's time.
+        const badge = find(window.header, "replayBadge")
+        verify(badge && badge.visible, "the REPLAY badge")
+        const clock = find(window.header, "utcClock")
+        compare(clock.text, new Date(replay.position * 1000).toISOString().substring(11, 19) + " UTC")
+
+        // A tap in the middle of the timeline: the middle of the log.
+        const timeline = find(window.footer, "timeline")
+        verify(timeline)
+        waitForItemPolished(timeline)
+        tapOn(timeline, timeline.width / 2, timeline.height / 2)
+        tryVerify(() => Math.abs(replay.position - (replay.begin + replay.end) / 2) < 0.02 * (replay.end - replay.begin),
+                  1000, "at the middle: " + (replay.position - replay.begin))
+        const cursor = find(window.footer, "cursor")
+        verify(Math.abs(cursor.x + cursor.width / 2 - timeline.width / 2) < 3, "the cursor where tapped")
+        const middle = replay.position
+        // Nothing is sent from a replay.
+        const refused = session.send("lauv-simulator-1", { abbrev: "Abort", fields: {} })
+        verify(refused.indexOf("replays a log") >= 0, refused)
+
+        // Play, then pause, by touch: time moves on, at the speed chosen.
+        const play = find(window.footer, "playPause")
+        tapOn(play, play.width / 2, play.height / 2)
+        verify(replay.playing)
+        wait(400)
+        tapOn(play, play.width / 2, play.height / 2)
+        verify(!replay.playing)
+        verify(replay.position > middle + 0.2 && replay.position < middle + 1.5, "played ~0.4 s: " + (replay.position - middle))
+        const faster = find(window.footer, "faster")
+        tapOn(faster, faster.width / 2, faster.height / 2)
+        tapOn(faster, faster.width / 2, faster.height / 2)
+        compare(replay.speed, 5)
+        compare(find(window.footer, "speed").text, "5×")
+
+        // Keys: Space plays and pauses, → steps a second.
+        const before = replay.position
+        keyClick(Qt.Key_Right)
+        compare(replay.position, before + 1)
+        keyClick(Qt.Key_Space)
+        verify(replay.playing)
+        keyClick(Qt.Key_Space)
+        verify(!replay.playing)
+
+        // Markers: the next one is the plan's end at the log's end (after the middle).
+        verify(replay.markers.length >= 17, "plan start, end and 16 log-book entries: " + replay.markers.length)
+        keyClick(Qt.Key_Home)
+        compare(replay.position, replay.begin)
+        const next = find(window.footer, "nextMarker")
+        tapOn(next, next.width / 2, next.height / 2)
+        verify(replay.position > replay.begin)
+        verify(replay.markers.some(m => Math.abs(m.time - replay.position) < 1e-6), "on a marker")
+        tryVerify(() => find(window.footer, "markerText").text !== "", 1000, "the marker is named")
+
+        // The plans run: one, to its end; a tap goes to its start.
+        compare(replay.plans.length, 1)
+        const run = replay.plans[0]
+        compare(run.plan, "goto-and-wait")
+        compare(run.outcome, "")  // DUNE's log ends with the plan still EXECUTING in PlanControlState
+        verify(run.duration > 130, "duration " + run.duration)
+        verify(run.distance > 100 && run.distance < 400, "distance " + run.distance)
+        verify(run.maxDepth > 1.5 && run.maxDepth < 3, "deepest " + run.maxDepth)
+        keyClick(Qt.Key_End)
+        const plans = find(window.footer, "plansButton")
+        tapOn(plans, plans.width / 2, plans.height / 2)
+        const popup = plans.popup
+        tryVerify(() => popup.opened, 1000)
+        const row = find(popup.contentItem, "planRow")
+        verify(row, "a row for the plan")
+        tapOn(row, row.width / 2, row.height / 2)
+        tryCompare(replay, "position", run.begin)
+
+        // The console's plot holds the log's whole depth series, and ends at the replay's time.
+        const series = find(window.consoleLoader.item, "series")
+        verify(series, "the Default console's plot")
+        tryVerify(() => series.pointCount >= 2755, 3000, "points: " + series.pointCount)
+        compare(series.end, replay.position)
+    }
+}
