@@ -175,6 +175,61 @@ Rectangle {
                         }
                     }
                     TouchButton {
+                        id: exportButton
+                        objectName: "exportButton"
+                        readonly property Popup popup: exportPopup
+                        text: bar.replay.exportProgress >= 0 ? qsTr("Export %1 %").arg(Math.round(bar.replay.exportProgress * 100)) : qsTr("Export")
+                        highlighted: exportPopup.visible
+                        toolTip: qsTr("The log as CSV, KML, GeoJSON or GPX")
+                        onClicked: exportPopup.visible ? exportPopup.close() : exportPopup.open()
+                        Popup {
+                            id: exportPopup
+                            y: -height - Theme.spacing
+                            padding: Theme.spacing
+                            background: Rectangle { color: Theme.surface; border.color: Theme.border; radius: Theme.radius }
+                            contentItem: Column {
+                                spacing: Theme.spacing
+                                Text {
+                                    text: qsTr("Export the log to %1").arg(bar.replay.exportFolder)
+                                    color: Theme.textDim
+                                    font.pixelSize: Theme.smallFontPixelSize
+                                }
+                                Row {
+                                    spacing: Theme.spacing
+                                    Repeater {
+                                        model: [["csv", qsTr("CSV (a file per message)")], ["kml", "KML"], ["geojson", "GeoJSON"], ["gpx", "GPX"]]
+                                        delegate: TouchButton {
+                                            required property var modelData
+                                            objectName: "export-" + modelData[0]
+                                            text: modelData[1]
+                                            enabled: bar.replay.exportProgress < 0
+                                            onClicked: bar.replay.exportTo(modelData[0])
+                                        }
+                                    }
+                                }
+                                Rectangle {
+                                    objectName: "exportProgress"
+                                    visible: bar.replay.exportProgress >= 0
+                                    width: parent.width
+                                    height: Theme.mm(2)
+                                    radius: height / 2
+                                    color: Theme.background
+                                    border.color: Theme.border
+                                    Rectangle { width: parent.width * Math.max(0, bar.replay.exportProgress); height: parent.height; radius: parent.radius; color: Theme.accent }
+                                }
+                                Text {
+                                    objectName: "exportResult"
+                                    width: Math.max(implicitWidth, parent.width)
+                                    visible: text !== ""
+                                    text: bar.replay.exportResult
+                                    color: Theme.text
+                                    font.pixelSize: Theme.smallFontPixelSize
+                                    wrapMode: Text.WrapAnywhere
+                                }
+                            }
+                        }
+                    }
+                    TouchButton {
                         objectName: "slower"
                         text: "−"
                         toolTip: qsTr("Slower")

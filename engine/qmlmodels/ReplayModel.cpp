@@ -1,12 +1,15 @@
 #include "qmlmodels/ReplayModel.h"
 
+#include <QDir>
 #include <QFileInfo>
+
 
 using namespace neptus;
 
 ReplayModel::ReplayModel(std::shared_ptr<const log::LogSet> logs, log::ReplayTarget *target, QObject *parent)
     : QObject(parent)
     , m_player(logs, target)
+    , m_logs(logs)
 {
     QStringList names;
     for (const auto &file : logs->logs()) {
@@ -15,6 +18,11 @@ ReplayModel::ReplayModel(std::shared_ptr<const log::LogSet> logs, log::ReplayTar
             m_problems.append(file->damage());
     }
     m_name = names.join(QStringLiteral(" + "));
+    // Exports beside the (first) log, or in the home folder when it cannot be written.
+    const QString beside = QDir(logs->logs().front()->folder()).filePath(QStringLiteral("exports"));
+    m_exportFolder = QFileInfo(logs->logs().front()->folder()).isWritable()
+        ? beside
+        : QDir::home().filePath(QStringLiteral("neptus-exports/") + names.value(0));
     static const char *const kinds[] = {"note", "alarm", "planStart", "planEnd"};
     for (const log::LogMarker &marker : log::markersOf(*logs))
         m_markers.append(QVariantMap{{QStringLiteral("time"), marker.time},
@@ -66,6 +74,65 @@ void ReplayModel::redrawTrails(double t)
         }
         m_tracks->append(id, system, fixes);
     }
+}
+
+void ReplayModel::setExportFolder(const QString &folder)
+{
+    if (folder == m_exportFolder)
+        return;
+    m_exportFolder = folder;
+    emit exportChanged();
+}
+
+void ReplayModel::exportTo(const QString &format)
+{
+    if (m_exportProgress >= 0)
+        return;
+    const auto track = log::trackFormat(format);
+    if (format != u"csv" && !track) {
+        m_exportResult = tr("no export as '%1' (csv, kml, geojson, gpx)").arg(format);
+        emit exportChanged();
+        return;
+    }
+    const QString target = format == u"csv" ? QDir(m_exportFolder).filePath(QStringLiteral("csv"))
+                                             : QDir(m_exportFolder).filePath(m_name.section(u' ', 0, 0) + u'.' + format);
+    m_exportProgress = 0;
+    m_exportResult.clear();
+    emit exportChanged();
+    // The destructor stops the export and waits for it: `self` outlives the task.
+    ReplayModel *self = this;
+    const auto progress = [self, stop = m_stopExport](double fraction) {
+        QMetaObject::invokeMethod(self, [self, fraction] {
+            if (self->m_exportProgress >= 0 && fraction > self->m_exportProgress) {
+                self->m_exportProgress = fraction;
+                emit self->exportChanged();
+            }
+        }, Qt::QueuedConnection);
+        return !stop->load();
+    };
+    m_exports.start([self, logs = m_logs, track, target, progress] {
+        QString result;
+        if (!QDir().mkpath(QFileInfo(target).absolutePath())) {
+            result = tr("cannot make %1").arg(QFileInfo(target).absolutePath());
+        } else if (track) {
+            const auto done = log::exportTracks(*logs, *track, target, progress);
+            result = done ? target : done.error();
+        } else {
+            const auto done = log::exportCsv(*logs, target, progress);
+            result = done ? tr("%1 files in %2").arg(done->size()).arg(target) : done.error();
+        }
+        QMetaObject::invokeMethod(self, [self, result] {
+            self->m_exportProgress = -1;
+            self->m_exportResult = result;
+            emit self->exportChanged();
+        }, Qt::QueuedConnection);
+    });
+}
+
+ReplayModel::~ReplayModel()
+{
+    m_stopExport->store(true);
+    m_exports.waitForDone();
 }
 
 QList<QPointF> ReplayModel::series(const QString &path)

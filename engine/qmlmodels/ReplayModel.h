@@ -5,6 +5,9 @@
 #include "qmlmodels/Tracks.h"
 
 #include <QHash>
+#include <QThreadPool>
+
+#include <atomic>
 #include <QObject>
 #include <QPointF>
 #include <QVariantList>
@@ -32,10 +35,15 @@ class ReplayModel : public QObject
     Q_PROPERTY(QString problems READ problems NOTIFY problemsChanged)
     // The plans the vehicles ran: [{system, plan, outcome, begin, end, duration, distance, maxDepth}].
     Q_PROPERTY(QVariantList plans READ plans CONSTANT)
+    // Exports (exportTo): where they go, how far the one under way is (-1: none), what came of the last.
+    Q_PROPERTY(QString exportFolder READ exportFolder WRITE setExportFolder NOTIFY exportChanged)
+    Q_PROPERTY(double exportProgress READ exportProgress NOTIFY exportChanged)
+    Q_PROPERTY(QString exportResult READ exportResult NOTIFY exportChanged)
 
 public:
     ReplayModel(std::shared_ptr<const neptus::log::LogSet> logs, neptus::log::ReplayTarget *target,
                 QObject *parent = nullptr);
+    ~ReplayModel() override;
 
     QString name() const { return m_name; }
     double begin() const { return m_player.logs().begin(); }
@@ -59,12 +67,21 @@ public:
     // A number field's whole series in the logs ("lauv/EstimatedState/depth"), x the time; empty if unknown.
     Q_INVOKABLE QList<QPointF> series(const QString &path);
     QVariantList plans() const { return m_plans; }
+    // The logs as "csv" (a folder of files), "kml", "geojson" or "gpx" into
+    // exportFolder, on a worker thread; exportProgress follows, exportResult says
+    // where it went or why not. One at a time.
+    Q_INVOKABLE void exportTo(const QString &format);
+    QString exportFolder() const { return m_exportFolder; }
+    void setExportFolder(const QString &folder);
+    double exportProgress() const { return m_exportProgress; }
+    QString exportResult() const { return m_exportResult; }
 
 signals:
     void positionChanged();
     void playingChanged();
     void speedChanged();
     void problemsChanged();
+    void exportChanged();
 
 private:
     neptus::log::Player m_player;
@@ -74,6 +91,12 @@ private:
     QVariantList m_plans;
     QHash<QString, QList<QPointF>> m_series;
     neptus::geo::Tracks *m_tracks = nullptr;
+    std::shared_ptr<const neptus::log::LogSet> m_logs;
+    QString m_exportFolder;
+    double m_exportProgress = -1;
+    QString m_exportResult;
+    QThreadPool m_exports; // its own: the destructor waits for it alone
+    std::shared_ptr<std::atomic_bool> m_stopExport = std::make_shared<std::atomic_bool>(false);
     // The logs' tracks by the name each system is shown by (made on the first jump).
     struct Trail
     {

@@ -8,7 +8,9 @@ import Neptus.Engine
 // once when it first appears; tap a row to open or close it and select it.
 // Search finds a name anywhere in the tree (Enter for the next one) and
 // opens the way to it; "Copy path" puts the selected row's tree path on the
-// clipboard, ready for a component's path property or a script.
+// clipboard, ready for a component's path property or a script. "Plot"
+// adds the selected value to a plot under the tree (in a replay, the log's
+// whole series, at the replay's moment); "×" on the plot closes it.
 Rectangle {
     id: view
 
@@ -24,6 +26,12 @@ Rectangle {
     // While a value's row is dragged (active) and where it ends (not active), in scene coordinates.
     signal leafDragged(string path, point scenePoint, bool active)
     property alias searchText: search.text
+    // Values plotted under the tree (tree paths).
+    property var plotted: []
+    function plotSelected() {
+        if (selectedIsLeaf && typeof selection.value === "number" && plotted.indexOf(selectedPath) < 0)
+            plotted = plotted.concat([selectedPath])
+    }
 
     implicitWidth: Theme.mm(120)
     implicitHeight: Theme.mm(80)
@@ -40,7 +48,7 @@ Rectangle {
         Basic.TextField {
             id: search
             objectName: "search"
-            width: parent.width - copy.width - parent.spacing
+            width: parent.width - copy.width - plotButton.width - parent.spacing * 2
             height: Theme.touchTarget
             placeholderText: qsTr("Search the tree")
             placeholderTextColor: Theme.textDim
@@ -57,6 +65,14 @@ Rectangle {
             enabled: view.selectedPath !== ""
             toolTip: view.selectedPath
             onClicked: view.copyPath()
+        }
+        TouchButton {
+            id: plotButton
+            objectName: "plotValue"
+            text: qsTr("Plot")
+            enabled: view.selectedIsLeaf && typeof selection.value === "number"
+            toolTip: qsTr("Plot %1 against time under the tree").arg(view.selectedPath)
+            onClicked: view.plotSelected()
         }
     }
     // The clipboard is reached through a text editor: QML has no other way.
@@ -126,7 +142,7 @@ Rectangle {
     TreeView {
         id: tree
         objectName: "variableTree"
-        anchors { left: parent.left; right: parent.right; top: tools.bottom; bottom: parent.bottom; margins: Theme.spacing }
+        anchors { left: parent.left; right: parent.right; top: tools.bottom; bottom: plotPane.visible ? plotPane.top : parent.bottom; margins: Theme.spacing }
         clip: true
         model: Session.tree
         flickableDirection: view.dragLeaves ? Flickable.VerticalFlick : Flickable.AutoFlickDirection
@@ -190,6 +206,23 @@ Rectangle {
                         cell.treeView.toggleExpanded(cell.row)
                 }
             }
+        }
+    }
+
+    Plot {
+        id: plotPane
+        objectName: "treePlot"
+        visible: view.plotted.length > 0
+        anchors { left: parent.left; right: parent.right; bottom: parent.bottom; margins: Theme.spacing }
+        height: Math.max(Theme.mm(40), view.height * 0.4)
+        paths: view.plotted
+        TouchButton {
+            objectName: "closePlot"
+            anchors { right: parent.right; bottom: parent.bottom; margins: Theme.spacing / 2 }
+            z: 2
+            text: "×"
+            toolTip: qsTr("Close the plot")
+            onClicked: view.plotted = []
         }
     }
 

@@ -16,6 +16,7 @@ TestCase {
     height: 800
 
     Component { id: mainComponent; Main { visible: false } }
+    Component { id: treeComponent; VariableTreeView { width: 600; height: 500 } }
 
     function find(item, name) {
         if (!item)
@@ -130,5 +131,36 @@ TestCase {
         verify(series, "the Default console's plot")
         tryVerify(() => series.pointCount >= 2755, 3000, "points: " + series.pointCount)
         compare(series.end, replay.position)
+
+        // Tap a value in the tree, Plot: a plot of it under the tree, from the log.
+        replay.seek(middle)
+        const treeView = createTemporaryObject(treeComponent, window.contentItem, { z: 100 })
+        treeView.selectedPath = "lauv-simulator-1/EstimatedState/depth"
+        const plotValue = find(treeView, "plotValue")
+        tryVerify(() => plotValue.enabled, 2000, "Plot offered for a number")
+        tapOn(plotValue, plotValue.width / 2, plotValue.height / 2)
+        const treePlot = find(treeView, "treePlot")
+        compare(treeView.plotted.length, 1)
+        verify(treePlot.visible)
+        tryVerify(() => find(treePlot, "series").pointCount === 2755, 3000)
+
+        // Export from the console, with progress: GeoJSON of the track.
+        const exports = Fixtures.makeTempDir()
+        replay.exportFolder = exports
+        const exportButton = find(window.footer, "exportButton")
+        tapOn(exportButton, exportButton.width / 2, exportButton.height / 2)
+        tryVerify(() => exportButton.popup.opened, 1000)
+        const geojson = find(exportButton.popup.contentItem, "export-geojson")
+        verify(geojson)
+        let sawProgress = false
+        const watch = () => { if (replay.exportProgress >= 0) sawProgress = true }
+        replay.exportChanged.connect(watch)
+        tapOn(geojson, geojson.width / 2, geojson.height / 2)
+        tryVerify(() => replay.exportProgress < 0 && replay.exportResult !== "", 10000)
+        replay.exportChanged.disconnect(watch)
+        verify(sawProgress, "progress was shown")
+        compare(replay.exportResult, exports + "/dune-log.geojson")
+        const text = Fixtures.readFile(replay.exportResult)
+        compare(JSON.parse(text).features[0].geometry.coordinates.length, 2755)
     }
 }

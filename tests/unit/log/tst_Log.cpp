@@ -25,6 +25,7 @@
 #include <QRandomGenerator>
 #include <QRegularExpression>
 #include <QTemporaryDir>
+#include <QTest>
 #include <QThread>
 
 #include <gtest/gtest.h>
@@ -580,4 +581,49 @@ TEST(Log, TheTimelineMarksTheDuneLogsPlanItsLogBookAndNothingElse)
     EXPECT_EQ(logBook, 16);
     EXPECT_TRUE(std::is_sorted(markers.begin(), markers.end(),
                                [](const auto &a, const auto &b) { return a.time < b.time; }));
+}
+
+TEST(Log, DdsTrafficIsRecordedAsTheImcPacketsItsEnvelopesCarry)
+{
+    QTemporaryDir root;
+    log::Recorder recorder(configIn(root.path()));
+    ASSERT_TRUE(recorder.start().has_value());
+    const auto schema = test::shippedSchema();
+    {
+        session::Console console(schema);
+        console.setRecorder(&recorder);
+        ASSERT_TRUE(console.startDds({23, {}, 0x4001}));
+        transport::DdsTransport vehicle(schema, transport::DdsConfig{23, {}, 0x1f});
+        ASSERT_TRUE(vehicle.start());
+        msg::Message state(schema->byAbbrev(u"EstimatedState"));
+        state.setNumber(state.def()->indexOf(u"depth"), 4.25);
+        ASSERT_TRUE(QTest::qWaitFor([&] {
+            vehicle.broadcast(state);
+            return console.tree().find(u"0x001f/EstimatedState/depth") != tree::noNode;
+        }, 10000));
+        ASSERT_TRUE(console.send(0x1f, msg::Message(schema->byAbbrev(u"Abort"))).has_value());
+        QTest::qWait(100);
+    }
+    recorder.stop();
+    auto log = openLog(recorder.status().folder);
+    ASSERT_TRUE(log);
+    const log::LogSet logs(std::vector{log});
+    bool heardState = false, sentAbort = false;
+    for (qsizetype k = 0; k < logs.count(); ++k) {
+        const auto m = logs.decode(k);
+        ASSERT_TRUE(m.has_value());
+        if (m->abbrev() == u"EstimatedState" && m->header.src == 0x1f) {
+            heardState = true;
+            EXPECT_DOUBLE_EQ(m->number(u"depth"), 4.25);
+            EXPECT_FALSE(logs.sentByRecorder(k));
+        }
+        if (m->abbrev() == u"Abort") {
+            sentAbort = true;
+            EXPECT_EQ(m->header.src, 0x4001);
+            EXPECT_EQ(m->header.dst, 0x1f);
+            EXPECT_TRUE(logs.sentByRecorder(k));
+        }
+    }
+    EXPECT_TRUE(heardState) << "what the vehicle sent over DDS";
+    EXPECT_TRUE(sentAbort) << "what the console sent over DDS";
 }
