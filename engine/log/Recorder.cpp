@@ -112,8 +112,9 @@ void Recorder::run()
         {
             std::unique_lock lock(m_queueMutex);
             m_wake.wait_for(lock, std::chrono::milliseconds(m_config.flushMs), [this] { return m_stopping; });
+            // The queue takes the last batch's buffer (emptied, its capacity kept):
+            // record() seldom reallocates.
             batch.swap(m_queue);
-            m_queue.clear(); // keeps the capacity the swap brought
             lost = std::exchange(m_queueLost, 0);
             stopping = m_stopping;
         }
