@@ -266,6 +266,39 @@ QHash<quint16, QString> systemNames(const LogSet &logs)
     return names;
 }
 
+std::vector<std::pair<quint16, msg::Message>> planSpecifications(const LogSet &logs)
+{
+    std::vector<std::pair<quint16, msg::Message>> specifications;
+    if (logs.logs().empty())
+        return specifications;
+    const msg::Schema &schema = logs.logs().front()->schemas().defaultSchema();
+    const msg::MessageDef *spec = schema.byAbbrev(u"PlanSpecification");
+    const msg::MessageDef *db = schema.byAbbrev(u"PlanDB");
+    const msg::MessageDef *control = schema.byAbbrev(u"PlanControl");
+    if (!spec)
+        return specifications;
+    for (qsizetype k = 0; k < logs.count(); ++k) {
+        const LogFile &log = logs.logOf(k);
+        const qsizetype i = logs.indexInLog(k);
+        const quint16 id = log.messageId(i);
+        if (id != spec->id && !(db && id == db->id) && !(control && id == control->id))
+            continue;
+        const auto m = logs.decode(k);
+        if (!m || !m->def())
+            continue;
+        if (m->def() == spec) {
+            specifications.emplace_back(m->header.dst != 0xFFFF ? m->header.dst : m->header.src, *m);
+            continue;
+        }
+        // A request (type 0) goes to the vehicle; a reply comes from it.
+        const quint16 vehicle = m->integer(u"type") == 0 ? m->header.dst : m->header.src;
+        const int arg = m->def()->indexOf(u"arg");
+        if (const msg::Message *inner = arg >= 0 ? m->inlineMessage(arg) : nullptr; inner && inner->def() == spec)
+            specifications.emplace_back(vehicle, *inner);
+    }
+    return specifications;
+}
+
 std::vector<LogMarker> markersOf(const LogSet &logs)
 {
     std::vector<LogMarker> markers;

@@ -72,6 +72,11 @@ struct PlanRun
 };
 std::vector<PlanRun> planRuns(const LogSet &logs);
 
+// Every plan specification the log holds, whoever sent it (a console's
+// PlanDB SET or PlanControl START, a vehicle's PlanDB answer, a bare
+// PlanSpecification), with the vehicle it is for, in log order.
+std::vector<std::pair<quint16, msg::Message>> planSpecifications(const LogSet &logs);
+
 // One CSV file per message type in `folder` (<Abbrev>.csv): time (s since
 // 1970, UTC), system, entity, then a column per field (numbers as numbers,
 // enumerations by value, text quoted, nested messages as JSON). Returns the

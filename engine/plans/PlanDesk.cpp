@@ -127,9 +127,13 @@ std::expected<PlanDesk::Vehicle *, QString> PlanDesk::vehicle(const QString &sys
     const auto id = m_tree.systemId(system);
     if (!id)
         return std::unexpected(u"no system is called '%1'"_s.arg(system));
-    Vehicle &v = m_vehicles[*id];
+    return &vehicleFor(*id);
+}
+
+PlanDesk::Vehicle &PlanDesk::vehicleFor(quint16 to)
+{
+    Vehicle &v = m_vehicles[to];
     if (!v.client) {
-        const quint16 to = *id;
         v.client = std::make_unique<PlanClient>(m_schema, to, [this, to](const msg::Message &m) {
             if (auto sent = m_send(to, m); !sent)
                 note(to, u"%1 %2 not sent: %3"_s.arg(m.abbrev(), m.enumText(m.def()->indexOf(u"op")), sent.error()));
@@ -139,7 +143,7 @@ std::expected<PlanDesk::Vehicle *, QString> PlanDesk::vehicle(const QString &sys
         connect(v.client.get(), &PlanClient::planEnded, this,
                 [this, to](const QString &plan, bool ok, const QString &info) { ended(to, plan, ok, info); });
     }
-    return &v;
+    return v;
 }
 
 std::optional<mission::Plan> PlanDesk::plan(const QString &system, const QString &planId)
@@ -155,10 +159,19 @@ std::optional<mission::Plan> PlanDesk::plan(const QString &system, const QString
         return v->supervisor->plan();
     if (const auto copy = v->copies.find(planId); copy != v->copies.end())
         return copy->second;
+    if (m_quiet)
+        return std::nullopt;
     // Fetched once: an empty copy marks the question asked.
     v->copies[planId] = mission::Plan{};
     v->client->get(planId);
     return std::nullopt;
+}
+
+void PlanDesk::learnPlan(quint16 id, mission::Plan plan)
+{
+    const QString planId = plan.id;
+    vehicleFor(id).copies[planId] = std::move(plan);
+    emit changed(m_tree.systemName(id));
 }
 
 std::vector<PlanDesk::StoredPlan> PlanDesk::storedPlans(const QString &system) const

@@ -80,6 +80,9 @@ public:
     std::expected<void, QString> refresh(const QString &system);
     // A console that replays a log asks vehicles nothing (its commands are refused by the console).
     void setQuiet(bool quiet) { m_quiet = quiet; }
+    // What system `id` holds as `plan.id`, known otherwise than by asking it
+    // (a replayed log's PlanSpecification): the map draws it while it runs.
+    void learnPlan(quint16 id, mission::Plan plan);
     std::expected<void, QString> send(const QString &system, const QString &planId);
     std::expected<void, QString> remove(const QString &system, const QString &planId);
     std::expected<void, QString> start(const QString &system, const QString &planId);
@@ -114,6 +117,7 @@ private:
     };
 
     std::expected<Vehicle *, QString> vehicle(const QString &system);
+    Vehicle &vehicleFor(quint16 id); // made with its plan client on first use
     Vehicle *known(const QString &system);
     const Vehicle *known(const QString &system) const;
     std::expected<msg::Message, QString> specification(const QString &system, const QString &planId) const;

@@ -1,6 +1,8 @@
 #include "qmlmodels/ConsoleSession.h"
 
+#include "log/LogExport.h"
 #include "messages/MessageJson.h"
+#include "mission/ImcPlan.h"
 
 #include <QJsonObject>
 
@@ -57,6 +59,20 @@ ConsoleSession::ConsoleSession(std::shared_ptr<const msg::Schema> schema, const 
 }
 
 ConsoleSession::~ConsoleSession() = default;
+
+void ConsoleSession::setReplay(ReplayModel *replay)
+{
+    m_replay = replay;
+    replay->setTracks(&m_tracks);
+    m_planDesk.setQuiet(true);
+    // The plans the log shows being sent or held: the map draws the one running.
+    const auto &logs = replay->player().logs();
+    const QHash<quint16, QString> names = log::systemNames(logs);
+    for (const auto &[vehicle, specification] : log::planSpecifications(logs)) {
+        if (auto plan = mission::planFromSpecification(specification, names.value(vehicle, msg::systemLabel(vehicle))))
+            m_planDesk.learnPlan(vehicle, std::move(*plan));
+    }
+}
 
 QString ConsoleSession::send(const QString &system, const QVariantMap &json)
 {

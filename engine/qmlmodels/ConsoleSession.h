@@ -45,12 +45,7 @@ public:
     PlanDeskModel *plansModel() { return &m_plansModel; }
     ReplayModel *replay() const { return m_replay; }
     // Before QML sees the session: this console replays `replay` (kept by the caller).
-    void setReplay(ReplayModel *replay)
-    {
-        m_replay = replay;
-        replay->setTracks(&m_tracks);
-        m_planDesk.setQuiet(true);
-    }
+    void setReplay(ReplayModel *replay);
 
     // For components (a joystick, a command button): sends a message, given
     // as JSON ({"abbrev": "Abort", "fields": {...}}), to a system. Returns ""

@@ -203,12 +203,30 @@ void VariableTreeModel::sync()
 
 void VariableTreeModel::refreshAges()
 {
+    // What changed in the tree first: a system forgotten since the last frame
+    // (a replay going back in time) leaves no rows naming its nodes.
+    sync();
     const quint32 tick = m_ageTick++;
+    // Whether a node is still under a system the model shows (a forgotten
+    // system's nodes keep their counts here until their ids are given again).
+    const auto shown = [this](NodeId node) {
+        for (int depth = 0; depth < 64 && node != noNode; ++depth) {
+            const NodeId up = m_tree->parent(node);
+            if (up == m_tree->root())
+                return m_systemRows.contains(node);
+            node = up;
+        }
+        return false;
+    };
     for (size_t parent = 0; parent < m_knownChildren.size(); ++parent) {
         const int count = m_knownChildren[parent];
         // Rows no view read since the previous tick are not on screen.
         if (count == 0 || parent >= m_readAt.size() || m_readAt[parent] + 1 < tick)
             continue;
+        if (parent != static_cast<size_t>(m_tree->root()) && !shown(static_cast<NodeId>(parent))) {
+            m_knownChildren[parent] = 0;
+            continue;
+        }
         const QModelIndex p = indexOfNode(static_cast<NodeId>(parent));
         // Staleness greys every column of a row; only the age column's text changes.
         emit dataChanged(index(0, NameColumn, p), index(count - 1, UnitColumn, p), {StaleRole});

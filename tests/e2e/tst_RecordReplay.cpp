@@ -7,6 +7,7 @@
 
 #include "PlanRun.h"
 #include "SimProcess.h"
+#include "TrackFiles.h"
 
 #include <QDirIterator>
 #include <QJsonArray>
@@ -157,23 +158,11 @@ TEST(RecordReplay, AVehicleRunningAPlanIsRecordedAndTheReplayEndsInTheLiveConsol
     const qsizetype points = features[0].toObject().value(u"geometry"_s).toObject().value(u"coordinates"_s).toArray().size();
     EXPECT_GT(points, 100);
     // KML and GPX: well-formed XML in their namespaces, with the same points.
-    for (const auto &[file, ns, element] : {std::tuple{u"track.kml"_s, u"http://www.opengis.net/kml/2.2"_s, u"coordinates"_s},
-                                            std::tuple{u"track.gpx"_s, u"http://www.topografix.com/GPX/1/1"_s, u"trkpt"_s}}) {
-        QFile xmlFile(out.filePath(file));
-        ASSERT_TRUE(xmlFile.open(QIODevice::ReadOnly));
-        QXmlStreamReader xml(&xmlFile);
-        qsizetype found = 0;
-        QString rootNamespace;
-        while (!xml.atEnd()) {
-            if (xml.readNext() != QXmlStreamReader::StartElement)
-                continue;
-            if (rootNamespace.isEmpty())
-                rootNamespace = xml.namespaceUri().toString();
-            if (xml.name() == element)
-                found += element == u"coordinates" ? xml.readElementText().split(u' ').size() : 1;
-        }
-        EXPECT_FALSE(xml.hasError()) << file.toStdString() << ": " << xml.errorString().toStdString();
-        EXPECT_EQ(rootNamespace, ns);
-        EXPECT_EQ(found, points) << file.toStdString();
+    for (const auto &[file, ns] : {std::pair{u"track.kml"_s, u"http://www.opengis.net/kml/2.2"_s},
+                                   std::pair{u"track.gpx"_s, u"http://www.topografix.com/GPX/1/1"_s}}) {
+        const auto contents = readTrackFile(out.filePath(file));
+        EXPECT_TRUE(contents.error.isEmpty()) << file.toStdString() << ": " << contents.error.toStdString();
+        EXPECT_EQ(contents.rootNamespace, ns);
+        EXPECT_EQ(contents.points, points) << file.toStdString();
     }
 }

@@ -125,6 +125,10 @@ TestCase {
         verify(row, "a row for the plan")
         tapOn(row, row.width / 2, row.height / 2)
         tryCompare(replay, "position", run.begin)
+        // The executed plan is known from the log (the console's START carried it): the map draws it.
+        replay.seek(middle)
+        const path = session.plans.pathOf("lauv-simulator-1", "goto-and-wait")
+        compare(path.map(m => m.id), ["G1", "S2"])
 
         // The console's plot holds the log's whole depth series, and ends at the replay's time.
         const series = find(window.consoleLoader.item, "series")

@@ -5,6 +5,7 @@
 
 #include "Fixtures.h"
 #include "Schemas.h"
+#include "TrackFiles.h"
 #include "log/LogExport.h"
 #include "log/LogFile.h"
 #include "log/Recorder.h"
@@ -495,27 +496,14 @@ TEST(Log, ExportsOfTheDuneLogReadBackInTheirFormats)
     EXPECT_NEAR(coordinates[0].toArray()[1].toDouble(), 41.185, 0.01);
 
     // KML and GPX: XML in their namespaces with the same points.
-    for (const auto &[format, name, point] :
-         {std::tuple{log::TrackFormat::Kml, QStringLiteral("t.kml"), QStringLiteral("coordinates")},
-          std::tuple{log::TrackFormat::Gpx, QStringLiteral("t.gpx"), QStringLiteral("trkpt")}}) {
+    for (const auto &[format, name, namespaceUri] :
+         {std::tuple{log::TrackFormat::Kml, QStringLiteral("t.kml"), QStringLiteral("http://www.opengis.net/kml/2.2")},
+          std::tuple{log::TrackFormat::Gpx, QStringLiteral("t.gpx"), QStringLiteral("http://www.topografix.com/GPX/1/1")}}) {
         ASSERT_TRUE(log::exportTracks(logs, format, dir.filePath(name)).has_value());
-        QFile file(dir.filePath(name));
-        ASSERT_TRUE(file.open(QIODevice::ReadOnly));
-        QXmlStreamReader xml(&file);
-        int points = 0;
-        QString rootNamespace;
-        while (!xml.atEnd()) {
-            if (xml.readNext() != QXmlStreamReader::StartElement)
-                continue;
-            if (rootNamespace.isEmpty())
-                rootNamespace = xml.namespaceUri().toString();
-            if (xml.name() == point)
-                points += format == log::TrackFormat::Kml ? int(xml.readElementText().split(u' ').size()) : 1;
-        }
-        EXPECT_FALSE(xml.hasError()) << qPrintable(xml.errorString());
-        EXPECT_EQ(rootNamespace, format == log::TrackFormat::Kml ? QStringLiteral("http://www.opengis.net/kml/2.2")
-                                                                  : QStringLiteral("http://www.topografix.com/GPX/1/1"));
-        EXPECT_EQ(points, 2755) << qPrintable(name);
+        const auto contents = test::readTrackFile(dir.filePath(name));
+        EXPECT_TRUE(contents.error.isEmpty()) << qPrintable(contents.error);
+        EXPECT_EQ(contents.rootNamespace, namespaceUri);
+        EXPECT_EQ(contents.points, 2755) << qPrintable(name);
     }
 }
 
@@ -581,6 +569,16 @@ TEST(Log, TheTimelineMarksTheDuneLogsPlanItsLogBookAndNothingElse)
     EXPECT_EQ(logBook, 16);
     EXPECT_TRUE(std::is_sorted(markers.begin(), markers.end(),
                                [](const auto &a, const auto &b) { return a.time < b.time; }));
+
+    // The plan the console sent (PlanControl START with the PlanSpecification, and the PlanDB
+    // one), for the vehicle, with its two maneuvers.
+    const auto specifications = log::planSpecifications(logs);
+    ASSERT_FALSE(specifications.empty());
+    for (const auto &[vehicle, specification] : specifications) {
+        EXPECT_EQ(vehicle, 0x00D1);
+        EXPECT_EQ(specification.text(u"plan_id"), QStringLiteral("goto-and-wait"));
+        EXPECT_EQ(specification.messages(specification.def()->indexOf(u"maneuvers")).size(), 2u);
+    }
 }
 
 TEST(Log, DdsTrafficIsRecordedAsTheImcPacketsItsEnvelopesCarry)

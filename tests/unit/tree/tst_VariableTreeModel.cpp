@@ -350,3 +350,27 @@ TEST_F(Fixture, ManyForgottenSystemsGoInRunsOfRows)
     EXPECT_EQ(names, expected);
     EXPECT_EQ(model.indexOfPath(expected.last() + QStringLiteral("/EstimatedState")).parent().row(), int(expected.size()) - 1);
 }
+
+// A replay going back in time forgets every system, and the age timer may
+// tick before the next frame's sync: it must not reach the forgotten nodes
+// (it did: a crash in parent() on a node id that no longer existed).
+TEST_F(Fixture, AgesRefreshedRightAfterASystemIsForgottenSeeOnlyWhatIsThere)
+{
+    tree.ingest(state(0x1f, 2.5));
+    tree.ingest(heartbeat(0x1f));
+    model.sync();
+    const QModelIndex depth = model.indexOfPath(QStringLiteral("0x001f/EstimatedState/depth"));
+    ASSERT_TRUE(depth.isValid());
+    model.data(depth, VariableTreeModel::AgeRole); // a view shows it
+    QSignalSpy changed(&model, &QAbstractItemModel::dataChanged);
+    ASSERT_TRUE(tree.forget(0x1f));
+    tree.ingest(state(0x20, 1.0)); // node ids of the forgotten may be given again
+    model.refreshAges();
+    for (const auto &signal : changed) {
+        const QModelIndex from = signal[0].value<QModelIndex>();
+        EXPECT_TRUE(from.isValid());
+        EXPECT_NE(model.data(from.parent()).toString(), QStringLiteral("0x001f"));
+    }
+    EXPECT_EQ(model.rowCount(), 1);
+    EXPECT_EQ(model.data(model.index(0, 0)).toString(), QStringLiteral("0x0020"));
+}
