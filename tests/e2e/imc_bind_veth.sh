@@ -39,7 +39,7 @@ in_vehicle ip addr add 10.77.0.2/24 dev nq-vehicle && in_vehicle ip link set nq-
 
 in_vehicle "$sim" --id 0x1f --name lauv-veth --host 10.77.0.2 --port 6002 --console 10.77.0.1:6001 >"$work/sim.log" 2>&1 &
 pids+=($!)
-"$neptus" --console "$layout" --imc-bind nq-console --imc-peer 10.77.0.2:6002 --dds-domain -1 \
+"$neptus" --console "$layout" --imc-bind nq-console --imc-peer 10.77.0.2:6002 --dds-domain -1 --no-record \
   --quit-after 6000 --dump-tree "$work/tree.txt" >"$work/console.log" 2>&1
 status=$?
 [ "$status" = 0 ] || fail "the console exited with $status"

@@ -5,6 +5,7 @@
 #include "Schemas.h"
 
 #include <QHostAddress>
+#include <QDirIterator>
 #include <QProcess>
 #include <QTemporaryDir>
 #include <QTest>
@@ -26,7 +27,8 @@ TEST(ConsoleProcess, APacketOfATypeItsDefinitionsLackNeitherKillsItNorIsHidden)
                    QStringLiteral("--defs"), neptus::test::sourcePath(QStringLiteral("tests/data/tiny-imc.xml")),
                    QStringLiteral("--imc-port"), QString::number(port), QStringLiteral("--imc-discovery"),
                    QStringLiteral("off"), QStringLiteral("--dds-domain"), QStringLiteral("-1"),
-                   QStringLiteral("--quit-after"), QStringLiteral("6000"), QStringLiteral("--dump-tree"), dump});
+                   QStringLiteral("--quit-after"), QStringLiteral("6000"), QStringLiteral("--dump-tree"), dump,
+                   QStringLiteral("--log-dir"), dir.filePath(QStringLiteral("logs"))});
     ASSERT_TRUE(console.waitForStarted(5000));
     // Listening once the port is taken.
     ASSERT_TRUE(QTest::qWaitFor([&] {
@@ -52,4 +54,12 @@ TEST(ConsoleProcess, APacketOfATypeItsDefinitionsLackNeitherKillsItNorIsHidden)
     const QString text = QString::fromUtf8(tree.readAll());
     EXPECT_TRUE(text.contains(QStringLiteral("0x00d1/Unknown(281)\tunknown type 281, 5 bytes · 3 received")))
         << text.toStdString();
+
+    // It recorded them, exactly as they came (and not the garbage), where it was told.
+    EXPECT_TRUE(output.contains("neptus: recording in " + dir.filePath(QStringLiteral("logs")).toUtf8())) << output.constData();
+    QDirIterator parts(dir.filePath(QStringLiteral("logs")), {QStringLiteral("Data.lsf")}, QDir::Files, QDirIterator::Subdirectories);
+    ASSERT_TRUE(parts.hasNext());
+    QFile data(parts.next());
+    ASSERT_TRUE(data.open(QIODevice::ReadOnly));
+    EXPECT_EQ(data.readAll().count(servo), 3) << "the three packets, byte for byte";
 }

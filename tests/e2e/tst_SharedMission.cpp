@@ -33,7 +33,7 @@ TEST(SharedMission, OneConsoleEditsASharedMissionTheOtherShowsTheChange)
     a.setProcessChannelMode(QProcess::MergedChannels);
     a.start(test::programPath(u"neptus"_s),
             {u"--mission"_s, file, u"--share"_s, u"--console-name"_s, u"console-a"_s, u"--dds-domain"_s, u"21"_s,
-             u"--imc-discovery"_s, u"off"_s, u"--imc-port"_s, u"0"_s, u"--screenshot"_s, shot, u"--screenshot-delay"_s, u"14000"_s});
+             u"--imc-discovery"_s, u"off"_s, u"--imc-port"_s, u"0"_s, u"--no-record"_s, u"--screenshot"_s, shot, u"--screenshot-delay"_s, u"14000"_s});
     ASSERT_TRUE(a.waitForStarted(5000));
     const auto output = [&] { return a.readAll().toStdString(); };
 

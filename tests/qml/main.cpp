@@ -227,7 +227,7 @@ public:
         QProcess console;
         console.setProcessChannelMode(QProcess::MergedChannels);
         console.start(test::programPath(u"neptus"_s), QStringList{u"--imc-port"_s, QString::number(port),
-                      u"--imc-discovery"_s, u"off"_s, u"--dds-domain"_s, u"-1"_s} + arguments);
+                      u"--imc-discovery"_s, u"off"_s, u"--dds-domain"_s, u"-1"_s, u"--no-record"_s} + arguments);
         const bool finished = console.waitForFinished(60000);
         if (!finished)
             console.kill();
