@@ -107,6 +107,25 @@ QVariantMap Tracks::ned(const QString &system) const
     return {{QStringLiteral("north"), d.x()}, {QStringLiteral("east"), d.y()}, {QStringLiteral("down"), d.z()}};
 }
 
+QList<QPointF> Tracks::nedPath(const QString &system, int maxPoints) const
+{
+    QList<QPointF> points;
+    const Track *t = track(system);
+    if (!t || !m_hasHome || t->fixes.empty() || maxPoints < 2)
+        return points;
+    const Geodetic home{m_homeLat, m_homeLon, m_homeHeight};
+    const auto add = [&](const Fix &f) {
+        const Eigen::Vector3d d = toNed({f.lat, f.lon, f.height}, home);
+        points.append(QPointF(d.y(), d.x()));
+    };
+    const std::size_t n = t->fixes.size();
+    const std::size_t stride = std::max<std::size_t>(1, (n + std::size_t(maxPoints) - 2) / std::size_t(maxPoints - 1));
+    for (std::size_t i = 0; i < n; i += stride)
+        add(t->fixes[i]);
+    add(t->latest);
+    return points;
+}
+
 int Tracks::count(const QString &system) const
 {
     const Track *t = track(system);

@@ -4,6 +4,7 @@
 
 #include <QAbstractListModel>
 #include <QHash>
+#include <QPointF>
 #include <QPointer>
 #include <QSet>
 #include <QTimer>
@@ -117,6 +118,9 @@ public:
     // The last position of a system in metres from home: {north, east, down};
     // empty when unknown.
     Q_INVOKABLE QVariantMap ned(const QString &system) const;
+    // A system's track in metres from home as (east, north) points, oldest
+    // first, at most `maxPoints` (evenly thinned; the latest always last); empty when unknown.
+    Q_INVOKABLE QList<QPointF> nedPath(const QString &system, int maxPoints = 2000) const;
     Q_INVOKABLE void clear(const QString &system);
 
     double minimumSpacing() const { return m_minimumSpacing; }

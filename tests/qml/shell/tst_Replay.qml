@@ -17,6 +17,7 @@ TestCase {
 
     Component { id: mainComponent; Main { visible: false } }
     Component { id: treeComponent; VariableTreeView { width: 600; height: 500 } }
+    Component { id: trackPlotComponent; TrackPlot { width: 400; height: 400 } }
 
     function find(item, name) {
         if (!item)
@@ -166,5 +167,17 @@ TestCase {
         compare(replay.exportResult, exports + "/dune-log.geojson")
         const text = Fixtures.readFile(replay.exportResult)
         compare(JSON.parse(text).features[0].geometry.coordinates.length, 2755)
+
+        // The XY track plot: the vehicle's track up to the replay's moment, in metres from home.
+        replay.seek(replay.end)
+        const xy = createTemporaryObject(trackPlotComponent, window.contentItem, { z: 100 })
+        tryVerify(() => (xy.paths["lauv-simulator-1"] || []).length > 100, 3000)
+        const track = xy.paths["lauv-simulator-1"]
+        const reach = Math.max(...track.map(p => Math.hypot(p.x, p.y)))
+        verify(reach > 80 && reach < 300, "the Goto went about 120 m: " + reach)
+        tryVerify(() => xy.gridStep > 0, 2000)
+        const atEnd = track.length
+        replay.seek(replay.begin + 30)
+        tryVerify(() => xy.paths["lauv-simulator-1"].length < atEnd, 3000, "back in time, a shorter track")
     }
 }
