@@ -1,5 +1,7 @@
 #include "qmlmodels/ReplayModel.h"
 
+#include "session/ConsoleReplay.h"
+
 #include <QDir>
 #include <QFileInfo>
 
@@ -23,11 +25,27 @@ ReplayModel::ReplayModel(std::shared_ptr<const log::LogSet> logs, log::ReplayTar
     m_exportFolder = QFileInfo(logs->logs().front()->folder()).isWritable()
         ? beside
         : QDir::home().filePath(QStringLiteral("neptus-exports/") + names.value(0));
-    static const char *const kinds[] = {"note", "alarm", "planStart", "planEnd"};
-    for (const log::LogMarker &marker : log::markersOf(*logs))
-        m_markers.append(QVariantMap{{QStringLiteral("time"), marker.time},
-                                     {QStringLiteral("kind"), QString::fromLatin1(kinds[marker.kind])},
-                                     {QStringLiteral("text"), marker.text}});
+    addMarkers(log::markersOf(*logs));
+    // The console's own alarms: a console fed the whole log, off the GUI thread.
+    m_exports.start([self = this, logs, stop = m_stopExport] {
+        ManualClock clock;
+        const log::LogFile &first = *logs->logs().front();
+        session::Console console(std::shared_ptr<const msg::Schema>(first.sharedSchemas(), &first.schemas().defaultSchema()),
+                                 &clock);
+        session::ConsoleReplay target(console, clock);
+        std::vector<log::LogMarker> found;
+        console.alarmGraph().setAnnouncer([&](const alarms::AlarmGraph::Alarm &alarm) {
+            found.push_back({clock.now().toMSecsSinceEpoch() / 1000.0, log::LogMarker::Alarm,
+                             QStringLiteral("%1: %2").arg(alarm.origin, alarm.message)});
+        });
+        log::Player player(logs, &target);
+        for (double t = logs->begin(); t < logs->end() && !stop->load(); t += 1.0) {
+            player.advanceTo(t + 1.0);
+            console.check(); // silence and entity health, as the console's timer does
+        }
+        if (!found.empty() && !stop->load())
+            QMetaObject::invokeMethod(self, [self, found] { self->addMarkers(found); }, Qt::QueuedConnection);
+    });
     for (const log::PlanRun &run : log::planRuns(*logs))
         m_plans.append(QVariantMap{{QStringLiteral("system"), run.systemName}, {QStringLiteral("plan"), run.plan},
                                    {QStringLiteral("outcome"), run.outcome}, {QStringLiteral("begin"), run.begin},
@@ -40,6 +58,19 @@ ReplayModel::ReplayModel(std::shared_ptr<const log::LogSet> logs, log::ReplayTar
         m_problems.append(why);
         emit problemsChanged();
     });
+}
+
+void ReplayModel::addMarkers(const std::vector<log::LogMarker> &markers)
+{
+    static const char *const kinds[] = {"note", "alarm", "planStart", "planEnd"};
+    for (const log::LogMarker &marker : markers)
+        m_markers.append(QVariantMap{{QStringLiteral("time"), marker.time},
+                                     {QStringLiteral("kind"), QString::fromLatin1(kinds[marker.kind])},
+                                     {QStringLiteral("text"), marker.text}});
+    std::stable_sort(m_markers.begin(), m_markers.end(), [](const QVariant &a, const QVariant &b) {
+        return a.toMap().value(QStringLiteral("time")).toDouble() < b.toMap().value(QStringLiteral("time")).toDouble();
+    });
+    emit markersChanged();
 }
 
 void ReplayModel::setTracks(geo::Tracks *tracks)

@@ -30,7 +30,10 @@ class ReplayModel : public QObject
     // 0.1 to 100, or 0: as fast as it goes.
     Q_PROPERTY(double speed READ speed WRITE setSpeed NOTIFY speedChanged)
     // [{time, kind ("note", "alarm", "planStart", "planEnd"), text}], by time.
-    Q_PROPERTY(QVariantList markers READ markers CONSTANT)
+    // Alarms the console itself raises on the log (Error and Failure: its health
+    // monitor on the vehicles' entities, links and silence) join them once a
+    // pass over the whole log on a worker thread has found them.
+    Q_PROPERTY(QVariantList markers READ markers NOTIFY markersChanged)
     // Damage found in the logs, and packets that did not decode: "" when none.
     Q_PROPERTY(QString problems READ problems NOTIFY problemsChanged)
     // The plans the vehicles ran: [{system, plan, outcome, begin, end, duration, distance, maxDepth}].
@@ -82,6 +85,7 @@ signals:
     void speedChanged();
     void problemsChanged();
     void exportChanged();
+    void markersChanged();
 
 private:
     neptus::log::Player m_player;
@@ -106,4 +110,5 @@ private:
     };
     std::optional<std::vector<Trail>> m_trails;
     void redrawTrails(double t);
+    void addMarkers(const std::vector<neptus::log::LogMarker> &markers);
 };

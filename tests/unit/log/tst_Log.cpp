@@ -11,9 +11,11 @@
 #include "log/Recorder.h"
 #include "log/Replay.h"
 #include "messages/Codec.h"
+#include "qmlmodels/ReplayModel.h"
 #include "session/ConsoleReplay.h"
 
 #include <QCoreApplication>
+#include <cmath>
 #include <QDateTime>
 #include <QDir>
 #include <QDirIterator>
@@ -624,4 +626,47 @@ TEST(Log, DdsTrafficIsRecordedAsTheImcPacketsItsEnvelopesCarry)
     }
     EXPECT_TRUE(heardState) << "what the vehicle sent over DDS";
     EXPECT_TRUE(sentAbort) << "what the console sent over DDS";
+}
+
+TEST(Log, TheTimelineMarksTheAlarmsTheConsoleItselfRaisesOnTheLog)
+{
+    // A named vehicle reports for 10 s, falls silent for 30 s, then is heard again: the console's
+    // health monitor calls that communications lost, an Error no message in the log carries.
+    const auto schema = test::shippedSchema();
+    const msg::Codec codec(schema);
+    QByteArray data;
+    msg::Message announce(schema->byAbbrev(u"Announce"));
+    announce.setBytes(announce.def()->indexOf(u"sys_name"), "auv-1");
+    msg::Message state(schema->byAbbrev(u"EstimatedState"));
+    const double start = 1.7e9;
+    for (double t = 0; t < 50; t += 0.1) {
+        if (t >= 10 && t < 40)
+            continue;
+        msg::Message &m = std::fmod(t, 1.0) < 0.05 ? announce : state;
+        m.header.src = 0x1f;
+        m.header.timestamp = start + t;
+        data += *codec.encode(m);
+    }
+    const auto logs = std::make_shared<const log::LogSet>(
+        std::vector{log::LogFile::fromData(data, std::make_shared<msg::SchemaSet>(schema))});
+    ManualClock clock;
+    session::Console console(schema, &clock);
+    session::ConsoleReplay target(console, clock);
+    ReplayModel replay(logs, &target);
+    const auto alarms = [&] {
+        QVariantList found;
+        for (const QVariant &m : replay.markers())
+            if (m.toMap().value(QStringLiteral("kind")).toString() == u"alarm")
+                found.append(m);
+        return found;
+    };
+    ASSERT_TRUE(QTest::qWaitFor([&] { return !alarms().isEmpty(); }, 10000)) << "no alarm marker";
+    const QVariantMap first = alarms().front().toMap();
+    const double at = first.value(QStringLiteral("time")).toDouble() - start;
+    EXPECT_GT(at, 12.0) << qPrintable(first.value(QStringLiteral("text")).toString());
+    EXPECT_LT(at, 40.0);
+    EXPECT_TRUE(first.value(QStringLiteral("text")).toString().contains(QStringLiteral("auv-1")))
+        << qPrintable(first.value(QStringLiteral("text")).toString());
+    EXPECT_TRUE(first.value(QStringLiteral("text")).toString().contains(QStringLiteral("communications lost")))
+        << qPrintable(first.value(QStringLiteral("text")).toString());
 }
