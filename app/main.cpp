@@ -5,7 +5,6 @@
 #include "ComponentPalette.h"
 #include "ConsoleCatalog.h"
 #include "JsWatchdog.h"
-#include "log/LogExport.h"
 #include "log/Recorder.h"
 #include "qmlmodels/ConsoleSession.h"
 #include "SelfTest.h"
@@ -134,14 +133,13 @@ int main(int argc, char *argv[])
         session.setReplay(replay.get());
         // The console follows the system the log is most about, unless told (--system).
         if (mainSystem.isEmpty()) {
-            const neptus::log::LogSummary summary = neptus::log::summarize(*replayLogs);
-            qint64 most = 0;
-            for (const auto &system : summary.systems) {
-                if (system.packets > most && system.id != replayLogs->logs().front()->recorder()) {
-                    most = system.packets;
-                    mainSystem = system.name;
-                }
-            }
+            QHash<quint16, qint64> packets;
+            for (qsizetype k = 0; k < replayLogs->count(); ++k)
+                ++packets[replayLogs->logOf(k).source(replayLogs->indexInLog(k))];
+            packets.remove(replayLogs->logs().front()->recorder());
+            const auto most = std::max_element(packets.cbegin(), packets.cend());
+            if (most != packets.cend())
+                mainSystem = replayLogs->systemName(most.key());
         }
         std::printf("neptus: replaying %s (%lld messages, %.1f s)\n", qPrintable(replay->name()),
                     static_cast<long long>(replayLogs->count()), replayLogs->end() - replayLogs->begin());

@@ -22,8 +22,6 @@ namespace neptus::log {
 
 namespace {
 
-constexpr quint16 announceId = 151;
-
 // Calls `progress` about a hundred times over `count` steps.
 class Ticker
 {
@@ -47,11 +45,6 @@ private:
     const Progress &m_progress;
     qsizetype m_every, m_count;
 };
-
-QString label(const QHash<quint16, QString> &names, quint16 id)
-{
-    return names.value(id, msg::systemLabel(id));
-}
 
 QString isoTime(double t)
 {
@@ -126,12 +119,11 @@ std::map<quint16, std::vector<TrackPoint>> tracks(const LogSet &logs)
     return *tracksOf(logs, {});
 }
 
-std::vector<PlanRun> planRuns(const LogSet &logs)
+std::vector<PlanRun> planRuns(const LogSet &logs, const std::map<quint16, std::vector<TrackPoint>> &all)
 {
     std::vector<PlanRun> runs;
     if (logs.logs().empty())
         return runs;
-    const QHash<quint16, QString> names = systemNames(logs);
     const msg::MessageDef *stateDef = logs.logs().front()->schemas().defaultSchema().byAbbrev(u"PlanControlState");
     if (!stateDef)
         return runs;
@@ -156,14 +148,13 @@ std::vector<PlanRun> planRuns(const LogSet &logs)
             open.remove(system);
         }
         if (executing && !open.contains(system)) {
-            runs.push_back({system, label(names, system), plan, {}, logs.time(k), logs.time(k), 0, 0});
+            runs.push_back({system, logs.systemName(system), plan, {}, logs.time(k), logs.time(k), 0, 0});
             open.insert(system, runs.size() - 1);
         } else if (executing) {
             runs[open.value(system)].end = logs.time(k);
         }
     }
     // What the tracks say of each run.
-    const auto all = tracks(logs);
     for (PlanRun &run : runs) {
         const auto track = all.find(run.system);
         if (track == all.end())
@@ -191,8 +182,8 @@ std::expected<std::vector<std::pair<double, double>>, QString> fieldSeries(const
         return std::unexpected(QStringLiteral("'%1' is not system/Message/field").arg(path));
     if (logs.logs().empty())
         return std::unexpected(QStringLiteral("no logs"));
-    const QHash<quint16, QString> names = systemNames(logs);
     std::optional<quint16> system;
+    const QHash<quint16, QString> &names = logs.systemNames();
     for (auto it = names.cbegin(); it != names.cend(); ++it) {
         if (it.value() == parts[0])
             system = it.key();
@@ -252,20 +243,6 @@ std::expected<std::vector<std::pair<double, double>>, QString> fieldSeries(const
     return points;
 }
 
-QHash<quint16, QString> systemNames(const LogSet &logs)
-{
-    QHash<quint16, QString> names;
-    for (qsizetype k = 0; k < logs.count(); ++k) {
-        const LogFile &log = logs.logOf(k);
-        const qsizetype i = logs.indexInLog(k);
-        if (log.messageId(i) != announceId || names.contains(log.source(i)))
-            continue;
-        if (const auto m = logs.decode(k); m && m->def() && m->def()->abbrev == u"Announce")
-            names.insert(m->header.src, m->text(u"sys_name"));
-    }
-    return names;
-}
-
 std::vector<std::pair<quint16, msg::Message>> planSpecifications(const LogSet &logs)
 {
     std::vector<std::pair<quint16, msg::Message>> specifications;
@@ -311,7 +288,6 @@ std::vector<LogMarker> markersOf(const LogSet &logs)
     };
     const quint16 logBook = idOf(u"LogBookEntry"), entityState = idOf(u"EntityState"),
                   planState = idOf(u"PlanControlState"), planControl = idOf(u"PlanControl");
-    const QHash<quint16, QString> names = systemNames(logs);
     QHash<quint32, qint64> entityLevels; // (system, entity) → last state
     QHash<quint16, std::pair<QString, double>> executing; // system → the plan it runs, since when
     QHash<quint16, QString> finished; // a plan said over while its state still says EXECUTING
@@ -324,7 +300,7 @@ std::vector<LogMarker> markersOf(const LogSet &logs)
         const auto m = logs.decode(k);
         if (!m || !m->def())
             continue;
-        const QString who = label(names, m->header.src);
+        const QString who = logs.systemName(m->header.src);
         const double t = logs.time(k);
         if (id == logBook) {
             const qint64 type = m->integer(u"type"); // INFO, WARNING, ERROR, CRITICAL, DEBUG
@@ -385,7 +361,6 @@ LogSummary summarize(const LogSet &logs)
     summary.begin = logs.begin();
     summary.end = logs.end();
     summary.packets = logs.count();
-    const QHash<quint16, QString> names = systemNames(logs);
     std::map<quint16, qint64> bySystem;
     QHash<QString, qint64> byType;
     for (qsizetype k = 0; k < logs.count(); ++k) {
@@ -396,7 +371,7 @@ LogSummary summarize(const LogSet &logs)
         ++byType[def ? def->abbrev : QStringLiteral("unknown id %1").arg(log.messageId(i))];
     }
     for (const auto &[id, count] : bySystem)
-        summary.systems.append({id, label(names, id), count});
+        summary.systems.append({id, logs.systemName(id), count});
     for (auto it = byType.cbegin(); it != byType.cend(); ++it)
         summary.types.append({it.key(), it.value()});
     std::sort(summary.types.begin(), summary.types.end(),
@@ -412,7 +387,6 @@ std::expected<QStringList, QString> exportCsv(const LogSet &logs, const QString 
 {
     if (!QDir().mkpath(folder))
         return std::unexpected(QStringLiteral("%1: cannot make the folder").arg(folder));
-    const QHash<quint16, QString> names = systemNames(logs);
     struct Out
     {
         std::unique_ptr<QSaveFile> file;
@@ -439,7 +413,7 @@ std::expected<QStringList, QString> exportCsv(const LogSet &logs, const QString 
                                   : QStringLiteral("%1 (%2)").arg(m->field(i).abbrev, m->field(i).unit));
             out.buffer = header.join(u',').toUtf8() + '\n';
         }
-        QString line = QString::number(m->header.timestamp, 'f', 6) + u',' + csvText(label(names, m->header.src)) + u','
+        QString line = QString::number(m->header.timestamp, 'f', 6) + u',' + csvText(logs.systemName(m->header.src)) + u','
                        + QString::number(m->header.srcEnt);
         for (int i = 0; i < m->fieldCount(); ++i)
             line += u',' + csvValue(*m, i);
@@ -474,7 +448,6 @@ std::optional<TrackFormat> trackFormat(const QString &name)
 std::expected<void, QString> exportTracks(const LogSet &logs, TrackFormat format, const QString &file,
                                           const Progress &progress)
 {
-    const QHash<quint16, QString> names = systemNames(logs);
     auto positions = tracksOf(logs, progress);
     if (!positions)
         return std::unexpected(positions.error());
@@ -497,7 +470,7 @@ std::expected<void, QString> exportTracks(const LogSet &logs, TrackFormat format
                 {QStringLiteral("type"), QStringLiteral("Feature")},
                 {QStringLiteral("geometry"), QJsonObject{{QStringLiteral("type"), QStringLiteral("LineString")},
                                                          {QStringLiteral("coordinates"), coordinates}}},
-                {QStringLiteral("properties"), QJsonObject{{QStringLiteral("system"), label(names, id)},
+                {QStringLiteral("properties"), QJsonObject{{QStringLiteral("system"), logs.systemName(id)},
                                                            {QStringLiteral("imc_id"), int(id)},
                                                            {QStringLiteral("times"), times}}},
             });
@@ -517,7 +490,7 @@ std::expected<void, QString> exportTracks(const LogSet &logs, TrackFormat format
             xml.writeTextElement(QStringLiteral("name"), title);
             for (const auto &[id, points] : *positions) {
                 xml.writeStartElement(QStringLiteral("Placemark"));
-                xml.writeTextElement(QStringLiteral("name"), label(names, id));
+                xml.writeTextElement(QStringLiteral("name"), logs.systemName(id));
                 xml.writeStartElement(QStringLiteral("TimeSpan"));
                 xml.writeTextElement(QStringLiteral("begin"), isoTime(points.front().time));
                 xml.writeTextElement(QStringLiteral("end"), isoTime(points.back().time));
@@ -545,7 +518,7 @@ std::expected<void, QString> exportTracks(const LogSet &logs, TrackFormat format
             xml.writeEndElement();
             for (const auto &[id, points] : *positions) {
                 xml.writeStartElement(QStringLiteral("trk"));
-                xml.writeTextElement(QStringLiteral("name"), label(names, id));
+                xml.writeTextElement(QStringLiteral("name"), logs.systemName(id));
                 xml.writeStartElement(QStringLiteral("trkseg"));
                 for (const TrackPoint &p : points) {
                     xml.writeStartElement(QStringLiteral("trkpt"));

@@ -32,9 +32,6 @@ struct LogSummary
 };
 LogSummary summarize(const LogSet &logs);
 
-// The names systems announce in the logs (Announce sys_name), by id.
-QHash<quint16, QString> systemNames(const LogSet &logs);
-
 // What a review's timeline marks: the vehicles' log-book entries (errors
 // and critical ones as alarms), entities going to fault, error or failure,
 // and plans starting and ending (PlanControlState), in time order.
@@ -70,7 +67,7 @@ struct PlanRun
     double distance = 0;               // metres along the track
     double maxDepth = 0;
 };
-std::vector<PlanRun> planRuns(const LogSet &logs);
+std::vector<PlanRun> planRuns(const LogSet &logs, const std::map<quint16, std::vector<TrackPoint>> &tracks);
 
 // Every plan specification the log holds, whoever sent it (a console's
 // PlanDB SET or PlanControl START, a vehicle's PlanDB answer, a bare

@@ -24,8 +24,16 @@ LogSet::LogSet(std::vector<std::shared_ptr<const LogFile>> logs, double checkpoi
             return m_logs[a.log]->logTime(a.index) < m_logs[b.log]->logTime(b.index);
         });
     }
-    for (const Entry &e : m_entries)
-        m_times.push_back(m_logs[e.log]->logTime(e.index));
+    for (qsizetype k = 0; k < count(); ++k) {
+        const Entry &e = m_entries[size_t(k)];
+        const LogFile &log = *m_logs[e.log];
+        m_times.push_back(log.logTime(e.index));
+        // Only Announce (151, in every IMC revision) is decoded here.
+        if (log.messageId(e.index) == 151 && !m_names.contains(log.source(e.index))) {
+            if (const auto m = log.decode(e.index); m && m->def() && m->def()->abbrev == u"Announce")
+                m_names.insert(m->header.src, m->text(u"sys_name"));
+        }
+    }
 
     // Checkpoints: the last packet of each kind before each interval's start.
     if (m_entries.empty() || checkpointSeconds <= 0)
@@ -52,6 +60,11 @@ quint64 LogSet::keyOf(const LogFile &log, qsizetype index)
 {
     return (quint64(log.source(index)) << 40) | (quint64(log.sourceEntity(index)) << 32)
            | (quint64(log.destination(index)) << 16) | log.messageId(index);
+}
+
+QString LogSet::systemName(quint16 id) const
+{
+    return m_names.value(id, msg::systemLabel(id));
 }
 
 bool LogSet::sentByRecorder(qsizetype k) const

@@ -3,6 +3,7 @@
 #include "log/LogFile.h"
 
 #include <QElapsedTimer>
+#include <QHash>
 #include <QObject>
 #include <QTimer>
 
@@ -37,6 +38,10 @@ public:
     // The packets whose values make the state at `t`, in log order: the
     // last of each kind of message at or before t.
     std::vector<qsizetype> stateAt(double t) const;
+    // The names systems announce in the logs (their first Announce's sys_name), by id.
+    const QHash<quint16, QString> &systemNames() const { return m_names; }
+    // That name, else the id as the tree shows it ("0x001f").
+    QString systemName(quint16 id) const;
 
 private:
     static quint64 keyOf(const LogFile &log, qsizetype index);
@@ -55,6 +60,7 @@ private:
     std::vector<Entry> m_entries;
     std::vector<double> m_times;
     std::vector<Checkpoint> m_checkpoints;
+    QHash<quint16, QString> m_names;
 };
 
 // Where a replay's packets go: a console's tree, alarms and health, fed as

@@ -123,7 +123,6 @@ private:
     std::expected<msg::Message, QString> specification(const QString &system, const QString &planId) const;
     void note(quint16 id, const QString &line);
     void ask(Vehicle &v);
-    bool m_quiet = false;
     void replied(quint16 id, const PlanClient::Reply &reply);
     void ended(quint16 id, const QString &planId, bool ok, const QString &info);
 
@@ -141,6 +140,7 @@ private:
     QHash<QString, QStringList> m_planErrors; // plan id -> its errors (mission::checkPlan)
     std::map<QString, QByteArray> m_md5; // the mission's plans' MD5s, by plan id
     std::map<quint16, Vehicle> m_vehicles;
+    bool m_quiet = false; // setQuiet
     std::chrono::milliseconds m_timeout{3000};
 };
 

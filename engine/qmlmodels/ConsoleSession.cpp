@@ -67,9 +67,8 @@ void ConsoleSession::setReplay(ReplayModel *replay)
     m_planDesk.setQuiet(true);
     // The plans the log shows being sent or held: the map draws the one running.
     const auto &logs = replay->player().logs();
-    const QHash<quint16, QString> names = log::systemNames(logs);
     for (const auto &[vehicle, specification] : log::planSpecifications(logs)) {
-        if (auto plan = mission::planFromSpecification(specification, names.value(vehicle, msg::systemLabel(vehicle))))
+        if (auto plan = mission::planFromSpecification(specification, logs.systemName(vehicle)))
             m_planDesk.learnPlan(vehicle, std::move(*plan));
     }
 }

@@ -12,6 +12,7 @@ ReplayModel::ReplayModel(std::shared_ptr<const log::LogSet> logs, log::ReplayTar
     : QObject(parent)
     , m_player(logs, target)
     , m_logs(logs)
+    , m_logTracks(log::tracks(*logs))
 {
     QStringList names;
     for (const auto &file : logs->logs()) {
@@ -46,7 +47,7 @@ ReplayModel::ReplayModel(std::shared_ptr<const log::LogSet> logs, log::ReplayTar
         if (!found.empty() && !stop->load())
             QMetaObject::invokeMethod(self, [self, found] { self->addMarkers(found); }, Qt::QueuedConnection);
     });
-    for (const log::PlanRun &run : log::planRuns(*logs))
+    for (const log::PlanRun &run : log::planRuns(*logs, m_logTracks))
         m_plans.append(QVariantMap{{QStringLiteral("system"), run.systemName}, {QStringLiteral("plan"), run.plan},
                                    {QStringLiteral("outcome"), run.outcome}, {QStringLiteral("begin"), run.begin},
                                    {QStringLiteral("end"), run.end}, {QStringLiteral("duration"), run.end - run.begin},
@@ -84,13 +85,8 @@ void ReplayModel::redrawTrails(double t)
 {
     if (!m_tracks)
         return;
-    if (!m_trails) {
-        m_trails.emplace();
-        const QHash<quint16, QString> names = log::systemNames(m_player.logs());
-        for (auto &[id, points] : log::tracks(m_player.logs()))
-            m_trails->push_back({id, names.value(id, msg::systemLabel(id)), std::move(points)});
-    }
-    for (const auto &[id, system, points] : *m_trails) {
+    for (const auto &[id, points] : m_logTracks) {
+        const QString system = m_logs->systemName(id);
         m_tracks->clear(system);
         std::vector<geo::Tracks::Fix> fixes;
         for (const log::TrackPoint &p : points) {

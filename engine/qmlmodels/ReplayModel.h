@@ -96,19 +96,15 @@ private:
     QHash<QString, QList<QPointF>> m_series;
     neptus::geo::Tracks *m_tracks = nullptr;
     std::shared_ptr<const neptus::log::LogSet> m_logs;
+    // The logs' tracks (EstimatedState positions), read once: plan figures and trails after a jump.
+    std::map<quint16, std::vector<neptus::log::TrackPoint>> m_logTracks;
     QString m_exportFolder;
     double m_exportProgress = -1;
     QString m_exportResult;
     QThreadPool m_exports; // its own: the destructor waits for it alone
     std::shared_ptr<std::atomic_bool> m_stopExport = std::make_shared<std::atomic_bool>(false);
     // The logs' tracks by the name each system is shown by (made on the first jump).
-    struct Trail
-    {
-        quint16 id;
-        QString system;
-        std::vector<neptus::log::TrackPoint> points;
-    };
-    std::optional<std::vector<Trail>> m_trails;
+
     void redrawTrails(double t);
     void addMarkers(const std::vector<neptus::log::LogMarker> &markers);
 };

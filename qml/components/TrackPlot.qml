@@ -19,9 +19,13 @@ Rectangle {
     // The grid step drawn, in metres.
     property real gridStep: 0
 
+    // The trails' revision last drawn: nothing moved, nothing to do.
+    property var drawnRevision: -1
     function refresh() {
-        if (!tracks)
+        if (!tracks || (tracks.revision === drawnRevision && Theme.palette === drawnPalette))
             return
+        drawnRevision = tracks.revision
+        drawnPalette = Theme.palette
         const names = system !== "" ? [Session.resolve(system)] : tracks.systems
         const made = {}
         for (const name of names) {
@@ -48,9 +52,11 @@ Rectangle {
         triggeredOnStart: true
         onTriggered: plot.refresh()
     }
+    property int drawnPalette: -1
+    onSystemChanged: { drawnRevision = -1; refresh() }
     Connections {
-        target: Theme
-        function onPaletteChanged() { canvas.requestPaint() }
+        target: Session
+        function onMainSystemChanged() { plot.drawnRevision = -1; plot.refresh() }
     }
 
     Canvas {
