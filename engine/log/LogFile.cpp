@@ -140,12 +140,7 @@ std::expected<std::shared_ptr<const LogFile>, QString> LogFile::open(const QStri
         auto loaded = msg::Schema::load({file});
         if (!loaded)
             return std::unexpected(QStringLiteral("definitions of %1: %2").arg(system, loaded.error().toString()));
-        bool isId = false;
-        const uint id = system.toUInt(&isId, 0);
-        if (isId && id < 0xFFFF)
-            log->m_schemas->setFor(quint16(id), *loaded);
-        else
-            log->m_schemas->setFor(system, *loaded);
+        log->m_schemas->setFor(system, *loaded);
     }
 
     QFile file(data);

@@ -18,10 +18,15 @@ void SchemaSet::setFor(quint16 system, std::shared_ptr<const Schema> schema)
     m_byId.insert(system, std::make_shared<const Codec>(std::move(schema)));
 }
 
-void SchemaSet::setFor(const QString &systemName, std::shared_ptr<const Schema> schema)
+void SchemaSet::setFor(const QString &system, std::shared_ptr<const Schema> schema)
 {
+    bool isId = false;
+    if (const uint id = system.toUInt(&isId, 0); isId && id < 0xFFFF) {
+        setFor(quint16(id), std::move(schema));
+        return;
+    }
     QWriteLocker lock(&m_lock);
-    m_byName.insert(systemName, std::make_shared<const Codec>(std::move(schema)));
+    m_byName.insert(system, std::make_shared<const Codec>(std::move(schema)));
 }
 
 void SchemaSet::learnName(quint16 system, const QString &name)

@@ -29,7 +29,8 @@ public:
 
     // Definitions for one system, by IMC id or by the name it announces.
     void setFor(quint16 system, std::shared_ptr<const Schema> schema);
-    void setFor(const QString &systemName, std::shared_ptr<const Schema> schema);
+    // `system` is an IMC id as text ("0x00d1", "209") or the name it announces.
+    void setFor(const QString &system, std::shared_ptr<const Schema> schema);
     // A system announced its name (called by the transports on every Announce):
     // definitions given for that name now apply to its id.
     void learnName(quint16 system, const QString &name);

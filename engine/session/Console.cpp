@@ -49,12 +49,7 @@ std::expected<void, QString> Console::setDefinitionsFor(const QString &system, c
     auto schema = msg::Schema::load({file});
     if (!schema)
         return std::unexpected(QStringLiteral("definitions for %1: %2").arg(system, schema.error().toString()));
-    bool isId = false;
-    const uint id = system.toUInt(&isId, 0);
-    if (isId && id < 0xFFFF)
-        m_schemas->setFor(static_cast<quint16>(id), *schema);
-    else
-        m_schemas->setFor(system, *schema);
+    m_schemas->setFor(system, *schema);
     return {};
 }
 
