@@ -1,9 +1,11 @@
 // The mission afterwards: a console records a simulated vehicle running a
 // plan; the console program, started on that log (--replay), ends in the
 // same state as the console that lived it; the log's exports read back in
-// their formats (neptus-log, as a user runs it).
+// their formats (neptus-log, as a user runs it) and open in GDAL, the reader
+// QGIS uses; GPX validates against GPX 1.1's schema.
 #include "log/LogFile.h"
 #include "log/Recorder.h"
+#include "xml/XmlSchema.h"
 
 #include "PlanRun.h"
 #include "SimProcess.h"
@@ -60,7 +62,7 @@ QByteArray run(const QString &program, const QStringList &arguments, int *exitCo
 {
     QProcess process;
     process.setProcessChannelMode(QProcess::MergedChannels);
-    process.start(programPath(program), arguments);
+    process.start(program.startsWith(u'/') ? program : programPath(program), arguments);
     EXPECT_TRUE(process.waitForFinished(60000)) << program.toStdString();
     if (exitCode)
         *exitCode = process.exitCode();
@@ -165,4 +167,38 @@ TEST(RecordReplay, AVehicleRunningAPlanIsRecordedAndTheReplayEndsInTheLiveConsol
         EXPECT_EQ(contents.rootNamespace, ns);
         EXPECT_EQ(contents.points, points) << file.toStdString();
     }
+    const auto gpxSchema = xml::XmlSchema::load(sourcePath(u"tests/data/schemas/gpx-1.1.xsd"_s));
+    ASSERT_TRUE(gpxSchema.has_value()) << gpxSchema.error().toString().toStdString();
+    const auto gpx = xml::XmlDocument::load(out.filePath(u"track.gpx"_s));
+    ASSERT_TRUE(gpx.has_value());
+    for (const xml::XmlError &problem : gpxSchema->validate(*gpx))
+        ADD_FAILURE() << problem.toString().toStdString();
+    // ...and the schema bites: a latitude out of range, a point before its track.
+    for (const char *bad : {R"(<gpx xmlns="http://www.topografix.com/GPX/1/1" version="1.1" creator="t"><trk><trkseg><trkpt lat="91" lon="0"/></trkseg></trk></gpx>)",
+                            R"(<gpx xmlns="http://www.topografix.com/GPX/1/1" version="1.1" creator="t"><trkpt lat="1" lon="0"/></gpx>)"}) {
+        const auto document = xml::XmlDocument::parse(QByteArrayView(bad), u"bad.gpx"_s);
+        ASSERT_TRUE(document.has_value());
+        EXPECT_FALSE(gpxSchema->validate(*document).isEmpty()) << bad;
+    }
+
+    // Opened by GDAL (ogrinfo), a reader of each format: every point, every row.
+    auto ogr = [&](const QStringList &arguments) {
+        int exitCode = -1;
+        const QString output = QString::fromUtf8(run(u"/usr/bin/ogrinfo"_s, QStringList{u"-ro"_s} + arguments, &exitCode));
+        EXPECT_EQ(exitCode, 0) << output.toStdString();
+        return output;
+    };
+    auto number = [](const QString &output, const QString &pattern) {
+        const QRegularExpressionMatch match = QRegularExpression(pattern).match(output);
+        return match.hasMatch() ? match.captured(1).toLongLong() : -1;
+    };
+    for (const QString &file : {u"track.kml"_s, u"track.geojson"_s}) {
+        const QString output = ogr({u"-al"_s, u"-geom=SUMMARY"_s, out.filePath(file)});
+        EXPECT_EQ(number(output, u"Feature Count: (\\d+)"_s), 1) << file.toStdString() << output.toStdString();
+        EXPECT_EQ(number(output, u"LINESTRING[^:]*: (\\d+) points"_s), points) << file.toStdString() << output.toStdString();
+    }
+    const QString trackPoints = ogr({u"-so"_s, out.filePath(u"track.gpx"_s), u"track_points"_s});
+    EXPECT_EQ(number(trackPoints, u"Feature Count: (\\d+)"_s), points) << trackPoints.toStdString();
+    const QString rowsRead = ogr({u"-al"_s, u"-so"_s, out.filePath(u"csv/EstimatedState.csv"_s)});
+    EXPECT_EQ(number(rowsRead, u"Feature Count: (\\d+)"_s), states) << rowsRead.toStdString();
 }
