@@ -24,7 +24,8 @@ set(NEPTUS_LAYERS
   "neptus-model-reader models      neptus-models"
   "neptus-simulation   sim         neptus-messages neptus-geo neptus-plans"
   "neptus-logs         log         neptus-messages neptus-geo"
-  "neptus-session      session     neptus-scripting neptus-transport neptus-logs"
+  "neptus-database     database    neptus-core"
+  "neptus-session      session     neptus-scripting neptus-transport neptus-logs neptus-database"
   "neptus-engine       qmlmodels   neptus-session neptus-geo neptus-plans neptus-processor neptus-models"
   # Programs: the command-line tools link no QML.
   "neptus-msg          -           neptus-messages"
