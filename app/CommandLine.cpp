@@ -1,5 +1,6 @@
 #include "core/DataFiles.h"
 #include "CommandLine.h"
+#include "database/Database.h"
 
 #include <QNetworkInterface>
 
@@ -97,7 +98,12 @@ std::expected<CommandLine, QString> CommandLine::parse(const QStringList &argume
         QStringLiteral("Where the console records what it receives and sends (a folder per session; default: the settings' "
                        "log/folder, else logs/ in the user's data folder)."),
         QStringLiteral("folder"));
-    const QCommandLineOption noRecord(QStringLiteral("no-record"), QStringLiteral("Record nothing this time."));
+    const QCommandLineOption noRecord(QStringLiteral("no-record"),
+        QStringLiteral("Record nothing this time: no log, and no database unless --database names one."));
+    const QCommandLineOption database(QStringLiteral("database"),
+        QStringLiteral("The operation's database: postgresql://user@host/name (shared by many consoles) or a SQLite file "
+                       "(default: the settings' database/url, else operation.db beside the logs)."),
+        QStringLiteral("url")); 
     const QCommandLineOption replay(QStringLiteral("replay"),
         QStringLiteral("Review a log (a folder with Data.lsf[.gz] and IMC.xml[.gz]; repeat for several logs of one mission): "
                        "the console is fed from it, with a timeline, and sends nothing."),
@@ -105,7 +111,7 @@ std::expected<CommandLine, QString> CommandLine::parse(const QStringList &argume
     const QCommandLineOption replayFrom(QStringLiteral("replay-from"),
         QStringLiteral("With --replay: open the logs this many seconds after their start."), QStringLiteral("seconds"));
     const QCommandLineOption replayPlay(QStringLiteral("replay-play"), QStringLiteral("With --replay: start playing at once."));
-    parser.addOptions({logDir, noRecord, replay, replayFrom, replayPlay});
+    parser.addOptions({logDir, noRecord, database, replay, replayFrom, replayPlay});
     parser.addOptions({console, screenshot, screenshotDelay, components, edit, select, system, palette, uiScale, gps, size, selfTest,
                        imcPort, imcBind, imcPeer, ddsDomain, ddsConfig, ddsKeys, ddsIdentity, defs, defsFor, imcDiscovery, dumpTree, quitAfter, forgetAfter, mission, share, name});
     // "--defs-for SYSTEM FILE" (two words, as the documentation writes it) is
@@ -144,6 +150,11 @@ std::expected<CommandLine, QString> CommandLine::parse(const QStringList &argume
     result.selfTest = parser.isSet(selfTest);
     result.logDirectory = parser.isSet(logDir) ? QFileInfo(parser.value(logDir)).absoluteFilePath() : QString();
     result.record = !parser.isSet(noRecord);
+    if (parser.isSet(database)) {
+        result.database = parser.value(database);
+        if (auto parsed = neptus::db::Location::parse(result.database); !parsed)
+            return std::unexpected(QStringLiteral("--database: %1").arg(parsed.error()));
+    }
     for (const QString &log : parser.values(replay)) {
         if (!QFileInfo::exists(log))
             return std::unexpected(QStringLiteral("--replay: '%1' does not exist").arg(log));

@@ -39,6 +39,7 @@ struct CommandLine
     QString ddsKeys, ddsIdentity;       // DDS Security; empty: none
     QString logDirectory;               // where recordings go (--log-dir); empty: the settings', else the user's data folder
     bool record = true;                 // record every message received and sent (off: --no-record)
+    QString database;                   // the operation's database (--database); empty: the settings', else beside the logs
     QStringList replayLogs;             // --replay: feed the console from these logs instead of the network
     double replayFrom = 0;              // --replay-from: seconds into the logs to open them at
     bool replayPlay = false;            // --replay-play: start playing at once

@@ -9,6 +9,7 @@
 #include "qmlmodels/ConsoleSession.h"
 #include "SelfTest.h"
 #include "session/ConsoleReplay.h"
+#include "session/OperationsFeed.h"
 
 #include <QDir>
 #include <QFile>
@@ -46,6 +47,8 @@ int saveScreenshot(QQuickWindow *window, const QString &file)
 
 int main(int argc, char *argv[])
 {
+    // What it says goes out line by line, also into a pipe (a supervisor, a test reading it live).
+    std::setvbuf(stdout, nullptr, _IOLBF, 0);
     QGuiApplication app(argc, argv);
     QCoreApplication::setOrganizationName(QStringLiteral("neptus-qt"));
     QCoreApplication::setApplicationName(QStringLiteral("neptus"));
@@ -97,7 +100,7 @@ int main(int argc, char *argv[])
     // Everything received and sent is recorded unless told not to (before the
     // session, so it outlives the links that feed it).
     std::unique_ptr<neptus::log::Recorder> recorder;
-    QString recorderProblem;
+    QString recorderProblem, logRoot;
     if (!replayLogs && commandLine->record) {
         neptus::log::RecorderConfig config;
         config.root = commandLine->logDirectory;
@@ -105,6 +108,7 @@ int main(int argc, char *argv[])
             config.root = QSettings().value(QStringLiteral("log/folder")).toString();
         if (config.root.isEmpty())
             config.root = QDir(QStandardPaths::writableLocation(QStandardPaths::AppLocalDataLocation)).filePath(QStringLiteral("logs"));
+        logRoot = config.root;
         config.name = commandLine->name.isEmpty() ? QFileInfo(commandLine->consoleFile).completeBaseName() : commandLine->name;
         config.system = neptus::transport::ImcUdpConfig{}.systemId;
         config.definitionFiles = definitionFiles;
@@ -116,6 +120,31 @@ int main(int argc, char *argv[])
             recorder.reset();
         } else {
             std::printf("neptus: recording in %s\n", qPrintable(recorder->status().folder));
+        }
+    }
+
+    // The operation's database: the one named (--database, settings' database/url), else a SQLite
+    // file beside the logs; written on its own thread, rows kept on disk while it cannot be reached.
+    std::unique_ptr<neptus::db::Writer> database;
+    if (!replayLogs) {
+        QString url = commandLine->database;
+        if (url.isEmpty())
+            url = QSettings().value(QStringLiteral("database/url")).toString();
+        if (url.isEmpty() && recorder)
+            url = QDir(logRoot).filePath(QStringLiteral("operation.db"));
+        if (!url.isEmpty()) {
+            if (auto location = neptus::db::Location::parse(url); !location) {
+                std::fprintf(stderr, "neptus: database: %s; carrying on without it\n", qPrintable(location.error()));
+            } else {
+                neptus::db::Writer::Options options;
+                options.spoolFolder = QDir(recorder ? logRoot : QStandardPaths::writableLocation(QStandardPaths::AppLocalDataLocation))
+                                          .filePath(QStringLiteral("database-spool"));
+                options.console = commandLine->name.isEmpty() ? QFileInfo(commandLine->consoleFile).completeBaseName() : commandLine->name;
+                options.host = QSysInfo::machineHostName();
+                options.program = QStringLiteral("neptus " NEPTUS_VERSION);
+                database = std::make_unique<neptus::db::Writer>(*location, options);
+                std::printf("neptus: database %s\n", qPrintable(location->display()));
+            }
         }
     }
 
@@ -146,6 +175,11 @@ int main(int argc, char *argv[])
     }
     if (recorder)
         session.console().setRecorder(recorder.get());
+    std::unique_ptr<neptus::session::OperationsFeed> feed;
+    if (database) {
+        feed = std::make_unique<neptus::session::OperationsFeed>(session.console(), database.get());
+        feed->setRecorder(recorder.get());
+    }
     else if (!recorderProblem.isEmpty()) {
         auto &graph = session.console().alarmGraph();
         graph.raise(graph.ensure(QStringLiteral("recording")), neptus::alarms::Warning,

@@ -25,6 +25,7 @@ set(NEPTUS_LAYERS
   "neptus-simulation   sim         neptus-messages neptus-geo neptus-plans"
   "neptus-logs         log         neptus-messages neptus-geo"
   "neptus-database     database    neptus-core"
+  "neptus-web          web         neptus-session neptus-database neptus-coastline"
   "neptus-session      session     neptus-scripting neptus-transport neptus-logs neptus-database"
   "neptus-engine       qmlmodels   neptus-session neptus-geo neptus-plans neptus-processor neptus-models"
   # Programs: the command-line tools link no QML.
@@ -35,6 +36,7 @@ set(NEPTUS_LAYERS
   "neptus-xslt         -           neptus-processor"
   "neptus-mission      -           neptus-processor neptus-models"
   "neptus-log          -           neptus-logs"
+  "neptus-logd         -           neptus-session neptus-web"
 )
 
 # neptus_layer(LIBRARY <folder-var> <uses-var> <allowed-var>): the table's

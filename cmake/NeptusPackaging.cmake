@@ -9,7 +9,7 @@
 # tools/runtime-packages.txt.
 include(GNUInstallDirs)
 
-install(TARGETS neptus neptus-msg neptus-sim neptus-model-import neptus-script-host neptus-xslt neptus-mission neptus-log RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+install(TARGETS neptus neptus-msg neptus-sim neptus-model-import neptus-script-host neptus-xslt neptus-mission neptus-log neptus-logd RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 foreach(entry ${NEPTUS_DATA_FOLDERS})
   string(REPLACE ":" ";" entry "${entry}")
   list(GET entry 0 source)

@@ -650,6 +650,7 @@ void Writer::write(Row row)
 {
     Worker &w = *m_worker;
     QMutexLocker lock(&w.mutex);
+    ++w.status.queued[size_t(row.table)];
     w.queue.push_back({row.table, w.nextSeq++, std::move(row.values)});
     w.status.pending = qint64(w.queue.size());
 }
@@ -658,8 +659,10 @@ void Writer::write(std::vector<Row> rows)
 {
     Worker &w = *m_worker;
     QMutexLocker lock(&w.mutex);
-    for (Row &row : rows)
+    for (Row &row : rows) {
+        ++w.status.queued[size_t(row.table)];
         w.queue.push_back({row.table, w.nextSeq++, std::move(row.values)});
+    }
     w.status.pending = qint64(w.queue.size());
 }
 
@@ -679,14 +682,15 @@ bool Writer::flush(int timeoutMs)
     QElapsedTimer timer;
     timer.start();
     Worker &w = *m_worker;
-    do {
+    for (;;) {
         QMetaObject::invokeMethod(&w, [&w] { w.tick(); }, Qt::BlockingQueuedConnection);
         const Status now = status();
-        if (now.pending == 0 && (now.spooled == 0 || !now.connected))
-            return now.spooled == 0;
+        if (now.pending == 0 && now.spooled == 0)
+            return true;
+        if (timer.elapsed() >= timeoutMs)
+            return false;
         QThread::msleep(50);
-    } while (timer.elapsed() < timeoutMs);
-    return false;
+    }
 }
 
 void Writer::setProblemHandler(std::function<void(const Status &)> handler)
@@ -831,9 +835,11 @@ std::expected<std::vector<Reader::LogRecord>, QString> Reader::logs()
                              });
 }
 
-std::expected<qint64, QString> Reader::count(Table table)
+std::expected<qint64, QString> Reader::count(Table table, const QString &session)
 {
-    auto n = select<qint64>(m_connection, u"SELECT COUNT(*) FROM %1"_s.arg(QLatin1StringView(info(table).name)), {},
+    const QString sql = u"SELECT COUNT(*) FROM %1"_s.arg(QLatin1StringView(info(table).name));
+    auto n = select<qint64>(m_connection, session.isEmpty() ? sql : sql + u" WHERE session = ?"_s,
+                            session.isEmpty() ? QVariantList{} : QVariantList{session},
                             [](const QSqlQuery &q) { return q.value(0).toLongLong(); });
     if (!n)
         return std::unexpected(n.error());

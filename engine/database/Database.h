@@ -4,6 +4,7 @@
 #include <QString>
 #include <QVariantList>
 
+#include <array>
 #include <expected>
 #include <functional>
 #include <memory>
@@ -54,6 +55,7 @@ struct Status
 {
     bool connected = false;
     qint64 written = 0;   // rows the database holds from this writer
+    std::array<qint64, 7> queued{}; // rows given to write(), by Table, since the start
     qint64 pending = 0;   // rows queued in memory
     qint64 spooled = 0;   // rows waiting on disk for the server
     qint64 spoolBytes = 0;
@@ -90,8 +92,9 @@ public:
     // This writer's session id (a new UUID each run).
     QString session() const;
     Status status() const;
-    // Waits until everything queued so far is in the database or spooled
-    // (tests, benchmarks, a console closing). False on timeout.
+    // Writes what is queued now, and keeps trying (the spool too) until all
+    // of it is in the database: true then, false after `timeoutMs` (the rest
+    // is spooled). flush(0) tries once.
     bool flush(int timeoutMs = 30000);
     // Called (on the writer's thread) when status().problem or connected change.
     void setProblemHandler(std::function<void(const Status &)> handler);
@@ -125,8 +128,8 @@ public:
     std::expected<std::vector<LogBookRecord>, QString> logBook(qint64 fromMs, qint64 toMs);
     std::expected<std::vector<SessionRecord>, QString> sessions();
     std::expected<std::vector<LogRecord>, QString> logs();
-    // Rows in a table (tests, `neptus-log db`).
-    std::expected<qint64, QString> count(Table table);
+    // Rows in a table, or of one writer's session in it.
+    std::expected<qint64, QString> count(Table table, const QString &session = {});
 
 private:
     explicit Reader(QString connection);

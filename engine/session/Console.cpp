@@ -1,4 +1,5 @@
 #include "session/Console.h"
+#include "session/OperationsFeed.h"
 
 namespace neptus::session {
 
@@ -153,6 +154,11 @@ std::expected<void, QString> Console::send(quint16 system, msg::Message message)
         return std::unexpected(tr("this console replays a log: nothing is sent to vehicles"));
     if (auto sent = m_router.publish(system, message); !sent)
         return sent;
+    if (OperationsFeed *feed = m_feed.load(std::memory_order_relaxed)) {
+        msg::Message addressed = message;
+        addressed.header.dst = system;
+        feed->observe(addressed, true);
+    }
     m_tree.recordSent(system, std::move(message));
     return {};
 }
@@ -185,6 +191,8 @@ void Console::ingest(const msg::Message &message, const QString &link, qsizetype
     if (message.def() && message.def()->id == 151 && message.def()->abbrev == u"Announce")
         m_schemas->learnName(source, message.text(u"sys_name"));
     m_tree.ingest(message);
+    if (OperationsFeed *feed = m_feed.load(std::memory_order_relaxed))
+        feed->observe(message, false);
     m_health.observe(message);
     m_naming.observe(message);
     m_linkStatistics.received(source, link, message.id(), message.abbrev(), !message.isOpaque(), bytes);

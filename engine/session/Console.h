@@ -21,6 +21,8 @@
 
 namespace neptus::session {
 
+class OperationsFeed;
+
 // Everything one running console is made of, without any QML: the message
 // definitions (the console's own, and others per system), the variable tree,
 // the alarm graph, the health monitor, the alarm scripts (started on first
@@ -54,6 +56,9 @@ public:
     // Every packet the links receive and send goes to `recorder` too (null:
     // none); its problems (a full disk) raise the "recording" alarm. Any time.
     void setRecorder(log::Recorder *recorder);
+    // Every message received and sent goes to `feed` too (the operation's
+    // database; null: none). Any time.
+    void setFeed(OperationsFeed *feed) { m_feed = feed; }
     // A console fed from a log (review): nothing is sent to anyone.
     void setReplaying(bool replaying) { m_replaying = replaying; }
     bool replaying() const { return m_replaying; }
@@ -139,6 +144,7 @@ private:
 
     const Clock *m_clock;
     std::atomic<log::Recorder *> m_recorder = nullptr;
+    std::atomic<OperationsFeed *> m_feed = nullptr;
     QMetaObject::Connection m_recorderProblems;
     bool m_replaying = false;
     std::shared_ptr<const msg::Schema> m_schema;

@@ -1,0 +1,241 @@
+#include "session/OperationsFeed.h"
+
+#include "geo/Geodesy.h"
+#include "log/Recorder.h"
+#include "session/Console.h"
+
+#include <cmath>
+
+using namespace Qt::StringLiterals;
+
+namespace neptus::session {
+
+namespace {
+
+QString enumOf(const msg::Message &m, const QString &field)
+{
+    const int index = m.def()->fieldIndex.value(field, -1);
+    return index < 0 ? QString() : m.enumText(index);
+}
+
+constexpr int executing = 3; // PlanControlState.state EXECUTING
+
+} // namespace
+
+OperationsFeed::OperationsFeed(Console &console, db::Writer *writer, const Clock *clock, QObject *parent)
+    : QObject(parent)
+    , m_console(console)
+    , m_writer(writer)
+    , m_clock(clock)
+{
+    connect(&m_timer, &QTimer::timeout, this, &OperationsFeed::checkAlarms);
+    m_timer.start(250);
+    m_console.setFeed(this);
+    if (!writer)
+        return;
+    alarms::AlarmGraph &graph = console.alarmGraph();
+    const auto node = graph.ensure(u"database"_s);
+    const auto said = [&graph, node](const db::Status &status) {
+        if (status.problem.isEmpty())
+            graph.raise(node, alarms::Normal, status.connected ? u"writing"_s : QString());
+        else
+            graph.raise(node, alarms::Warning, status.spooled > 0 || !status.connected
+                                                   ? u"%1 (%2 rows kept on disk until it answers)"_s.arg(status.problem).arg(status.spooled)
+                                                   : status.problem);
+    };
+    writer->setProblemHandler(said);
+    said(writer->status());
+}
+
+void OperationsFeed::put(db::Row row)
+{
+    if (m_writer)
+        m_writer->write(std::move(row));
+}
+
+std::vector<OperationsFeed::LiveSystem> OperationsFeed::live() const
+{
+    QMutexLocker lock(&m_mutex);
+    std::vector<LiveSystem> systems;
+    for (auto it = m_systems.cbegin(); it != m_systems.cend(); ++it) {
+        LiveSystem s = it->live;
+        s.id = it.key();
+        s.name = nameOf(it.key());
+        s.kind = it->kind;
+        s.lastMs = it->lastMs;
+        systems.push_back(std::move(s));
+    }
+    std::sort(systems.begin(), systems.end(), [](const auto &a, const auto &b) { return a.name < b.name; });
+    return systems;
+}
+
+OperationsFeed::~OperationsFeed()
+{
+    m_console.setFeed(nullptr);
+    if (!m_writer)
+        return;
+    m_writer->setProblemHandler({});
+    checkAlarms();
+    if (m_recorder && !m_logFolder.isEmpty()) { // the log's final span
+        const log::Recorder::Status s = m_recorder->status();
+        put(db::Row{db::Table::Log, {m_logFolder, m_logBeganMs, m_clock->now().toMSecsSinceEpoch(),
+                                                qint64(s.packets - m_logPacketsBefore), qint64(s.bytes - m_logBytesBefore)}});
+    }
+}
+
+void OperationsFeed::setRecorder(const log::Recorder *recorder)
+{
+    m_recorder = recorder;
+}
+
+QString OperationsFeed::nameOf(quint16 id) const
+{
+    const auto it = m_systems.constFind(id);
+    return it != m_systems.cend() && !it->name.isEmpty() ? it->name : u"0x%1"_s.arg(id, 4, 16, QLatin1Char('0'));
+}
+
+void OperationsFeed::noteSystem(quint16 id, qint64 now)
+{
+    SystemState &s = m_systems[id];
+    if (s.firstMs == 0)
+        s.firstMs = now;
+    s.lastMs = now;
+    if (!s.name.isEmpty() && now - s.writtenMs >= 5000) {
+        s.writtenMs = now;
+        put(db::Row{db::Table::System, {int(id), s.name, s.kind, s.firstMs, now}});
+    }
+}
+
+void OperationsFeed::observe(const msg::Message &m, bool sent)
+{
+    const msg::MessageDef *def = m.def();
+    if (!def)
+        return;
+    const qint64 now = m_clock->now().toMSecsSinceEpoch();
+    QMutexLocker lock(&m_mutex);
+    const quint16 source = m.header.src;
+    if (!sent && def->abbrev == u"Announce") {
+        SystemState &s = m_systems[source];
+        const QString name = m.text(u"sys_name"), kind = enumOf(m, u"sys_type"_s);
+        if (s.name != name || s.kind != kind)
+            s.writtenMs = 0; // say it now
+        s.name = name;
+        s.kind = kind;
+    }
+    if (!sent)
+        noteSystem(source, now);
+    if (!sent && def->abbrev == u"EstimatedState") {
+        SystemState &s = m_systems[source];
+        const geo::Geodetic p = geo::imcPosition(m.number(u"lat"), m.number(u"lon"), m.number(u"height"), m.number(u"x"),
+                                                 m.number(u"y"), m.number(u"z"));
+        const double speed = std::hypot(m.number(u"vx"), m.number(u"vy"));
+        double heading = std::fmod(m.number(u"psi") * 180.0 / M_PI, 360.0);
+        if (heading < 0)
+            heading += 360.0;
+        const db::TrackPoint point{now, p.lat * 180.0 / M_PI, p.lon * 180.0 / M_PI, m.number(u"depth"), m.number(u"alt"), heading, speed};
+        s.live.hasPosition = true;
+        s.live.position = point;
+        if (s.live.recent.empty() || now - s.live.recent.back().ms >= 1000) {
+            s.live.recent.push_back(point);
+            if (s.live.recent.size() > 600)
+                s.live.recent.erase(s.live.recent.begin(), s.live.recent.begin() + 60);
+        }
+        if (now - s.positionMs < m_positionIntervalMs)
+            return;
+        s.positionMs = now;
+        put(db::Row{db::Table::Position, {now, nameOf(source), int(source), p.lat * 180.0 / M_PI, p.lon * 180.0 / M_PI,
+                                                      m.number(u"depth"), m.number(u"alt"), heading, speed}});
+    } else if (!sent && def->abbrev == u"PlanControlState") {
+        planState(m, now);
+    } else if (def->abbrev == u"PlanControl") {
+        planControl(m, sent, now);
+    } else if (!sent && def->abbrev == u"LogBookEntry") {
+        put(db::Row{db::Table::LogBook, {now, nameOf(source), enumOf(m, u"type"_s), m.text(u"context"), m.text(u"text")}});
+    }
+}
+
+void OperationsFeed::planState(const msg::Message &m, qint64 now)
+{
+    SystemState &s = m_systems[m.header.src];
+    const int state = int(m.integer(u"state"));
+    const QString plan = m.text(u"plan_id"), maneuver = m.text(u"man_id"), who = nameOf(m.header.src);
+    auto event = [&](const QString &planId, const QString &what, const QString &man, const QString &detail) {
+        put(db::Row{db::Table::PlanEvent, {now, who, planId, what, man, detail}});
+    };
+    const bool wasRunning = s.planState == executing;
+    if (state == executing) {
+        if (!wasRunning || plan != s.plan) {
+            if (wasRunning)
+                event(s.plan, u"ended"_s, s.maneuver, u"another plan started"_s);
+            event(plan, u"started"_s, maneuver, QString());
+        } else if (maneuver != s.maneuver && !maneuver.isEmpty()) {
+            event(plan, u"maneuver"_s, maneuver, u"%1 %"_s.arg(m.number(u"plan_progress"), 0, 'f', 0));
+        }
+    } else if (wasRunning) {
+        const QString outcome = enumOf(m, u"last_outcome"_s).toLower();
+        event(s.plan, outcome.isEmpty() || outcome == u"none"_s ? u"stopped"_s : outcome, s.maneuver,
+              u"state %1"_s.arg(enumOf(m, u"state"_s)));
+    }
+    s.planState = state;
+    s.plan = plan;
+    s.maneuver = maneuver;
+    s.live.planState = enumOf(m, u"state"_s);
+    s.live.plan = plan;
+    s.live.maneuver = maneuver;
+    s.live.progress = m.number(u"plan_progress");
+}
+
+void OperationsFeed::planControl(const msg::Message &m, bool sent, qint64 now)
+{
+    const QString op = enumOf(m, u"op"_s).toLower(), type = enumOf(m, u"type"_s).toLower();
+    if (sent) { // a request of this console's
+        if (type != u"request"_s)
+            return;
+        put(db::Row{db::Table::PlanEvent, {now, nameOf(m.header.dst), m.text(u"plan_id"),
+                                                      op == u"start"_s ? u"sent"_s : op + u" requested"_s, QString(), m.text(u"info")}});
+    } else if (type == u"success"_s || type == u"failure"_s) { // a vehicle's answer
+        put(db::Row{db::Table::PlanEvent, {now, nameOf(m.header.src), m.text(u"plan_id"), op + u' ' + type, QString(),
+                                                      m.text(u"info")}});
+    }
+}
+
+void OperationsFeed::checkAlarms()
+{
+    alarms::AlarmGraph &graph = m_console.alarmGraph();
+    const qint64 now = m_clock->now().toMSecsSinceEpoch();
+    if (m_recorder) { // the log being written: its folder and span, every few seconds
+        const log::Recorder::Status s = m_recorder->status();
+        if (!s.folder.isEmpty() && s.folder != m_logFolder) {
+            m_logFolder = s.folder;
+            m_logBeganMs = now;
+            m_logPacketsBefore = s.packets;
+            m_logBytesBefore = s.bytes;
+        }
+        if (!m_logFolder.isEmpty() && (now / 250) % 20 == 0)
+            put(db::Row{db::Table::Log, {m_logFolder, m_logBeganMs, now, qint64(s.packets - m_logPacketsBefore),
+                                                    qint64(s.bytes - m_logBytesBefore)}});
+    }
+    const quint64 version = graph.version();
+    if (version == m_alarmVersion)
+        return;
+    m_alarmVersion = version;
+    QHash<QString, AlarmState> current;
+    for (const alarms::AlarmGraph::Alarm &a : graph.activeAlarms()) {
+        if (a.origin == u"database"_s) // its own state is the writer's status, not a record
+            continue;
+        current.insert(a.origin, {a.level, a.message, a.acknowledged});
+        const auto before = m_alarms.constFind(a.origin);
+        if (before == m_alarms.cend() || before->level != a.level || before->message != a.message)
+            put(db::Row{db::Table::Alarm, {now, a.origin, alarms::levelName(a.level),
+                                                      a.level == alarms::Info ? u"notice"_s : u"raised"_s, a.message}});
+        if (a.acknowledged && (before == m_alarms.cend() || !before->acknowledged))
+            put(db::Row{db::Table::Alarm, {now, a.origin, alarms::levelName(a.level), u"acknowledged"_s, a.message}});
+    }
+    for (auto it = m_alarms.cbegin(); it != m_alarms.cend(); ++it)
+        if (!current.contains(it.key()))
+            put(db::Row{db::Table::Alarm, {now, it.key(), alarms::levelName(graph.ownLevel(graph.find(it.key()))),
+                                                      u"cleared"_s, graph.message(graph.find(it.key()))}});
+    m_alarms = std::move(current);
+}
+
+} // namespace neptus::session
