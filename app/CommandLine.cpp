@@ -111,7 +111,20 @@ std::expected<CommandLine, QString> CommandLine::parse(const QStringList &argume
     const QCommandLineOption replayFrom(QStringLiteral("replay-from"),
         QStringLiteral("With --replay: open the logs this many seconds after their start."), QStringLiteral("seconds"));
     const QCommandLineOption replayPlay(QStringLiteral("replay-play"), QStringLiteral("With --replay: start playing at once."));
-    parser.addOptions({logDir, noRecord, database, replay, replayFrom, replayPlay});
+    const QCommandLineOption webPort(QStringLiteral("web-port"),
+        QStringLiteral("Serve the live web page (read-only) on this port (0: any free one; default: the settings' web/port, else none)."),
+        QStringLiteral("port"));
+    const QCommandLineOption webBind(QStringLiteral("web-bind"),
+        QStringLiteral("Address the web page listens on (default 127.0.0.1; any other needs --web-token)."), QStringLiteral("address"));
+    const QCommandLineOption webToken(QStringLiteral("web-token"),
+        QStringLiteral("The web page's access token (at least 16 characters): ?token=... or Authorization: Bearer."),
+        QStringLiteral("token"));
+    const QCommandLineOption webCert(QStringLiteral("web-cert"), QStringLiteral("Serve the web page over HTTPS with this PEM certificate."),
+                                     QStringLiteral("file"));
+    const QCommandLineOption webKey(QStringLiteral("web-key"), QStringLiteral("The PEM private key of --web-cert."), QStringLiteral("file"));
+    const QCommandLineOption webTiles(QStringLiteral("web-tiles"),
+        QStringLiteral("Map tiles for the web page: a URL with {z}/{x}/{y} (default: the offline coastline only)."), QStringLiteral("url"));
+    parser.addOptions({logDir, noRecord, database, replay, replayFrom, replayPlay, webPort, webBind, webToken, webCert, webKey, webTiles});
     parser.addOptions({console, screenshot, screenshotDelay, components, edit, select, system, palette, uiScale, gps, size, selfTest,
                        imcPort, imcBind, imcPeer, ddsDomain, ddsConfig, ddsKeys, ddsIdentity, defs, defsFor, imcDiscovery, dumpTree, quitAfter, forgetAfter, mission, share, name});
     // "--defs-for SYSTEM FILE" (two words, as the documentation writes it) is
@@ -150,6 +163,22 @@ std::expected<CommandLine, QString> CommandLine::parse(const QStringList &argume
     result.selfTest = parser.isSet(selfTest);
     result.logDirectory = parser.isSet(logDir) ? QFileInfo(parser.value(logDir)).absoluteFilePath() : QString();
     result.record = !parser.isSet(noRecord);
+    if (parser.isSet(webPort)) {
+        bool ok = false;
+        const uint port = parser.value(webPort).toUInt(&ok);
+        if (!ok || port > 65535)
+            return std::unexpected(QStringLiteral("--web-port: '%1' is not a port").arg(parser.value(webPort)));
+        result.webPort = int(port);
+    }
+    if (parser.isSet(webBind)) {
+        result.webBind = parser.value(webBind);
+        if (QHostAddress(result.webBind).isNull())
+            return std::unexpected(QStringLiteral("--web-bind: '%1' is not an address").arg(result.webBind));
+    }
+    result.webToken = parser.value(webToken);
+    result.webCertificate = parser.value(webCert);
+    result.webKey = parser.value(webKey);
+    result.webTiles = parser.value(webTiles);
     if (parser.isSet(database)) {
         result.database = parser.value(database);
         if (auto parsed = neptus::db::Location::parse(result.database); !parsed)

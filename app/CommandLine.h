@@ -40,6 +40,8 @@ struct CommandLine
     QString logDirectory;               // where recordings go (--log-dir); empty: the settings', else the user's data folder
     bool record = true;                 // record every message received and sent (off: --no-record)
     QString database;                   // the operation's database (--database); empty: the settings', else beside the logs
+    int webPort = -1;                   // the live web page's port (--web-port); -1: the settings' web/port, else none
+    QString webBind, webToken, webCertificate, webKey, webTiles;
     QStringList replayLogs;             // --replay: feed the console from these logs instead of the network
     double replayFrom = 0;              // --replay-from: seconds into the logs to open them at
     bool replayPlay = false;            // --replay-play: start playing at once

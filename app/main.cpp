@@ -10,6 +10,7 @@
 #include "SelfTest.h"
 #include "session/ConsoleReplay.h"
 #include "session/OperationsFeed.h"
+#include "web/LiveServer.h"
 
 #include <QDir>
 #include <QFile>
@@ -126,6 +127,7 @@ int main(int argc, char *argv[])
     // The operation's database: the one named (--database, settings' database/url), else a SQLite
     // file beside the logs; written on its own thread, rows kept on disk while it cannot be reached.
     std::unique_ptr<neptus::db::Writer> database;
+    QString databaseUrl;
     if (!replayLogs) {
         QString url = commandLine->database;
         if (url.isEmpty())
@@ -143,6 +145,7 @@ int main(int argc, char *argv[])
                 options.host = QSysInfo::machineHostName();
                 options.program = QStringLiteral("neptus " NEPTUS_VERSION);
                 database = std::make_unique<neptus::db::Writer>(*location, options);
+                databaseUrl = url;
                 std::printf("neptus: database %s\n", qPrintable(location->display()));
             }
         }
@@ -175,10 +178,41 @@ int main(int argc, char *argv[])
     }
     if (recorder)
         session.console().setRecorder(recorder.get());
+    // The live web page (--web-port, or the settings' web/port): read-only, on loopback unless told.
+    int webPort = commandLine->webPort;
+    if (webPort < 0 && QSettings().contains(QStringLiteral("web/port")))
+        webPort = QSettings().value(QStringLiteral("web/port")).toInt();
+    if (replayLogs)
+        webPort = -1;
     std::unique_ptr<neptus::session::OperationsFeed> feed;
-    if (database) {
+    if (database || webPort >= 0) {
         feed = std::make_unique<neptus::session::OperationsFeed>(session.console(), database.get());
         feed->setRecorder(recorder.get());
+    }
+    std::unique_ptr<neptus::web::LiveServer> web;
+    if (webPort >= 0) {
+        neptus::web::WebConfig config;
+        const QString bind = commandLine->webBind.isEmpty() ? QSettings().value(QStringLiteral("web/bind")).toString() : commandLine->webBind;
+        if (!bind.isEmpty())
+            config.address = QHostAddress(bind);
+        config.port = quint16(webPort);
+        config.token = commandLine->webToken.isEmpty() ? QSettings().value(QStringLiteral("web/token")).toString() : commandLine->webToken;
+        config.certificate = commandLine->webCertificate;
+        config.key = commandLine->webKey;
+        config.tiles = commandLine->webTiles;
+        config.title = commandLine->name.isEmpty() ? QFileInfo(commandLine->consoleFile).completeBaseName() : commandLine->name;
+        config.pageDir = neptus::dataPath(QStringLiteral("web"));
+        if (database)
+            config.history = neptus::db::Location::parse(databaseUrl).value();
+        web = std::make_unique<neptus::web::LiveServer>(*feed, config);
+        if (auto started = web->start(); !started) {
+            std::fprintf(stderr, "neptus: %s; no web page\n", qPrintable(started.error()));
+            auto &graph = session.console().alarmGraph();
+            graph.raise(graph.ensure(QStringLiteral("web page")), neptus::alarms::Warning, started.error());
+            web.reset();
+        } else {
+            std::printf("neptus: web page on %s\n", qPrintable(web->url()));
+        }
     }
     else if (!recorderProblem.isEmpty()) {
         auto &graph = session.console().alarmGraph();

@@ -9,6 +9,7 @@
 #include "core/DataFiles.h"
 #include "session/Console.h"
 #include "session/OperationsFeed.h"
+#include "web/LiveServer.h"
 
 #include <QCommandLineParser>
 #include <QCoreApplication>
@@ -67,7 +68,16 @@ int main(int argc, char *argv[])
     const QCommandLineOption name(u"name"_s, u"This node's name in the database and on the network (default neptus-logd)."_s,
                                   u"name"_s, u"neptus-logd"_s);
     const QCommandLineOption quitAfter(u"quit-after"_s, u"Exit after this many milliseconds."_s, u"ms"_s);
-    parser.addOptions({imcPort, imcBind, imcPeer, imcDiscovery, ddsDomain, logDir, noRecord, database, name, quitAfter});
+    const QCommandLineOption webPort(u"web-port"_s, u"Serve the live web page on this port (0: any free one; default: no page)."_s, u"port"_s);
+    const QCommandLineOption webBind(u"web-bind"_s, u"Address the web page listens on (default 127.0.0.1; another needs --web-token)."_s,
+                                     u"address"_s, u"127.0.0.1"_s);
+    const QCommandLineOption webToken(u"web-token"_s, u"The web page's access token (at least 16 characters)."_s, u"token"_s);
+    const QCommandLineOption webCert(u"web-cert"_s, u"Serve the page over HTTPS with this PEM certificate (and --web-key)."_s, u"file"_s);
+    const QCommandLineOption webKey(u"web-key"_s, u"The PEM private key of --web-cert."_s, u"file"_s);
+    const QCommandLineOption webTiles(u"web-tiles"_s, u"Map tiles for the page, a URL with {z}/{x}/{y} (default: the offline coastline only)."_s,
+                                      u"url"_s);
+    parser.addOptions({imcPort, imcBind, imcPeer, imcDiscovery, ddsDomain, logDir, noRecord, database, name, quitAfter, webPort, webBind,
+                       webToken, webCert, webKey, webTiles});
     parser.process(app);
 
     auto schema = neptus::msg::Schema::load(neptus::msg::Schema::filesIn(neptus::dataPath(u"msgdefs"_s)));
@@ -147,6 +157,30 @@ int main(int argc, char *argv[])
             std::fprintf(stderr, "neptus-logd: %s; carrying on without IMC\n", qPrintable(started.error()));
         else
             std::printf("neptus-logd: IMC/UDP on %s:%u\n", qPrintable(config.bindAddress.toString()), console.imc()->port());
+    }
+    std::unique_ptr<neptus::web::LiveServer> web;
+    if (parser.isSet(webPort)) {
+        neptus::web::WebConfig config;
+        config.address = QHostAddress(parser.value(webBind));
+        if (config.address.isNull())
+            return fail(u"--web-bind: '%1' is not an address"_s.arg(parser.value(webBind)));
+        bool ok = false;
+        const uint port = parser.value(webPort).toUInt(&ok);
+        if (!ok || port > 65535)
+            return fail(u"--web-port: '%1' is not a port"_s.arg(parser.value(webPort)));
+        config.port = quint16(port);
+        config.token = parser.value(webToken);
+        config.certificate = parser.value(webCert);
+        config.key = parser.value(webKey);
+        config.tiles = parser.value(webTiles);
+        config.title = parser.value(name);
+        config.pageDir = neptus::dataPath(u"web"_s);
+        config.history = *location;
+        web = std::make_unique<neptus::web::LiveServer>(feed, config);
+        auto started = web->start();
+        if (!started)
+            return fail(started.error());
+        std::printf("neptus-logd: web page on %s\n", qPrintable(web->url()));
     }
     if (const int domain = parser.value(ddsDomain).toInt(); domain >= 0) {
         neptus::transport::DdsConfig config{static_cast<dds_domainid_t>(domain), {}};

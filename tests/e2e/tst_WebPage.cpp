@@ -1,0 +1,199 @@
+// The live web page in a real browser: headless Chromium (Debian's), driven
+// over the DevTools protocol, opens the page a console serves while two
+// simulated vehicles move; it shows both, their positions change, an alarm
+// raised on the console appears; screenshots at a desktop's size and a
+// phone's are written to build/<preset>/screenshots/ to be looked at.
+#include "database/Database.h"
+#include "session/OperationsFeed.h"
+#include "web/LiveServer.h"
+#include "core/DataFiles.h"
+
+#include "PlanRun.h"
+#include "SimProcess.h"
+
+#include <QDir>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QProcess>
+#include <QRegularExpression>
+#include <QTemporaryDir>
+#include <QWebSocket>
+
+using namespace neptus;
+using namespace neptus::test;
+using namespace Qt::StringLiterals;
+
+namespace {
+
+// Chromium, headless, as the machine's browser tests run it (no sandbox as root, no network beyond loopback).
+class Browser
+{
+public:
+    bool start(QString *error)
+    {
+        if (!QFile::exists(u"/usr/bin/chromium"_s)) {
+            *error = u"no /usr/bin/chromium (package chromium)"_s;
+            return false;
+        }
+        m_process.start(u"/usr/bin/chromium"_s,
+                        {u"--headless"_s, u"--no-sandbox"_s, u"--disable-gpu"_s, u"--disable-quic"_s, u"--no-first-run"_s,
+                         u"--disable-background-networking"_s, u"--disable-component-update"_s, u"--disable-sync"_s,
+                         u"--user-data-dir="_s + m_profile.path(), u"--remote-debugging-address=127.0.0.1"_s,
+                         u"--remote-debugging-port=0"_s, u"about:blank"_s});
+        QByteArray said;
+        QRegularExpressionMatch found;
+        const bool listening = QTest::qWaitFor([&] {
+            said += m_process.readAllStandardError();
+            found = QRegularExpression(u"DevTools listening on (ws://\\S+)"_s).match(QString::fromUtf8(said));
+            return found.hasMatch();
+        }, 20000);
+        if (!listening) {
+            *error = u"Chromium did not start its DevTools endpoint: "_s + QString::fromUtf8(said.right(2000));
+            return false;
+        }
+        QObject::connect(&m_socket, &QWebSocket::textMessageReceived, [this](const QString &text) {
+            const QJsonObject message = QJsonDocument::fromJson(text.toUtf8()).object();
+            if (message.contains(u"id"_s))
+                m_replies.insert(message.value(u"id"_s).toInt(), message);
+        });
+        m_socket.setMaxAllowedIncomingMessageSize(64 << 20);
+        m_socket.open(QUrl(found.captured(1)));
+        if (!QTest::qWaitFor([&] { return m_socket.state() == QAbstractSocket::ConnectedState; }, 10000)) {
+            *error = u"cannot reach Chromium's DevTools"_s;
+            return false;
+        }
+        const QJsonObject target = call(u"Target.createTarget"_s, {{u"url"_s, u"about:blank"_s}});
+        const QJsonObject attached = call(u"Target.attachToTarget"_s, {{u"targetId"_s, target.value(u"targetId"_s)}, {u"flatten"_s, true}});
+        m_session = attached.value(u"sessionId"_s).toString();
+        if (m_session.isEmpty()) {
+            *error = u"no page in Chromium"_s;
+            return false;
+        }
+        return true;
+    }
+    ~Browser()
+    {
+        m_socket.close();
+        if (m_process.state() != QProcess::NotRunning) {
+            m_process.terminate();
+            if (!m_process.waitForFinished(5000)) {
+                m_process.kill();
+                m_process.waitForFinished(5000);
+            }
+        }
+    }
+
+    // A DevTools command on the page; its result.
+    QJsonObject call(const QString &method, const QJsonObject &params = {})
+    {
+        const int id = ++m_lastId;
+        QJsonObject message{{u"id"_s, id}, {u"method"_s, method}, {u"params"_s, params}};
+        if (!m_session.isEmpty())
+            message.insert(u"sessionId"_s, m_session);
+        m_socket.sendTextMessage(QString::fromUtf8(QJsonDocument(message).toJson(QJsonDocument::Compact)));
+        EXPECT_TRUE(QTest::qWaitFor([&] { return m_replies.contains(id); }, 20000)) << method.toStdString();
+        const QJsonObject reply = m_replies.take(id);
+        EXPECT_FALSE(reply.contains(u"error"_s)) << method.toStdString() << ": "
+                                                 << QJsonDocument(reply.value(u"error"_s).toObject()).toJson().toStdString();
+        return reply.value(u"result"_s).toObject();
+    }
+    // A JavaScript expression's value in the page.
+    QJsonValue evaluate(const QString &expression)
+    {
+        return call(u"Runtime.evaluate"_s, {{u"expression"_s, expression}, {u"returnByValue"_s, true}})
+            .value(u"result"_s).toObject().value(u"value"_s);
+    }
+    void size(int width, int height, bool phone)
+    {
+        call(u"Emulation.setDeviceMetricsOverride"_s, {{u"width"_s, width}, {u"height"_s, height}, {u"deviceScaleFactor"_s, 1},
+                                                        {u"mobile"_s, phone}});
+    }
+    void open(const QString &url) { call(u"Page.navigate"_s, {{u"url"_s, url}}); }
+    bool screenshot(const QString &file)
+    {
+        const QByteArray png = QByteArray::fromBase64(call(u"Page.captureScreenshot"_s, {{u"format"_s, u"png"_s}})
+                                                          .value(u"data"_s).toString().toLatin1());
+        QDir().mkpath(QFileInfo(file).absolutePath());
+        QFile out(file);
+        return png.startsWith("\x89PNG") && out.open(QIODevice::WriteOnly) && out.write(png) == png.size();
+    }
+
+private:
+    QTemporaryDir m_profile;
+    QProcess m_process;
+    QWebSocket m_socket;
+    QString m_session;
+    int m_lastId = 0;
+    QHash<int, QJsonObject> m_replies;
+};
+
+} // namespace
+
+TEST(WebPage, AHeadlessBrowserSeesBothVehiclesMoveAndAnAlarmAppear)
+{
+    SimProcess auv, other;
+    auv.start({u"--id"_s, u"0x1f"_s, u"--name"_s, u"lauv-sim-1"_s, u"--port"_s, u"16185"_s});
+    other.start({u"--id"_s, u"0x20"_s, u"--name"_s, u"lauv-sim-2"_s, u"--port"_s, u"16186"_s, u"--phase"_s, u"140"_s});
+    QTemporaryDir dir;
+    const db::Location location = *db::Location::parse(dir.filePath(u"operation.db"_s));
+    session::Console console(shippedSchema());
+    db::Writer writer(location, {});
+    session::OperationsFeed feed(console, &writer);
+    ASSERT_TRUE(console.startImc(imcTo({16185, 16186})));
+    ASSERT_TRUE(QTest::qWaitFor([&] { return heard(console.tree(), u"lauv-sim-1"_s) && heard(console.tree(), u"lauv-sim-2"_s); }, 15000));
+    web::WebConfig config;
+    config.port = 0;
+    config.pageDir = dataPath(u"web"_s);
+    config.title = u"Operations room"_s;
+    config.history = location;
+    web::LiveServer server(feed, config);
+    ASSERT_TRUE(server.start().has_value());
+
+    Browser browser;
+    QString why;
+    ASSERT_TRUE(browser.start(&why)) << why.toStdString();
+    browser.size(1280, 800, false);
+    browser.open(server.url());
+
+    // Both vehicles, on the map and in the list.
+    const auto names = [&] {
+        return browser.evaluate(u"[...document.querySelectorAll('#systems li.sys')].map(e => e.dataset.system).join(',')"_s).toString();
+    };
+    ASSERT_TRUE(QTest::qWaitFor([&] { return names() == u"lauv-sim-1,lauv-sim-2"_s; }, 15000)) << names().toStdString();
+    EXPECT_EQ(browser.evaluate(u"document.querySelectorAll('.leaflet-marker-icon').length"_s).toInt(), 2);
+    EXPECT_EQ(browser.evaluate(u"document.getElementById('link').textContent"_s).toString(), u"live"_s);
+    EXPECT_EQ(browser.evaluate(u"document.getElementById('title').textContent"_s).toString(), u"Operations room"_s);
+
+    // They move: the markers' places on the screen and the positions written change.
+    const auto where = [&] {
+        return browser.evaluate(u"[...document.querySelectorAll('.leaflet-marker-icon')].map(e => e.style.transform).join(';') + '|' + "
+                                "[...document.querySelectorAll('#systems .detail')].map(e => e.textContent).join(';')"_s).toString();
+    };
+    const QString before = where();
+    ASSERT_TRUE(QTest::qWaitFor([&] { return where() != before; }, 8000)) << before.toStdString();
+    EXPECT_TRUE(QTest::qWaitFor([&] { return where().section(u'|', 0, 0) != before.section(u'|', 0, 0); }, 10000))
+        << "the markers move on the map: " << before.toStdString();
+
+    // An alarm raised on the console appears within the push period.
+    auto &graph = console.alarmGraph();
+    graph.raise(graph.ensure(u"systems/lauv-sim-2/Payload"_s), alarms::Error, u"sidescan flooded"_s);
+    const auto alarmShown = [&] {
+        return browser.evaluate(u"[...document.querySelectorAll('#alarms li.alarm')].map(e => e.textContent).join(';')"_s).toString();
+    };
+    ASSERT_TRUE(QTest::qWaitFor([&] { return alarmShown().contains(u"sidescan flooded"_s); }, 5000)) << alarmShown().toStdString();
+    EXPECT_TRUE(alarmShown().contains(u"systems/lauv-sim-2/Payload"_s));
+    EXPECT_TRUE(browser.evaluate(u"document.querySelector('#systems li.sys[data-system=\"lauv-sim-2\"]').className"_s)
+                    .toString().contains(u"Error"_s));
+    QTest::qWait(1500); // a few pushes of track
+    const QString shots = QDir(programDirectory()).filePath(u"../screenshots"_s);
+    EXPECT_TRUE(browser.screenshot(shots + u"/web-1280x800.png"_s));
+
+    // A phone: the list under the map, everything still there.
+    browser.size(390, 844, true);
+    QTest::qWait(800);
+    EXPECT_EQ(names(), u"lauv-sim-1,lauv-sim-2"_s);
+    EXPECT_GT(browser.evaluate(u"document.querySelector('aside').getBoundingClientRect().top"_s).toDouble(),
+              browser.evaluate(u"document.getElementById('map').getBoundingClientRect().bottom"_s).toDouble() - 1);
+    EXPECT_TRUE(browser.screenshot(shots + u"/web-390x844-phone.png"_s));
+}

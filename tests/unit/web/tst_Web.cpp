@@ -1,0 +1,257 @@
+// The live web page's server: what it accepts and refuses (web/Requests.h),
+// and a real LiveServer on loopback asked by a real HTTP client and
+// WebSockets — the page's files, the state as JSON, the token, read-only
+// (every other method refused, nothing reaches a vehicle), hostile input
+// (long URLs, bad parameters, oversized and binary frames, raw garbage after
+// the upgrade, more connections than allowed) refused while it keeps serving.
+#include "session/Console.h"
+#include "session/OperationsFeed.h"
+#include "web/LiveServer.h"
+#include "web/Requests.h"
+
+#include "Schemas.h"
+
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QNetworkAccessManager>
+#include <QNetworkReply>
+#include <QTcpSocket>
+#include <QTest>
+#include <QWebSocket>
+
+#include <gtest/gtest.h>
+
+#include "core/DataFiles.h"
+
+using namespace neptus;
+using namespace Qt::StringLiterals;
+
+namespace {
+
+constexpr qint64 now = 1'790'000'000'000;
+
+QUrl api(const QString &pathAndQuery)
+{
+    return QUrl(u"http://127.0.0.1:8080"_s + pathAndQuery);
+}
+
+struct Reply
+{
+    int status = 0;
+    QByteArray body;
+    QNetworkReply::NetworkError error = QNetworkReply::NoError;
+};
+
+Reply fetch(const QUrl &url, const QByteArray &method = "GET", const QByteArray &authorization = {})
+{
+    static QNetworkAccessManager manager;
+    QNetworkRequest request(url);
+    if (!authorization.isEmpty())
+        request.setRawHeader("Authorization", authorization);
+    QNetworkReply *reply = manager.sendCustomRequest(request, method, method == "GET" ? QByteArray() : QByteArray("x=1"));
+    EXPECT_TRUE(QTest::qWaitFor([&] { return reply->isFinished(); }, 10000)) << url.toString().toStdString();
+    Reply r{reply->attribute(QNetworkRequest::HttpStatusCodeAttribute).toInt(), reply->readAll(), reply->error()};
+    reply->deleteLater();
+    return r;
+}
+
+struct Server : ::testing::Test
+{
+    session::Console console{test::shippedSchema()};
+    session::OperationsFeed feed{console, nullptr};
+    std::unique_ptr<web::LiveServer> server;
+    QString base;
+
+    void start(web::WebConfig config = {})
+    {
+        config.port = 0;
+        config.pageDir = dataPath(u"web"_s);
+        config.pushMs = 100;
+        config.maxConnections = 20;
+        server = std::make_unique<web::LiveServer>(feed, config);
+        const auto port = server->start();
+        ASSERT_TRUE(port.has_value()) << port.error().toStdString();
+        base = u"http://127.0.0.1:%1"_s.arg(*port);
+    }
+    void vehicle()
+    {
+        msg::Message announce(test::shippedSchema()->byAbbrev(u"Announce"_s));
+        announce.header.src = 0x1f;
+        announce.setBytes(announce.def()->fieldIndex.value(u"sys_name"_s), "lauv-sim-1");
+        console.ingest(announce);
+        msg::Message state(test::shippedSchema()->byAbbrev(u"EstimatedState"_s));
+        state.header.src = 0x1f;
+        state.setNumber(state.def()->fieldIndex.value(u"lat"_s), 0.7180);
+        state.setNumber(state.def()->fieldIndex.value(u"lon"_s), -0.1503);
+        state.setNumber(state.def()->fieldIndex.value(u"depth"_s), 3.0);
+        console.ingest(state);
+    }
+};
+
+} // namespace
+
+TEST(WebRequests, WhatThePageMayAskIsCheckedBeforeUse)
+{
+    auto track = web::parseApi(api(u"/api/track?system=lauv-sim-1&from=100&to=200"_s), now);
+    ASSERT_TRUE(track.has_value());
+    EXPECT_EQ(track->kind, web::ApiRequest::Track);
+    EXPECT_EQ(track->system, u"lauv-sim-1"_s);
+    EXPECT_EQ(track->fromMs, 100);
+    auto lastHour = web::parseApi(api(u"/api/alarms"_s), now);
+    ASSERT_TRUE(lastHour.has_value());
+    EXPECT_EQ(lastHour->toMs, now);
+    EXPECT_EQ(lastHour->fromMs, now - 3'600'000);
+    EXPECT_TRUE(web::parseApi(api(u"/api/coastline?bbox=-9,41,-8,42"_s), now).has_value());
+    EXPECT_TRUE(web::parseApi(api(u"/api/state?token=abc"_s), now).has_value()); // the token is not a parameter
+
+    const auto refused = [](const QString &url) {
+        const auto r = web::parseApi(api(url), now);
+        return r ? 0 : r.error().status;
+    };
+    EXPECT_EQ(refused(u"/api/track?system=../../etc/passwd"_s), 400);
+    EXPECT_EQ(refused(u"/api/track?system=a&from=x"_s), 400);
+    EXPECT_EQ(refused(u"/api/track?system=a&from=5&to=4"_s), 400);
+    EXPECT_EQ(refused(u"/api/track?system=a&from=0&to=999999999999"_s), 400); // more than a week
+    EXPECT_EQ(refused(u"/api/track?system=a&system=b"_s), 400);
+    EXPECT_EQ(refused(u"/api/alarms?colour=red"_s), 400);
+    EXPECT_EQ(refused(u"/api/coastline?bbox=-20,41,-8,42"_s), 400);
+    EXPECT_EQ(refused(u"/api/coastline?bbox=1,2,3"_s), 400);
+    EXPECT_EQ(refused(u"/api/command?op=abort"_s), 404);
+    EXPECT_EQ(refused(u"/api/state?x="_s + QString(3000, u'a')), 414);
+
+    EXPECT_TRUE(web::staticFile(u"/"_s, u"/p"_s, u"/l"_s).has_value());
+    EXPECT_EQ(web::staticFile(u"/leaflet/leaflet.js"_s, u"/p"_s, u"/l"_s)->path, u"/l/leaflet.js"_s);
+    EXPECT_FALSE(web::staticFile(u"/../etc/passwd"_s, u"/p"_s, u"/l"_s).has_value());
+    EXPECT_FALSE(web::staticFile(u"/leaflet/../../etc/passwd"_s, u"/p"_s, u"/l"_s).has_value());
+
+    const QString token = u"0123456789abcdef"_s;
+    EXPECT_TRUE(web::authorized(api(u"/api/state?token=0123456789abcdef"_s), {}, token));
+    EXPECT_TRUE(web::authorized(api(u"/api/state"_s), "Bearer 0123456789abcdef", token));
+    EXPECT_FALSE(web::authorized(api(u"/api/state"_s), {}, token));
+    EXPECT_FALSE(web::authorized(api(u"/api/state?token=0123456789abcdeX"_s), {}, token));
+    EXPECT_FALSE(web::authorized(api(u"/api/state"_s), "Bearer 0123456789abcde", token));
+}
+
+TEST_F(Server, ServesThePageAndTheStateAndNothingThatCommands)
+{
+    start();
+    vehicle();
+    const Reply page = fetch(QUrl(base + u"/"_s));
+    EXPECT_EQ(page.status, 200);
+    EXPECT_TRUE(page.body.contains("<div id=\"map\""));
+    EXPECT_EQ(fetch(QUrl(base + u"/leaflet/leaflet.js"_s)).status, 200);
+    const Reply state = fetch(QUrl(base + u"/api/state"_s));
+    ASSERT_EQ(state.status, 200);
+    const QJsonArray systems = QJsonDocument::fromJson(state.body).object().value(u"systems"_s).toArray();
+    ASSERT_EQ(systems.size(), 1);
+    EXPECT_EQ(systems[0].toObject().value(u"name"_s).toString(), u"lauv-sim-1"_s);
+    EXPECT_NEAR(systems[0].toObject().value(u"lat"_s).toDouble(), 0.7180 * 180 / M_PI, 1e-6);
+    EXPECT_EQ(fetch(QUrl(base + u"/api/track?system=lauv-sim-1"_s)).status, 503); // no database here: said so
+    // The offline coastline (GSHHG) around Porto: shore lines in lat, lon.
+    const Reply coast = fetch(QUrl(base + u"/api/coastline?bbox=-8.8,41.0,-8.5,41.3"_s));
+    ASSERT_EQ(coast.status, 200) << coast.body.constData();
+    const QJsonArray lines = QJsonDocument::fromJson(coast.body).object().value(u"lines"_s).toArray();
+    ASSERT_FALSE(lines.isEmpty());
+    int inBox = 0; // the shore by Porto is in the box (whole bins come back, so points around it too)
+    for (const QJsonValue &line : lines)
+        for (const QJsonValue &p : line.toArray())
+            inBox += p[0].toDouble() > 41.0 && p[0].toDouble() < 41.3 && p[1].toDouble() > -8.8 && p[1].toDouble() < -8.5;
+    EXPECT_GT(inBox, 5);
+
+    // Read-only: every other method, on every path, is refused; nothing went out.
+    for (const QByteArray method : {"POST", "PUT", "DELETE", "PATCH"})
+        for (const QString &path : {u"/"_s, u"/api/state"_s, u"/api/plan/start"_s, u"/ws"_s})
+            EXPECT_EQ(fetch(QUrl(base + path), method).status, 405) << method.constData() << " " << path.toStdString();
+    EXPECT_EQ(fetch(QUrl(base + u"/api/abort?system=lauv-sim-1"_s)).status, 404);
+    EXPECT_EQ(console.tree().find(u"lauv-sim-1/out"_s), tree::noNode) << "nothing was sent to the vehicle";
+}
+
+TEST_F(Server, BeyondLoopbackItNeedsATokenAndThenAsksForIt)
+{
+    web::WebConfig open;
+    open.address = QHostAddress(u"0.0.0.0"_s);
+    open.pageDir = dataPath(u"web"_s);
+    web::LiveServer refused(feed, open);
+    const auto started = refused.start();
+    ASSERT_FALSE(started.has_value());
+    EXPECT_NE(started.error().indexOf(u"needs an access token"_s), -1) << started.error().toStdString();
+    web::WebConfig shortToken = open;
+    shortToken.token = u"abc"_s;
+    EXPECT_NE(web::LiveServer(feed, shortToken).start().error().indexOf(u"at least 16"_s), -1);
+
+    web::WebConfig withToken;
+    withToken.token = u"0123456789abcdef-token"_s;
+    start(withToken);
+    EXPECT_EQ(fetch(QUrl(base + u"/api/state"_s)).status, 401);
+    EXPECT_EQ(fetch(QUrl(base + u"/"_s)).status, 401);
+    EXPECT_EQ(fetch(QUrl(base + u"/api/state?token=wrong-token-wrong-t"_s)).status, 401);
+    EXPECT_EQ(fetch(QUrl(base + u"/api/state?token=0123456789abcdef-token"_s)).status, 200);
+    EXPECT_EQ(fetch(QUrl(base + u"/api/state"_s), "GET", "Bearer 0123456789abcdef-token").status, 200);
+    QWebSocket anonymous;
+    anonymous.open(QUrl(u"ws"_s + base.mid(4) + u"/ws"_s));
+    EXPECT_TRUE(QTest::qWaitFor([&] { return anonymous.state() == QAbstractSocket::UnconnectedState; }, 5000));
+    QWebSocket known;
+    QStringList frames;
+    QObject::connect(&known, &QWebSocket::textMessageReceived, [&](const QString &m) { frames.append(m); });
+    known.open(QUrl(u"ws"_s + base.mid(4) + u"/ws?token=0123456789abcdef-token"_s));
+    EXPECT_TRUE(QTest::qWaitFor([&] { return frames.size() >= 3; }, 5000)); // hello, state, then pushes
+}
+
+TEST_F(Server, HostileInputIsRefusedAndTheServerKeepsServing)
+{
+    start();
+    vehicle();
+    // Long URLs, bad parameters.
+    EXPECT_EQ(fetch(QUrl(base + u"/api/state?x="_s + QString(5000, u'a'))).status, 414);
+    EXPECT_EQ(fetch(QUrl(base + u"/api/track?system=%00%ff"_s)).status, 400);
+    EXPECT_EQ(fetch(QUrl(base + u"/api/track?system=a&from=-1"_s)).status, 400);
+
+    // WebSockets: the page listens only. An oversized frame, a binary one or anything but "ping" closes that client.
+    const QUrl ws(u"ws"_s + base.mid(4) + u"/ws"_s);
+    QWebSocket quiet, big, binary, chatty;
+    int quietFrames = 0;
+    QObject::connect(&quiet, &QWebSocket::textMessageReceived, [&] { ++quietFrames; });
+    for (QWebSocket *s : {&quiet, &big, &binary, &chatty})
+        s->open(ws);
+    ASSERT_TRUE(QTest::qWaitFor([&] {
+        return server->webSocketClients() == 4 && std::ranges::all_of(std::array{&quiet, &big, &binary, &chatty}, [](QWebSocket *s) {
+                   return s->state() == QAbstractSocket::ConnectedState;
+               });
+    }, 5000));
+    big.sendTextMessage(QString(100'000, u'x'));
+    binary.sendBinaryMessage(QByteArray(10, '\0'));
+    chatty.sendTextMessage(u"{\"op\":\"abort\"}"_s);
+    quiet.sendTextMessage(u"ping"_s);
+    EXPECT_TRUE(QTest::qWaitFor([&] { return server->webSocketClients() == 1; }, 5000))
+        << server->webSocketClients() << " clients; big " << big.state() << ", binary " << binary.state() << ", chatty " << chatty.state();
+    EXPECT_EQ(quiet.state(), QAbstractSocket::ConnectedState);
+    const int before = quietFrames;
+    EXPECT_TRUE(QTest::qWaitFor([&] { return quietFrames > before + 2; }, 3000)) << "the well-behaved page still hears";
+
+    // Garbage after a valid upgrade (not WebSocket frames) closes that connection.
+    QTcpSocket raw;
+    raw.connectToHost(QHostAddress::LocalHost, QUrl(base).port());
+    ASSERT_TRUE(raw.waitForConnected(3000));
+    raw.write("GET /ws HTTP/1.1\r\nHost: 127.0.0.1\r\nUpgrade: websocket\r\nConnection: Upgrade\r\n"
+              "Sec-WebSocket-Key: dGhlIHNhbXBsZSBub25jZQ==\r\nSec-WebSocket-Version: 13\r\n\r\n");
+    ASSERT_TRUE(QTest::qWaitFor([&] { return raw.bytesAvailable() > 0; }, 3000));
+    EXPECT_TRUE(raw.readAll().startsWith("HTTP/1.1 101"));
+    raw.write(QByteArray(64, '\xff'));
+    EXPECT_TRUE(QTest::qWaitFor([&] { return raw.state() == QAbstractSocket::UnconnectedState; }, 5000));
+
+    // More connections than allowed (20 here): the extra ones are closed at once; it still answers after.
+    std::vector<std::unique_ptr<QTcpSocket>> many;
+    for (int i = 0; i < 60; ++i) {
+        many.push_back(std::make_unique<QTcpSocket>());
+        many.back()->connectToHost(QHostAddress::LocalHost, QUrl(base).port());
+    }
+    QTest::qWait(500);
+    const auto open = std::count_if(many.begin(), many.end(), [](const auto &s) { return s->state() == QAbstractSocket::ConnectedState; });
+    EXPECT_LE(open, 20);
+    many.clear();
+    QTest::qWait(200);
+    const Reply after = fetch(QUrl(base + u"/api/state"_s));
+    EXPECT_EQ(after.status, 200);
+    EXPECT_TRUE(after.body.contains("lauv-sim-1"));
+}

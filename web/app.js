@@ -1,0 +1,157 @@
+// The live page: a WebSocket from the console (or neptus-logd) says, every
+// second, where every system is, its health, the active alarms and the plans
+// running; the page only listens. History (tracks before the page opened)
+// comes from /api/track when the console keeps a database.
+'use strict';
+
+const token = new URLSearchParams(location.search).get('token');
+const withToken = (path) => token ? path + (path.includes('?') ? '&' : '?') + 'token=' + encodeURIComponent(token) : path;
+const colours = ['#e53935', '#1e88e5', '#43a047', '#fb8c00', '#8e24aa', '#00897b', '#f4511e', '#3949ab'];
+
+const map = L.map('map', { zoomControl: true, attributionControl: false, preferCanvas: true }).setView([41.18, -8.7], 13);
+const systems = new Map(); // name → { marker, track, colour, fitted }
+let coastLayer = null, coastBox = null, fitted = false;
+
+function element(tag, className, text) {
+  const e = document.createElement(tag);
+  if (className) e.className = className;
+  if (text !== undefined) e.textContent = text;
+  return e;
+}
+
+function vehicleIcon(colour, heading, name) {
+  const html = '<div class="vehicle"><svg viewBox="-14 -14 28 28"><g transform="rotate(' + heading.toFixed(0) + ')">' +
+    '<path d="M0,-12 L7,9 L0,5 L-7,9 Z" fill="' + colour + '" stroke="#fff" stroke-width="1.5"/></g></svg></div>';
+  return L.divIcon({ html: html, className: '', iconSize: [28, 28], iconAnchor: [14, 14] });
+}
+
+function systemEntry(name) {
+  let s = systems.get(name);
+  if (!s) {
+    const colour = colours[systems.size % colours.length];
+    s = { colour: colour, track: L.polyline([], { color: colour, weight: 2, opacity: 0.8 }).addTo(map), marker: null };
+    systems.set(name, s);
+  }
+  return s;
+}
+
+function loadHistory(name) {
+  fetch(withToken('/api/track?system=' + encodeURIComponent(name) + '&from=' + (Date.now() - 6 * 3600e3)))
+    .then((r) => r.ok ? r.json() : null)
+    .then((answer) => {
+      if (!answer || !answer.rows.length) return;
+      const s = systemEntry(name);
+      const older = answer.rows.map((row) => [row[1], row[2]]);
+      s.track.setLatLngs(older.concat(s.track.getLatLngs()));
+    })
+    .catch(() => {});
+}
+
+function loadCoastline() {
+  const b = map.getBounds().pad(0.5);
+  const box = [b.getWest(), b.getSouth(), b.getEast(), b.getNorth()].map((v) => v.toFixed(3));
+  if (b.getEast() - b.getWest() > 10 || b.getNorth() - b.getSouth() > 10) return;
+  if (coastBox && coastBox.contains(map.getBounds())) return;
+  fetch(withToken('/api/coastline?bbox=' + box.join(',')))
+    .then((r) => r.ok ? r.json() : null)
+    .then((answer) => {
+      if (!answer) return;
+      if (coastLayer) coastLayer.remove();
+      coastLayer = L.layerGroup(answer.lines.map((line) => L.polyline(line, { color: '#6d5c3d', weight: 1.5, interactive: false })));
+      coastLayer.addTo(map);
+      coastBox = b;
+    })
+    .catch(() => {});
+}
+
+function showState(state) {
+  const list = document.getElementById('systems');
+  const plans = document.getElementById('plans');
+  list.replaceChildren();
+  plans.replaceChildren();
+  const bounds = [];
+  for (const sys of state.systems) {
+    const s = systemEntry(sys.name);
+    if (sys.lat !== undefined) {
+      const here = [sys.lat, sys.lon];
+      bounds.push(here);
+      const last = s.track.getLatLngs().at(-1);
+      if (!last || last.lat !== sys.lat || last.lng !== sys.lon) s.track.addLatLng(here);
+      if (!s.marker) {
+        s.marker = L.marker(here, { icon: vehicleIcon(s.colour, sys.heading, sys.name), title: sys.name }).addTo(map);
+        s.marker.bindTooltip(sys.name, { permanent: true, direction: 'right', offset: [12, 0], className: 'label' });
+      } else {
+        s.marker.setLatLng(here);
+        s.marker.setIcon(vehicleIcon(s.colour, sys.heading, sys.name));
+      }
+    }
+    const item = element('li', 'sys ' + sys.health);
+    item.dataset.system = sys.name;
+    item.append(element('span', 'dot'), element('span', 'name', sys.name), element('span', 'age', sys.age < 2 ? 'now' : sys.age.toFixed(0) + ' s ago'));
+    const facts = [sys.kind || '?', sys.health];
+    if (sys.lat !== undefined) facts.push(sys.lat.toFixed(5) + ', ' + sys.lon.toFixed(5), 'depth ' + sys.depth.toFixed(1) + ' m',
+                                         'heading ' + sys.heading.toFixed(0) + '°', sys.speed.toFixed(1) + ' m/s');
+    item.append(element('span', 'detail', facts.join(' · ')));
+    item.addEventListener('click', () => { if (sys.lat !== undefined) map.setView([sys.lat, sys.lon], Math.max(map.getZoom(), 15)); });
+    list.append(item);
+    if (sys.plan && sys.plan.state === 'EXECUTING') {
+      const p = element('li', 'plan');
+      p.dataset.system = sys.name;
+      p.append(element('div', 'name', sys.name + ': ' + sys.plan.id), element('div', 'detail', 'maneuver ' + sys.plan.maneuver + ' · ' + sys.plan.progress.toFixed(0) + ' %'));
+      const bar = element('div', 'bar');
+      const fill = element('div');
+      fill.style.width = Math.max(0, Math.min(100, sys.plan.progress)) + '%';
+      bar.append(fill);
+      p.append(bar);
+      plans.append(p);
+    }
+  }
+  if (!state.systems.length) list.append(element('li', 'empty', 'none heard yet'));
+  if (!plans.children.length) plans.append(element('li', 'empty', 'none running'));
+  document.getElementById('system-count').textContent = state.systems.length ? '(' + state.systems.length + ')' : '';
+
+  const alarms = document.getElementById('alarms');
+  alarms.replaceChildren();
+  for (const a of state.alarms) {
+    const item = element('li', 'alarm' + (a.acknowledged ? ' ack' : ''));
+    item.dataset.origin = a.origin;
+    item.append(element('span', 'badge level-' + a.level, a.level), element('span', 'what', a.origin), element('span', 'msg', a.message));
+    alarms.append(item);
+  }
+  if (!state.alarms.length) alarms.append(element('li', 'empty', 'none'));
+  document.getElementById('alarm-count').textContent = state.alarms.length ? '(' + state.alarms.length + ')' : '';
+  if (!fitted && bounds.length) {
+    map.fitBounds(L.latLngBounds(bounds).pad(0.6), { maxZoom: 15 });
+    fitted = true;
+  }
+}
+
+function connect() {
+  const link = document.getElementById('link');
+  const socket = new WebSocket((location.protocol === 'https:' ? 'wss://' : 'ws://') + location.host + withToken('/ws'));
+  socket.onopen = () => { link.textContent = 'live'; link.className = 'link up'; };
+  socket.onclose = () => {
+    link.textContent = 'connection lost: retrying'; link.className = 'link down';
+    setTimeout(connect, 2000);
+  };
+  socket.onmessage = (event) => {
+    const message = JSON.parse(event.data);
+    if (message.type === 'hello') {
+      document.getElementById('title').textContent = message.title;
+      document.title = message.title + ' · live';
+      if (message.tiles) L.tileLayer(message.tiles, { maxZoom: 19 }).addTo(map);
+      for (const [name, line] of Object.entries(message.tracks)) {
+        systemEntry(name).track.setLatLngs(line);
+        if (message.history) loadHistory(name);
+      }
+    } else if (message.type === 'state') {
+      showState(message);
+      document.body.dataset.updated = String(message.t);
+    }
+  };
+}
+
+L.control.scale({ imperial: false }).addTo(map);
+map.on('moveend', loadCoastline);
+loadCoastline();
+connect();
