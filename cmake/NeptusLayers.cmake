@@ -35,7 +35,7 @@ set(NEPTUS_LAYERS
   "neptus-script-host  -           neptus-scripting"
   "neptus-xslt         -           neptus-processor"
   "neptus-mission      -           neptus-processor neptus-models"
-  "neptus-log          -           neptus-logs"
+  "neptus-log          -           neptus-logs neptus-database"
   "neptus-logd         -           neptus-session neptus-web"
 )
 

@@ -5,6 +5,8 @@
 //   neptus-log export --to csv|kml|geojson|gpx [--out PATH] LOG...
 //   neptus-log slice --from T --to T --out DIR LOG...   (T: seconds from the start, or UTC "2026-11-24T10:00:05")
 //   neptus-log merge --out DIR LOG...
+//   neptus-log sessions DATABASE    (the operation's database: who recorded, and the logs, to open with --replay)
+#include "database/Database.h"
 #include "log/LogExport.h"
 
 #include <QCommandLineParser>
@@ -75,6 +77,37 @@ std::expected<double, QString> parseTime(const QString &text, double begin)
     return std::unexpected(QStringLiteral("'%1' is not a time: seconds from the start (90, 1:30) or UTC (2026-11-24T10:00:05)").arg(text));
 }
 
+QString utc(qint64 ms)
+{
+    return QDateTime::fromMSecsSinceEpoch(ms, QTimeZone::UTC).toString(QStringLiteral("yyyy-MM-dd HH:mm:ss"));
+}
+
+// The operation's sessions (each console or recorder node that wrote the
+// database) and the logs they recorded, oldest first.
+int sessions(const QString &database)
+{
+    const auto location = db::Location::parse(database);
+    if (!location)
+        return fail(location.error());
+    auto reader = db::Reader::open(*location);
+    if (!reader)
+        return fail(reader.error());
+    const auto all = (*reader)->sessions();
+    const auto logs = (*reader)->logs();
+    if (!all || !logs)
+        return fail(all ? logs.error() : all.error());
+    QTextStream out(stdout);
+    out << location->display() << ": " << all->size() << " sessions, " << logs->size() << " logs\n";
+    for (const auto &s : *all) {
+        out << "\n" << utc(s.startMs) << " – " << utc(s.lastMs).mid(11) << " UTC  " << s.console << " on " << s.host << " (" << s.program << ")\n";
+        for (const auto &l : *logs)
+            if (l.session == s.session)
+                out << "    " << l.folder << "  " << QString::number((l.endMs - l.beginMs) / 1000.0, 'f', 0) << " s, " << l.packets
+                    << " packets\n";
+    }
+    return 0;
+}
+
 int info(const log::LogSet &logs)
 {
     const log::LogSummary summary = log::summarize(logs);
@@ -109,7 +142,7 @@ int main(int argc, char **argv)
     parser.setApplicationDescription(QStringLiteral("Logs (Data.lsf with IMC.xml): their contents, exports, slices, merges."));
     parser.addHelpOption();
     parser.addVersionOption();
-    parser.addPositionalArgument(QStringLiteral("command"), QStringLiteral("info, export, slice or merge"));
+    parser.addPositionalArgument(QStringLiteral("command"), QStringLiteral("info, export, slice, merge, or sessions DATABASE"));
     parser.addPositionalArgument(QStringLiteral("logs"), QStringLiteral("log folders (or their Data.lsf[.gz])"), QStringLiteral("LOG..."));
     const QCommandLineOption to(QStringLiteral("to"), QStringLiteral("export format: csv, kml, geojson or gpx"), QStringLiteral("format"));
     const QCommandLineOption outPath(QStringLiteral("out"), QStringLiteral("where to write"), QStringLiteral("path"));
@@ -124,6 +157,8 @@ int main(int argc, char **argv)
         return usageError;
     }
     const QString command = positional.front();
+    if (command == u"sessions")
+        return sessions(positional.at(1));
     if (!QStringList{QStringLiteral("info"), QStringLiteral("export"), QStringLiteral("slice"), QStringLiteral("merge")}.contains(command))
         return fail(QStringLiteral("unknown command '%1' (info, export, slice, merge)").arg(command)), usageError;
 

@@ -18,6 +18,7 @@
 #include <QUuid>
 
 #include <atomic>
+#include <cmath>
 
 using namespace Qt::StringLiterals;
 
@@ -83,24 +84,48 @@ struct TableInfo
     const char *name;
     QStringList columns;
     bool series; // carries session + seq, written once
-    QString key; // upsert key (non-series tables)
+    QStringList types; // of the columns, for PostgreSQL's arrays
 };
 
 const TableInfo &info(Table table)
 {
     static const TableInfo tables[] = {
-        {"sessions", {u"console"_s, u"host"_s, u"program"_s, u"started"_s, u"last_seen"_s}, false, u"session"_s},
-        {"systems", {u"imc_id"_s, u"name"_s, u"kind"_s, u"first_heard"_s, u"last_heard"_s}, false, u"imc_id, name"_s},
-        {"positions", {u"t"_s, u"system"_s, u"imc_id"_s, u"lat"_s, u"lon"_s, u"depth"_s, u"altitude"_s, u"heading"_s, u"speed"_s}, true, {}},
-        {"alarms", {u"t"_s, u"origin"_s, u"level"_s, u"event"_s, u"message"_s}, true, {}},
-        {"plan_events", {u"t"_s, u"system"_s, u"plan"_s, u"event"_s, u"maneuver"_s, u"detail"_s}, true, {}},
-        {"logbook", {u"t"_s, u"system"_s, u"type"_s, u"context"_s, u"text"_s}, true, {}},
-        {"logs", {u"folder"_s, u"began"_s, u"ended"_s, u"packets"_s, u"bytes"_s}, false, u"session, folder"_s},
+        {"sessions", {u"console"_s, u"host"_s, u"program"_s, u"started"_s, u"last_seen"_s}, false,
+         {u"text"_s, u"text"_s, u"text"_s, u"bigint"_s, u"bigint"_s}},
+        {"systems", {u"imc_id"_s, u"name"_s, u"kind"_s, u"first_heard"_s, u"last_heard"_s}, false,
+         {u"integer"_s, u"text"_s, u"text"_s, u"bigint"_s, u"bigint"_s}},
+        {"positions", {u"t"_s, u"system"_s, u"imc_id"_s, u"lat"_s, u"lon"_s, u"depth"_s, u"altitude"_s, u"heading"_s, u"speed"_s}, true,
+         {u"bigint"_s, u"text"_s, u"integer"_s, u"float8"_s, u"float8"_s, u"float8"_s, u"float8"_s, u"float8"_s, u"float8"_s}},
+        {"alarms", {u"t"_s, u"origin"_s, u"level"_s, u"event"_s, u"message"_s}, true,
+         {u"bigint"_s, u"text"_s, u"text"_s, u"text"_s, u"text"_s}},
+        {"plan_events", {u"t"_s, u"system"_s, u"plan"_s, u"event"_s, u"maneuver"_s, u"detail"_s}, true,
+         {u"bigint"_s, u"text"_s, u"text"_s, u"text"_s, u"text"_s, u"text"_s}},
+        {"logbook", {u"t"_s, u"system"_s, u"type"_s, u"context"_s, u"text"_s}, true,
+         {u"bigint"_s, u"text"_s, u"text"_s, u"text"_s, u"text"_s}},
+        {"logs", {u"folder"_s, u"began"_s, u"ended"_s, u"packets"_s, u"bytes"_s}, false,
+         {u"text"_s, u"bigint"_s, u"bigint"_s, u"bigint"_s, u"bigint"_s}},
     };
     return tables[int(table)];
 }
 
 constexpr int tableCount = 7;
+
+// One element of a PostgreSQL array literal ({"a","b"}, {1,2}).
+void appendElement(QString &out, const QVariant &value, bool text)
+{
+    if (value.isNull() || !value.isValid()) {
+        out += u"NULL"_s;
+    } else if (text) {
+        QString s = value.toString();
+        s.replace(u'\\', u"\\\\"_s).replace(u'"', u"\\\""_s);
+        out += u'"' + s + u'"';
+    } else if (value.typeId() == QMetaType::Double || value.typeId() == QMetaType::Float) {
+        const double d = value.toDouble();
+        out += std::isnan(d) ? u"NaN"_s : std::isinf(d) ? (d > 0 ? u"Infinity"_s : u"-Infinity"_s) : QString::number(d, 'g', 17);
+    } else {
+        out += QString::number(value.toLongLong());
+    }
+}
 
 // Version 1: every table. Types both engines take (SQLite reads them by affinity).
 const QStringList schemaV1 = {
@@ -346,6 +371,7 @@ struct Writer::Worker : QObject
 
     void disconnect(const QString &why)
     {
+        prepared_.clear();
         connected = false;
         if (QSqlDatabase db = QSqlDatabase::database(connection, false); db.isValid())
             db.close();
@@ -420,16 +446,76 @@ struct Writer::Worker : QObject
                        "ELSE systems.kind END, first_heard = %1(systems.first_heard, excluded.first_heard), "
                        "last_heard = %2(systems.last_heard, excluded.last_heard)"_s.arg(least, greatest);
         }
+        if (postgres()) {
+            // PostgreSQL: a column of values as one array parameter, unnested into rows (a bind a
+            // column instead of a bind a value: the driver quotes and the server parses far less).
+            QStringList types = t.types;
+            if (t.series)
+                types = QStringList{u"text"_s, u"bigint"_s} + types;
+            else if (table != Table::System)
+                types.prepend(u"text"_s);
+            std::shared_ptr<QSqlQuery> &statement = prepared_[int(table)];
+            if (!statement) {
+                QStringList arrays;
+                for (const QString &type : types)
+                    arrays.append(u"?::"_s + type + u"[]"_s);
+                statement = std::make_shared<QSqlQuery>(db);
+                if (!statement->prepare(u"INSERT INTO %1 (%2) SELECT * FROM unnest(%3)%4"_s.arg(QLatin1StringView(t.name), cols.join(u", "_s),
+                                                                                               arrays.join(u", "_s), conflict))) {
+                    *error = sqlError(statement->lastError());
+                    statement.reset();
+                    return false;
+                }
+            }
+            constexpr qsizetype chunk = 20000;
+            for (qsizetype from = 0; from < qsizetype(rows.size()); from += chunk) {
+                const qsizetype to = std::min<qsizetype>(from + chunk, qsizetype(rows.size()));
+                for (qsizetype c = 0; c < types.size(); ++c) {
+                    const bool text = types[c] == u"text"_s;
+                    const qsizetype own = c - (types.size() - t.columns.size()); // index into the row's values
+                    QString array = u"{"_s;
+                    array.reserve((to - from) * 12);
+                    for (qsizetype i = from; i < to; ++i) {
+                        if (i > from)
+                            array += u',';
+                        const Queued &row = *rows[size_t(i)];
+                        appendElement(array, own >= 0 ? row.values[own] : (c == 0 ? QVariant(rowSession) : QVariant(row.seq)), text);
+                    }
+                    array += u'}';
+                    statement->bindValue(int(c), array);
+                }
+                if (!statement->exec()) {
+                    *error = sqlError(statement->lastError());
+                    return false;
+                }
+            }
+            return true;
+        }
         const QString one = u'(' + QStringList(cols.size(), u"?"_s).join(u',') + u')';
         const qsizetype chunk = std::max<qsizetype>(1, 4000 / cols.size());
         for (qsizetype from = 0; from < qsizetype(rows.size()); from += chunk) {
             const qsizetype n = std::min<qsizetype>(chunk, qsizetype(rows.size()) - from);
-            QSqlQuery query(db);
-            if (!query.prepare(u"INSERT INTO %1 (%2) VALUES %3%4"_s.arg(QLatin1StringView(t.name), cols.join(u", "_s),
-                                                                       QStringList(n, one).join(u','), conflict))) {
-                *error = sqlError(query.lastError());
+            // Full chunks reuse one prepared statement per table (parsed once per connection).
+            const QString sql = u"INSERT INTO %1 (%2) VALUES %3%4"_s.arg(QLatin1StringView(t.name), cols.join(u", "_s),
+                                                                          QStringList(n, one).join(u','), conflict);
+            QSqlQuery adHoc(db);
+            QSqlQuery *statement = &adHoc;
+            if (n == chunk) {
+                std::shared_ptr<QSqlQuery> &kept = prepared_[int(table)];
+                if (!kept) {
+                    kept = std::make_shared<QSqlQuery>(db);
+                    if (!kept->prepare(sql)) {
+                        *error = sqlError(kept->lastError());
+                        kept.reset();
+                        return false;
+                    }
+                }
+                statement = kept.get();
+            } else if (!adHoc.prepare(sql)) {
+                *error = sqlError(adHoc.lastError());
                 return false;
             }
+            QSqlQuery &query = *statement;
             for (qsizetype i = from; i < from + n; ++i) {
                 const Queued &row = *rows[size_t(i)];
                 if (table != Table::System)
@@ -447,6 +533,7 @@ struct Writer::Worker : QObject
         return true;
     }
     std::vector<Queued> m_merged;
+    QHash<int, std::shared_ptr<QSqlQuery>> prepared_; // by table, for full chunks; cleared with the connection
 
     // One transaction: every row, or none.
     bool writeRows(const QString &rowSession, const std::vector<Queued> &rows, QString *error)
@@ -633,6 +720,7 @@ Writer::~Writer()
         w.sinceAttempt.invalidate(); // one last attempt, whatever the back-off
         w.tick();
         delete w.timer;
+        w.prepared_.clear();
         if (QSqlDatabase::database(w.connection, false).isValid())
             QSqlDatabase::database(w.connection, false).close();
         QSqlDatabase::removeDatabase(w.connection);

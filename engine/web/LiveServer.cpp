@@ -11,6 +11,7 @@
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <QPointer>
 #include <QSslCertificate>
 #include <QSslKey>
 #include <QSslServer>
@@ -28,16 +29,18 @@ namespace neptus::web {
 namespace {
 
 // A TCP server that keeps at most `limit` connections open: past it a new one is closed at once.
+// Its sockets are looked at when one comes (Qt HttpServer disconnects every signal of a socket it
+// hands to a WebSocket, so their closing cannot be heard).
 class BoundedTcpServer : public QTcpServer
 {
 public:
     explicit BoundedTcpServer(int limit) : m_limit(limit) {}
-    int open() const { return m_open; }
 
 protected:
     void incomingConnection(qintptr descriptor) override
     {
-        if (m_open >= m_limit) {
+        std::erase_if(m_sockets, [](const QPointer<QTcpSocket> &s) { return !s || s->state() == QAbstractSocket::UnconnectedState; });
+        if (int(m_sockets.size()) >= m_limit) {
             ::close(int(descriptor));
             return;
         }
@@ -46,14 +49,13 @@ protected:
             delete socket;
             return;
         }
-        ++m_open;
-        connect(socket, &QObject::destroyed, this, [this] { --m_open; });
+        m_sockets.emplace_back(socket);
         addPendingConnection(socket);
     }
 
 private:
     int m_limit;
-    int m_open = 0;
+    std::vector<QPointer<QTcpSocket>> m_sockets;
 };
 
 QHttpServerResponse failure(int status, const QString &message)

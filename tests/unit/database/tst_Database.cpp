@@ -101,13 +101,14 @@ TEST(DatabaseLocation, AddressesAreReadOrRefusedWithTheReason)
 
 TEST_P(Engines, EveryKindOfRecordIsWrittenAndReadBack)
 {
+    const QString tricky = u"a \"quoted\" \\ back,slash {brace} NULL ção ✓ 'single'"_s;
     {
         Writer writer(location, options(dir.filePath(u"spool"_s)));
         writer.write(Row{Table::System, {0x1f, u"lauv-sim-1"_s, u"UUV"_s, 1000, 2000}});
         writer.write(Row{Table::System, {0x1f, u"lauv-sim-1"_s, QString(), 500, 1500}}); // earlier first, same key: merged
         writer.write(positions(u"lauv-sim-1"_s, 1000, 20));
         writer.write(Row{Table::Alarm, {1200, u"systems/lauv-sim-1/Navigation"_s, u"Error"_s, u"raised"_s, u"no fix"_s}});
-        writer.write(Row{Table::Alarm, {1300, u"systems/lauv-sim-1/Navigation"_s, u"Error"_s, u"acknowledged"_s, u"no fix"_s}});
+        writer.write(Row{Table::Alarm, {1300, u"systems/lauv-sim-1/Navigation"_s, u"Error"_s, u"acknowledged"_s, tricky}});
         writer.write(Row{Table::PlanEvent, {1400, u"lauv-sim-1"_s, u"survey"_s, u"started"_s, u"goto1"_s, QString()}});
         writer.write(Row{Table::LogBook, {1500, u"lauv-sim-1"_s, u"ERROR"_s, u"Navigation"_s, u"no fix"_s}});
         writer.write(Row{Table::Log, {u"/logs/20261124/120000-Default"_s, 1000, 2000, 300, 12000}});
@@ -141,6 +142,7 @@ TEST_P(Engines, EveryKindOfRecordIsWrittenAndReadBack)
     ASSERT_EQ(alarms->size(), 2u);
     EXPECT_EQ(alarms->at(0).event, u"raised"_s);
     EXPECT_EQ(alarms->at(1).event, u"acknowledged"_s);
+    EXPECT_EQ(alarms->at(1).message, tricky) << "text comes back as written, whatever it holds";
     EXPECT_EQ(alarms->at(0).console, u"console-a"_s);
     const auto plans = r.planEvents(0, 10000);
     ASSERT_TRUE(plans.has_value());

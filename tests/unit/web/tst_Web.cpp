@@ -240,6 +240,16 @@ TEST_F(Server, HostileInputIsRefusedAndTheServerKeepsServing)
     raw.write(QByteArray(64, '\xff'));
     EXPECT_TRUE(QTest::qWaitFor([&] { return raw.state() == QAbstractSocket::UnconnectedState; }, 5000));
 
+    // Pages opened and closed one after the other, more than the limit (20) in all: each is let in
+    // (before the fix, an upgraded socket was never counted out and page 21 was refused for good).
+    for (int i = 0; i < 30; ++i) {
+        QWebSocket page;
+        page.open(ws);
+        ASSERT_TRUE(QTest::qWaitFor([&] { return page.state() == QAbstractSocket::ConnectedState; }, 5000)) << "page " << i + 1;
+        page.close();
+        ASSERT_TRUE(QTest::qWaitFor([&] { return server->webSocketClients() == 1; }, 5000));
+    }
+
     // More connections than allowed (20 here): the extra ones are closed at once; it still answers after.
     std::vector<std::unique_ptr<QTcpSocket>> many;
     for (int i = 0; i < 60; ++i) {
