@@ -159,8 +159,8 @@ const Migration migrations[] = {{1, &schemaV1}};
 
 QString sqlError(const QSqlError &error)
 {
-    QString text = error.text().trimmed();
-    return text.isEmpty() ? u"unknown database error"_s : text.replace(u'\n', u' ');
+    const QString text = error.text().simplified(); // libpq's lines and tabs, on one line
+    return text.isEmpty() ? u"unknown database error"_s : text;
 }
 
 std::expected<void, QString> exec(QSqlDatabase &db, const QString &statement)

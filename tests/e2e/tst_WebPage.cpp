@@ -196,4 +196,14 @@ TEST(WebPage, AHeadlessBrowserSeesBothVehiclesMoveAndAnAlarmAppear)
     EXPECT_GT(browser.evaluate(u"document.querySelector('aside').getBoundingClientRect().top"_s).toDouble(),
               browser.evaluate(u"document.getElementById('map').getBoundingClientRect().bottom"_s).toDouble() - 1);
     EXPECT_TRUE(browser.screenshot(shots + u"/web-390x844-phone.png"_s));
+
+    // At night (a dark device), zoomed out to the coast: the offline shoreline drawn.
+    browser.size(1024, 600, false);
+    browser.call(u"Emulation.setEmulatedMedia"_s, {{u"features"_s, QJsonArray{QJsonObject{{u"name"_s, u"prefers-color-scheme"_s},
+                                                                                          {u"value"_s, u"dark"_s}}}}});
+    browser.evaluate(u"map.setZoom(12), true"_s);
+    EXPECT_TRUE(QTest::qWaitFor([&] { return browser.evaluate(u"coastLayer ? coastLayer.getLayers().length : 0"_s).toInt() > 0; }, 10000))
+        << "the coastline is drawn";
+    QTest::qWait(500);
+    EXPECT_TRUE(browser.screenshot(shots + u"/web-1024x600-night.png"_s));
 }
