@@ -8,6 +8,43 @@
 #include <QDir>
 #include <QFileInfo>
 #include <QRegularExpression>
+#include <QSettings>
+#include <QStandardPaths>
+
+namespace {
+
+// The log folders a session of the operation recorded (by its id's first characters, or the latest
+// session of a console by its name), from the operation's database.
+std::expected<QStringList, QString> sessionLogs(const QString &url, const QString &wanted)
+{
+    const auto location = neptus::db::Location::parse(url);
+    if (!location)
+        return std::unexpected(location.error());
+    if (location->engine == neptus::db::Location::Sqlite && !QFileInfo::exists(location->file))
+        return std::unexpected(QStringLiteral("no database at %1").arg(location->file));
+    auto reader = neptus::db::Reader::open(*location);
+    if (!reader)
+        return std::unexpected(reader.error());
+    const auto sessions = (*reader)->sessions();
+    const auto logs = (*reader)->logs();
+    if (!sessions || !logs)
+        return std::unexpected(sessions ? logs.error() : sessions.error());
+    QString found;
+    for (const auto &s : *sessions) // oldest first: a console's latest session wins
+        if (s.console == wanted || (wanted.size() >= 4 && s.session.startsWith(wanted)))
+            found = s.session;
+    if (found.isEmpty())
+        return std::unexpected(QStringLiteral("no session '%1' in %2 (neptus-log sessions %2 lists them)").arg(wanted, location->display()));
+    QStringList folders;
+    for (const auto &l : *logs)
+        if (l.session == found && QFileInfo::exists(l.folder))
+            folders << l.folder;
+    if (folders.isEmpty())
+        return std::unexpected(QStringLiteral("session %1 recorded no log that is still there").arg(found));
+    return folders;
+}
+
+} // namespace
 
 std::expected<CommandLine, QString> CommandLine::parse(const QStringList &arguments)
 {
@@ -111,6 +148,11 @@ std::expected<CommandLine, QString> CommandLine::parse(const QStringList &argume
     const QCommandLineOption replayFrom(QStringLiteral("replay-from"),
         QStringLiteral("With --replay: open the logs this many seconds after their start."), QStringLiteral("seconds"));
     const QCommandLineOption replayPlay(QStringLiteral("replay-play"), QStringLiteral("With --replay: start playing at once."));
+    const QCommandLineOption replaySession(QStringLiteral("replay-session"),
+        QStringLiteral("Review what a session of the operation recorded: its logs, found in the operation's database "
+                       "(--database, or the default beside the logs); a session id (its first characters; neptus-log sessions "
+                       "lists them) or a console's name (its latest session)."),
+        QStringLiteral("session"));
     const QCommandLineOption webPort(QStringLiteral("web-port"),
         QStringLiteral("Serve the live web page (read-only) on this port (0: any free one; default: the settings' web/port, else none)."),
         QStringLiteral("port"));
@@ -124,7 +166,7 @@ std::expected<CommandLine, QString> CommandLine::parse(const QStringList &argume
     const QCommandLineOption webKey(QStringLiteral("web-key"), QStringLiteral("The PEM private key of --web-cert."), QStringLiteral("file"));
     const QCommandLineOption webTiles(QStringLiteral("web-tiles"),
         QStringLiteral("Map tiles for the web page: a URL with {z}/{x}/{y} (default: the offline coastline only)."), QStringLiteral("url"));
-    parser.addOptions({logDir, noRecord, database, replay, replayFrom, replayPlay, webPort, webBind, webToken, webCert, webKey, webTiles});
+    parser.addOptions({logDir, noRecord, database, replay, replaySession, replayFrom, replayPlay, webPort, webBind, webToken, webCert, webKey, webTiles});
     parser.addOptions({console, screenshot, screenshotDelay, components, edit, select, system, palette, uiScale, gps, size, selfTest,
                        imcPort, imcBind, imcPeer, ddsDomain, ddsConfig, ddsKeys, ddsIdentity, defs, defsFor, imcDiscovery, dumpTree, quitAfter, forgetAfter, mission, share, name});
     // "--defs-for SYSTEM FILE" (two words, as the documentation writes it) is
@@ -188,6 +230,23 @@ std::expected<CommandLine, QString> CommandLine::parse(const QStringList &argume
         if (!QFileInfo::exists(log))
             return std::unexpected(QStringLiteral("--replay: '%1' does not exist").arg(log));
         result.replayLogs << QFileInfo(log).absoluteFilePath();
+    }
+    if (parser.isSet(replaySession)) {
+        QString url = result.database;
+        if (url.isEmpty())
+            url = QSettings().value(QStringLiteral("database/url")).toString();
+        if (url.isEmpty()) {
+            QString root = result.logDirectory;
+            if (root.isEmpty())
+                root = QSettings().value(QStringLiteral("log/folder")).toString();
+            if (root.isEmpty())
+                root = QDir(QStandardPaths::writableLocation(QStandardPaths::AppLocalDataLocation)).filePath(QStringLiteral("logs"));
+            url = QDir(root).filePath(QStringLiteral("operation.db"));
+        }
+        auto logs = sessionLogs(url, parser.value(replaySession));
+        if (!logs)
+            return std::unexpected(QStringLiteral("--replay-session: %1").arg(logs.error()));
+        result.replayLogs << *logs;
     }
     if (parser.isSet(replayFrom)) {
         bool ok = false;

@@ -246,16 +246,17 @@ std::expected<quint16, QString> LiveServer::start()
         if (!key.open(QIODevice::ReadOnly))
             return std::unexpected(u"web key %1: %2"_s.arg(m_config.key, key.errorString()));
         const QSslCertificate certificate(&cert, QSsl::Pem);
-        const QSslKey privateKey(&key, QSsl::Rsa, QSsl::Pem);
-        const QSslKey ecKey = privateKey.isNull() ? QSslKey(key.seek(0) ? &key : &key, QSsl::Ec, QSsl::Pem) : QSslKey();
+        QSslKey privateKey(&key, QSsl::Rsa, QSsl::Pem);
+        if (privateKey.isNull() && key.seek(0))
+            privateKey = QSslKey(&key, QSsl::Ec, QSsl::Pem);
         if (certificate.isNull())
             return std::unexpected(u"web certificate %1 is not a PEM certificate"_s.arg(m_config.certificate));
-        if (privateKey.isNull() && ecKey.isNull())
+        if (privateKey.isNull())
             return std::unexpected(u"web key %1 is not a PEM RSA or EC key"_s.arg(m_config.key));
         auto *ssl = new QSslServer;
         QSslConfiguration tls = QSslConfiguration::defaultConfiguration();
         tls.setLocalCertificate(certificate);
-        tls.setPrivateKey(privateKey.isNull() ? ecKey : privateKey);
+        tls.setPrivateKey(privateKey);
         tls.setProtocol(QSsl::TlsV1_2OrLater);
         ssl->setSslConfiguration(tls);
         ssl->setHandshakeTimeout(5000);

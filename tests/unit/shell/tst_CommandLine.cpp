@@ -1,4 +1,7 @@
 #include "CommandLine.h"
+#include "database/Database.h"
+
+#include <QDir>
 
 #include <QTemporaryDir>
 
@@ -181,4 +184,35 @@ TEST(CommandLine, RecordingAndReplayOptions)
         ASSERT_FALSE(refused.has_value()) << arguments.join(u' ').toStdString();
         EXPECT_TRUE(refused.error().contains(QString::fromUtf8(expected))) << refused.error().toStdString();
     }
+}
+
+TEST(CommandLine, ReplaySessionFindsTheLogsASessionRecordedInTheOperationsDatabase)
+{
+    QTemporaryDir dir;
+    const QString file = dir.filePath(QStringLiteral("operation.db"));
+    const QString logA = dir.filePath(QStringLiteral("20261124/120000-ops-a")), logB = dir.filePath(QStringLiteral("20261124/130000-ops-a"));
+    QDir().mkpath(logA);
+    QDir().mkpath(logB);
+    QString session;
+    {
+        neptus::db::Writer::Options options;
+        options.console = QStringLiteral("ops-a");
+        neptus::db::Writer writer(*neptus::db::Location::parse(file), options);
+        session = writer.session();
+        writer.write(neptus::db::Row{neptus::db::Table::Log, {logA, 1000, 2000, 10, 100}});
+        writer.write(neptus::db::Row{neptus::db::Table::Log, {logB, 3000, 4000, 10, 100}});
+        ASSERT_TRUE(writer.flush());
+    }
+    for (const QString &wanted : {QStringLiteral("ops-a"), session.left(8)}) {
+        const auto line = parse({QStringLiteral("--database"), file, QStringLiteral("--replay-session"), wanted});
+        ASSERT_TRUE(line.has_value()) << line.error().toStdString();
+        EXPECT_EQ(line->replayLogs, (QStringList{logA, logB})) << wanted.toStdString();
+    }
+    const auto unknown = parse({QStringLiteral("--database"), file, QStringLiteral("--replay-session"), QStringLiteral("ops-z")});
+    ASSERT_FALSE(unknown.has_value());
+    EXPECT_NE(unknown.error().indexOf(QStringLiteral("no session 'ops-z'")), -1) << unknown.error().toStdString();
+    const auto noDatabase = parse({QStringLiteral("--database"), dir.filePath(QStringLiteral("none.db")), QStringLiteral("--replay-session"),
+                                   QStringLiteral("ops-a")});
+    ASSERT_FALSE(noDatabase.has_value());
+    EXPECT_NE(noDatabase.error().indexOf(QStringLiteral("no database at")), -1);
 }

@@ -14,7 +14,12 @@
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <QFile>
 #include <QNetworkAccessManager>
+#include <QProcess>
+#include <QSslCertificate>
+#include <QSslConfiguration>
+#include <QTemporaryDir>
 #include <QNetworkReply>
 #include <QTcpSocket>
 #include <QTest>
@@ -196,6 +201,44 @@ TEST_F(Server, BeyondLoopbackItNeedsATokenAndThenAsksForIt)
     QObject::connect(&known, &QWebSocket::textMessageReceived, [&](const QString &m) { frames.append(m); });
     known.open(QUrl(u"ws"_s + base.mid(4) + u"/ws?token=0123456789abcdef-token"_s));
     EXPECT_TRUE(QTest::qWaitFor([&] { return frames.size() >= 3; }, 5000)); // hello, state, then pushes
+}
+
+TEST_F(Server, ServesHttpsWithTheCertificateItIsGiven)
+{
+    QTemporaryDir dir;
+    const QString cert = dir.filePath(u"cert.pem"_s), key = dir.filePath(u"key.pem"_s);
+    QProcess openssl; // a self-signed certificate for 127.0.0.1, made for this test
+    openssl.start(u"openssl"_s, {u"req"_s, u"-x509"_s, u"-newkey"_s, u"rsa:2048"_s, u"-nodes"_s, u"-keyout"_s, key, u"-out"_s, cert,
+                                 u"-days"_s, u"2"_s, u"-subj"_s, u"/CN=127.0.0.1"_s});
+    ASSERT_TRUE(openssl.waitForFinished(30000) && openssl.exitCode() == 0) << openssl.readAllStandardError().constData();
+    web::WebConfig tls;
+    tls.certificate = cert;
+    tls.key = key;
+    start(tls);
+    vehicle();
+    EXPECT_TRUE(server->url().startsWith(u"https://"_s));
+    QNetworkAccessManager manager;
+    QNetworkRequest request(QUrl(u"https"_s + base.mid(4) + u"/api/state"_s));
+    QSslConfiguration trust = QSslConfiguration::defaultConfiguration();
+    QFile pem(cert);
+    ASSERT_TRUE(pem.open(QIODevice::ReadOnly));
+    trust.setCaCertificates({QSslCertificate(&pem, QSsl::Pem)});
+    request.setSslConfiguration(trust);
+    QNetworkReply *reply = manager.get(request);
+    ASSERT_TRUE(QTest::qWaitFor([&] { return reply->isFinished(); }, 10000));
+    EXPECT_EQ(reply->error(), QNetworkReply::NoError) << reply->errorString().toStdString();
+    EXPECT_TRUE(reply->readAll().contains("lauv-sim-1"));
+    reply->deleteLater();
+    // Plain HTTP to the HTTPS port gets nothing.
+    EXPECT_NE(fetch(QUrl(base + u"/api/state"_s)).status, 200);
+
+    web::WebConfig missing;
+    missing.certificate = dir.filePath(u"none.pem"_s);
+    missing.key = key;
+    missing.pageDir = dataPath(u"web"_s);
+    const auto refused = web::LiveServer(feed, missing).start();
+    ASSERT_FALSE(refused.has_value());
+    EXPECT_NE(refused.error().indexOf(u"none.pem"_s), -1) << refused.error().toStdString();
 }
 
 TEST_F(Server, HostileInputIsRefusedAndTheServerKeepsServing)
