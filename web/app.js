@@ -6,7 +6,8 @@
 
 const token = new URLSearchParams(location.search).get('token');
 const withToken = (path) => token ? path + (path.includes('?') ? '&' : '?') + 'token=' + encodeURIComponent(token) : path;
-const colours = ['#e53935', '#1e88e5', '#43a047', '#fb8c00', '#8e24aa', '#00897b', '#f4511e', '#3949ab'];
+// Track colours: no red or amber, which the page keeps for alarms.
+const colours = ['#1e88e5', '#43a047', '#8e24aa', '#00897b', '#3949ab', '#6d4c41', '#546e7a', '#00acc1'];
 
 const map = L.map('map', { zoomControl: true, attributionControl: false, preferCanvas: true }).setView([41.18, -8.7], 13);
 const systems = new Map(); // name → { marker, track, colour, fitted }
@@ -64,6 +65,35 @@ function loadCoastline() {
     .catch(() => {});
 }
 
+// The last hour's alarm and plan events, from the operation's database (newest first).
+let historyTimer = null, alarmKey = '';
+function loadEvents() {
+  const from = '?from=' + (Date.now() - 3600e3);
+  Promise.all([fetch(withToken('/api/alarms' + from)), fetch(withToken('/api/plans' + from))])
+    .then((replies) => Promise.all(replies.map((r) => r.ok ? r.json() : { rows: [] })))
+    .then(([alarms, plans]) => {
+      const detail = (...parts) => parts.filter((x) => x).join(' · ');
+      const events = alarms.rows.map((a) => ({ t: a.t, level: a.level, text: a.origin + ' ' + a.event, detail: detail(a.message, a.console) }))
+        .concat(plans.rows.map((p) => ({ t: p.t, level: 'Info', text: p.system + ': plan ' + p.plan + ' ' + p.event + (p.maneuver ? ' ' + p.maneuver : ''),
+                                         detail: detail(p.detail, p.console) })))
+        .sort((a, b) => b.t - a.t).slice(0, 30);
+      const list = document.getElementById('history');
+      list.replaceChildren();
+      for (const e of events) {
+        const item = element('li', 'alarm event');
+        const when = new Date(e.t).toISOString().slice(11, 19);
+        item.append(element('span', 'badge level-' + e.level, when), element('span', 'what', e.text), element('span', 'msg', e.detail));
+        list.append(item);
+      }
+      if (!events.length) list.append(element('li', 'empty', 'nothing in the last hour'));
+    })
+    .catch(() => {});
+}
+function eventsSoon() {
+  clearTimeout(historyTimer);
+  historyTimer = setTimeout(loadEvents, 1000); // after the console has written them
+}
+
 function showState(state) {
   const list = document.getElementById('systems');
   const plans = document.getElementById('plans');
@@ -119,6 +149,10 @@ function showState(state) {
     alarms.append(item);
   }
   if (!state.alarms.length) alarms.append(element('li', 'empty', 'none'));
+  const key = state.alarms.map((a) => a.origin + a.level + a.acknowledged).join('|') +
+              state.systems.map((s) => s.plan ? s.plan.state + s.plan.id + s.plan.maneuver : '').join('|');
+  if (key !== alarmKey && !document.getElementById('history-section').hidden) eventsSoon();
+  alarmKey = key;
   document.getElementById('alarm-count').textContent = state.alarms.length ? '(' + state.alarms.length + ')' : '';
   if (!fitted && bounds.length) {
     map.fitBounds(L.latLngBounds(bounds).pad(0.6), { maxZoom: 15 });
@@ -140,6 +174,11 @@ function connect() {
       document.getElementById('title').textContent = message.title;
       document.title = message.title + ' · live';
       if (message.tiles) L.tileLayer(message.tiles, { maxZoom: 19 }).addTo(map);
+      if (message.history) {
+        document.getElementById('history-section').hidden = false;
+        loadEvents();
+        setInterval(loadEvents, 30000);
+      }
       for (const [name, line] of Object.entries(message.tracks)) {
         systemEntry(name).track.setLatLngs(line);
         if (message.history) loadHistory(name);

@@ -183,6 +183,9 @@ TEST(WebPage, AHeadlessBrowserSeesBothVehiclesMoveAndAnAlarmAppear)
     };
     ASSERT_TRUE(QTest::qWaitFor([&] { return alarmShown().contains(u"sidescan flooded"_s); }, 5000)) << alarmShown().toStdString();
     EXPECT_TRUE(alarmShown().contains(u"systems/lauv-sim-2/Payload"_s));
+    // ...and in the last hour's events, read back from the operation's database.
+    const auto history = [&] { return browser.evaluate(u"document.getElementById('history').textContent"_s).toString(); };
+    EXPECT_TRUE(QTest::qWaitFor([&] { return history().contains(u"systems/lauv-sim-2/Payload raised"_s); }, 8000)) << history().toStdString();
     EXPECT_TRUE(browser.evaluate(u"document.querySelector('#systems li.sys[data-system=\"lauv-sim-2\"]').className"_s)
                     .toString().contains(u"Error"_s));
     QTest::qWait(1500); // a few pushes of track
