@@ -14,6 +14,7 @@
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <QElapsedTimer>
 #include <QFile>
 #include <QNetworkAccessManager>
 #include <QProcess>
@@ -239,6 +240,44 @@ TEST_F(Server, ServesHttpsWithTheCertificateItIsGiven)
     const auto refused = web::LiveServer(feed, missing).start();
     ASSERT_FALSE(refused.has_value());
     EXPECT_NE(refused.error().indexOf(u"none.pem"_s), -1) << refused.error().toStdString();
+}
+
+TEST_F(Server, APageThatDoesNotReadMissesFramesAndIsLetGoWhileTheOthersHearEverything)
+{
+    start();
+    vehicle();
+    // A page that upgrades and then never reads (a stalled phone), beside one that keeps up.
+    QTcpSocket stalled;
+    stalled.setReadBufferSize(1); // Qt reads no more than this: the kernel's buffers fill, then the server's
+    stalled.connectToHost(QHostAddress::LocalHost, QUrl(base).port());
+    ASSERT_TRUE(stalled.waitForConnected(3000));
+    stalled.write("GET /ws HTTP/1.1\r\nHost: 127.0.0.1\r\nUpgrade: websocket\r\nConnection: Upgrade\r\n"
+                  "Sec-WebSocket-Key: dGhlIHNhbXBsZSBub25jZQ==\r\nSec-WebSocket-Version: 13\r\n\r\n");
+    QWebSocket keeping;
+    qint64 heard = 0;
+    QObject::connect(&keeping, &QWebSocket::textMessageReceived, [&](const QString &m) { heard += m.size(); });
+    keeping.open(QUrl(u"ws"_s + base.mid(4) + u"/ws"_s));
+    ASSERT_TRUE(QTest::qWaitFor([&] { return server->webSocketClients() == 2 && keeping.state() == QAbstractSocket::ConnectedState; }, 5000));
+
+    const qint64 frame = server->stateFrame().size();
+    int pushes = 0;
+    QElapsedTimer slowest;
+    qint64 slowestNs = 0;
+    while (server->webSocketClients() == 2 && pushes < 200'000) {
+        slowest.start();
+        server->push();
+        slowestNs = std::max(slowestNs, slowest.nsecsElapsed());
+        ++pushes;
+        if (pushes % 50 == 0)
+            QCoreApplication::processEvents(); // the event loop runs between pushes, as in the console
+    }
+    // Frames skipped for the stalled page, then it is let go (a minute's worth at one push a second); the other one stays.
+    EXPECT_GE(server->framesSkipped(), 60) << pushes << " pushes of " << frame << " bytes";
+    EXPECT_EQ(server->webSocketClients(), 1);
+    EXPECT_EQ(keeping.state(), QAbstractSocket::ConnectedState);
+    EXPECT_TRUE(QTest::qWaitFor([&] { return heard >= qint64(pushes) * frame; }, 20000))
+        << "the page that keeps up heard every push: " << heard << " of " << qint64(pushes) * frame << " bytes";
+    EXPECT_LT(slowestNs, 50'000'000) << "no push waited for the stalled page";
 }
 
 TEST_F(Server, HostileInputIsRefusedAndTheServerKeepsServing)
