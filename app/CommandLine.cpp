@@ -11,6 +11,24 @@
 #include <QSettings>
 #include <QStandardPaths>
 
+QString CommandLine::logRoot() const
+{
+    if (!logDirectory.isEmpty())
+        return logDirectory;
+    if (const QString saved = QSettings().value(QStringLiteral("log/folder")).toString(); !saved.isEmpty())
+        return saved;
+    return QDir(QStandardPaths::writableLocation(QStandardPaths::AppLocalDataLocation)).filePath(QStringLiteral("logs"));
+}
+
+QString CommandLine::databaseUrl(bool orBesideTheLogs) const
+{
+    if (!database.isEmpty())
+        return database;
+    if (const QString saved = QSettings().value(QStringLiteral("database/url")).toString(); !saved.isEmpty())
+        return saved;
+    return orBesideTheLogs ? QDir(logRoot()).filePath(QStringLiteral("operation.db")) : QString();
+}
+
 namespace {
 
 // The log folders a session of the operation recorded (by its id's first characters, or the latest
@@ -232,18 +250,7 @@ std::expected<CommandLine, QString> CommandLine::parse(const QStringList &argume
         result.replayLogs << QFileInfo(log).absoluteFilePath();
     }
     if (parser.isSet(replaySession)) {
-        QString url = result.database;
-        if (url.isEmpty())
-            url = QSettings().value(QStringLiteral("database/url")).toString();
-        if (url.isEmpty()) {
-            QString root = result.logDirectory;
-            if (root.isEmpty())
-                root = QSettings().value(QStringLiteral("log/folder")).toString();
-            if (root.isEmpty())
-                root = QDir(QStandardPaths::writableLocation(QStandardPaths::AppLocalDataLocation)).filePath(QStringLiteral("logs"));
-            url = QDir(root).filePath(QStringLiteral("operation.db"));
-        }
-        auto logs = sessionLogs(url, parser.value(replaySession));
+        auto logs = sessionLogs(result.databaseUrl(true), parser.value(replaySession));
         if (!logs)
             return std::unexpected(QStringLiteral("--replay-session: %1").arg(logs.error()));
         result.replayLogs << *logs;

@@ -49,6 +49,11 @@ struct CommandLine
 
     // Parses arguments (argv[0] included). An error is a message for the user.
     static std::expected<CommandLine, QString> parse(const QStringList &arguments);
+    // Where logs go: --log-dir, else the settings' log/folder, else logs/ in the user's data folder.
+    QString logRoot() const;
+    // The operation's database: --database, else the settings' database/url, else (if `orBesideTheLogs`)
+    // operation.db in logRoot(); empty when none.
+    QString databaseUrl(bool orBesideTheLogs) const;
     // An IPv4 address of this machine, given as itself or as the name of the
     // interface that has it ("eth0"); an error says what there is instead.
     static std::expected<QString, QString> localAddress(const QString &addressOrInterface);

@@ -101,15 +101,11 @@ int main(int argc, char *argv[])
     // Everything received and sent is recorded unless told not to (before the
     // session, so it outlives the links that feed it).
     std::unique_ptr<neptus::log::Recorder> recorder;
-    QString recorderProblem, logRoot;
+    QString recorderProblem;
+    const QString logRoot = commandLine->logRoot();
     if (!replayLogs && commandLine->record) {
         neptus::log::RecorderConfig config;
-        config.root = commandLine->logDirectory;
-        if (config.root.isEmpty())
-            config.root = QSettings().value(QStringLiteral("log/folder")).toString();
-        if (config.root.isEmpty())
-            config.root = QDir(QStandardPaths::writableLocation(QStandardPaths::AppLocalDataLocation)).filePath(QStringLiteral("logs"));
-        logRoot = config.root;
+        config.root = logRoot;
         config.name = commandLine->name.isEmpty() ? QFileInfo(commandLine->consoleFile).completeBaseName() : commandLine->name;
         config.system = neptus::transport::ImcUdpConfig{}.systemId;
         config.definitionFiles = definitionFiles;
@@ -127,14 +123,9 @@ int main(int argc, char *argv[])
     // The operation's database: the one named (--database, settings' database/url), else a SQLite
     // file beside the logs; written on its own thread, rows kept on disk while it cannot be reached.
     std::unique_ptr<neptus::db::Writer> database;
-    QString databaseUrl;
+    std::optional<neptus::db::Location> databaseLocation;
     if (!replayLogs) {
-        QString url = commandLine->database;
-        if (url.isEmpty())
-            url = QSettings().value(QStringLiteral("database/url")).toString();
-        if (url.isEmpty() && recorder)
-            url = QDir(logRoot).filePath(QStringLiteral("operation.db"));
-        if (!url.isEmpty()) {
+        if (const QString url = commandLine->databaseUrl(recorder != nullptr); !url.isEmpty()) {
             if (auto location = neptus::db::Location::parse(url); !location) {
                 std::fprintf(stderr, "neptus: database: %s; carrying on without it\n", qPrintable(location.error()));
             } else {
@@ -145,7 +136,7 @@ int main(int argc, char *argv[])
                 options.host = QSysInfo::machineHostName();
                 options.program = QStringLiteral("neptus " NEPTUS_VERSION);
                 database = std::make_unique<neptus::db::Writer>(*location, options);
-                databaseUrl = url;
+                databaseLocation = *location;
                 std::printf("neptus: database %s\n", qPrintable(location->display()));
             }
         }
@@ -202,8 +193,7 @@ int main(int argc, char *argv[])
         config.tiles = commandLine->webTiles;
         config.title = commandLine->name.isEmpty() ? QFileInfo(commandLine->consoleFile).completeBaseName() : commandLine->name;
         config.pageDir = neptus::dataPath(QStringLiteral("web"));
-        if (database)
-            config.history = neptus::db::Location::parse(databaseUrl).value();
+        config.history = databaseLocation;
         web = std::make_unique<neptus::web::LiveServer>(*feed, config);
         if (auto started = web->start(); !started) {
             std::fprintf(stderr, "neptus: %s; no web page\n", qPrintable(started.error()));

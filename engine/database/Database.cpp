@@ -409,9 +409,9 @@ struct Writer::Worker : QObject
             cols = QStringList{u"session"_s, u"seq"_s} + cols;
         else if (table != Table::System)
             cols.prepend(u"session"_s);
+        std::vector<Queued> merged; // rows points into it from here on, for keyed tables
         if (!t.series) { // one row per key: the last (sessions, logs) or merged (systems)
             QHash<QString, qsizetype> at;
-            std::vector<Queued> merged;
             for (const Queued *row : rows) {
                 const QString key = table == Table::System ? row->values[0].toString() + u'/' + row->values[1].toString()
                                                            : row->values[0].toString();
@@ -429,9 +429,8 @@ struct Writer::Worker : QObject
                     merged[size_t(*found)] = *row;
                 }
             }
-            m_merged = std::move(merged);
             rows.clear();
-            for (const Queued &row : m_merged)
+            for (const Queued &row : merged)
                 rows.push_back(&row);
         }
         QString conflict = u" ON CONFLICT DO NOTHING"_s;
@@ -532,7 +531,6 @@ struct Writer::Worker : QObject
         }
         return true;
     }
-    std::vector<Queued> m_merged;
     QHash<int, std::shared_ptr<QSqlQuery>> prepared_; // by table, for full chunks; cleared with the connection
 
     // One transaction: every row, or none.
@@ -736,11 +734,9 @@ Writer::~Writer()
 
 void Writer::write(Row row)
 {
-    Worker &w = *m_worker;
-    QMutexLocker lock(&w.mutex);
-    ++w.status.queued[size_t(row.table)];
-    w.queue.push_back({row.table, w.nextSeq++, std::move(row.values)});
-    w.status.pending = qint64(w.queue.size());
+    std::vector<Row> one;
+    one.push_back(std::move(row));
+    write(std::move(one));
 }
 
 void Writer::write(std::vector<Row> rows)

@@ -28,7 +28,10 @@ OperationsFeed::OperationsFeed(Console &console, db::Writer *writer, const Clock
     , m_writer(writer)
     , m_clock(clock)
 {
-    connect(&m_timer, &QTimer::timeout, this, &OperationsFeed::checkAlarms);
+    connect(&m_timer, &QTimer::timeout, this, [this] {
+        noteLog();
+        checkAlarms();
+    });
     m_timer.start(250);
     m_console.setFeed(this);
     if (!writer)
@@ -53,12 +56,14 @@ void OperationsFeed::put(db::Row row)
         m_writer->write(std::move(row));
 }
 
-std::vector<OperationsFeed::LiveSystem> OperationsFeed::live() const
+std::vector<OperationsFeed::LiveSystem> OperationsFeed::live(bool withTracks) const
 {
     QMutexLocker lock(&m_mutex);
     std::vector<LiveSystem> systems;
     for (auto it = m_systems.cbegin(); it != m_systems.cend(); ++it) {
-        LiveSystem s = it->live;
+        LiveSystem s = it->live; // its `recent` stays empty: the track is kept beside it
+        if (withTracks)
+            s.recent = it->recent;
         s.id = it.key();
         s.name = nameOf(it.key());
         s.kind = it->kind;
@@ -76,11 +81,8 @@ OperationsFeed::~OperationsFeed()
         return;
     m_writer->setProblemHandler({});
     checkAlarms();
-    if (m_recorder && !m_logFolder.isEmpty()) { // the log's final span
-        const log::Recorder::Status s = m_recorder->status();
-        put(db::Row{db::Table::Log, {m_logFolder, m_logBeganMs, m_clock->now().toMSecsSinceEpoch(),
-                                                qint64(s.packets - m_logPacketsBefore), qint64(s.bytes - m_logBytesBefore)}});
-    }
+    m_logWrittenMs = 0; // the log's final span, now
+    noteLog();
 }
 
 void OperationsFeed::setRecorder(const log::Recorder *recorder)
@@ -135,10 +137,10 @@ void OperationsFeed::observe(const msg::Message &m, bool sent)
         const db::TrackPoint point{now, p.lat * 180.0 / M_PI, p.lon * 180.0 / M_PI, m.number(u"depth"), m.number(u"alt"), heading, speed};
         s.live.hasPosition = true;
         s.live.position = point;
-        if (s.live.recent.empty() || now - s.live.recent.back().ms >= 1000) {
-            s.live.recent.push_back(point);
-            if (s.live.recent.size() > 600)
-                s.live.recent.erase(s.live.recent.begin(), s.live.recent.begin() + 60);
+        if (s.recent.empty() || now - s.recent.back().ms >= 1000) {
+            s.recent.push_back(point);
+            if (s.recent.size() > 600)
+                s.recent.erase(s.recent.begin(), s.recent.begin() + 60);
         }
         if (now - s.positionMs < m_positionIntervalMs)
             return;
@@ -199,22 +201,30 @@ void OperationsFeed::planControl(const msg::Message &m, bool sent, qint64 now)
     }
 }
 
+void OperationsFeed::noteLog()
+{
+    if (!m_recorder)
+        return;
+    const qint64 now = m_clock->now().toMSecsSinceEpoch();
+    const log::Recorder::Status s = m_recorder->status();
+    if (!s.folder.isEmpty() && s.folder != m_logFolder) { // a new part: its own span and counts
+        m_logFolder = s.folder;
+        m_logBeganMs = now;
+        m_logPacketsBefore = s.packets;
+        m_logBytesBefore = s.bytes;
+        m_logWrittenMs = 0;
+    }
+    if (!m_logFolder.isEmpty() && now - m_logWrittenMs >= 5000) {
+        m_logWrittenMs = now;
+        put(db::Row{db::Table::Log, {m_logFolder, m_logBeganMs, now, qint64(s.packets - m_logPacketsBefore),
+                                     qint64(s.bytes - m_logBytesBefore)}});
+    }
+}
+
 void OperationsFeed::checkAlarms()
 {
     alarms::AlarmGraph &graph = m_console.alarmGraph();
     const qint64 now = m_clock->now().toMSecsSinceEpoch();
-    if (m_recorder) { // the log being written: its folder and span, every few seconds
-        const log::Recorder::Status s = m_recorder->status();
-        if (!s.folder.isEmpty() && s.folder != m_logFolder) {
-            m_logFolder = s.folder;
-            m_logBeganMs = now;
-            m_logPacketsBefore = s.packets;
-            m_logBytesBefore = s.bytes;
-        }
-        if (!m_logFolder.isEmpty() && (now / 250) % 20 == 0)
-            put(db::Row{db::Table::Log, {m_logFolder, m_logBeganMs, now, qint64(s.packets - m_logPacketsBefore),
-                                                    qint64(s.bytes - m_logBytesBefore)}});
-    }
     const quint64 version = graph.version();
     if (version == m_alarmVersion)
         return;

@@ -45,7 +45,8 @@ public:
         QString planState, plan, maneuver;
         double progress = 0;
     };
-    std::vector<LiveSystem> live() const;
+    // Every system known, by name; `withTracks` copies their 10 minutes of track too (a page that opens).
+    std::vector<LiveSystem> live(bool withTracks = false) const;
     Console &console() const { return m_console; }
     ~OperationsFeed() override;
 
@@ -60,6 +61,8 @@ public:
 
 private:
     void noteSystem(quint16 id, qint64 now);
+    // The log being recorded, in the catalogue: its folder, span and counts, every 5 s.
+    void noteLog();
     QString nameOf(quint16 id) const;
     void planState(const msg::Message &m, qint64 now);
     void planControl(const msg::Message &m, bool sent, qint64 now);
@@ -80,6 +83,7 @@ private:
         int planState = -1;
         QString plan, maneuver;
         LiveSystem live;
+        std::vector<db::TrackPoint> recent; // the last 10 minutes, a point a second
     };
     QHash<quint16, SystemState> m_systems;
 
@@ -94,7 +98,7 @@ private:
 
     const log::Recorder *m_recorder = nullptr;
     QString m_logFolder;
-    qint64 m_logBeganMs = 0;
+    qint64 m_logBeganMs = 0, m_logWrittenMs = 0;
     quint64 m_logPacketsBefore = 0, m_logBytesBefore = 0;
 };
 

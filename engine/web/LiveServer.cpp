@@ -309,7 +309,7 @@ void LiveServer::acceptWebSocket()
 QByteArray LiveServer::helloFrame() const
 {
     QJsonObject tracks;
-    for (const auto &s : m_feed.live()) {
+    for (const auto &s : m_feed.live(true)) {
         QJsonArray line;
         for (const db::TrackPoint &p : s.recent)
             line.append(point(p));
