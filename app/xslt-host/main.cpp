@@ -69,13 +69,14 @@ int main(int argc, char **argv)
             return fail(QStringLiteral("a parameter is NAME=VALUE, not '%1'").arg(args[i]));
         parameters.append({args[i].left(equals).toUtf8(), args[i].mid(equals + 1)});
     }
+    // Compiled while the console still makes the input.
+    const auto style = processor::Stylesheet::load(args[1]);
+    if (!style)
+        return fail(style.error().toString());
     QFile in;
     if (!in.open(stdin, QIODevice::ReadOnly))
         return fail(QStringLiteral("cannot read standard input"));
     const QByteArray input = in.readAll();
-    const auto style = processor::Stylesheet::load(args[1]);
-    if (!style)
-        return fail(style.error().toString());
     const auto output = style->apply(input, args[2], parameters);
     if (!output)
         return fail(output.error().toString());

@@ -3,6 +3,7 @@
 #include "mission/PlanGeometry.h"
 
 
+#include <charconv>
 #include <cmath>
 
 namespace neptus::processor {
@@ -19,11 +20,25 @@ QByteArray body(const QByteArray &document)
     return document.mid(end).trimmed() + '\n';
 }
 
-// Derived figures to a millimetre (1e-8° of latitude is 1.1 mm): enough for
-// any vehicle, and half the bytes of the shortest exact text.
-QByteArray rounded(double value, double unit)
+// Derived figures to a millimetre (8 decimals of a degree of latitude are
+// 1.1 mm): enough for any vehicle, and half the bytes of the shortest exact
+// text. Fixed decimals without trailing zeros: "41.18", not "41.180000000000001".
+QByteArray rounded(double value, int decimals)
 {
-    return formatNumber(std::round(value / unit) * unit).toLatin1();
+    char buffer[64];
+    const auto result = std::to_chars(buffer, buffer + sizeof buffer, value, std::chars_format::fixed, decimals);
+    if (result.ec != std::errc())
+        return formatNumber(value).toLatin1(); // beyond 1e40: not a figure of a plan
+    qsizetype size = result.ptr - buffer;
+    if (decimals > 0) {
+        while (buffer[size - 1] == '0')
+            --size;
+        if (buffer[size - 1] == '.')
+            --size;
+    }
+    if (size == 2 && buffer[0] == '-' && buffer[1] == '0')
+        return "0"; // -0.0001 to a millimetre
+    return QByteArray(buffer, size);
 }
 
 // Written by hand rather than with QXmlStreamWriter: a 10,000-maneuver plan
@@ -68,9 +83,9 @@ QByteArray geometryElement(const Plan &plan, const VehicleDefinition &vehicle, T
     out.reserve(geometry.maneuvers.size() * (detail == Translation::Geometry::Points ? 400 : 200));
     out += "<geometry";
     attribute("plan", plan.id.toHtmlEscaped().toUtf8());
-    attribute("length", rounded(geometry.length, 1e-3));
+    attribute("length", rounded(geometry.length, 3));
     if (geometry.duration)
-        attribute("duration", rounded(*geometry.duration, 1e-3));
+        attribute("duration", rounded(*geometry.duration, 3));
     if (geometry.maxDepth)
         attribute("max-depth", formatNumber(*geometry.maxDepth).toLatin1());
     if (geometry.maxAltitude)
@@ -88,10 +103,10 @@ QByteArray geometryElement(const Plan &plan, const VehicleDefinition &vehicle, T
         attribute("id", g.id.toHtmlEscaped().toUtf8());
         attribute("type", g.type.toHtmlEscaped().toUtf8());
         attribute("speed", formatNumber(g.speed).toLatin1());
-        attribute("transit", rounded(g.transit, 1e-3));
-        attribute("length", rounded(g.length, 1e-3));
+        attribute("transit", rounded(g.transit, 3));
+        attribute("length", rounded(g.length, 3));
         if (g.duration)
-            attribute("duration", rounded(*g.duration, 1e-3));
+            attribute("duration", rounded(*g.duration, 3));
         attribute("min-z", formatNumber(g.minZ).toLatin1());
         attribute("max-z", formatNumber(g.maxZ).toLatin1());
         attribute("z-units", g.zUnits.toLatin1());
@@ -110,12 +125,12 @@ QByteArray geometryElement(const Plan &plan, const VehicleDefinition &vehicle, T
             if (detail != Translation::Geometry::Points)
                 break;
             out += "<point";
-            attribute("lat", rounded(w.lat, 1e-8));
-            attribute("lon", rounded(w.lon, 1e-8));
-            attribute("z", rounded(w.z, 1e-3));
+            attribute("lat", rounded(w.lat, 8));
+            attribute("lon", rounded(w.lon, 8));
+            attribute("z", rounded(w.z, 3));
             attribute("z-units", w.zUnits.toLatin1());
-            attribute("leg", rounded(w.leg, 1e-3));
-            attribute("heading", rounded(w.heading, 1e-3));
+            attribute("leg", rounded(w.leg, 3));
+            attribute("heading", rounded(w.heading, 3));
             out += "/>\n";
         }
         previous = points.last();
@@ -171,7 +186,7 @@ std::expected<QByteArray, Errors> translatePlan(const Mission &mission, const QS
     parameters.append({"home_lat", formatNumber(mission.home.lat)});
     parameters.append({"home_lon", formatNumber(mission.home.lon)});
     parameters.append({"home_height", formatNumber(mission.home.height)});
-    auto output = translate(vehicle.stylesheetPath(*translation), translationInput(mission, *plan, vehicle, target),
+    auto output = translate(vehicle.stylesheetPath(*translation), [&] { return translationInput(mission, *plan, vehicle, target); },
                             u"plan '%1' for %2"_s.arg(plan->id, vehicle.id), parameters, limits);
     if (!output)
         return std::unexpected(Errors{output.error()});

@@ -18,6 +18,14 @@ std::expected<QByteArray, xml::XmlError> translate(const QString &stylesheet, QB
                                                    const QList<std::pair<QByteArray, QString>> &parameters,
                                                    TranslateLimits limits)
 {
+    return translate(stylesheet, [input] { return input.toByteArray(); }, inputName, parameters, limits);
+}
+
+std::expected<QByteArray, xml::XmlError> translate(const QString &stylesheet, const std::function<QByteArray()> &makeInput,
+                                                   const QString &inputName,
+                                                   const QList<std::pair<QByteArray, QString>> &parameters,
+                                                   TranslateLimits limits)
+{
     const auto failure = [&](const QString &why) { return std::unexpected(xml::XmlError{stylesheet, 0, 0, why}); };
     QStringList args{stylesheet, inputName, QString::number(limits.megabytes), QString::number(limits.seconds)};
     for (const auto &[name, value] : parameters)
@@ -26,7 +34,8 @@ std::expected<QByteArray, xml::XmlError> translate(const QString &stylesheet, QB
     helper.start(translatorHelper(), args);
     if (!helper.waitForStarted(5000))
         return failure(QStringLiteral("cannot start %1: %2").arg(translatorHelper(), helper.errorString()));
-    helper.write(input.data(), input.size());
+    // The helper compiles the stylesheet while the input is made.
+    helper.write(makeInput());
     helper.closeWriteChannel();
     QByteArray output;
     QElapsedTimer clock;

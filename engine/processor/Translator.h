@@ -7,6 +7,7 @@
 #include <QString>
 
 #include <expected>
+#include <functional>
 #include <utility>
 
 namespace neptus::processor {
@@ -23,6 +24,13 @@ struct TranslateLimits
 };
 
 std::expected<QByteArray, xml::XmlError> translate(const QString &stylesheet, QByteArrayView input,
+                                                   const QString &inputName,
+                                                   const QList<std::pair<QByteArray, QString>> &parameters = {},
+                                                   TranslateLimits limits = {});
+
+// The same, with the input made by `makeInput` while the helper starts and
+// compiles the stylesheet (the two take about as long for a large plan).
+std::expected<QByteArray, xml::XmlError> translate(const QString &stylesheet, const std::function<QByteArray()> &makeInput,
                                                    const QString &inputName,
                                                    const QList<std::pair<QByteArray, QString>> &parameters = {},
                                                    TranslateLimits limits = {});

@@ -103,6 +103,56 @@ TEST(MissionTranslator, ImcGivesTheSameBytesThroughTheStylesheetAsDirectly)
     EXPECT_EQ(variables[0].enumText(variables[0].def()->indexOf(u"type")), u"NUMBER"_s);
 }
 
+// The stylesheet names IMC's maneuver fields one by one (a literal element each,
+// angles marked as degrees): every field of every maneuver IMC has, set, gives
+// the direct encoder's bytes; so would a field it does not name (the fallback).
+TEST(MissionTranslator, EveryFieldOfEveryImcManeuverTranslatesAsDirectly)
+{
+    const auto schema = test::shippedSchema();
+    ASSERT_TRUE(schema);
+    const msg::MessageGroup *group = schema->group(u"Maneuver");
+    ASSERT_TRUE(group);
+    Mission m;
+    m.id = u"fields"_s;
+    m.vehicles = {u"auv"_s};
+    Plan plan;
+    plan.id = u"all"_s;
+    plan.vehicle = u"auv"_s;
+    int fields = 0, angles = 0;
+    for (const QString &type : group->members) {
+        const msg::MessageDef *def = schema->byAbbrev(type);
+        ASSERT_TRUE(def) << type.toStdString();
+        Maneuver man;
+        man.id = type.toLower();
+        man.type = type;
+        for (const msg::FieldDef &f : def->fields) {
+            QString value;
+            if (f.type == msg::FieldType::Message || f.type == msg::FieldType::MessageList || f.type == msg::FieldType::RawData)
+                continue;
+            if (f.type == msg::FieldType::PlainText)
+                value = u"text of "_s + f.abbrev;
+            else if (f.enumeration)
+                value = f.enumeration->values.back().abbrev;
+            else if (msg::isFloat(f.type))
+                value = u"0.25"_s;
+            else
+                value = u"3"_s;
+            man.parameters.insert(f.abbrev, value);
+            ++fields;
+            angles += f.unit == u"rad";
+        }
+        if (!plan.maneuvers.isEmpty())
+            plan.transitions.append({plan.maneuvers.last().id, man.id, u"ManeuverIsDone"_s, {}, {}});
+        plan.maneuvers.append(man);
+    }
+    plan.start = plan.maneuvers.first().id;
+    m.plans = {plan};
+    EXPECT_GE(plan.maneuvers.size(), 30);
+    EXPECT_GE(fields, 200);
+    EXPECT_GE(angles, 15);
+    expectSameImcBytes(m, m.plans[0], everyTarget(u"auv"_s));
+}
+
 TEST(MissionTranslator, EveryNeptusFixturePlanTranslatesToImcIdentically)
 {
     if (!QFileInfo::exists(test::fixturePath("neptus/missions")))
