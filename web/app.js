@@ -66,11 +66,12 @@ function loadCoastline() {
 }
 
 // The last hour's alarm and plan events, from the operation's database (newest first).
-let historyTimer = null, alarmKey = '';
+let historyTimers = [], alarmKey = '';
 function loadEvents() {
   const from = '?from=' + (Date.now() - 3600e3);
   Promise.all([fetch(withToken('/api/alarms' + from)), fetch(withToken('/api/plans' + from))])
-    .then((replies) => Promise.all(replies.map((r) => r.ok ? r.json() : { rows: [] })))
+    // A failed query (the database busy or away) keeps what is shown rather than say "nothing".
+    .then((replies) => Promise.all(replies.map((r) => { if (!r.ok) throw new Error(r.status); return r.json(); })))
     .then(([alarms, plans]) => {
       const detail = (...parts) => parts.filter((x) => x).join(' · ');
       const events = alarms.rows.map((a) => ({ t: a.t, level: a.level, text: a.origin + ' ' + a.event, detail: detail(a.message, a.console) }))
@@ -89,9 +90,11 @@ function loadEvents() {
     })
     .catch(() => {});
 }
+// After the console has written them: within a second as a rule, later when
+// its disk is busy (a write waits for the disk), so asked again twice.
 function eventsSoon() {
-  clearTimeout(historyTimer);
-  historyTimer = setTimeout(loadEvents, 1000); // after the console has written them
+  historyTimers.forEach(clearTimeout);
+  historyTimers = [1000, 3000, 6000].map((ms) => setTimeout(loadEvents, ms));
 }
 
 function showState(state) {
