@@ -1,6 +1,7 @@
 #include "core/DataFiles.h"
 #include "CommandLine.h"
 #include "database/Database.h"
+#include "transport/imc/ImcUdpTransport.h"
 
 #include <QNetworkInterface>
 
@@ -158,7 +159,7 @@ std::expected<CommandLine, QString> CommandLine::parse(const QStringList &argume
     const QCommandLineOption database(QStringLiteral("database"),
         QStringLiteral("The operation's database: postgresql://user@host/name (shared by many consoles) or a SQLite file "
                        "(default: the settings' database/url, else operation.db beside the logs)."),
-        QStringLiteral("url")); 
+        QStringLiteral("url"));
     const QCommandLineOption replay(QStringLiteral("replay"),
         QStringLiteral("Review a log (a folder with Data.lsf[.gz] and IMC.xml[.gz]; repeat for several logs of one mission): "
                        "the console is fed from it, with a timeline, and sends nothing."),
@@ -378,12 +379,11 @@ std::expected<CommandLine, QString> CommandLine::parse(const QStringList &argume
             return std::unexpected(QStringLiteral("--imc-bind: %1").arg(address.error()));
         result.imcBind = *address;
     }
-    static const QRegularExpression peer(QStringLiteral("^[^:\\s]+:(\\d{1,5})$"));
     for (const QString &value : parser.values(imcPeer)) {
-        const auto match = peer.match(value);
-        if (!match.hasMatch() || match.captured(1).toUInt() > 65535)
+        const auto peer = neptus::transport::hostAndPort(value);
+        if (!peer)
             return std::unexpected(QStringLiteral("--imc-peer must look like 127.0.0.1:6002, not '%1'").arg(value));
-        result.imcPeers.append(value);
+        result.imcPeers.append(*peer);
     }
     return result;
 }

@@ -2,6 +2,8 @@
 
 #include <QString>
 #include <QStringList>
+#include <QHostAddress>
+#include <QList>
 #include <QSize>
 
 #include <utility>
@@ -29,7 +31,7 @@ struct CommandLine
     QList<std::pair<QString, QString>> definitionsFor; // --defs-for SYSTEM=FILE
     quint16 imcPort = 6001;             // IMC over UDP
     QString imcBind;                    // its address ("10.0.0.5"); empty: settings, else 127.0.0.1
-    QStringList imcPeers;               // static IMC destinations, "host:port"
+    QList<std::pair<QHostAddress, quint16>> imcPeers; // static IMC destinations (--imc-peer host:port)
     bool imcDiscovery = true;           // announce to and listen on 30100-30104
     QString dumpTreeFile;               // write the variable tree there on exit
     int quitAfterMs = 0;                // run this long, then exit (0: until closed)

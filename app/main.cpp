@@ -233,10 +233,7 @@ int main(int argc, char *argv[])
         if (!bind.isEmpty())
             config.bindAddress = QHostAddress(bind);
         config.discovery = commandLine->imcDiscovery;
-        for (const QString &peer : commandLine->imcPeers) {
-            const qsizetype colon = peer.lastIndexOf(u':');
-            config.destinations.append({QHostAddress(peer.left(colon)), static_cast<quint16>(peer.mid(colon + 1).toUInt())});
-        }
+        config.destinations = commandLine->imcPeers;
         if (auto started = session.console().startImc(config); !started)
             std::fprintf(stderr, "neptus: %s; carrying on without IMC\n", qPrintable(started.error()));
         else

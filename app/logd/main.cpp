@@ -9,6 +9,7 @@
 #include "core/DataFiles.h"
 #include "session/Console.h"
 #include "session/OperationsFeed.h"
+#include "transport/imc/ImcUdpTransport.h"
 #include "web/LiveServer.h"
 
 #include <QCommandLineParser>
@@ -144,14 +145,11 @@ int main(int argc, char *argv[])
         config.discovery = parser.value(imcDiscovery) != u"off"_s;
         config.systemId = 0x4002;
         config.systemName = parser.value(name);
-        for (const QString &peer : parser.values(imcPeer)) {
-            const qsizetype colon = peer.lastIndexOf(u':');
-            const QHostAddress host(peer.left(colon));
-            bool ok = false;
-            const uint peerPort = peer.mid(colon + 1).toUInt(&ok);
-            if (colon < 0 || host.isNull() || !ok || peerPort == 0 || peerPort > 65535)
-                return fail(u"--imc-peer: '%1' is not host:port"_s.arg(peer));
-            config.destinations.append({host, quint16(peerPort)});
+        for (const QString &value : parser.values(imcPeer)) {
+            const auto peer = neptus::transport::hostAndPort(value);
+            if (!peer)
+                return fail(u"--imc-peer must look like 127.0.0.1:6002, not '%1'"_s.arg(value));
+            config.destinations.append(*peer);
         }
         if (auto started = console.startImc(config); !started)
             std::fprintf(stderr, "neptus-logd: %s; carrying on without IMC\n", qPrintable(started.error()));

@@ -10,6 +10,7 @@
 
 #include "core/DataFiles.h"
 #include "sim/Scenario.h"
+#include "transport/imc/ImcUdpTransport.h"
 
 #include <QCommandLineParser>
 #include <QCoreApplication>
@@ -104,10 +105,10 @@ int main(int argc, char *argv[])
         return usage(QStringLiteral("--time-factor must be a number above 0 and at most 1000, not '%1'").arg(parser.value(timeFactor)));
     QList<std::pair<QHostAddress, quint16>> announceTo;
     for (const QString &c : parser.values(console)) {
-        const qsizetype colon = c.lastIndexOf(u':');
-        if (colon <= 0)
+        const auto to = transport::hostAndPort(c);
+        if (!to)
             return usage(QStringLiteral("--console must look like 127.0.0.1:6001, not '%1'").arg(c));
-        announceTo.append({QHostAddress(c.left(colon)), static_cast<quint16>(c.mid(colon + 1).toUInt())});
+        announceTo.append(*to);
     }
     if (parser.isSet(announcePort))
         announceTo.append({QHostAddress::LocalHost, static_cast<quint16>(parser.value(announcePort).toUInt())});

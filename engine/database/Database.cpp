@@ -349,6 +349,12 @@ struct Writer::Worker : QObject
     std::unique_ptr<QLockFile> spoolLock;
     qint64 spoolIndex = 0;
     QHash<QString, int> failures; // spool file → failed attempts while connected
+    // The spool folder is read when something may wait there: at the start,
+    // after this writer spooled, and once a minute (a console that died
+    // mid-outage leaves its batches to the next writer on that folder) —
+    // not at every flush.
+    QElapsedTimer sinceSpoolRead;
+    bool spoolDrained = false;
 
     bool postgres() const { return location.engine == Location::Postgres; }
 
@@ -588,6 +594,7 @@ struct Writer::Worker : QObject
             return;
         }
         QDir().mkpath(spoolDir);
+        spoolDrained = false;
         const QString path = u"%1/%2-%3.spool"_s.arg(spoolDir).arg(++spoolIndex, 10, 10, QLatin1Char('0')).arg(rows.size());
         if (!writeSpool(path, session, rows)) {
             QMutexLocker lock(&mutex);
@@ -616,8 +623,10 @@ struct Writer::Worker : QObject
     // Spooled batches, this run's and those a run before left (their lock is free), oldest first.
     bool drainSpool()
     {
-        if (options.spoolFolder.isEmpty())
+        if (options.spoolFolder.isEmpty() || (spoolDrained && sinceSpoolRead.elapsed() < 60000))
             return true;
+        spoolDrained = false;
+        sinceSpoolRead.restart();
         const QStringList sessions = QDir(options.spoolFolder).entryList(QDir::Dirs | QDir::NoDotAndDotDot, QDir::Time | QDir::Reversed);
         for (const QString &name : sessions) {
             const QString dir = options.spoolFolder + u'/' + name;
@@ -659,6 +668,7 @@ struct Writer::Worker : QObject
             }
         }
         refreshSpoolStatus();
+        spoolDrained = true;
         return true;
     }
 

@@ -130,11 +130,9 @@ void OperationsFeed::observe(const msg::Message &m, bool sent)
         SystemState &s = m_systems[source];
         const geo::Geodetic p = geo::imcPosition(m.number(u"lat"), m.number(u"lon"), m.number(u"height"), m.number(u"x"),
                                                  m.number(u"y"), m.number(u"z"));
-        const double speed = std::hypot(m.number(u"vx"), m.number(u"vy"));
-        double heading = std::fmod(m.number(u"psi") * 180.0 / M_PI, 360.0);
-        if (heading < 0)
-            heading += 360.0;
-        const db::TrackPoint point{now, p.lat * 180.0 / M_PI, p.lon * 180.0 / M_PI, m.number(u"depth"), m.number(u"alt"), heading, speed};
+        const double heading = std::fmod(geo::degrees(m.number(u"psi")) + 360.0, 360.0);
+        const db::TrackPoint point{now, geo::degrees(p.lat), geo::degrees(p.lon), m.number(u"depth"), m.number(u"alt"), heading,
+                                   std::hypot(m.number(u"vx"), m.number(u"vy"))};
         s.live.hasPosition = true;
         s.live.position = point;
         if (s.recent.empty() || now - s.recent.back().ms >= 1000) {
@@ -145,8 +143,8 @@ void OperationsFeed::observe(const msg::Message &m, bool sent)
         if (now - s.positionMs < m_positionIntervalMs)
             return;
         s.positionMs = now;
-        put(db::Row{db::Table::Position, {now, nameOf(source), int(source), p.lat * 180.0 / M_PI, p.lon * 180.0 / M_PI,
-                                                      m.number(u"depth"), m.number(u"alt"), heading, speed}});
+        put(db::Row{db::Table::Position, {now, nameOf(source), int(source), point.lat, point.lon, point.depth, point.altitude,
+                                          point.heading, point.speed}});
     } else if (!sent && def->abbrev == u"PlanControlState") {
         planState(m, now);
     } else if (def->abbrev == u"PlanControl") {

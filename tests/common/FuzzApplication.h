@@ -6,7 +6,20 @@
 // destroyed after it at exit and may still use it.
 #include <QCoreApplication>
 
+#include <cstdio>
+#include <cstdlib>
+
 namespace neptus::test {
+
+// A property every input must keep: broken, the target says which and stops
+// (libFuzzer keeps the input as a crash).
+inline void fuzzCheck(bool ok, const char *target, const char *what)
+{
+    if (!ok) {
+        std::fprintf(stderr, "%s: %s\n", target, what);
+        std::abort();
+    }
+}
 
 inline void ensureFuzzApplication()
 {

@@ -3,6 +3,7 @@
 // has a whole header; what it reads stops where it says the damage is; every
 // kept packet decodes or fails with a reason; seeking to any time gives
 // packets in order. Definitions: the project's msgdefs/.
+#include "FuzzApplication.h"
 #include "Paths.h"
 #include "log/LogFile.h"
 #include "log/Replay.h"
@@ -26,10 +27,7 @@ std::shared_ptr<msg::SchemaSet> loadSchemas()
 
 void check(bool ok, const char *what)
 {
-    if (!ok) {
-        std::fprintf(stderr, "fuzz_log: %s\n", what);
-        std::abort();
-    }
+    test::fuzzCheck(ok, "fuzz_log", what);
 }
 
 } // namespace

@@ -7,6 +7,7 @@
 // characters; a box of at most 10°), what is refused has a 4xx status and a
 // reason, a static file never leaves its folder, and no token is accepted
 // but the right one.
+#include "FuzzApplication.h"
 #include "web/Requests.h"
 
 #include <QRegularExpression>
@@ -20,10 +21,7 @@ namespace {
 
 void check(bool ok, const char *what)
 {
-    if (!ok) {
-        std::fprintf(stderr, "fuzz_web: %s\n", what);
-        std::abort();
-    }
+    test::fuzzCheck(ok, "fuzz_web", what);
 }
 
 } // namespace

@@ -11,6 +11,19 @@
 
 namespace neptus::transport {
 
+std::optional<std::pair<QHostAddress, quint16>> hostAndPort(QStringView text)
+{
+    const qsizetype colon = text.lastIndexOf(u':');
+    if (colon <= 0)
+        return std::nullopt;
+    const QHostAddress host(text.left(colon).toString());
+    bool ok = false;
+    const uint port = text.mid(colon + 1).toUInt(&ok);
+    if (host.isNull() || !ok || port == 0 || port > 65535)
+        return std::nullopt;
+    return std::pair{host, quint16(port)};
+}
+
 namespace {
 
 // IMC's discovery multicast group (DUNE and the Java Neptus use it).

@@ -14,8 +14,13 @@
 
 #include <expected>
 #include <memory>
+#include <optional>
 
 namespace neptus::transport {
+
+// "127.0.0.1:6002": an IP address and a port 1-65535, or nothing (a host
+// name, a missing or bad port). For --imc-peer and the like.
+std::optional<std::pair<QHostAddress, quint16>> hostAndPort(QStringView text);
 
 // How the console meets IMC vehicles over UDP. Everything defaults to
 // loopback; a field setup names the boat network's address explicitly.

@@ -51,7 +51,7 @@ TEST(CommandLine, ReadsEveryOption)
     EXPECT_EQ(line->windowSize, QSize(1920, 1080));
     EXPECT_TRUE(line->selfTest);
     EXPECT_EQ(line->imcPort, 6010);
-    EXPECT_EQ(line->imcPeers, QStringList{QStringLiteral("127.0.0.1:6002")});
+    EXPECT_EQ(line->imcPeers, (QList<std::pair<QHostAddress, quint16>>{{QHostAddress(QStringLiteral("127.0.0.1")), 6002}}));
 }
 
 TEST(CommandLine, NamesWhatIsWrong)
@@ -91,6 +91,10 @@ TEST(CommandLine, NamesWhatIsWrong)
     line = parse({QStringLiteral("--imc-peer"), QStringLiteral("nohostport")});
     ASSERT_FALSE(line);
     EXPECT_TRUE(line.error().contains(QStringLiteral("127.0.0.1:6002")));
+    // A host name was taken and then became a null address: now said at once.
+    line = parse({QStringLiteral("--imc-peer"), QStringLiteral("auv.local:6002")});
+    ASSERT_FALSE(line);
+    EXPECT_TRUE(line.error().contains(QStringLiteral("auv.local:6002")));
 
     line = parse({QStringLiteral("--components"), QStringLiteral("/nonexistent/components")});
     ASSERT_FALSE(line);
