@@ -240,12 +240,18 @@ int main(int argc, char *argv[])
             std::printf("neptus: IMC/UDP on %s:%u\n", qPrintable(config.bindAddress.toString()), session.console().imc()->port());
     }
 
-    // The mission whose plans the plan panel offers; a bad file is said, and the console carries on.
-    if (!commandLine->missionFile.isEmpty()) {
-        if (const QString why = session.plansModel()->openMission(commandLine->missionFile); !why.isEmpty())
+    // The mission whose plans the plan panel offers: the one named, else the
+    // one open last time (a console restarted on a boat carries on where it
+    // was); a bad file is said, and the console carries on.
+    QString missionFile = commandLine->missionFile;
+    const bool reopened = missionFile.isEmpty() && !replay;
+    if (reopened)
+        missionFile = session.plansModel()->recentMissions().value(0);
+    if (!missionFile.isEmpty()) {
+        if (const QString why = session.plansModel()->openMission(missionFile); !why.isEmpty())
             std::fprintf(stderr, "neptus: %s; no mission open\n", qPrintable(why));
         else
-            std::printf("neptus: mission %s\n", qPrintable(commandLine->missionFile));
+            std::printf("neptus: mission %s%s\n", qPrintable(missionFile), reopened ? " (open when the console last ran)" : "");
     }
 
     // Silent systems are forgotten after --forget-after, or the settings'

@@ -137,6 +137,46 @@ ApplicationWindow {
         function onOpenConsoleRequested(file, system) { window.openConsole(file, system, false) }
     }
 
+    // With no vehicle chosen (--system, the systems list), the console follows
+    // the first vehicle it hears, and says so for a while.
+    property string followNotice: ""
+    Connections {
+        target: window.session ? window.session.tree : null
+        enabled: Session.mainSystem === ""
+        function onSynced() {
+            const first = window.session.tree.firstVehicle()
+            if (first === "")
+                return
+            Session.mainSystem = first
+            window.followNotice = qsTr("Following %1, the first vehicle heard · tap another on the map or in the systems list to follow it").arg(first)
+            noticeTimer.restart()
+        }
+    }
+    Timer { id: noticeTimer; interval: 12000; onTriggered: window.followNotice = "" }
+    Rectangle {
+        objectName: "followNotice"
+        z: 90
+        visible: window.followNotice !== ""
+        anchors { horizontalCenter: parent.horizontalCenter; top: parent.top; topMargin: Theme.spacing }
+        width: Math.min(parent.width - Theme.spacing * 2, noticeText.implicitWidth + Theme.spacing * 4)
+        height: Math.max(Theme.touchTarget, noticeText.implicitHeight + Theme.spacing * 2)
+        radius: Theme.radius
+        color: Theme.surface
+        border.color: Theme.accent
+        Accessible.role: Accessible.AlertMessage
+        Accessible.name: window.followNotice
+        Text {
+            id: noticeText
+            anchors { fill: parent; margins: Theme.spacing }
+            text: window.followNotice
+            color: Theme.text
+            wrapMode: Text.Wrap
+            verticalAlignment: Text.AlignVCenter
+            horizontalAlignment: Text.AlignHCenter
+        }
+        TapHandler { onTapped: window.followNotice = "" } // seen: away with it
+    }
+
     // The console shown before this one (a vehicle's console opened from the
     // systems list): the switcher offers the way back.
     property url previousUrl

@@ -64,11 +64,11 @@ std::expected<void, QString> SimNode::start()
     }
     connect(&m_socket, &QUdpSocket::readyRead, this, [this] {
         while (m_socket.hasPendingDatagrams())
-            handle(m_socket.receiveDatagram());
+            handle(m_socket.receiveDatagram(), false);
     });
     connect(&m_discovery, &QUdpSocket::readyRead, this, [this] {
         while (m_discovery.hasPendingDatagrams())
-            handle(m_discovery.receiveDatagram());
+            handle(m_discovery.receiveDatagram(), true);
     });
     // Over DDS there is no heartbeat handshake: publish to whoever subscribes.
     if (v.dds) {
@@ -102,7 +102,7 @@ void SimNode::sendTo(const msg::Message &message, const QHostAddress &address, q
         m_socket.writeDatagram(packet, address, port);
 }
 
-void SimNode::handle(const QNetworkDatagram &datagram)
+void SimNode::handle(const QNetworkDatagram &datagram, bool discovery)
 {
     auto message = m_codec.decode(datagram.data());
     if (!message)
@@ -112,13 +112,24 @@ void SimNode::handle(const QNetworkDatagram &datagram)
     if (from == self)
         return; // our own Announce on the discovery ports
     if (m_options.vehicle.likeDune) {
-        if (message->abbrev() == u"Announce") {
+        if (discovery) {
+            // Transports.Discovery: Announces only, once per address and timestamp;
+            // Transports.UDP keeps the first imc+udp address a system names.
+            if (message->abbrev() != u"Announce")
+                return;
+            const QString sender = datagram.senderAddress().toString();
+            if (m_announceStamps.value(sender, -1) == message->header.timestamp)
+                return;
+            m_announceStamps.insert(sender, message->header.timestamp);
+            m_vehicle.answer(*message, wallTime()); // who it is, for the words of an abort
             static const QRegularExpression service(QStringLiteral(R"(imc\+udp://([^:/;]+):(\d+))"));
             const auto match = service.match(message->text(u"services"));
-            if (match.hasMatch()) {
-                Peer &peer = m_peers[from];
+            if (match.hasMatch() && !m_peers.contains(from))
+            {
+                Peer peer;
                 peer.address = QHostAddress(match.captured(1));
                 peer.port = static_cast<quint16>(match.captured(2).toUInt());
+                m_peers.insert(from, peer);
             }
             return;
         }
@@ -130,7 +141,9 @@ void SimNode::handle(const QNetworkDatagram &datagram)
             }
             return;
         }
-        m_peers[from].heardMs = m_clock.elapsed();
+        Peer &peer = m_peers[from];
+        peer.heardMs = m_clock.elapsed();
+        peer.heardFrom = datagram.senderAddress();
     } else if (message->abbrev() == u"Heartbeat") {
         const QPair<QString, quint16> console{datagram.senderAddress().toString(), static_cast<quint16>(datagram.senderPort())};
         if (!m_consoles.contains(console)) { // a new console: say who we are at once
@@ -144,16 +157,40 @@ void SimNode::handle(const QNetworkDatagram &datagram)
         std::fflush(stdout);
     }
     for (const msg::Message &reply : m_vehicle.answer(*message, wallTime())) {
-        if (m_options.vehicle.likeDune)
-            sendTo(reply, m_peers[from].address, m_peers[from].port);
-        else
+        if (!m_options.vehicle.likeDune) {
             sendTo(reply, datagram.senderAddress(), static_cast<quint16>(datagram.senderPort()));
+            continue;
+        }
+        // DUNE's UDP transport sends everything to every active node, whatever its destination.
+        for (const Peer &peer : std::as_const(m_peers))
+            if (peer.active)
+                sendTo(reply, peer.address, peer.port);
+    }
+}
+
+void SimNode::refreshContacts()
+{
+    const qint64 now = m_clock.elapsed();
+    for (auto it = m_peers.begin(); it != m_peers.end(); ++it) {
+        Peer &peer = *it;
+        const bool heard = peer.heardMs >= 0 && now - peer.heardMs < 30000;
+        const bool active = heard && peer.heardFrom.isEqual(peer.address, QHostAddress::TolerantConversion);
+        if (active && !peer.active) {
+            std::printf("neptus-sim: activating transmission to node 0x%04x\n", it.key());
+            std::fflush(stdout);
+        }
+        peer.active = active;
     }
 }
 
 void SimNode::tick()
 {
     const double t = m_clock.elapsed() / 1000.0;
+    // DUNE refreshes its contacts every 5 s (Transports.UDP, Contact Refresh Periodicity).
+    if (m_options.vehicle.likeDune && m_clock.elapsed() - m_refreshedMs >= 5000) {
+        m_refreshedMs += 5000;
+        refreshContacts();
+    }
     const auto messages = m_vehicle.step(m_previous, t, wallTime());
     m_previous = t;
     if (m_dds)
@@ -166,7 +203,7 @@ void SimNode::tick()
                 m_socket.writeDatagram(m_buffer, QHostAddress(it.key().first), it.key().second);
         }
         for (const Peer &peer : std::as_const(m_peers)) {
-            if (peer.heardMs >= 0 && m_clock.elapsed() - peer.heardMs < 30000)
+            if (peer.active)
                 m_socket.writeDatagram(m_buffer, peer.address, peer.port);
         }
         if (m.abbrev() == u"Announce") {

@@ -166,6 +166,7 @@ int main(int argc, char *argv[])
         v.likeDune = parser.isSet(dune);
         v.firstTransitionOnly = v.likeDune || transitionMode == u"first";
         v.config.periodicEntityList = !v.likeDune;
+        v.config.fuelLevelOnly = v.likeDune;
         v.dds = parser.isSet(dds);
         nodes.push_back(options(std::move(v)));
     }

@@ -70,20 +70,48 @@ HealthMonitor::System &HealthMonitor::systemLocked(quint16 id)
     return system;
 }
 
+double HealthMonitor::limitLocked(const System &system) const
+{
+    if (!system.streaming) // IMC's Announce period is 10 s
+        return 1.5 * (system.announceIntervalMs < 0 ? 10000.0 : system.announceIntervalMs) + m_timeoutMs;
+    // A system heard once has no interval yet: assume IMC's 1 s heartbeat.
+    return (system.intervalMs < 0 ? 1000.0 : system.intervalMs) + m_timeoutMs;
+}
+
 void HealthMonitor::observe(const msg::Message &message)
 {
     const qint64 now = m_clock->now().toMSecsSinceEpoch();
     QMutexLocker lock(&m_mutex);
     System &system = systemLocked(message.header.src);
-    if (system.lastMs > 0) {
-        const double gap = static_cast<double>(now - system.lastMs);
-        system.intervalMs = system.intervalMs < 0 ? gap : 0.9 * system.intervalMs + 0.1 * gap;
+    const bool announce = message.def() && message.def()->abbrev == u"Announce";
+    if (announce) {
+        // Its stream stopped long ago (it restarted, or forgot this console): awaited anew.
+        if (system.streaming && now - system.streamMs > limitLocked(system)) {
+            system.streaming = false;
+            system.intervalMs = -1;
+        }
+        if (!system.streaming && (system.waitingSinceMs == 0 || now - system.lastMs > limitLocked(system)))
+            system.waitingSinceMs = now;
+        if (system.announceMs > 0)
+            system.announceIntervalMs = static_cast<double>(now - system.announceMs);
+        system.announceMs = now;
+        system.console = message.integer(u"sys_type") == 0; // CCU
+    } else {
+        if (system.streaming) {
+            const double gap = static_cast<double>(now - system.streamMs);
+            system.intervalMs = system.intervalMs < 0 ? gap : 0.9 * system.intervalMs + 0.1 * gap;
+        }
+        system.streaming = true;
+        system.streamMs = now;
+        system.waitingSinceMs = 0;
     }
     if (system.firstMs == 0)
         system.firstMs = now;
     system.lastMs = now;
-    if (system.lost != Normal) {
+    // Traffic clears a silence; only a stream clears "heard only its Announce".
+    if (system.lost != Normal && !(announce && system.unstreamed)) {
         system.lost = Normal;
+        system.unstreamed = false;
         m_graph.clear(system.node);
     }
     if (message.def() && message.def()->abbrev == u"EntityState") {
@@ -162,13 +190,25 @@ QList<quint16> HealthMonitor::check()
         for (auto entity = system.entities.begin(); entity != system.entities.end(); ++entity)
             entityLocked(system, it.key(), entity.key());
         const double silent = static_cast<double>(now - system.lastMs);
-        // A system heard once has no interval yet: assume IMC's 1 s heartbeat.
-        const double limit = (system.intervalMs < 0 ? 1000.0 : system.intervalMs) + m_timeoutMs;
+        const double limit = limitLocked(system);
         const Level level = silent > 3 * limit ? Error : silent > limit ? Warning : Normal;
         if (level == Normal) {
-            if (system.lost != Normal)
+            // Announcing, and nothing else, for long: DUNE would have streamed by now.
+            const bool unstreamed = !system.streaming && !system.console && system.waitingSinceMs > 0
+                                    && now - system.waitingSinceMs > waitForStreamMs;
+            const QString text = unstreamed ? QStringLiteral("heard only its Announce for %1: it sends this console nothing "
+                                                             "(does it reach this console's address?)")
+                                                  .arg(silenceText(static_cast<double>(now - system.waitingSinceMs)))
+                                            : QString();
+            if (unstreamed) {
+                system.lost = Warning;
+                system.unstreamed = true;
+                m_graph.raise(system.node, Warning, text);
+            } else if (system.lost != Normal) {
                 m_graph.clear(system.node);
-            system.lost = Normal;
+                system.lost = Normal;
+                system.unstreamed = false;
+            }
             ++it;
             continue;
         }
@@ -192,6 +232,7 @@ QList<quint16> HealthMonitor::check()
         }
         // The text follows the silence as it grows (once a second at most).
         system.lost = level;
+        system.unstreamed = false;
         m_graph.raise(system.node, level, QStringLiteral("communications lost: nothing heard for ") + silenceText(silent));
         ++it;
     }

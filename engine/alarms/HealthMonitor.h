@@ -16,7 +16,13 @@ namespace neptus::alarms {
 //  - a system silent for longer than its usual interval plus the comms
 //    timeout (default 2 s) gets Warning "communications lost" on its node,
 //    Error after three times that, with the silence so far in the text
-//    (updated as it grows); both clear when traffic returns.
+//    (updated as it grows); both clear when traffic returns. Silence is
+//    counted from when a system can be expected to stream: a stock DUNE
+//    announces itself (every 10 s) seconds before it streams to a console
+//    it has just heard of, so until something other than an Announce comes
+//    (at first, and again after its stream stopped, as when it restarts)
+//    only its Announces are awaited, at their own period; if they are all
+//    it sends for `waitForStreamMs`, a Warning says so;
 //  - a system that was never named (no Announce, no configuration) and was
 //    heard for under 5 s gets no alarm of its own when it falls silent: one
 //    Warning on "links/short-lived systems" counts them all (a burst of
@@ -43,6 +49,8 @@ public:
     void forget(quint16 id);
 
     static Level levelOfEntityState(qint64 state);
+    // A vehicle heard announcing for this long without streaming gets a Warning.
+    static constexpr qint64 waitForStreamMs = 20000;
 
 private:
     struct Entity
@@ -56,13 +64,22 @@ private:
         QString name;
         qint64 firstMs = 0;
         qint64 lastMs = 0;
-        double intervalMs = -1;   // running average between messages; -1 until two were heard
+        double intervalMs = -1;   // running average between messages of its stream; -1 until two were heard
+        bool streaming = false;   // it sends more than its Announce
+        qint64 streamMs = 0;      // its last message other than an Announce
+        qint64 waitingSinceMs = 0; // when it was last heard announcing without streaming
+        qint64 announceMs = 0;
+        double announceIntervalMs = -1;
+        bool console = false;     // it announces itself as a console (CCU): it streams to nobody
         Level lost = Normal;
+        bool unstreamed = false;  // `lost` is "heard only its Announce", not a silence
         QHash<quint8, Entity> entities; // those that reported an EntityState
     };
 
     System &systemLocked(quint16 id);
     bool establishedLocked(quint16 id, const System &system) const;
+    // How long a silence it may keep before its alarm: its stream's cadence, or its Announces'.
+    double limitLocked(const System &system) const;
     void updateShortLivedLocked(const QList<quint16> &silent);
     Entity &entityLocked(System &system, quint16 id, quint8 entity);
     // "12 s", "3 min 05 s", "2 h 10 min": how long a system has been silent.

@@ -126,18 +126,8 @@ bool PlanClient::receive(const msg::Message &message)
         return false;
     const quint16 id = static_cast<quint16>(message.integer(u"request_id"));
     const auto found = m_pending.find(id);
-    if (found == m_pending.end() || found->second.message.abbrev() != message.abbrev() || found->second.op != op) {
-        // Not an answer we wait for: a plan's end, said to a START that
-        // started it (a second answer to a START sent twice says what the first did).
-        const auto started = m_started.find(id);
-        if (!control || op != u"START" || type == u"IN_PROGRESS" || started == m_started.end())
-            return false;
-        if (message.text(u"info") != started->second) {
-            m_started.erase(started);
-            emit planEnded(message.text(u"plan_id"), type == u"SUCCESS", message.text(u"info"));
-        }
-        return true;
-    }
+    if (found == m_pending.end() || found->second.message.abbrev() != message.abbrev() || found->second.op != op)
+        return false; // not an answer we wait for (DUNE's later words to a START, a duplicate)
     Request &r = found->second;
     if (type == u"IN_PROGRESS") {
         r.timer->start(m_timeout); // still working on it: wait again, without sending again
@@ -146,11 +136,6 @@ bool PlanClient::receive(const msg::Message &message)
     std::optional<msg::Message> arg;
     if (const msg::Message *inner = message.inlineMessage(message.def()->indexOf(u"arg")))
         arg = *inner;
-    if (control && op == u"START" && type == u"SUCCESS") {
-        if (m_started.size() >= 64) // plans whose end was never heard
-            m_started.erase(m_started.begin());
-        m_started[id] = message.text(u"info");
-    }
     finish(id, Reply{id, message.abbrev(), r.op, message.text(u"plan_id"), type == u"SUCCESS", message.text(u"info"),
                      std::move(arg), r.attempts});
     return true;

@@ -21,8 +21,10 @@ namespace neptus::plans {
 // the vehicle's SUCCESS or FAILURE (IN_PROGRESS keeps it waiting), or, after
 // `attempts` sends `timeout` apart with no answer, as a failure saying so:
 // never lost silently. Replies from other systems, to other requests or of
-// another operation are not taken for it. A vehicle says how a plan ended
-// with a PlanControl to the START it answered earlier: planEnded().
+// another operation are not taken for it. A START ends with the vehicle's
+// first answer ("plan loaded"): what DUNE says later under the same id is
+// not an answer but the plan's progress, which PlanRuns follows from the
+// vehicle's PlanControlState.
 class PlanClient : public QObject
 {
     Q_OBJECT
@@ -67,8 +69,6 @@ public:
 
 signals:
     void replied(const neptus::plans::PlanClient::Reply &reply);
-    // The vehicle ended a plan: completed (ok), or failed or stopped, in its words.
-    void planEnded(const QString &planId, bool ok, const QString &info);
 
 private:
     // A request's timer may end it from inside its own timeout: stopped and deleted later.
@@ -100,7 +100,6 @@ private:
     int m_attempts = 3;
     quint16 m_nextId = 1;
     std::map<quint16, Request> m_pending;
-    std::map<quint16, QString> m_started; // STARTs the vehicle took, by request id, with its answer
 };
 
 } // namespace neptus::plans

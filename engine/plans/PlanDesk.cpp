@@ -36,7 +36,9 @@ bool PlanDesk::supervising(const QString &system) const
 
 void PlanDesk::supervise()
 {
-    bool any = false;
+    for (const PlanRuns::Event &e : m_runs.poll(m_clock->now().toMSecsSinceEpoch()))
+        told(e);
+    bool any = m_runs.waiting();
     for (auto &[id, v] : m_vehicles) {
         if (!v.supervisor)
             continue;
@@ -140,8 +142,6 @@ PlanDesk::Vehicle &PlanDesk::vehicleFor(quint16 to)
         });
         v.client->setTimeout(m_timeout);
         connect(v.client.get(), &PlanClient::replied, this, [this, to](const PlanClient::Reply &r) { replied(to, r); });
-        connect(v.client.get(), &PlanClient::planEnded, this,
-                [this, to](const QString &plan, bool ok, const QString &info) { ended(to, plan, ok, info); });
     }
     return v;
 }
@@ -289,6 +289,7 @@ std::expected<void, QString> PlanDesk::start(const QString &system, const QStrin
         (*v)->supervisor = std::make_unique<Supervisor>(*(*v)->client, m_tree, m_scripts ? m_scripts() : nullptr, m_graph,
                                                         m_mission, *conditional, m_schema,
                                                         [this, id](const QString &line) { note(id, line); }, m_clock);
+        (*v)->supervisedPlan = planId;
         auto begun = (*v)->supervisor->begin();
         if (!begun)
             return std::unexpected(begun.error());
@@ -351,6 +352,10 @@ void PlanDesk::receive(const msg::Message &message)
     const auto found = m_vehicles.find(message.header.src);
     if (found != m_vehicles.end() && found->second.client)
         found->second.client->receive(message);
+    for (const PlanRuns::Event &e : m_runs.observe(message, m_clock->now().toMSecsSinceEpoch()))
+        told(e);
+    if (m_runs.waiting())
+        m_supervision.start(); // an end waits for its reason: told by supervise() when it is late
 }
 
 // Asks a vehicle which plans it holds, unless a question is on its way
@@ -402,23 +407,59 @@ void PlanDesk::replied(quint16 id, const PlanClient::Reply &r)
     }
 }
 
-void PlanDesk::ended(quint16 id, const QString &planId, bool ok, const QString &info)
+void PlanDesk::told(const PlanRuns::Event &e)
 {
-    Vehicle &v = m_vehicles[id];
-    if (v.supervisor) {
-        v.supervisor->ended(planId, ok, info);
-        // A stretch replaced by the next is not the plan's end.
-        if (!ok && info.contains(u"started"_s))
+    Vehicle &v = m_vehicles[e.system];
+    // A stretch of a supervised plan ("survey.2") stands for the whole plan;
+    // one replaced by the next stretch is no end of it.
+    QString plan = e.plan;
+    const bool stretch = !v.supervisedPlan.isEmpty() && e.plan.startsWith(v.supervisedPlan + u'.');
+    if (stretch) {
+        if (e.kind != PlanRuns::Event::Kind::Ended)
+            return; // the supervisor says which stretch starts
+        const bool current = v.supervisor && e.plan == v.supervisor->part();
+        if (v.supervisor && !v.supervisor->finished() && !current)
             return;
+        if (current)
+            v.supervisor->ended(e.plan);
+        plan = v.supervisedPlan;
     }
-    const QString name = m_tree.systemName(id);
-    const bool stoppedHere = !ok && info.contains(u"stopped"_s);
-    note(id, ok ? u"%1 completed"_s.arg(planId) : u"%1 ended: %2"_s.arg(planId, info));
-    const auto node = m_graph.ensure(u"systems/%1/plan"_s.arg(name));
-    if (ok || stoppedHere)
-        m_graph.notify(node, u"plan %1 %2"_s.arg(planId, ok ? u"completed"_s : info));
-    else
-        m_graph.raise(node, alarms::Warning, u"plan %1 failed: %2"_s.arg(planId, info));
+    switch (e.kind) {
+    case PlanRuns::Event::Kind::Started:
+        note(e.system, e.joined ? u"%1 is running, at %2 (it started before this console heard %3)"_s.arg(
+                                      e.plan, e.maneuver, m_tree.systemName(e.system))
+                                : u"%1 started: %2"_s.arg(e.plan, e.maneuver));
+        return;
+    case PlanRuns::Event::Kind::Maneuver:
+        return; // the panel shows the maneuver; the database keeps each
+    case PlanRuns::Event::Kind::Ended:
+        break;
+    }
+    const QString supervised = stretch ? u" (supervised)"_s : QString();
+    const auto node = m_graph.ensure(u"systems/%1/plan"_s.arg(m_tree.systemName(e.system)));
+    switch (e.outcome) {
+    case PlanRuns::Outcome::Failed: {
+        const QString why = e.reason.isEmpty() ? u"the vehicle gave no reason"_s : e.reason;
+        note(e.system, u"%1 failed%2: %3"_s.arg(plan, supervised, why));
+        m_graph.raise(node, alarms::Warning, u"plan %1 failed: %2"_s.arg(plan, why));
+        return;
+    }
+    case PlanRuns::Outcome::Replaced:
+        note(e.system, u"%1 ended%2: %3 started in its place"_s.arg(plan, supervised, e.reason));
+        m_graph.notify(node, u"plan %1 ended: %2 started in its place"_s.arg(plan, e.reason));
+        return;
+    case PlanRuns::Outcome::Unreported:
+        note(e.system, u"%1 ended%2 (the vehicle did not say how)%3"_s.arg(plan, supervised,
+                                                                          e.reason.isEmpty() ? QString() : u": "_s + e.reason));
+        m_graph.notify(node, u"plan %1 ended"_s.arg(plan));
+        return;
+    case PlanRuns::Outcome::Completed:
+    case PlanRuns::Outcome::Stopped:
+        break;
+    }
+    const QString how = PlanRuns::outcomeName(e.outcome);
+    note(e.system, u"%1 %2%3"_s.arg(plan, how, supervised));
+    m_graph.notify(node, u"plan %1 %2"_s.arg(plan, how));
 }
 
 } // namespace neptus::plans

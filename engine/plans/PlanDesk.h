@@ -5,6 +5,7 @@
 #include "mission/Mission.h"
 #include "plans/PlanClient.h"
 #include "plans/PlanDatabase.h"
+#include "plans/PlanRuns.h"
 #include "plans/Supervisor.h"
 #include "tree/VariableTree.h"
 
@@ -25,10 +26,12 @@ namespace neptus::plans {
 // open mission is there exactly as here (the MD5s DUNE keeps), and the
 // commands — send, remove, start, stop, abort. START is refused while the
 // vehicle's copy differs from the mission's or is missing: the operator
-// sends it first. Every command, reply and end of a plan is a line of the
-// vehicle's log; a plan's end is also an event on the alarm node
-// "systems/<vehicle>/plan" (Warning when it failed, with the vehicle's
-// reason; Info when it completed or this console stopped it). A plan with
+// sends it first. Every command, reply and start and end of a plan is a
+// line of the vehicle's log; a plan's end — as the vehicle's PlanControlState
+// tells it (PlanRuns), whoever started the plan, also one that began before
+// this console joined — is also an event on the alarm node
+// "systems/<vehicle>/plan", exactly once: Warning when it failed, with the
+// vehicle's reason; Info when it completed, was stopped or replaced. A plan with
 // conditions on its transitions is carried out by a Supervisor, one stretch
 // at a time, for every vehicle: DUNE ignores conditions, and only the
 // console sees every vehicle a condition may name.
@@ -89,11 +92,13 @@ public:
     std::expected<void, QString> stop(const QString &system);
     std::expected<void, QString> abort(const QString &system);
 
-    // A PlanDB or PlanControl from the links (Console::planMessageReceived).
+    // A PlanDB, PlanControl or PlanControlState from the links (Console::planMessageReceived).
     void receive(const msg::Message &message);
     // Whether a plan of this vehicle's runs under supervision now.
     bool supervising(const QString &system) const;
-    // Supervisors look at their vehicles and decide (a timer does it every second).
+    // Supervisors look at their vehicles and decide, and plan ends that
+    // waited for the vehicle's reason are told (a timer does it every second
+    // while there is something to do).
     void supervise();
     // Replies come within this or are asked again (tests shorten it).
     void setTimeout(std::chrono::milliseconds timeout) { m_timeout = timeout; }
@@ -114,6 +119,7 @@ private:
         QStringList log;
         bool asking = false; // a GET_DSTATE is on its way
         std::unique_ptr<Supervisor> supervisor;
+        QString supervisedPlan; // the plan whose stretches ("survey.2") it was last given
     };
 
     std::expected<Vehicle *, QString> vehicle(const QString &system);
@@ -124,7 +130,8 @@ private:
     void note(quint16 id, const QString &line);
     void ask(Vehicle &v);
     void replied(quint16 id, const PlanClient::Reply &reply);
-    void ended(quint16 id, const QString &planId, bool ok, const QString &info);
+    // A plan started, or ended (PlanRuns): the log, the alarm event, the supervisor.
+    void told(const PlanRuns::Event &event);
 
     std::shared_ptr<const msg::Schema> m_schema;
     msg::Codec m_codec;
@@ -140,6 +147,7 @@ private:
     QHash<QString, QStringList> m_planErrors; // plan id -> its errors (mission::checkPlan)
     std::map<QString, QByteArray> m_md5; // the mission's plans' MD5s, by plan id
     std::map<quint16, Vehicle> m_vehicles;
+    PlanRuns m_runs;
     bool m_quiet = false; // setQuiet
     std::chrono::milliseconds m_timeout{3000};
 };

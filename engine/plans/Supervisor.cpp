@@ -203,14 +203,10 @@ void Supervisor::check()
     }
 }
 
-void Supervisor::ended(const QString &planId, bool ok, const QString &info)
+void Supervisor::ended(const QString &planId)
 {
     if (planId != m_part)
         return;
-    if (m_final && ok)
-        m_log(u"%1 completed (supervised)"_s.arg(m_plan.id));
-    else
-        m_log(u"%1 ended in %2: %3"_s.arg(m_plan.id, m_part, info));
     m_finished = true;
     clearConditions();
 }

@@ -78,8 +78,8 @@ public:
     std::expected<void, QString> begin();
     // Looks at the vehicle's PlanControlState and decides (the desk calls it every second).
     void check();
-    // The vehicle said a plan ended (PlanControl to a START).
-    void ended(const QString &planId, bool ok, const QString &info);
+    // The vehicle's plan `planId` ended (PlanRuns); the desk says how.
+    void ended(const QString &planId);
 
     // A transition taken when its maneuver is done, with no condition to evaluate.
     static bool plain(const mission::Transition &t);

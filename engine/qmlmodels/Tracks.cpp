@@ -94,7 +94,7 @@ QVariantMap Tracks::latest(const QString &system) const
             {QStringLiteral("height"), f.height},      {QStringLiteral("depth"), f.depth},
             {QStringLiteral("roll"), degrees(f.roll)}, {QStringLiteral("pitch"), degrees(f.pitch)},
             {QStringLiteral("heading"), degrees(f.heading)}, {QStringLiteral("time"), f.time},
-            {QStringLiteral("count"), qulonglong(t->fixes.size())}};
+            {QStringLiteral("count"), qulonglong(t->fixes.size())}, {QStringLiteral("announced"), t->announcedOnly}};
 }
 
 QVariantMap Tracks::ned(const QString &system) const
@@ -406,6 +406,38 @@ void Tracks::read(tree::NodeId node)
     const QString name = tree.systemName(id);
     Track &t = trackFor(id, name, tree.isNamed(id));
     t.heardMs = tree.clock().now().toMSecsSinceEpoch();
+    if (t.announcedOnly) { // its own state from now on: the announced place is no part of its trail
+        t.announcedOnly = false;
+        t.fixes.clear();
+    }
+    add(t, fix);
+}
+
+// A DUNE vehicle's Announce says where it is (from its EstimatedState), and
+// comes seconds before it streams to a console it has just met: shown there
+// at once, until its first EstimatedState.
+void Tracks::readAnnounce(tree::NodeId node)
+{
+    const tree::VariableTree &tree = *m_model->tree();
+    const quint16 id = tree.systemOf(node);
+    if (const auto known = m_byId.constFind(id); known != m_byId.cend() && !(*known)->announcedOnly)
+        return;
+    auto field = [&](const char *name) {
+        return tree.snapshot(tree.childByName(node, QString::fromLatin1(name))).value.toDouble();
+    };
+    const double lat = field("lat"), lon = field("lon");
+    if (!std::isfinite(lat) || !std::isfinite(lon) || std::abs(lat) > M_PI / 2 || std::abs(lon) > M_PI || (lat == 0 && lon == 0))
+        return; // none given (0, 0), or nonsense
+    Fix fix;
+    fix.time = tree.snapshot(node).timestamp;
+    fix.lat = lat;
+    fix.lon = lon;
+    fix.height = float(field("height"));
+    homeOnce(lat, lon, fix.height);
+    Track &t = trackFor(id, tree.systemName(id), tree.isNamed(id));
+    t.announcedOnly = true;
+    t.heardMs = tree.clock().now().toMSecsSinceEpoch();
+    t.fixes.clear();
     add(t, fix);
 }
 
@@ -431,9 +463,15 @@ void Tracks::update()
     m_waitingSet.clear();
     if (!changes.removed.empty()) // nodes of forgotten systems belong to no system now
         std::erase_if(nodes, [&tree](tree::NodeId node) { return tree.systemOf(node) == 0xFFFF; });
-    for (const tree::NodeId node : changes.changedNodes)
-        if (tree.kind(node) == tree::VariableTree::Kind::Message && tree.name(node) == QLatin1String("EstimatedState"))
+    std::vector<tree::NodeId> announces;
+    for (const tree::NodeId node : changes.changedNodes) {
+        if (tree.kind(node) != tree::VariableTree::Kind::Message)
+            continue;
+        if (tree.name(node) == QLatin1String("EstimatedState"))
             nodes.push_back(node);
+        else if (tree.name(node) == QLatin1String("Announce"))
+            announces.push_back(node);
+    }
     int joined = 0;
     for (const tree::NodeId node : nodes) {
         if (!m_byId.contains(tree.systemOf(node)) && joined++ >= newSystemsPerUpdate) {
@@ -445,6 +483,9 @@ void Tracks::update()
         }
         read(node);
     }
+    for (const tree::NodeId node : announces)
+        if (m_byId.contains(tree.systemOf(node)) || joined++ < newSystemsPerUpdate)
+            readAnnounce(node);
     if (!m_waiting.empty() && !m_more.isActive())
         m_more.start(); // the model syncs only when the tree changes
     updateRows();

@@ -84,6 +84,7 @@ public:
         quint64 revision = 0;   // grows with every change
         bool named = false;     // by Announce or configuration, not "0x4001"
         qint64 heardMs = 0;     // when its last state arrived (the tree's clock)
+        bool announcedOnly = false; // placed where its Announce says, no EstimatedState yet
     };
 
     explicit Tracks(tree::VariableTreeModel *model, QObject *parent = nullptr);
@@ -146,6 +147,7 @@ signals:
     void homeChanged();
 
 private:
+    void readAnnounce(tree::NodeId node);
     Track &trackFor(quint16 id, const QString &system, bool named);
     void flushSystems();
     // Gives rows to the systems that should be drawn, and takes them from the others.

@@ -359,4 +359,16 @@ QHash<int, QByteArray> VariableTreeModel::roleNames() const
     return roles;
 }
 
+QString VariableTreeModel::firstVehicle() const
+{
+    for (const NodeId system : m_systems) {
+        const QString name = m_tree->name(system);
+        const NodeId kind = m_tree->find(name + QStringLiteral("/Announce/sys_type"));
+        if (kind != noNode ? m_tree->snapshot(kind).text != QStringLiteral("CCU")
+                           : m_tree->find(name + QStringLiteral("/EstimatedState")) != noNode)
+            return name;
+    }
+    return {};
+}
+
 } // namespace neptus::tree

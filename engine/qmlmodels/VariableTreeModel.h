@@ -55,6 +55,9 @@ public:
 
     int nodeCount() const { return m_tree->nodeCount(); }
     QStringList systems() const { return m_tree->childNames(u""); }
+    // The first system heard that is a vehicle (its Announce names no
+    // console, or, unannounced, it reports an EstimatedState); "" if none.
+    Q_INVOKABLE QString firstVehicle() const;
 
     // Children of a path, for the designer's path pickers ("" lists systems).
     Q_INVOKABLE QStringList children(const QString &path) const;

@@ -68,8 +68,10 @@ transport::ImcUdpTransport *Console::attachImc(std::unique_ptr<transport::ImcUdp
 {
     const QString link = QStringLiteral("IMC/UDP");
     imc->setPacketTap([this](QByteArrayView packet) { tap(packet); });
+    // Straight into the session from the link's decoding thread, as from DDS's: the GUI thread
+    // being busy delays nothing and loses nothing (the tree, alarms and statistics are thread-safe).
     connect(imc.get(), &transport::ImcUdpTransport::received, this,
-            [this, link](const msg::Message &m, qsizetype bytes) { ingest(m, link, bytes); });
+            [this, link](const msg::Message &m, qsizetype bytes) { ingest(m, link, bytes); }, Qt::DirectConnection);
     connect(imc.get(), &transport::ImcUdpTransport::decodeFailed, this,
             [this, link](quint16 system, const QString &peer, const QString &reason) {
                 decodeFailed(system, link, peer, reason);
@@ -89,15 +91,18 @@ transport::ImcUdpTransport *Console::attachImc(std::unique_ptr<transport::ImcUdp
                 sources.ignoredMs = m_clock->now().toMSecsSinceEpoch();
                 updateSourcesAlarm(system);
             });
+    // Said as it is: a host that sends too much, or this console falling behind (not the vehicle's doing).
     connect(imc.get(), &transport::ImcUdpTransport::overloaded, this,
-            [this, maximum = imc->maxDatagramsPerSecond()](const QString &host, int dropped) {
+            [this, maximum = imc->maxDatagramsPerSecond()](const QString &host, int overRate, int behind) {
                 const auto node = m_graph.ensure(QStringLiteral("links/%1").arg(host));
-                if (dropped == 0)
-                    m_graph.raise(node, alarms::Normal);
-                else
-                    m_graph.raise(node, alarms::Warning,
-                                  tr("input overload: %1 sent over %2 datagrams a second; %3 dropped unread")
-                                      .arg(host).arg(maximum).arg(dropped));
+                QStringList why;
+                if (overRate > 0)
+                    why << tr("input overload: %1 sent over %2 datagrams a second; %3 dropped unread")
+                               .arg(host).arg(maximum).arg(overRate);
+                if (behind > 0)
+                    why << tr("this console fell behind what %1 sends: %2 datagrams dropped unread")
+                               .arg(host).arg(behind);
+                m_graph.raise(node, why.isEmpty() ? alarms::Normal : alarms::Warning, why.join(QStringLiteral("; ")));
             });
     m_imc = std::move(imc);
     addLink(link, m_imc.get());
@@ -196,7 +201,8 @@ void Console::ingest(const msg::Message &message, const QString &link, qsizetype
     m_health.observe(message);
     m_naming.observe(message);
     m_linkStatistics.received(source, link, message.id(), message.abbrev(), !message.isOpaque(), bytes);
-    if (const msg::MessageDef *def = message.def(); def && (def->abbrev == u"PlanDB" || def->abbrev == u"PlanControl"))
+    if (const msg::MessageDef *def = message.def();
+        def && (def->abbrev == u"PlanDB" || def->abbrev == u"PlanControl" || def->abbrev == u"PlanControlState"))
         emit planMessageReceived(message);
     else if (def && def->abbrev == u"MissionChange")
         emit sharedMissionReceived(message);

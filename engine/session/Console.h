@@ -122,8 +122,8 @@ public:
     QString dumpTree() const;
 
 signals:
-    // A vehicle's plan database or plan control spoke (PlanDB, PlanControl):
-    // for plans::PlanClient. Emitted from the thread that received it.
+    // A vehicle's plan database or plan control spoke (PlanDB, PlanControl,
+    // PlanControlState): for plans::PlanDesk. Emitted from the thread that received it.
     void planMessageReceived(const neptus::msg::Message &message);
     // Another console changed a shared mission (MissionChange): for plans::MissionShare.
     void sharedMissionReceived(const neptus::msg::Message &message);

@@ -98,15 +98,34 @@ msg::Message PlanEngine::reply(const msg::Message &request, const char *type, co
 std::vector<msg::Message> PlanEngine::handle(const msg::Message &message, double wallTime)
 {
     m_now = wallTime;
-    if (!message.def() || message.header.dst != m_self)
+    if (!message.def())
         return {};
     const QString &abbrev = message.def()->abbrev;
+    if (abbrev == u"Announce") { // who a system id is, for the words of an abort
+        if (m_names.size() < 256 || m_names.contains(message.header.src))
+            m_names[message.header.src] = message.text(u"sys_name");
+        return {};
+    }
+    if (message.header.dst != m_self)
+        return {};
     if (abbrev == u"PlanDB" && enumOf(message, "type") == u"REQUEST")
         return planDb(message, wallTime);
     if (abbrev == u"PlanControl" && enumOf(message, "type") == u"REQUEST")
         return planControl(message, wallTime);
-    if (abbrev == u"Abort" && m_run)
-        return {finish(false, u"plan aborted by 0x%1"_s.arg(message.header.src, 4, 16, QChar(u'0')), wallTime)};
+    if (abbrev == u"Abort") {
+        // DUNE's vehicle supervisor takes it (src/Supervisors/Vehicle/Task.cpp, consume(Abort)): the
+        // vehicle goes to error mode, and the plan engine fails the plan with the supervisor's words,
+        // is BLOCKED, and READY again about a second later, when the entities report no error.
+        const auto name = m_names.find(message.header.src);
+        const QString why = u"got abort request from system %1 - 0x%2 @ 0x%3"_s
+                                .arg(name != m_names.end() ? name->second : u"unknown"_s)
+                                .arg(QString::number(message.header.src, 16).rightJustified(4, u'0').toUpper())
+                                .arg(QString::number(message.header.srcEnt, 16).rightJustified(2, u'0').toUpper());
+        m_blockedUntil = m_simTime + 1.0;
+        if (m_run)
+            return end(false, why, wallTime);
+        return {controlState(wallTime)};
+    }
     return {};
 }
 
@@ -226,65 +245,89 @@ std::vector<msg::Message> PlanEngine::planControl(const msg::Message &request, d
             spec.setMessages(spec.def()->indexOf(u"maneuvers"), {step});
             return spec;
         }
+        if (id.isEmpty())
+            return std::unexpected(u"undefined plan id"_s);
         if (const auto found = m_database.find(id); found != m_database.end())
             return found->second.specification;
         if (m_loaded && m_loaded->text(u"plan_id") == id)
             return *m_loaded;
-        return std::unexpected(u"undefined plan '%1'"_s.arg(id));
+        return std::unexpected(u"undefined plan"_s);
     };
 
+    // Like DUNE's plan engine (src/Plan/Engine/Task.cpp), one reply record
+    // answers: this request now, and later whatever the vehicle says unasked
+    // ("plan completed", a failure), with this request's id and op.
+    m_reply = {request.header.src, request.header.srcEnt, request.integer(u"request_id"), request.integer(u"op"), id};
     if (op == u"START") {
+        // INITIALIZING still names the previous plan; a plan running is replaced (its
+        // outcome FAILURE, no reply for it).
+        if (m_run) {
+            m_run.reset();
+            m_lastOutcome = 2;
+        }
+        m_initializing = true;
+        out.push_back(controlState(wallTime));
+        m_initializing = false;
         auto spec = planOf();
-        if (!spec)
-            return {reply(request, "FAILURE", u"plan load failed: "_s + spec.error(), wallTime)};
-        if (m_run) // a new plan replaces the one running
-            out.push_back(finish(false, u"plan stopped: %1 started"_s.arg(id), wallTime));
-        if (const auto error = start(std::move(*spec), request, &m_lastMotion)) {
-            out.push_back(reply(request, "FAILURE", u"plan validation failed: "_s + *error, wallTime));
+        if (!spec) {
+            out.push_back(replyLast("FAILURE", spec.error(), wallTime));
+            out.push_back(controlState(wallTime));
             return out;
         }
-        out.push_back(reply(request, "SUCCESS", u"plan started"_s, wallTime));
+        m_reply.planId = spec->text(u"plan_id");
+        if (const auto error = start(std::move(*spec), &m_lastMotion)) {
+            out.push_back(replyLast("FAILURE", u"parse error: "_s + *error, wallTime));
+            out.push_back(controlState(wallTime));
+            return out;
+        }
+        out.push_back(replyLast("SUCCESS", u"plan loaded"_s, wallTime));
+        out.push_back(controlState(wallTime));
+        out.push_back(replyLast("SUCCESS", u"%1: executing maneuver"_s.arg(m_run->maneuver), wallTime));
     } else if (op == u"STOP") {
-        const bool running = m_run.has_value();
-        if (running)
-            out.push_back(finish(false, u"plan stopped"_s, wallTime));
-        out.push_back(reply(request, "SUCCESS", running ? u"plan stopped"_s : u"no plan was running"_s, wallTime));
+        if (!m_run) {
+            m_reply.planId.clear();
+            out.push_back(replyLast("FAILURE", u"no plan is running, request ignored"_s, wallTime));
+            return out;
+        }
+        m_reply.planId = m_run->plan.id;
+        out.push_back(replyLast("SUCCESS", u"OK"_s, wallTime));
+        m_lastOutcome = 2; // a stopped plan did not succeed
+        m_run.reset();
+        out.push_back(controlState(wallTime));
     } else if (op == u"LOAD") {
         auto spec = planOf();
         if (!spec)
-            return {reply(request, "FAILURE", u"plan load failed: "_s + spec.error(), wallTime)};
+            return {replyLast("FAILURE", spec.error(), wallTime)};
         m_loaded = *spec;
-        out.push_back(reply(request, "SUCCESS", u"plan loaded"_s, wallTime));
+        m_reply.planId = spec->text(u"plan_id");
+        out.push_back(replyLast("SUCCESS", u"plan loaded"_s, wallTime));
     } else if (op == u"GET") {
         if (!m_run)
-            return {reply(request, "FAILURE", u"no plan is running"_s, wallTime)};
-        msg::Message answer = reply(request, "SUCCESS", {}, wallTime);
+            return {replyLast("FAILURE", u"no plan is running"_s, wallTime)};
+        m_reply.planId = m_run->plan.id;
+        msg::Message answer = replyLast("SUCCESS", u"OK"_s, wallTime);
         answer.setInlineMessage(answer.def()->indexOf(u"arg"), m_run->specification);
-        setText(answer, "plan_id", m_run->plan.id);
         out.push_back(std::move(answer));
     } else {
-        out.push_back(reply(request, "FAILURE", u"operation %1 is not supported"_s.arg(op), wallTime));
+        out.push_back(replyLast("FAILURE", u"plan control operation not supported"_s, wallTime));
     }
     return out;
 }
 
-std::optional<QString> PlanEngine::start(msg::Message specification, const msg::Message &request, const Motion *motion)
+std::optional<QString> PlanEngine::start(msg::Message specification, const Motion *motion)
 {
     auto plan = mission::planFromSpecification(specification, m_name);
     if (!plan)
         return plan.error();
     for (const mission::Maneuver &m : std::as_const(plan->maneuvers)) {
         if (!executable.contains(m.type))
-            return u"maneuver '%1' is a %2, which this vehicle cannot do"_s.arg(m.id, m.type);
+            return u"%1: maneuver is not supported (a %2)"_s.arg(m.id, m.type);
     }
     if (!plan->maneuver(plan->start))
-        return u"the start maneuver '%1' is not in the plan"_s.arg(plan->start);
+        return u"%1: invalid start maneuver"_s.arg(plan->start);
     Run run;
     run.plan = std::move(*plan);
     run.specification = std::move(specification);
-    run.requester = request.header.src;
-    run.requesterEntity = request.header.srcEnt;
-    run.requestId = static_cast<quint16>(request.integer(u"request_id"));
     run.total = static_cast<int>(run.plan.executionOrder().size());
     m_run = std::move(run);
     m_lastPlan = m_run->plan.id;
@@ -408,29 +451,38 @@ std::expected<std::optional<QString>, QString> PlanEngine::nextManeuver()
     return any ? std::optional<QString>() : std::optional<QString>(QString());
 }
 
-msg::Message PlanEngine::finish(bool success, const QString &info, double wallTime)
+msg::Message PlanEngine::replyLast(const char *type, const QString &info, double wallTime) const
 {
     msg::Message m = make("PlanControl", wallTime);
-    setEnum(m, "type", success ? "SUCCESS" : "FAILURE");
-    setEnum(m, "op", "START");
-    setInteger(m, "request_id", m_run ? m_run->requestId : 0);
-    setText(m, "plan_id", m_run ? m_run->plan.id : m_lastPlan);
+    setEnum(m, "type", type);
+    setInteger(m, "op", m_reply.op);
+    setInteger(m, "request_id", m_reply.requestId);
+    setText(m, "plan_id", m_reply.planId);
     setText(m, "info", info);
-    if (m_run) {
-        m.header.dst = m_run->requester;
-        m.header.dstEnt = m_run->requesterEntity;
-    }
+    m.header.dst = m_reply.to;
+    m.header.dstEnt = m_reply.toEntity;
+    return m;
+}
+
+std::vector<msg::Message> PlanEngine::end(bool success, const QString &info, double wallTime)
+{
+    m_reply.planId = m_run ? m_run->plan.id : m_lastPlan;
+    std::vector<msg::Message> out{replyLast(success ? "SUCCESS" : "FAILURE", info, wallTime)};
     m_lastOutcome = success ? 1 : 2;
     m_lastInfo = info;
     m_run.reset();
-    return m;
+    out.push_back(controlState(wallTime));
+    return out;
 }
 
 std::vector<msg::Message> PlanEngine::advance(Motion &motion, double dt, double wallTime)
 {
     m_now = wallTime;
+    const bool blocked = m_simTime < m_blockedUntil;
     m_simTime += dt;
     std::vector<msg::Message> out;
+    if (blocked && m_simTime >= m_blockedUntil)
+        out.push_back(controlState(wallTime)); // "vehicle ready"
     if (!m_run) {
         const double surface = 0; // idle: an AUV floats up, a boat stops, a UAV circles where it is
         hold(motion, m_limits.minSpeed > 0 ? nullptr : &surface, dt, m_limits);
@@ -502,13 +554,14 @@ std::vector<msg::Message> PlanEngine::advance(Motion &motion, double dt, double 
         ++r.done;
     const auto next = nextManeuver();
     if (!next) {
-        out.push_back(finish(false, next.error(), wallTime));
+        // As DUNE's vehicle supervisor words a maneuver's error ("Goto maneuver error: ...").
+        out = end(false, u"%1 maneuver error: %2"_s.arg(m.type, next.error()), wallTime);
     } else if (!*next) {
         if (r.stage != Stage::Waiting)
             m_waitStart = m_simTime;
         r.stage = Stage::Waiting; // no condition holds yet
     } else if ((*next)->isEmpty()) {
-        out.push_back(finish(true, u"plan completed"_s, wallTime));
+        out = end(true, u"plan completed"_s, wallTime);
     } else {
         startManeuver(**next, motion);
     }
@@ -540,12 +593,18 @@ double PlanEngine::maneuverEta(const Motion &motion) const
 
 msg::Message PlanEngine::controlState(double wallTime) const
 {
+    // As DUNE reports it: the plan's id kept after it ends; no maneuver
+    // (man_type 0xFFFF), progress -1 and ETA 0 outside a plan; BLOCKED for a
+    // while after an abort.
     msg::Message s = make("PlanControlState", wallTime);
-    setEnum(s, "state", m_run ? "EXECUTING" : "READY");
+    setEnum(s, "state", m_initializing ? "INITIALIZING" : m_run ? "EXECUTING" : m_simTime < m_blockedUntil ? "BLOCKED" : "READY");
     setText(s, "plan_id", m_run ? m_run->plan.id : m_lastPlan);
     setInteger(s, "last_outcome", m_lastOutcome);
-    if (!m_run)
+    if (!m_run || m_initializing) {
+        setNumber(s, "plan_progress", -1);
+        setInteger(s, "man_type", 0xFFFF);
         return s;
+    }
     const Run &r = *m_run;
     const double manEta = maneuverEta(m_lastMotion);
     // The plan's ETA: this maneuver's and those after it along the first transitions.

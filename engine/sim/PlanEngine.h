@@ -16,16 +16,24 @@
 
 namespace neptus::sim {
 
-// A simulated vehicle's plan engine, answering as a DUNE vehicle does:
+// A simulated vehicle's plan engine, answering as a DUNE vehicle does
+// (src/Plan/Engine/Task.cpp and src/Supervisors/Vehicle/Task.cpp of LSTS
+// DUNE; docs/plans.md lists what the console relies on and the test of each):
 //  - a plan database (PlanDB SET, DEL, GET, GET_INFO, CLEAR, GET_STATE,
 //    GET_DSTATE) keeping DUNE's MD5s per plan and for the whole database;
 //  - plan control (PlanControl START with a stored plan id, with a
 //    PlanSpecification or with one maneuver; STOP; LOAD; GET), and Abort;
 //  - execution, maneuver by maneuver, moving the vehicle within its
 //    Limits: every maneuver type the shipped vehicle definitions list;
-//  - PlanControlState, ManeuverControlState and VehicleState for reports,
-//    and a PlanControl SUCCESS ("plan completed") or FAILURE (with the
-//    reason) to whoever started the plan when it ends.
+//  - PlanControlState (INITIALIZING with the previous plan's id, EXECUTING,
+//    READY, BLOCKED for a second after an Abort; the plan id kept after the
+//    end, last_outcome SUCCESS or FAILURE), ManeuverControlState, VehicleState.
+// Replies as DUNE's: a START is answered "plan loaded" then "<maneuver>:
+// executing maneuver", and the plan's end is a third reply, "plan completed"
+// or a FAILURE with the reason ("got abort request from system neptus-qt -
+// 0x4001 @ 0xFF", "Goto maneuver error: ..."), each reusing the last
+// request's sender, id and op; a STOP gets SUCCESS "OK" and the START
+// nothing more; a START over a running plan fails that plan silently.
 // After a maneuver it takes the first transition whose condition holds
 // ("ManeuverIsDone" always does; it waits where it is while none holds), or,
 // like DUNE, the first transition whatever its condition
@@ -80,9 +88,6 @@ private:
     {
         mission::Plan plan;
         msg::Message specification;
-        quint16 requester = 0xFFFF;
-        quint8 requesterEntity = 0xFF;
-        quint16 requestId = 0;
         QString maneuver;
         mission::ManeuverGeometry geometry;
         std::vector<Eigen::Vector3d> points; // north, east, down (NaN: keep the depth it has)
@@ -101,12 +106,15 @@ private:
     msg::Message reply(const msg::Message &request, const char *type, const QString &info, double wallTime) const;
     std::vector<msg::Message> planDb(const msg::Message &request, double wallTime);
     std::vector<msg::Message> planControl(const msg::Message &request, double wallTime);
-    std::optional<QString> start(msg::Message specification, const msg::Message &request, const Motion *motion);
+    std::optional<QString> start(msg::Message specification, const Motion *motion);
     void startManeuver(const QString &id, const Motion &motion);
     // The maneuver after the current one, "" at the plan's end, nullopt to wait; an error fails the plan.
     std::expected<std::optional<QString>, QString> nextManeuver();
-    // The plan ends: the PlanControl that says so to whoever started it.
-    msg::Message finish(bool success, const QString &info, double wallTime);
+    // A PlanControl reply as DUNE words everything: to the last request's
+    // sender, with its id and op (m_reply).
+    msg::Message replyLast(const char *type, const QString &info, double wallTime) const;
+    // The plan ends: the reply that says how, and the state.
+    std::vector<msg::Message> end(bool success, const QString &info, double wallTime);
     msg::Message planDbState(bool detailed, double wallTime) const;
     double maneuverEta(const Motion &motion) const;
     mission::SpeedModel speeds() const; // its limits' (100 % is its top speed)
@@ -127,6 +135,18 @@ private:
     quint16 m_databaseChangeSource = 0;
     std::optional<msg::Message> m_loaded; // LOAD: ready to start
     std::optional<Run> m_run;
+    struct ReplyTo
+    {
+        quint16 to = 0xFFFF;
+        quint8 toEntity = 0xFF;
+        qint64 requestId = 0;
+        qint64 op = 0;
+        QString planId;
+    };
+    ReplyTo m_reply; // the last plan control request: what every later word to it reuses
+    bool m_initializing = false;
+    double m_blockedUntil = -1; // simulated time: BLOCKED until then (after an abort)
+    std::map<quint16, QString> m_names; // systems' names from their Announce
     Motion m_lastMotion;
     QString m_lastPlan;
     int m_lastOutcome = 0; // PlanControlState.last_outcome: NONE, SUCCESS, FAILURE

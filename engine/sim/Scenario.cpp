@@ -114,6 +114,7 @@ std::expected<Scenario, QString> readScenario(QByteArrayView json, const QString
             return fail(u"transitions must be \"conditions\" or \"first\""_s);
         s.firstTransitionOnly = transitions == u"first" || s.likeDune;
         s.config.periodicEntityList = !s.likeDune;
+        s.config.fuelLevelOnly = s.likeDune;
         for (const QJsonValue &f : v.value(u"faults"_s).toArray()) {
             auto fault = SimulatedVehicle::parseFault(f.toString());
             if (!fault)

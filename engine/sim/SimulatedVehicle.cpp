@@ -1,5 +1,6 @@
 #include "sim/SimulatedVehicle.h"
 
+#include "geo/Geodesy.h"
 #include "plans/PlanDatabase.h"
 
 #include <cmath>
@@ -7,11 +8,14 @@
 
 namespace neptus::sim {
 
+using namespace Qt::StringLiterals;
+
 namespace {
 constexpr quint8 navigationEntity = 1;
 constexpr quint8 motorEntity = 2;
 constexpr quint8 batteryEntity = 3;
 constexpr quint8 payloadEntity = 4;
+constexpr quint8 fuelEntity = 5;
 
 const std::pair<SimulatedVehicle::Fault, const char *> faultTable[] = {
     {SimulatedVehicle::BatteryLow, "battery-low"},         {SimulatedVehicle::MotorJammed, "motor-jammed"},
@@ -164,7 +168,7 @@ std::vector<msg::Message> SimulatedVehicle::step(double previous, double t, doub
         m_motion.speed = m_config.speedMps;
         m_driven = true;
     }
-    if (m_driven && previous >= 0) {
+    if (previous >= 0) { // before its first plan too: its plan engine's clock (BLOCKED after an abort) runs
         // Steps of at most 0.1 simulated s: a late timer does not make it cut corners.
         const double simulated = (t - previous) * m_timeFactor;
         for (double done = 0; done < simulated;) {
@@ -178,9 +182,10 @@ std::vector<msg::Message> SimulatedVehicle::step(double previous, double t, doub
         return {}; // it moves on, saying nothing
     if (due(previous, t, 0.1) && !(faults & NavigationLoss))
         out.push_back(estimatedState(t, wallTime));
+    if (due(previous, t, 1.0 / 3)) // DUNE's plan engine: 3 Hz (etc/common/plans.ini, State Report Frequency)
+        out.push_back(m_plans.controlState(wallTime));
     if (due(previous, t, 1.0)) {
         out.push_back(make("Heartbeat", wallTime));
-        out.push_back(m_plans.controlState(wallTime));
         out.push_back(m_plans.maneuverState(wallTime));
         out.push_back(m_plans.vehicleState(wallTime));
         const bool jammed = faults & MotorJammed;
@@ -203,9 +208,20 @@ std::vector<msg::Message> SimulatedVehicle::step(double previous, double t, doub
             state.setBytes(state.def()->indexOf(u"description"), e.description);
             out.push_back(std::move(state));
         }
-        msg::Message voltage = make("Voltage", wallTime, batteryEntity);
-        voltage.setNumber(voltage.def()->indexOf(u"value"), volts);
-        out.push_back(std::move(voltage));
+        if (!m_config.fuelLevelOnly) {
+            msg::Message voltage = make("Voltage", wallTime, batteryEntity);
+            voltage.setNumber(voltage.def()->indexOf(u"value"), volts);
+            out.push_back(std::move(voltage));
+        } else if (due(previous, t, 10.0)) {
+            // Energy left of the full pack, as a percentage; opmodes: hours left at hotel and full power.
+            const double percent = std::clamp((volts - 21.0) / (24.6 - 21.0) * 100.0, 0.0, 100.0);
+            msg::Message fuel = make("FuelLevel", wallTime, fuelEntity);
+            fuel.setNumber(fuel.def()->indexOf(u"value"), percent);
+            fuel.setNumber(fuel.def()->indexOf(u"confidence"), 90);
+            fuel.setBytes(fuel.def()->indexOf(u"opmodes"), u"Hotel=%1;Full=%2;"_s.arg(percent * 0.3, 0, 'f', 1)
+                                                              .arg(percent * 0.08, 0, 'f', 1).toUtf8());
+            out.push_back(std::move(fuel));
+        }
         const double rpm = jammed ? 0 : 1000 + 50 * std::sin(t / 5);
         msg::Message rpmMessage = make("Rpm", wallTime, motorEntity);
         rpmMessage.setInteger(rpmMessage.def()->indexOf(u"value"), static_cast<qint64>(rpm));
@@ -261,8 +277,6 @@ std::vector<msg::Message> SimulatedVehicle::answer(const msg::Message &request, 
         }
         return out;
     }
-    if (!out.empty()) // its plan state changed: say so at once, as DUNE does
-        out.push_back(m_plans.controlState(wallTime));
     const auto reply = [&](msg::Message m) {
         m.header.dst = request.header.src;
         m.header.dstEnt = request.header.srcEnt;
@@ -290,7 +304,8 @@ std::vector<msg::Message> SimulatedVehicle::answer(const msg::Message &request, 
 
 std::vector<std::pair<quint8, QByteArray>> SimulatedVehicle::entities()
 {
-    return {{navigationEntity, "Navigation"}, {motorEntity, "Motor"}, {batteryEntity, "Batteries"}, {payloadEntity, "Sidescan"}};
+    return {{navigationEntity, "Navigation"}, {motorEntity, "Motor"}, {batteryEntity, "Batteries"}, {payloadEntity, "Sidescan"},
+            {fuelEntity, "Fuel"}};
 }
 
 QByteArray SimulatedVehicle::entityList()
@@ -311,8 +326,13 @@ std::vector<msg::Message> SimulatedVehicle::introduction(double wallTime) const
                                                                   : m_config.kind == Kind::Asv ? 3
                                                                                                : 4);
         announce.setInteger(announce.def()->indexOf(u"owner"), 0xFFFF);
-        announce.setNumber(announce.def()->indexOf(u"lat"), m_config.latDeg * std::numbers::pi / 180);
-        announce.setNumber(announce.def()->indexOf(u"lon"), m_config.lonDeg * std::numbers::pi / 180);
+        // Where it is now, as DUNE's Transports.Announce fills it from its EstimatedState.
+        const msg::Message state = estimatedState(m_now, wallTime);
+        const geo::Geodetic here = geo::imcPosition(state.number(u"lat"), state.number(u"lon"), state.number(u"height"),
+                                                    state.number(u"x"), state.number(u"y"), state.number(u"z"));
+        announce.setNumber(announce.def()->indexOf(u"lat"), here.lat);
+        announce.setNumber(announce.def()->indexOf(u"lon"), here.lon);
+        announce.setNumber(announce.def()->indexOf(u"height"), here.height);
         QStringList services(m_config.services);
         if (m_plans.transitions() == PlanEngine::Transitions::Conditions)
             services << plans::evaluatesConditionsService.toString();

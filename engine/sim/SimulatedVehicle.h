@@ -43,6 +43,10 @@ public:
         // Send the EntityList every 10 s with the Announce (a DUNE vehicle
         // sends it only when asked: answer() does that).
         bool periodicEntityList = true;
+        // Say the battery's charge as DUNE's Monitors.FuelLevel does (FuelLevel
+        // from entity "Fuel", %, every 10 s as its UDP transport's rate limit
+        // lets it out) and no Voltage, as the DUNE vehicle the console met did.
+        bool fuelLevelOnly = false;
     };
     // What can go wrong, each with the alarm an operator expects:
     //  battery-low      Batteries FAULT "battery low" (21.2 V)
@@ -106,7 +110,7 @@ public:
 private:
     // The entities it has, by number and label.
     static std::vector<std::pair<quint8, QByteArray>> entities();
-    static QByteArray entityList(); // "Navigation=1;Motor=2;Batteries=3"
+    static QByteArray entityList(); // "Navigation=1;Motor=2;Batteries=3;…"
     msg::Message make(const char *abbrev, double wallTime, quint8 entity = 0) const;
     msg::Message estimatedState(double t, double wallTime) const;
 

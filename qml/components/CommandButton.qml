@@ -33,7 +33,7 @@ Item {
             outcome = qsTr("not sent: no console session")
             return
         }
-        if (command.target.startsWith("$main")) {
+        if (command.target === "") {
             outcome = qsTr("not sent: no main system chosen")
             return
         }
@@ -46,7 +46,7 @@ Item {
         objectName: "slide"
         visible: command.confirm
         width: parent.width
-        text: command.label + " · " + command.target
+        text: command.label + (command.target !== "" ? " · " + command.target : "")
         onConfirmed: command.send()
     }
     TouchButton {
@@ -55,7 +55,7 @@ Item {
         visible: !command.confirm
         width: parent.width
         height: slide.height
-        text: command.label + " · " + command.target
+        text: command.label + (command.target !== "" ? " · " + command.target : "")
         onClicked: command.send()
     }
     Text {

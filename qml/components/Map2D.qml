@@ -51,7 +51,7 @@ Rectangle {
     readonly property Tracks tracks: Session.tracks
     readonly property list<string> systems: tracks ? tracks.systems : []
     // The system followed now: "" when not following or "$main" is not chosen yet.
-    readonly property string followed: following && !Session.resolve(follow).startsWith("$main") ? Session.resolve(follow) : ""
+    readonly property string followed: following ? Session.resolve(follow) : ""
     property bool following: follow !== ""
     property bool measuring: false
     property var measurePoints: [] // up to two {lat, lon}

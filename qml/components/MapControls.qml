@@ -33,7 +33,7 @@ Flow {
     TouchButton {
         objectName: "followButton"
         text: "◎"
-        toolTip: qsTr("Follow %1").arg(controls.followName)
+        toolTip: controls.followName !== "" ? qsTr("Follow %1").arg(controls.followName) : qsTr("Follow the vehicle chosen in the systems list")
         highlighted: controls.following
         enabled: controls.canFollow
         onClicked: controls.followToggled()

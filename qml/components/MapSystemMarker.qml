@@ -65,7 +65,9 @@ Item {
         Text {
             id: label
             anchors { left: lamp.right; verticalCenter: parent.verticalCenter; leftMargin: Theme.spacing }
-            text: marker.system + (marker.kind ? " · " + marker.kind : "") + (marker.stale ? qsTr(" (stale)") : "")
+            // Before its first EstimatedState a vehicle stands where its Announce placed it.
+            text: marker.system + (marker.kind ? " · " + marker.kind : "")
+                  + (!marker.stale ? "" : positionVariable.present ? qsTr(" (stale)") : qsTr(" (announced position)"))
                   + (marker.fromOwnShip ? " · " + marker.fromOwnShip : "")
             color: Theme.text
             font.pixelSize: Theme.smallFontPixelSize

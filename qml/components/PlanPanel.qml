@@ -15,7 +15,7 @@ Rectangle {
     // The vehicle: a name or "$main".
     property string system: "$main"
     readonly property string target: Session.resolve(system)
-    readonly property bool hasTarget: target !== "" && !target.startsWith("$main")
+    readonly property bool hasTarget: target !== ""
     readonly property PlanDeskModel desk: Session.session ? Session.session.plans : null
     // The plan picked in the list.
     property string selected: ""
@@ -377,7 +377,7 @@ Rectangle {
             objectName: "abort"
             width: parent.width
             enabled: panel.hasTarget && panel.desk !== null
-            text: qsTr("Abort · %1").arg(panel.target)
+            text: panel.hasTarget ? qsTr("Abort · %1").arg(panel.target) : qsTr("Abort · no vehicle chosen")
             onConfirmed: { panel.run(panel.desk.abort(panel.target)); reset() }
         }
         Text {

@@ -8,6 +8,9 @@ Rectangle {
 
     // Tree path of the value, e.g. "lauv-1/EstimatedState/depth".
     property string path: ""
+    // Read instead while `path` has not been heard: "$main/FuelLevel/value"
+    // for a vehicle that reports its charge and not its voltage.
+    property string fallbackPath: ""
     // Shown above the value; the path's last part when empty.
     property string label: ""
     property int decimals: 1
@@ -17,10 +20,11 @@ Rectangle {
     // result raises the alarm "scripts/<this component's id>" (see docs/components.md).
     property string alarmScript: ""
 
-    readonly property bool stale: variable.stale
-    readonly property string valueText: !variable.present ? "—"
-        : typeof variable.value === "number" ? variable.value.toFixed(Math.max(0, Math.min(decimals, 10)))
-        : variable.text
+    readonly property Variable shown: !variable.present && fallback.present ? fallback : variable
+    readonly property bool stale: shown.stale
+    readonly property string valueText: !shown.present ? "—"
+        : typeof shown.value === "number" ? shown.value.toFixed(Math.max(0, Math.min(decimals, 10)))
+        : shown.text
 
     implicitWidth: Theme.mm(40)
     implicitHeight: Theme.mm(18)
@@ -37,11 +41,18 @@ Rectangle {
         tree: Session.tree
         path: Session.resolve(readout.path)
     }
+    Variable {
+        id: fallback
+        tree: Session.tree
+        path: Session.resolve(readout.fallbackPath)
+    }
 
     Text {
         id: caption
+        objectName: "caption"
         anchors { left: parent.left; right: parent.right; top: parent.top; margins: Theme.spacing }
-        text: readout.label !== "" ? readout.label : (readout.path.split("/").pop() || qsTr("(no variable)"))
+        text: readout.label !== "" ? readout.label
+              : ((readout.shown === fallback ? readout.fallbackPath : readout.path).split("/").pop() || qsTr("(no variable)"))
         color: Theme.textDim
         font.pixelSize: Theme.smallFontPixelSize
         elide: Text.ElideRight
@@ -50,7 +61,9 @@ Rectangle {
         id: value
         objectName: "value"
         anchors { left: parent.left; right: parent.right; bottom: parent.bottom; margins: Theme.spacing }
-        text: readout.valueText + ((readout.unit || variable.unit) ? " " + (readout.unit || variable.unit) : "")
+        // The unit set applies to `path`; the fallback shows its own.
+        readonly property string unit: readout.shown === fallback ? fallback.unit : (readout.unit || variable.unit)
+        text: readout.valueText + (unit ? " " + unit : "")
         color: readout.stale ? Theme.textDim : Theme.text
         font.pixelSize: Math.max(Theme.largeFontPixelSize, Math.min(readout.height * 0.4, readout.width / 7))
         font.family: Theme.monospaceFont

@@ -31,7 +31,7 @@ Rectangle {
     readonly property list<string> systems: tracks ? tracks.systems : []
     property bool following: follow !== ""
     // The system followed now: "" when not following or "$main" is not chosen yet.
-    readonly property string followed: following && !Session.resolve(follow).startsWith("$main") ? Session.resolve(follow) : ""
+    readonly property string followed: following ? Session.resolve(follow) : ""
     // The camera: a point it orbits, its distance, and angles in degrees.
     property vector3d target: Qt.vector3d(0, 0, 0)
     property real distance: 25
@@ -335,7 +335,8 @@ Rectangle {
         TouchButton {
             objectName: "followButton"
             text: "◎"
-            toolTip: qsTr("Follow %1").arg(Session.resolve(root.follow))
+            toolTip: Session.resolve(root.follow) !== "" ? qsTr("Follow %1").arg(Session.resolve(root.follow))
+                                                         : qsTr("Follow the vehicle chosen in the systems list")
             highlighted: root.followed !== ""
             enabled: root.follow !== ""
             onClicked: { root.following = !root.following; root.keepFollowing() }

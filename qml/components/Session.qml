@@ -31,11 +31,15 @@ QtObject {
     property var ownShip: ({ valid: false, latitude: NaN, longitude: NaN, course: NaN, speed: NaN, source: "" })
 
     // The system the console follows: a tree path "$main/EstimatedState/depth"
-    // means this system's. Chosen in the systems list, or by opening a
-    // console for a vehicle.
+    // means this system's. Chosen in the systems list, by opening a console
+    // for a vehicle, or the first vehicle heard when none was (the shell).
     property string mainSystem: ""
+    // A path or system name with "$main" made the followed system's; "" while
+    // none is followed (no component shows or sends to "$main" itself).
     function resolve(path) {
-        return path.replace(/^\$main(?=\/|$)/, mainSystem !== "" ? mainSystem : "$main")
+        if (!/^\$main(?=\/|$)/.test(path))
+            return path
+        return mainSystem !== "" ? mainSystem + path.substring(5) : ""
     }
 
     // Console layouts there are ({file, title, kinds}), set by the shell; and

@@ -29,7 +29,7 @@ Item {
     implicitHeight: Theme.mm(95)
     activeFocusOnTab: true
     Accessible.role: Accessible.Slider
-    Accessible.name: qsTr("Joystick for %1").arg(target)
+    Accessible.name: target !== "" ? qsTr("Joystick for %1").arg(target) : qsTr("Joystick, no vehicle chosen")
 
     function actions(x, y) { return xAction + "=" + x.toFixed(2) + ";" + yAction + "=" + y.toFixed(2) }
     function send(x, y) {
@@ -39,7 +39,7 @@ Item {
             outcome = qsTr("not sent: no console session")
             return
         }
-        if (target.startsWith("$main")) {
+        if (target === "") {
             outcome = qsTr("not sent: no main system chosen")
             return
         }
@@ -148,7 +148,7 @@ Item {
             objectName: "arm"
             anchors.fill: parent
             visible: !joystick.armed
-            text: qsTr("Arm joystick · %1").arg(joystick.target)
+            text: joystick.target !== "" ? qsTr("Arm joystick · %1").arg(joystick.target) : qsTr("Arm joystick · no vehicle chosen")
             tint: Theme.levelColor(3)
             onConfirmed: {
                 joystick.armed = true
@@ -161,7 +161,7 @@ Item {
             anchors.fill: parent
             visible: joystick.armed
             highlighted: true
-            text: qsTr("Disarm · %1").arg(joystick.target)
+            text: joystick.target !== "" ? qsTr("Disarm · %1").arg(joystick.target) : qsTr("Disarm")
             onClicked: joystick.disarm()
         }
     }

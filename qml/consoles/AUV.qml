@@ -74,7 +74,8 @@ Console {
         y: 220
         width: 228
         height: 104
-        alarmScript: "const v = $main[\"Voltage@Batteries\"].value\nif (v < 22)\n    return Warning(\"battery low: \" + v.toFixed(1) + \" V\")\nreturn Normal"
+        alarmScript: "const v = $main[\"Voltage@Batteries\"], fuel = $main.FuelLevel\nif (v && typeof v.value === \"number\")\n    return v.value < 22 ? Warning(\"battery low: \" + v.value.toFixed(1) + \" V\") : Normal\nif (fuel && typeof fuel.value === \"number\" && fuel.value < 20)\n    return Warning(\"battery low: \" + fuel.value.toFixed(0) + \" %\")\nreturn Normal"
+        fallbackPath: "$main/FuelLevel/value"
         label: "Battery"
         path: "$main/Voltage@Batteries/value"
     }

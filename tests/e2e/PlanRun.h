@@ -6,6 +6,7 @@
 #include "mission/MissionXml.h"
 #include "plans/PlanClient.h"
 #include "plans/PlanDatabase.h"
+#include "plans/PlanRuns.h"
 #include "session/Console.h"
 
 #include "Missions.h"
@@ -76,9 +77,14 @@ inline void runPlan(session::Console &console, quint16 id, const QString &name, 
     QObject::connect(&console, &session::Console::planMessageReceived, &client, &plans::PlanClient::receive);
     Replies replies;
     QObject::connect(&client, &plans::PlanClient::replied, [&](const auto &r) { replies.all.push_back(r); });
-    std::optional<std::pair<bool, QString>> ended;
-    QObject::connect(&client, &plans::PlanClient::planEnded,
-                     [&](const QString &, bool ok, const QString &info) { ended = {ok, info}; });
+    // How the plan ends: from the vehicle's PlanControlState, as the console's desk follows it.
+    plans::PlanRuns runs;
+    std::optional<plans::PlanRuns::Event> ended;
+    QObject::connect(&console, &session::Console::planMessageReceived, &client, [&](const msg::Message &message) {
+        for (const auto &e : runs.observe(message, QDateTime::currentMSecsSinceEpoch()))
+            if (e.kind == plans::PlanRuns::Event::Kind::Ended)
+                ended = e;
+    });
     const auto answered = [&](quint16 request) {
         EXPECT_TRUE(QTest::qWaitFor([&] { return replies.of(request).has_value(); }, 10000)) << "request " << request;
         return replies.of(request).value_or(plans::PlanClient::Reply{});
@@ -127,8 +133,8 @@ inline void runPlan(session::Console &console, quint16 id, const QString &name, 
         EXPECT_TRUE(QTest::qWaitFor([&] { return seen("last_outcome") == u"SUCCESS"; }, 5000)) << "and how it ended";
     }
     EXPECT_GT(progress, 50);
-    EXPECT_TRUE(ended->first);
-    EXPECT_EQ(ended->second, u"plan completed"_s);
+    EXPECT_EQ(ended->outcome, plans::PlanRuns::Outcome::Completed);
+    EXPECT_EQ(ended->plan, u"survey"_s);
     EXPECT_TRUE(QTest::qWaitFor([&] { return tree.snapshot(tree.find(name + u"/PlanControlState/last_outcome"_s)).text == u"SUCCESS"; }, 5000));
 }
 

@@ -7,6 +7,7 @@
 #include <QHostAddress>
 #include <QDirIterator>
 #include <QProcess>
+#include <QProcessEnvironment>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QUdpSocket>
@@ -62,4 +63,39 @@ TEST(ConsoleProcess, APacketOfATypeItsDefinitionsLackNeitherKillsItNorIsHidden)
     QFile data(parts.next());
     ASSERT_TRUE(data.open(QIODevice::ReadOnly));
     EXPECT_EQ(data.readAll().count(servo), 3) << "the three packets, byte for byte";
+}
+
+// docs/plans.md promised that a restarted console opens the mission it had
+// open; nothing read it. Two runs of the console program with settings of
+// their own: the second, given no mission, opens the first's; one given
+// another opens that; a mission since deleted is not looked for.
+TEST(ConsoleProcess, ARestartedConsoleOpensTheMissionItHadOpen)
+{
+    QTemporaryDir dir;
+    const QString mission = dir.filePath(QStringLiteral("douro.xml"));
+    ASSERT_TRUE(QFile::copy(neptus::test::sourcePath(QStringLiteral("docs/examples/douro.xml")), mission));
+    QProcessEnvironment environment = QProcessEnvironment::systemEnvironment();
+    environment.insert(QStringLiteral("XDG_CONFIG_HOME"), dir.filePath(QStringLiteral("config")));
+    environment.insert(QStringLiteral("XDG_DATA_HOME"), dir.filePath(QStringLiteral("data")));
+    const auto run = [&](const QStringList &more) {
+        QProcess console;
+        console.setProcessEnvironment(environment);
+        console.setProcessChannelMode(QProcess::MergedChannels);
+        console.start(neptus::test::programPath(QStringLiteral("neptus")),
+                      QStringList{QStringLiteral("--imc-port"), QString::number(neptus::test::freeUdpPort()),
+                                  QStringLiteral("--imc-discovery"), QStringLiteral("off"), QStringLiteral("--dds-domain"),
+                                  QStringLiteral("-1"), QStringLiteral("--no-record"), QStringLiteral("--quit-after"),
+                                  QStringLiteral("1500")} + more);
+        EXPECT_TRUE(console.waitForFinished(60000));
+        return QString::fromUtf8(console.readAll());
+    };
+    const QString first = run({QStringLiteral("--mission"), mission});
+    EXPECT_TRUE(first.contains(QStringLiteral("neptus: mission %1\n").arg(mission))) << first.toStdString();
+    const QString second = run({});
+    EXPECT_TRUE(second.contains(QStringLiteral("neptus: mission %1 (open when the console last ran)").arg(mission)))
+        << second.toStdString();
+    QFile::remove(mission);
+    const QString third = run({});
+    EXPECT_FALSE(third.contains(QStringLiteral("neptus: mission"))) << third.toStdString();
+    EXPECT_FALSE(third.contains(QStringLiteral("no mission open"))) << "a file since deleted is not an error" << third.toStdString();
 }

@@ -202,13 +202,13 @@ TEST(PlanExecution, StopAndAbortEndAPlanOnAVehicleProcess)
     ASSERT_TRUE(desk.start(name, u"survey"_s));
     ASSERT_TRUE(QTest::qWaitFor([&] { return state() == u"EXECUTING"; }, 10000)) << log().toStdString();
     ASSERT_TRUE(desk.stop(name));
-    ASSERT_TRUE(QTest::qWaitFor([&] { return log().contains(u"survey ended: plan stopped"_s); }, 10000)) << log().toStdString();
+    ASSERT_TRUE(QTest::qWaitFor([&] { return log().contains(u"survey stopped"_s); }, 10000)) << log().toStdString();
     EXPECT_TRUE(QTest::qWaitFor([&] { return state() == u"READY"; }, 5000));
 
     ASSERT_TRUE(desk.start(name, u"survey"_s));
     ASSERT_TRUE(QTest::qWaitFor([&] { return state() == u"EXECUTING"; }, 10000)) << log().toStdString();
     ASSERT_TRUE(desk.abort(name));
-    ASSERT_TRUE(QTest::qWaitFor([&] { return log().contains(u"survey ended: plan aborted by"_s); }, 10000)) << log().toStdString();
+    ASSERT_TRUE(QTest::qWaitFor([&] { return log().contains(u"survey failed: got abort request from system"_s); }, 10000)) << log().toStdString();
     const auto node = console.alarmGraph().find(u"systems/lauv-sim-1/plan"_s);
     ASSERT_NE(node, alarms::AlarmGraph::noNode);
     EXPECT_EQ(console.alarmGraph().ownLevel(node), alarms::Warning);

@@ -135,7 +135,7 @@ void DatagramReader::admitLocked(const char *data, qsizetype size, const void *f
             return;
         }
         const QHostAddress address(static_cast<const sockaddr *>(from));
-        host = m_hosts.insert(key, Host{address, hostName(address), {}, 0, 0, 0, 0});
+        host = m_hosts.insert(key, Host{address, hostName(address), {}, 0, 0, 0, 0, 0});
     }
     const qint64 now = monotonicMs();
     if (now - host->secondStartMs >= 1000) {
@@ -146,7 +146,7 @@ void DatagramReader::admitLocked(const char *data, qsizetype size, const void *f
     const bool full = qsizetype(host->queue.size()) >= m_limits.queuedPerHost
                       || host->bytes + size > m_limits.queuedBytesPerHost;
     if (overRate || full) {
-        ++host->dropped;
+        ++(overRate ? host->dropped : host->behind);
         m_dropped = true;
         return;
     }
@@ -180,6 +180,10 @@ DatagramReader::Batch DatagramReader::take(int max)
             if (it->dropped > 0) {
                 batch.dropped[it->name] += it->dropped;
                 it->dropped = 0;
+            }
+            if (it->behind > 0) {
+                batch.behind[it->name] += it->behind;
+                it->behind = 0;
             }
             // A host quiet for two seconds keeps no queue (nor a rate window).
             if (prune && it->queue.empty() && now - it->secondStartMs > 2000)

@@ -18,10 +18,10 @@ namespace neptus::transport {
 // unread, a vehicle's with a flood's) however long the GUI thread is busy.
 //
 // What arrives waits in one bounded queue per sending host; a host over its
-// rate (datagrams a second; 0: no limit) or with a full queue loses its own
-// datagrams, counted, and never another host's. take() hands them out one
-// host at a time in turn, so a vehicle's datagrams are never stuck behind a
-// flooding host's.
+// rate (datagrams a second; 0: no limit) or with a full queue (whoever takes
+// them fell behind) loses its own datagrams, counted apart, and never another
+// host's. take() hands them out one host at a time in turn, so a vehicle's
+// datagrams are never stuck behind a flooding host's.
 class DatagramReader
 {
 public:
@@ -35,7 +35,8 @@ public:
     struct Batch
     {
         std::vector<Datagram> datagrams;
-        QHash<QString, int> dropped; // by host, since the last take()
+        QHash<QString, int> dropped; // by host, since the last take(): over its rate
+        QHash<QString, int> behind;  // by host: its queue was full (the taker fell behind)
         bool more = false;           // some still wait
     };
     struct Limits
@@ -71,7 +72,8 @@ private:
         qsizetype bytes = 0;
         qint64 secondStartMs = 0;
         int count = 0;   // admitted in the current second
-        int dropped = 0; // since the last take()
+        int dropped = 0; // over its rate, since the last take()
+        int behind = 0;  // its queue full, since the last take()
     };
 
     // A sender's address as the hash key (IPv4 in `low`), made without allocating.

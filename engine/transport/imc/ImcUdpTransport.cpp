@@ -2,6 +2,7 @@
 
 #include <QNetworkInterface>
 #include <QRegularExpression>
+#include <QTimer>
 
 #include <cstring>
 
@@ -69,7 +70,16 @@ ImcUdpTransport::ImcUdpTransport(std::shared_ptr<const msg::Schema> schema, ImcU
 
 ImcUdpTransport::~ImcUdpTransport()
 {
-    m_reader.reset(); // stops reading before the sockets close
+    // The decoder stops first (it takes from the reader), then reading, before the sockets close.
+    if (m_decoder.joinable()) {
+        {
+            std::lock_guard lock(m_wakeMutex);
+            m_stopping = true;
+        }
+        m_wake.notify_one();
+        m_decoder.join();
+    }
+    m_reader.reset();
     for (const int fd : {m_fd, m_discoveryFd}) {
         if (fd >= 0)
             ::close(fd);
@@ -99,8 +109,13 @@ std::expected<void, QString> ImcUdpTransport::start()
     DatagramReader::Limits limits;
     limits.datagramsPerSecond = m_config.maxDatagramsPerSecond;
     m_reader = std::make_unique<DatagramReader>(fds, limits, [this] {
-        QMetaObject::invokeMethod(this, &ImcUdpTransport::drain, Qt::QueuedConnection);
+        {
+            std::lock_guard lock(m_wakeMutex);
+            m_woken = true;
+        }
+        m_wake.notify_one();
     });
+    m_decoder = std::thread([this] { decodeLoop(); });
     m_timer.start();
     heartbeat();
     return {};
@@ -174,36 +189,74 @@ QString ImcUdpTransport::Endpoint::name() const
     return peerName(address, port);
 }
 
+void ImcUdpTransport::emitAll(Later &later)
+{
+    for (const auto &emitIt : later)
+        emitIt();
+    later.clear();
+}
+
+void ImcUdpTransport::decodeLoop()
+{
+    for (;;) {
+        {
+            std::unique_lock lock(m_wakeMutex);
+            m_wake.wait(lock, [this] { return m_woken || m_stopping; });
+            if (m_stopping)
+                return;
+            m_woken = false;
+        }
+        drain();
+    }
+}
+
 void ImcUdpTransport::drain()
 {
-    if (!m_reader)
-        return;
-    DatagramReader::Batch batch = m_reader->take(datagramsPerDrain);
-    if (!batch.dropped.isEmpty()) {
-        const qint64 now = nowMs();
-        for (auto it = batch.dropped.cbegin(); it != batch.dropped.cend(); ++it) {
-            Budget &budget = m_budgets[it.key()];
-            rollBudget(it.key(), budget, now);
-            budget.dropped += it.value();
-            m_dropped += quint64(it.value());
+    for (;;) {
+        DatagramReader::Batch batch = m_reader->take(datagramsPerDrain);
+        if (!batch.dropped.isEmpty() || !batch.behind.isEmpty()) {
+            Later later;
+            {
+                std::lock_guard lock(m_mutex);
+                const qint64 now = nowMs();
+                for (const auto *counts : {&batch.dropped, &batch.behind}) {
+                    for (auto it = counts->cbegin(); it != counts->cend(); ++it) {
+                        Budget &budget = m_budgets[it.key()];
+                        rollBudgetLocked(it.key(), budget, now, later);
+                        (counts == &batch.dropped ? budget.dropped : budget.behind) += it.value();
+                        m_dropped += quint64(it.value());
+                    }
+                }
+            }
+            emitAll(later);
         }
+        for (const DatagramReader::Datagram &datagram : batch.datagrams)
+            process(datagram.bytes, datagram.from, datagram.port, datagram.host);
+        if (!batch.more)
+            return;
+        std::lock_guard lock(m_wakeMutex);
+        if (m_stopping)
+            return;
     }
-    for (const DatagramReader::Datagram &datagram : batch.datagrams)
-        process(datagram.bytes, datagram.from, datagram.port, datagram.host);
-    // What is left is taken on the next turn of the event loop.
-    if (batch.more)
-        QMetaObject::invokeMethod(this, &ImcUdpTransport::drain, Qt::QueuedConnection);
 }
 
 void ImcUdpTransport::receive(QByteArrayView datagram, const QHostAddress &from, quint16 fromPort)
 {
     const QString host = DatagramReader::hostName(from);
-    if (withinBudget(host))
+    Later later;
+    bool within = false;
+    {
+        std::lock_guard lock(m_mutex);
+        within = withinBudgetLocked(host, later);
+    }
+    emitAll(later);
+    if (within)
         process(datagram, from, fromPort, host);
 }
 
 void ImcUdpTransport::process(QByteArrayView datagram, const QHostAddress &from, quint16 fromPort, const QString &host)
 {
+    ++m_processed;
     auto message = m_schemas->decode(datagram);
     if (!message) {
         ++m_decodeErrors;
@@ -215,14 +268,19 @@ void ImcUdpTransport::process(QByteArrayView datagram, const QHostAddress &from,
     if (source == m_config.systemId)
         return; // our own, relayed back (or our own Announce on the discovery ports)
     const bool announce = message->def() && message->def()->abbrev == u"Announce";
-    if (announce) {
-        learnFromAnnounce(*message, from, host);
-    } else if (Sender *sender = senderFor(source, host)) {
-        sender->lastMs = nowMs();
-        if (fromPort != 0)
-            sender->data = Endpoint{from, fromPort}; // reachable where it talks from
-        resolve(source);
+    Later later;
+    {
+        std::lock_guard lock(m_mutex);
+        if (announce) {
+            learnFromAnnounceLocked(*message, from, host, later);
+        } else if (Sender *sender = senderForLocked(source, host)) {
+            sender->lastMs = nowMs();
+            if (fromPort != 0)
+                sender->data = Endpoint{from, fromPort}; // reachable where it talks from
+            resolveLocked(source, later);
+        }
     }
+    emitAll(later);
     if (m_tap)
         m_tap(datagram);
     emit received(*message, datagram.size());
@@ -231,18 +289,23 @@ void ImcUdpTransport::process(QByteArrayView datagram, const QHostAddress &from,
     // After `received`, so that the system already has its name.
     static const QRegularExpression version(QStringLiteral(R"(imc\+info://[^;]*/version/([^/;]+))"));
     const auto match = version.match(message->text(u"services"));
-    if (match.hasMatch() && m_versions.value(source) != match.captured(1)) {
+    if (!match.hasMatch())
+        return;
+    {
+        std::lock_guard lock(m_mutex);
+        if (m_versions.value(source) == match.captured(1))
+            return;
         m_versions.insert(source, match.captured(1));
-        emit versionAnnounced(source, match.captured(1));
     }
+    emit versionAnnounced(source, match.captured(1));
 }
 
-bool ImcUdpTransport::withinBudget(const QString &host)
+bool ImcUdpTransport::withinBudgetLocked(const QString &host, Later &later)
 {
     if (m_config.maxDatagramsPerSecond <= 0)
         return true;
     Budget &budget = m_budgets[host];
-    rollBudget(host, budget, nowMs());
+    rollBudgetLocked(host, budget, nowMs(), later);
     if (budget.count < m_config.maxDatagramsPerSecond) {
         ++budget.count;
         return true;
@@ -252,21 +315,22 @@ bool ImcUdpTransport::withinBudget(const QString &host)
     return false;
 }
 
-void ImcUdpTransport::rollBudget(const QString &host, Budget &budget, qint64 now)
+void ImcUdpTransport::rollBudgetLocked(const QString &host, Budget &budget, qint64 now, Later &later)
 {
     if (now - budget.secondStartMs < 1000)
         return;
     const bool was = budget.overloaded;
-    budget.overloaded = budget.dropped > 0;
-    const int dropped = budget.dropped;
+    budget.overloaded = budget.dropped > 0 || budget.behind > 0;
+    const int dropped = budget.dropped, behind = budget.behind;
     budget.secondStartMs = now;
     budget.count = 0;
     budget.dropped = 0;
-    if (dropped > 0 || was)
-        emit overloaded(host, dropped);
+    budget.behind = 0;
+    if (budget.overloaded || was)
+        later.push_back([this, host, dropped, behind] { emit overloaded(host, dropped, behind); });
 }
 
-ImcUdpTransport::Sender *ImcUdpTransport::senderFor(quint16 system, const QString &host)
+ImcUdpTransport::Sender *ImcUdpTransport::senderForLocked(quint16 system, const QString &host)
 {
     auto peer = m_peers.find(system);
     if (peer == m_peers.end()) {
@@ -283,7 +347,7 @@ ImcUdpTransport::Sender *ImcUdpTransport::senderFor(quint16 system, const QStrin
     return &*sender;
 }
 
-void ImcUdpTransport::resolve(quint16 system)
+void ImcUdpTransport::resolveLocked(quint16 system, Later &later)
 {
     const auto it = m_peers.find(system);
     if (it == m_peers.end())
@@ -320,11 +384,12 @@ void ImcUdpTransport::resolve(quint16 system)
         return;
     peer.sources = recent;
     peer.destination = destination;
-    emit sourcesChanged(system, recent, destination);
+    later.push_back([this, system, recent, destination] { emit sourcesChanged(system, recent, destination); });
 }
 
 QList<quint16> ImcUdpTransport::knownSystems() const
 {
+    std::lock_guard lock(m_mutex);
     QList<quint16> systems;
     for (auto it = m_peers.cbegin(); it != m_peers.cend(); ++it) {
         if (it->target)
@@ -335,51 +400,70 @@ QList<quint16> ImcUdpTransport::knownSystems() const
 
 QStringList ImcUdpTransport::sources(quint16 system) const
 {
+    std::lock_guard lock(m_mutex);
     return m_peers.value(system).sources;
 }
 
 QString ImcUdpTransport::destination(quint16 system) const
 {
+    std::lock_guard lock(m_mutex);
     return m_peers.value(system).destination;
+}
+
+QString ImcUdpTransport::announcedVersion(quint16 system) const
+{
+    std::lock_guard lock(m_mutex);
+    return m_versions.value(system);
 }
 
 bool ImcUdpTransport::pick(quint16 system, const QString &host)
 {
-    const auto it = m_peers.find(system);
-    if (it == m_peers.end() || (!host.isEmpty() && !it->senders.contains(host)))
-        return false;
-    it->picked = host;
-    resolve(system);
+    Later later;
+    {
+        std::lock_guard lock(m_mutex);
+        const auto it = m_peers.find(system);
+        if (it == m_peers.end() || (!host.isEmpty() && !it->senders.contains(host)))
+            return false;
+        it->picked = host;
+        resolveLocked(system, later);
+    }
+    emitAll(later);
     return true;
 }
 
 void ImcUdpTransport::forgetSilent()
 {
-    const qint64 now = nowMs();
-    for (const quint16 system : m_peers.keys()) {
-        Peer &peer = m_peers[system];
-        peer.senders.removeIf([&](const auto &sender) { return now - sender.value().lastMs > m_config.forgetAfterMs; });
-        if (!peer.picked.isEmpty() && !peer.senders.contains(peer.picked))
-            peer.picked.clear();
-        if (!peer.senders.isEmpty()) {
-            resolve(system);
-            continue;
+    Later later;
+    {
+        std::lock_guard lock(m_mutex);
+        const qint64 now = nowMs();
+        for (const quint16 system : m_peers.keys()) {
+            Peer &peer = m_peers[system];
+            peer.senders.removeIf([&](const auto &sender) { return now - sender.value().lastMs > m_config.forgetAfterMs; });
+            if (!peer.picked.isEmpty() && !peer.senders.contains(peer.picked))
+                peer.picked.clear();
+            if (!peer.senders.isEmpty()) {
+                resolveLocked(system, later);
+                continue;
+            }
+            const bool reported = !peer.sources.isEmpty() || !peer.destination.isEmpty();
+            m_peers.remove(system);
+            m_versions.remove(system);
+            if (reported)
+                later.push_back([this, system] { emit sourcesChanged(system, {}, {}); });
         }
-        const bool reported = !peer.sources.isEmpty() || !peer.destination.isEmpty();
-        m_peers.remove(system);
-        m_versions.remove(system);
-        if (reported)
-            emit sourcesChanged(system, {}, {});
+        // Hosts that no longer send keep no budget.
+        m_budgets.removeIf([&](const auto &budget) {
+            return !budget.value().overloaded && now - budget.value().secondStartMs > 2000;
+        });
+        for (auto it = m_budgets.begin(); it != m_budgets.end(); ++it)
+            rollBudgetLocked(it.key(), it.value(), now, later);
     }
-    // Hosts that no longer send keep no budget.
-    m_budgets.removeIf([&](const auto &budget) {
-        return !budget.value().overloaded && now - budget.value().secondStartMs > 2000;
-    });
-    for (auto it = m_budgets.begin(); it != m_budgets.end(); ++it)
-        rollBudget(it.key(), it.value(), now);
+    emitAll(later);
 }
 
-void ImcUdpTransport::learnFromAnnounce(const msg::Message &announce, const QHostAddress &from, const QString &host)
+void ImcUdpTransport::learnFromAnnounceLocked(const msg::Message &announce, const QHostAddress &from, const QString &host,
+                                              Later &later)
 {
     const quint16 source = announce.header.src;
     const QString name = announce.text(u"sys_name");
@@ -403,33 +487,59 @@ void ImcUdpTransport::learnFromAnnounce(const msg::Message &announce, const QHos
             break;
         }
     }
-    Sender *sender = senderFor(source, host);
+    Sender *sender = senderForLocked(source, host);
     if (!sender)
         return;
-    sender->lastMs = nowMs();
+    const qint64 now = nowMs();
+    sender->lastMs = now;
     if (chosen)
         sender->announced = chosen;
     else if (listsUdp)
-        emit announceIgnored(source, host, services);
-    const bool known = m_peers[source].target.has_value();
-    resolve(source);
-    const std::optional<Endpoint> target = m_peers[source].target;
-    if (known || !target)
+        later.push_back([this, source, host, services] { emit announceIgnored(source, host, services); });
+    Peer &peer = m_peers[source];
+    const bool known = peer.target.has_value();
+    resolveLocked(source, later);
+    // Greeted at each Announce (a vehicle that restarted has forgotten us,
+    // and streams only to consoles it knows from their Announce and hears
+    // from; DUNE takes a repeated greeting as nothing new), at most one
+    // every 2 s: a flood of forged Announces makes no flood of greetings.
+    if (!peer.target || (peer.greetedMs > 0 && now - peer.greetedMs < 2000))
         return;
-    // Say hello at once: a vehicle streams only once it hears from us, and
-    // knows us only from our Announce.
-    for (msg::Message hello : {announcement(), msg::Message(m_schemas->defaultSchema().byAbbrev(u"Heartbeat"))}) {
-        if (!hello.def())
-            continue;
-        hello.header.timestamp = now();
-        hello.header.src = m_config.systemId;
-        hello.header.dst = source;
-        send(hello, *target);
-    }
-    emit systemDiscovered(source, name);
+    peer.greetedMs = now;
+    greetLocked(source, from, *peer.target);
+    if (!known)
+        later.push_back([this, source, name] { emit systemDiscovered(source, name); });
 }
 
-std::expected<void, QString> ImcUdpTransport::send(const msg::Message &message, const Endpoint &to)
+void ImcUdpTransport::greetLocked(quint16 system, const QHostAddress &host, const Endpoint &target)
+{
+    const double time = now();
+    msg::Message hello = announcement();
+    hello.header.timestamp = time; // DUNE's discovery takes one Announce per address and timestamp
+    hello.header.src = m_config.systemId;
+    hello.header.dst = system;
+    if (m_config.discovery && m_config.discoveryPort != 0) {
+        for (int i = 0; i < m_config.discoveryPortCount; ++i)
+            sendLocked(hello, Endpoint{host, static_cast<quint16>(m_config.discoveryPort + i)});
+    }
+    sendLocked(hello, target);
+    msg::Message beat(m_schemas->defaultSchema().byAbbrev(u"Heartbeat"));
+    if (!beat.def())
+        return;
+    beat.header.timestamp = time;
+    beat.header.src = m_config.systemId;
+    beat.header.dst = system;
+    sendLocked(beat, target);
+    // Again a moment later, once its discovery has told its UDP transport of us.
+    QMetaObject::invokeMethod(this, [this, beat, target] {
+        QTimer::singleShot(250, this, [this, beat, target] {
+            std::lock_guard lock(m_mutex);
+            sendLocked(beat, target);
+        });
+    }, Qt::QueuedConnection);
+}
+
+std::expected<void, QString> ImcUdpTransport::sendLocked(const msg::Message &message, const Endpoint &to)
 {
     if (auto encoded = m_schemas->codecFor(message.header.dst)->encode(message, m_buffer); !encoded)
         return std::unexpected(QStringLiteral("%1 does not encode: %2").arg(message.abbrev(), encoded.error().toString()));
@@ -484,6 +594,8 @@ void ImcUdpTransport::heartbeat()
     if (!beatDef)
         return;
     const bool announceToo = canAnnounce && m_ticks++ % std::max(1, m_config.announceEvery) == 0;
+    forgetSilent();
+    std::lock_guard lock(m_mutex);
     const double time = now();
     auto stamp = [&](msg::Message &m, quint16 dst) {
         m.header.timestamp = time;
@@ -492,7 +604,6 @@ void ImcUdpTransport::heartbeat()
         m.header.dst = dst;
         m.header.dstEnt = 0xFF;
     };
-    forgetSilent();
     QList<std::pair<quint16, Endpoint>> targets;
     for (auto it = m_peers.cbegin(); it != m_peers.cend(); ++it) {
         if (it->target)
@@ -510,22 +621,23 @@ void ImcUdpTransport::heartbeat()
         msg::Message announce = announcement();
         stamp(announce, 0xFFFF);
         for (const Endpoint &target : discoveryTargets())
-            send(announce, target);
+            sendLocked(announce, target);
     }
     for (const auto &[system, endpoint] : targets) {
         if (announceToo) {
             msg::Message announce = announcement();
             stamp(announce, system);
-            send(announce, endpoint);
+            sendLocked(announce, endpoint);
         }
         msg::Message beat(beatDef);
         stamp(beat, system);
-        send(beat, endpoint);
+        sendLocked(beat, endpoint);
     }
 }
 
 std::expected<void, QString> ImcUdpTransport::publish(quint16 system, const msg::Message &message)
 {
+    std::lock_guard lock(m_mutex);
     const auto it = m_peers.constFind(system);
     if (it == m_peers.cend())
         return std::unexpected(QStringLiteral("IMC/UDP: %1 was never heard or announced").arg(msg::systemLabel(system)));
@@ -542,7 +654,7 @@ std::expected<void, QString> ImcUdpTransport::publish(quint16 system, const msg:
     addressed->header.srcEnt = 0xFF;
     addressed->header.dst = system;
     addressed->header.timestamp = now();
-    return send(*addressed, *it->target);
+    return sendLocked(*addressed, *it->target);
 }
 
 } // namespace neptus::transport

@@ -12,9 +12,14 @@
 #include <QTimer>
 #include <QUdpSocket>
 
+#include <atomic>
+#include <condition_variable>
 #include <expected>
+#include <functional>
 #include <memory>
+#include <mutex>
 #include <optional>
+#include <thread>
 
 namespace neptus::transport {
 
@@ -78,10 +83,23 @@ struct ImcUdpConfig
 // for replaying logs); the excess is dropped before it is decoded.
 //
 // The sockets are read on a thread of their own (DatagramReader), which
-// keeps a bounded queue per sending host; the GUI thread takes datagrams
-// from the queues one host at a time in turn, so a flooding host delays and
-// drops only its own datagrams. Everything else happens on the thread that
-// owns the transport.
+// keeps a bounded queue per sending host; a second thread of the transport's
+// takes datagrams from the queues one host at a time in turn, decodes them
+// and hands them on (`received`, the packet tap): a flooding host delays
+// and drops only its own datagrams, and a busy GUI thread none at all — a
+// receiver connected directly gets them on that thread (the console's
+// session is thread-safe), others through their event loop. What is known
+// of peers is guarded for both threads; signals other than `received` are
+// emitted with nothing locked, from whichever thread found the change.
+//
+// Greeting: DUNE makes a console a node only from an Announce on its
+// discovery port (Transports.Discovery), and streams to it from its next
+// contact refresh (Transports.UDP, every 5 s) once the console's packets
+// come to its own port. So a vehicle heard announcing (met first, or
+// restarted and forgetful) is greeted at once: our Announce to the IMC
+// discovery ports of its host, a Heartbeat to its port, and another a
+// quarter of a second later (the node and the contact are made by two of
+// its threads), then the heartbeat every second.
 class ImcUdpTransport : public QObject, public OutputSink
 {
     Q_OBJECT
@@ -101,11 +119,14 @@ public:
     int maxDatagramsPerSecond() const { return m_config.maxDatagramsPerSecond; }
     // Datagrams dropped unread over their host's budget or queue, since the start.
     quint64 droppedDatagrams() const { return m_dropped; }
+    // Datagrams taken and handed on since the start (any thread).
+    quint64 processedDatagrams() const { return m_processed; }
     const msg::SchemaSet &schemas() const { return *m_schemas; }
     void setPacketTap(PacketTap tap) { m_tap = std::move(tap); }
 
     // One datagram as it arrived from `from`:`fromPort`, within its host's
-    // budget (tests and the fuzz target call it without any socket).
+    // budget, on the caller's thread (tests and the fuzz target call it
+    // without any socket).
     void receive(QByteArrayView datagram, const QHostAddress &from, quint16 fromPort);
 
     // OutputSink: sends `message` to `system`, addressed to it, in its
@@ -118,7 +139,7 @@ public:
     void heartbeat();
 
     // The IMC version a system announces ("5.4.31"), empty until known.
-    QString announcedVersion(quint16 system) const { return m_versions.value(system); }
+    QString announcedVersion(quint16 system) const;
 
     // The hosts a system was heard from within the conflict window
     // ("127.0.0.2"), and where commands to it go ("127.0.0.2:6002"; "" while
@@ -148,9 +169,10 @@ signals:
     // An Announce for `system` from host `from` named no imc+udp address on
     // that host: no command will go to the addresses it names.
     void announceIgnored(quint16 system, const QString &from, const QString &services);
-    // Datagrams from `host` dropped over its rate in the last second; 0 once
-    // a second goes by without any dropped.
-    void overloaded(const QString &host, int dropped);
+    // Datagrams from `host` dropped in the last second: `overRate` past its
+    // budget (the host sends too much), `behind` because its queue was full
+    // (this console fell behind); both 0 once a second goes by without any.
+    void overloaded(const QString &host, int overRate, int behind);
 
 private:
     struct Endpoint
@@ -175,30 +197,39 @@ private:
         QStringList sources;            // as last reported by sourcesChanged
         QString destination;            // as last reported ("" while held)
         std::optional<Endpoint> target; // where commands and heartbeats go
+        qint64 greetedMs = 0;           // when it was last greeted
     };
     // Datagrams from one host in the current second.
     struct Budget
     {
         qint64 secondStartMs = 0;
         int count = 0;
-        int dropped = 0;
+        int dropped = 0; // over its rate
+        int behind = 0;  // its queue was full
         bool overloaded = false; // the last second dropped some
     };
+    // Signals found with the state locked, emitted once it is not.
+    using Later = std::vector<std::function<void()>>;
+    static void emitAll(Later &later);
 
     qint64 nowMs() const { return m_config.clock->now().toMSecsSinceEpoch(); }
+    // With m_mutex held (…Locked), changes to report go to `later`.
     // The sender record of `host` for `system`; null when maxSystems are kept already.
-    Sender *senderFor(quint16 system, const QString &host);
+    Sender *senderForLocked(quint16 system, const QString &host);
     // Works out where commands to `system` go, and reports a change.
-    void resolve(quint16 system);
-    bool withinBudget(const QString &host);
-    void rollBudget(const QString &host, Budget &budget, qint64 now);
+    void resolveLocked(quint16 system, Later &later);
+    bool withinBudgetLocked(const QString &host, Later &later);
+    void rollBudgetLocked(const QString &host, Budget &budget, qint64 now, Later &later);
+    void learnFromAnnounceLocked(const msg::Message &announce, const QHostAddress &from, const QString &host, Later &later);
+    std::expected<void, QString> sendLocked(const msg::Message &message, const Endpoint &to);
+    // Our Announce to the discovery ports of `host`, a Heartbeat to `target` now and again shortly.
+    void greetLocked(quint16 system, const QHostAddress &host, const Endpoint &target);
 
-    // Takes what the reader queued (already within budget), in turns.
+    // The decoding thread: takes what the reader queued (already within budget), in turns.
+    void decodeLoop();
     void drain();
-    // A datagram within its host's budget, from `host` (DatagramReader::hostName(from)).
+    // A datagram within its host's budget, from `host` (DatagramReader::hostName(from)), on any thread.
     void process(QByteArrayView datagram, const QHostAddress &from, quint16 fromPort, const QString &host);
-    void learnFromAnnounce(const msg::Message &announce, const QHostAddress &from, const QString &host);
-    std::expected<void, QString> send(const msg::Message &message, const Endpoint &to);
     double now() const { return m_config.clock->now().toMSecsSinceEpoch() / 1000.0; }
     msg::Message announcement() const;
     std::expected<void, QString> bindDiscovery(QUdpSocket &socket, QUdpSocket &discovery);
@@ -208,6 +239,7 @@ private:
     std::shared_ptr<msg::SchemaSet> m_schemas;
     PacketTap m_tap;
     ImcUdpConfig m_config;
+    mutable std::mutex m_mutex; // guards the peers, budgets, versions, m_buffer and the sending socket
     int m_fd = -1;          // bound by start(); sends go from it
     int m_discoveryFd = -1;
     quint16 m_port = 0;
@@ -217,10 +249,15 @@ private:
     QHash<QString, Budget> m_budgets; // by sending host
     QHash<quint16, QString> m_versions;
     int m_ticks = 0;
-    int m_decodeErrors = 0;
-    quint64 m_dropped = 0;
+    std::atomic<int> m_decodeErrors = 0;
+    std::atomic<quint64> m_dropped = 0;
+    std::atomic<quint64> m_processed = 0;
     QByteArray m_buffer;
-    std::unique_ptr<DatagramReader> m_reader; // last: stops before the rest goes
+    std::unique_ptr<DatagramReader> m_reader; // stops after the decoder, before the rest goes
+    std::mutex m_wakeMutex;
+    std::condition_variable m_wake;
+    bool m_woken = false, m_stopping = false;
+    std::thread m_decoder;
 };
 
 } // namespace neptus::transport

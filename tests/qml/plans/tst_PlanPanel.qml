@@ -72,14 +72,15 @@ TestCase {
         verify(start.enabled)
 
         slide("start")
-        tryVerify(() => panel.log.join("\n").indexOf("START survey: plan started") >= 0, 2000, panel.log.join("\n"))
+        tryVerify(() => panel.log.join("\n").indexOf("START survey: plan loaded") >= 0, 2000, panel.log.join("\n"))
         Fixtures.runVehicle(3)
         tryVerify(() => findChild(panel, "state").text.indexOf("Executing survey · maneuver go") >= 0, 2000,
                   findChild(panel, "state").text)
         verify(findChild(panel, "progress").visible)
 
+        verify(panel.log.join("\n").indexOf("completed") < 0, "DUNE's second reply to a START is not the plan's end")
         slide("abort")
-        tryVerify(() => panel.log.join("\n").indexOf("survey ended: plan aborted") >= 0, 2000, panel.log.join("\n"))
+        tryVerify(() => panel.log.join("\n").indexOf("survey failed: got abort request from system") >= 0, 2000, panel.log.join("\n"))
         compare(Fixtures.alarmLevel("systems/lauv-sim-1/plan"), AlarmLevel.Warning)
         Fixtures.runVehicle(2)
         tryVerify(() => findChild(panel, "state").text.indexOf("READY · last plan survey: FAILURE") >= 0, 2000,

@@ -115,6 +115,52 @@ TestCase {
         Session.mainSystem = ""
     }
 
+    // With one vehicle in view the instruments stayed "—" until the operator
+    // tapped it, and the Abort slider read "Abort · $main". Now the console
+    // follows the first vehicle it hears (not a console), says so, and never
+    // shows "$main".
+    function test_followsTheFirstVehicleHeardAndSaysSo() {
+        Session.mainSystem = ""
+        const consoles = "file://" + Fixtures.sourceDir() + "/qml/consoles/"
+        const window = createTemporaryObject(mainComponent, test, { consoleUrl: consoles + "Default.qml", visible: true,
+                                                                     session: Fixtures.session })
+        tryCompare(window.consoleLoader, "title", "Generic console")
+        const texts = []
+        const collect = item => { // what the operator sees (the designer, closed, is not)
+            if (!item.visible)
+                return
+            if (item.text !== undefined && typeof item.text === "string")
+                texts.push(item.text)
+            for (let i = 0; i < item.children.length; ++i)
+                collect(item.children[i])
+        }
+        collect(window.contentItem)
+        verify(texts.length > 20)
+        verify(texts.every(t => t.indexOf("$main") < 0), texts.filter(t => t.indexOf("$main") >= 0).join(" | "))
+
+        Fixtures.nameSystem(0x4005, "another-console")
+        Fixtures.ingest("Announce", 0x4005, { sys_name: "another-console", sys_type: 0 }) // CCU
+        Fixtures.session.tree.sync()
+        wait(50)
+        compare(Session.mainSystem, "", "a console is no vehicle to follow")
+        Fixtures.nameSystem(0x00d7, "lauv-noptilus-7")
+        Fixtures.ingest("Announce", 0x00d7, { sys_name: "lauv-noptilus-7", sys_type: 2 }) // UUV
+        Fixtures.session.tree.sync()
+        tryCompare(Session, "mainSystem", "lauv-noptilus-7")
+        const notice = findChild(window.contentItem, "followNotice")
+        verify(notice.visible)
+        verify(notice.Accessible.name.indexOf("Following lauv-noptilus-7, the first vehicle heard") === 0, notice.Accessible.name)
+        // Another vehicle later takes nothing from it.
+        Fixtures.nameSystem(0x00d8, "lauv-noptilus-8")
+        Fixtures.ingest("Announce", 0x00d8, { sys_name: "lauv-noptilus-8", sys_type: 2 })
+        Fixtures.session.tree.sync()
+        wait(50)
+        compare(Session.mainSystem, "lauv-noptilus-7")
+        mouseClick(notice)
+        verify(!notice.visible, "a tap puts the notice away")
+        Session.mainSystem = ""
+    }
+
     // A console file from anywhere (a USB stick): the switcher's "Open a
     // console file…" shows a chooser of big rows, folders first, only .qml
     // files; a tap opens a folder or the console.

@@ -195,6 +195,86 @@ TEST(HealthMonitor, CommunicationsLossIsRaisedAndCleared)
     EXPECT_LT(graph.rootLevel(), Warning);
 }
 
+// A stock DUNE announces itself (every 10 s) about 5 s before it streams to
+// a console it has just heard of (its UDP transport activates a new contact
+// only at its next 5 s refresh): that wait is no silence, at discovery nor
+// after the vehicle restarts. A vehicle that only ever announces is said to.
+TEST(HealthMonitor, NoCommunicationsAlarmWhileAVehicleAnnouncesBeforeItStreams)
+{
+    ManualClock clock(QDateTime::fromMSecsSinceEpoch(0, QTimeZone::UTC));
+    tree::VariableTree tree(&clock);
+    tree.setSystemName(0xd1, QStringLiteral("lauv-simulator-1"));
+    AlarmGraph graph(&clock);
+    HealthMonitor health(graph, tree, &clock);
+    const auto schema = neptus::test::shippedSchema();
+    msg::Message announce(schema->byAbbrev(u"Announce")), state(schema->byAbbrev(u"EstimatedState"));
+    announce.header.src = state.header.src = 0xd1;
+    announce.setInteger(announce.def()->indexOf(u"sys_type"), 2); // UUV
+    Level worst = Normal;
+    const auto during = [&](int ms, const std::function<void(int)> &each) {
+        for (int t = 0; t < ms; t += 250) {
+            each(t);
+            clock.advance(250);
+            health.check();
+            const auto node = graph.find(QStringLiteral("systems/lauv-simulator-1"));
+            if (node != AlarmGraph::noNode)
+                worst = std::max(worst, graph.ownLevel(node));
+        }
+    };
+    health.observe(announce);
+    during(5000, [](int) {}); // announced, not streaming yet
+    during(20000, [&](int t) {
+        if (t % 500 == 0)
+            health.observe(state); // DUNE's EstimatedState to consoles: 2 Hz
+        if (t % 10000 == 0)
+            health.observe(announce);
+    });
+    EXPECT_LT(worst, Warning) << "no 'communications lost' at discovery";
+
+    during(8000, [](int) {}); // it restarts: a real silence
+    const auto node = graph.find(QStringLiteral("systems/lauv-simulator-1"));
+    EXPECT_EQ(graph.ownLevel(node), Error);
+    health.observe(announce); // back, announcing; streaming again 5 s later
+    EXPECT_LT(graph.ownLevel(node), Warning);
+    worst = Normal;
+    during(5000, [](int) {});
+    during(5000, [&](int t) {
+        if (t % 500 == 0)
+            health.observe(state);
+    });
+    EXPECT_LT(worst, Warning) << "no alarm while it takes up its stream again";
+
+    // Announcing and nothing else, for long: said, and cleared by its stream.
+    tree.setSystemName(0xd2, QStringLiteral("lauv-mute"));
+    msg::Message mute = announce;
+    mute.header.src = 0xd2;
+    const auto count = [&] { return graph.find(QStringLiteral("systems/lauv-mute")); };
+    during(35000, [&](int t) {
+        if (t % 10000 == 0)
+            health.observe(mute);
+    });
+    EXPECT_EQ(graph.ownLevel(count()), Warning);
+    EXPECT_TRUE(graph.message(count()).startsWith(QStringLiteral("heard only its Announce for 3"))) << graph.message(count()).toStdString();
+    health.observe(mute); // another Announce does not clear it
+    EXPECT_EQ(graph.ownLevel(count()), Warning);
+    msg::Message muteState = state;
+    muteState.header.src = 0xd2;
+    health.observe(muteState);
+    EXPECT_EQ(graph.ownLevel(count()), Normal);
+
+    // A console (CCU) streams to nobody: its Announces alone are no problem.
+    tree.setSystemName(0x4002, QStringLiteral("other-console"));
+    msg::Message console = announce;
+    console.header.src = 0x4002;
+    console.setInteger(console.def()->indexOf(u"sys_type"), 0);
+    worst = Normal;
+    during(40000, [&](int t) {
+        if (t % 10000 == 0)
+            health.observe(console);
+    });
+    EXPECT_LT(graph.ownLevel(graph.find(QStringLiteral("systems/other-console"))), Warning);
+}
+
 TEST(HealthMonitor, EntityAlarmsAreRenamedWhenTheirLabelIsLearned)
 {
     tree::VariableTree tree;

@@ -72,6 +72,43 @@ TEST_F(TrackRecording, EachSystemGetsATrailOfAbsolutePositions)
     EXPECT_NEAR(tracks.home().value(QStringLiteral("lat")).toDouble(), 41.18, 1e-12);
 }
 
+// A stock DUNE announces itself (with where it is: its Announce's lat/lon
+// come from its EstimatedState) seconds before it streams to a console it has
+// just met: it is on the map from that Announce, until its own state comes.
+TEST_F(TrackRecording, AVehicleIsPlacedFromItsAnnounceUntilItsFirstState)
+{
+    tree.setSystemName(0xd1, QStringLiteral("lauv-simulator-1"));
+    msg::Message announce(neptus::test::shippedSchema()->byAbbrev(u"Announce"));
+    announce.header.src = 0xd1;
+    announce.setNumber(announce.def()->indexOf(u"lat"), radians(41.185));
+    announce.setNumber(announce.def()->indexOf(u"lon"), radians(-8.706));
+    tree.ingest(announce);
+    model.sync();
+    auto latest = tracks.latest(QStringLiteral("lauv-simulator-1"));
+    ASSERT_FALSE(latest.isEmpty()) << "on the map from its Announce";
+    EXPECT_NEAR(latest.value(QStringLiteral("lat")).toDouble(), 41.185, 1e-9);
+    EXPECT_TRUE(latest.value(QStringLiteral("announced")).toBool());
+    tree.ingest(announce); // again, 10 s later: still one point
+    model.sync();
+    EXPECT_EQ(tracks.track(QStringLiteral("lauv-simulator-1"))->fixes.size(), 1u);
+
+    tree.ingest(state(0xd1, 41.18, -8.70, 10, 0, 0));
+    model.sync();
+    latest = tracks.latest(QStringLiteral("lauv-simulator-1"));
+    EXPECT_FALSE(latest.value(QStringLiteral("announced")).toBool());
+    EXPECT_EQ(latest.value(QStringLiteral("count")).toInt(), 1) << "the announced place is no part of its trail";
+    tree.ingest(announce); // its Announce no longer moves it
+    model.sync();
+    EXPECT_NEAR(tracks.latest(QStringLiteral("lauv-simulator-1")).value(QStringLiteral("lat")).toDouble(), 41.18009, 1e-4);
+
+    // No position in an Announce (0, 0): not placed at all.
+    msg::Message nowhere(neptus::test::shippedSchema()->byAbbrev(u"Announce"));
+    nowhere.header.src = 0x4002;
+    tree.ingest(nowhere);
+    model.sync();
+    EXPECT_TRUE(tracks.latest(QStringLiteral("0x4002")).isEmpty());
+}
+
 TEST_F(TrackRecording, StandingStillAddsNoFixesButKeepsTheLatestState)
 {
     for (int i = 0; i < 10; ++i) {

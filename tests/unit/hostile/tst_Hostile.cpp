@@ -195,7 +195,10 @@ TEST(Hostile, AnImpostorHoldsCommandsUntilOneHostIsChosen)
     const auto held = session.send(0x23, abortCommand());
     ASSERT_FALSE(held);
     EXPECT_TRUE(held.error().contains(QStringLiteral("held"))) << held.error().toStdString();
-    EXPECT_EQ(levelOf(session.alarmGraph(), QStringLiteral("systems/lauv-sim-1/sources")), alarms::Warning);
+    // Said on the GUI thread, from the link's decoding thread.
+    EXPECT_TRUE(QTest::qWaitFor([&] {
+        return levelOf(session.alarmGraph(), QStringLiteral("systems/lauv-sim-1/sources")) == alarms::Warning;
+    }, 2000));
     EXPECT_FALSE(impostor.streaming()) << "no heartbeat went to the impostor";
 
     // The operator trusts 127.0.0.1.
@@ -213,8 +216,10 @@ TEST(Hostile, AnImpostorHoldsCommandsUntilOneHostIsChosen)
     vehicle.send(msg::Message(test::shippedSchema()->byAbbrev(u"Heartbeat")), console.port());
     ASSERT_TRUE(QTest::qWaitFor([&] { return console.sources(0x23).size() == 1; }, 2000));
     EXPECT_EQ(console.destination(0x23), QStringLiteral("127.0.0.1:%1").arg(vehicle.port()));
-    session.tick();
-    EXPECT_EQ(levelOf(session.alarmGraph(), QStringLiteral("systems/lauv-sim-1/sources")), alarms::Normal);
+    EXPECT_TRUE(QTest::qWaitFor([&] {
+        session.tick();
+        return levelOf(session.alarmGraph(), QStringLiteral("systems/lauv-sim-1/sources")) == alarms::Normal;
+    }, 2000));
 }
 
 // Over DDS an impostor with a vehicle's id made its position jump between

@@ -146,17 +146,15 @@ TEST(PlanClient, ALostRequestIsRetriedAndInProgressWaits)
     EXPECT_EQ(link.sent.size(), 2u); // IN_PROGRESS did not make it send again
 }
 
-// PlanControl: the START's answer ends the request; the vehicle's later
-// word to that START says how the plan ended; the same answer again (to a
-// START sent twice) is not an end.
-TEST(PlanClient, AStartIsAnsweredAndThePlansEndReported)
+// PlanControl: a START ends with the vehicle's first answer. DUNE answers a
+// START three times under its id ("plan loaded", "<maneuver>: executing
+// maneuver", then how the plan ended): the later two are no answer to any
+// request of ours (PlanRuns reads the plan's course from PlanControlState).
+TEST(PlanClient, AStartEndsWithItsFirstAnswerAndDunesLaterWordsAnswerNothing)
 {
     Link link;
     plans::PlanClient client(link.schema, vehicle, [&](const msg::Message &m) { link.sent.push_back(m); });
     QObject::connect(&client, &plans::PlanClient::replied, [&](const Reply &r) { link.replies.push_back(r); });
-    std::vector<std::tuple<QString, bool, QString>> ended;
-    QObject::connect(&client, &plans::PlanClient::planEnded,
-                     [&](const QString &plan, bool ok, const QString &info) { ended.emplace_back(plan, ok, info); });
 
     const quint16 id = client.start(spec(*link.schema, "survey"), u"survey"_s, 2);
     ASSERT_EQ(link.sent.size(), 1u);
@@ -173,25 +171,22 @@ TEST(PlanClient, AStartIsAnsweredAndThePlansEndReported)
     wrongKind.header.src = vehicle;
     EXPECT_FALSE(client.receive(wrongKind)) << "a PlanDB reply with the same id answers nothing of ours";
 
-    EXPECT_TRUE(client.receive(link.answer(start, "SUCCESS", u"plan started"_s)));
+    EXPECT_TRUE(client.receive(link.answer(start, "SUCCESS", u"plan loaded"_s)));
     ASSERT_EQ(link.replies.size(), 1u);
     EXPECT_TRUE(link.replies[0].ok);
     EXPECT_EQ(link.replies[0].message, u"PlanControl"_s);
     EXPECT_EQ(link.replies[0].op, u"START"_s);
     EXPECT_EQ(link.replies[0].planId, u"survey"_s);
+    EXPECT_EQ(link.replies[0].info, u"plan loaded"_s);
     EXPECT_EQ(client.pending(), 0);
 
-    EXPECT_TRUE(client.receive(link.answer(start, "SUCCESS", u"plan started"_s)));
-    EXPECT_TRUE(ended.empty()) << "the same answer twice is not the plan's end";
-    EXPECT_TRUE(client.receive(link.answer(start, "FAILURE", u"plan stopped"_s)));
-    ASSERT_EQ(ended.size(), 1u);
-    EXPECT_EQ(std::get<0>(ended[0]), u"survey"_s);
-    EXPECT_FALSE(std::get<1>(ended[0]));
-    EXPECT_EQ(std::get<2>(ended[0]), u"plan stopped"_s);
-    EXPECT_FALSE(client.receive(link.answer(start, "SUCCESS", u"plan completed"_s))) << "one end per start";
+    EXPECT_FALSE(client.receive(link.answer(start, "SUCCESS", u"go: executing maneuver"_s)));
+    EXPECT_FALSE(client.receive(link.answer(start, "SUCCESS", u"plan completed"_s)));
+    EXPECT_EQ(link.replies.size(), 1u) << "one answer per request";
 
     client.stop(u"survey"_s);
     EXPECT_EQ(link.sent.back().enumText(link.sent.back().def()->indexOf(u"op")), u"STOP"_s);
-    EXPECT_TRUE(client.receive(link.answer(link.sent.back(), "SUCCESS", u"no plan was running"_s)));
-    EXPECT_TRUE(link.replies.back().ok);
+    EXPECT_TRUE(client.receive(link.answer(link.sent.back(), "FAILURE", u"no plan is running, request ignored"_s)));
+    EXPECT_FALSE(link.replies.back().ok);
+    EXPECT_EQ(link.replies.back().info, u"no plan is running, request ignored"_s);
 }

@@ -12,6 +12,7 @@
 #include "QtPrinters.h"
 #include "Schemas.h"
 
+#include <QRegularExpression>
 #include <QTest>
 
 #include <gtest/gtest.h>
@@ -101,7 +102,7 @@ struct Desk : ::testing::Test
     void hear(const msg::Message &m)
     {
         tree.ingest(m);
-        if (m.abbrev() == u"PlanDB" || m.abbrev() == u"PlanControl")
+        if (m.abbrev() == u"PlanDB" || m.abbrev() == u"PlanControl" || m.abbrev() == u"PlanControlState")
             desk.receive(m);
     }
     // Simulated time on; conditions and supervision once a simulated second, as the console's timers do.
@@ -179,7 +180,10 @@ TEST_F(Desk, StartWaitsForTheVehiclesCopyToBeTheMissions)
     EXPECT_EQ(desk.sync(u"lauv-sim-1"_s, u"survey"_s), plans::Sync::Same);
 
     ASSERT_TRUE(desk.start(u"lauv-sim-1"_s, u"survey"_s));
-    EXPECT_EQ(lastLog(), u"START survey: plan started"_s);
+    EXPECT_EQ(desk.log(u"lauv-sim-1"_s).mid(desk.log(u"lauv-sim-1"_s).size() - 2).join(u'|').remove(QRegularExpression(u"\\d\\d:\\d\\d:\\d\\d  "_s)),
+              u"START survey: plan loaded|survey started: go"_s)
+        << "DUNE's three replies: the first answers the START, the state says it runs; no early end";
+    EXPECT_TRUE(graph.activeAlarms().empty());
     EXPECT_TRUE(vehicle.plans().executing());
     run(400);
     EXPECT_FALSE(vehicle.plans().executing());
@@ -202,18 +206,26 @@ TEST_F(Desk, StopIsAnInfoAbortAWarningWithTheVehiclesReason)
     run(5);
     ASSERT_TRUE(desk.stop(u"lauv-sim-1"_s));
     EXPECT_FALSE(vehicle.plans().executing());
-    EXPECT_TRUE(desk.log(u"lauv-sim-1"_s).join(u'\n').contains(u"survey ended: plan stopped"_s));
+    EXPECT_TRUE(desk.log(u"lauv-sim-1"_s).join(u'\n').contains(u"STOP survey: OK"_s)) << desk.log(u"lauv-sim-1"_s).join(u'\n').toStdString();
+    EXPECT_EQ(lastLog(), u"survey stopped"_s);
     EXPECT_EQ(planAlarm(), alarms::Info);
     ASSERT_EQ(graph.activeAlarms().size(), 1u) << "a stopped plan is a line in the alarm window";
-    EXPECT_EQ(graph.activeAlarms()[0].message, u"plan survey plan stopped"_s);
+    EXPECT_EQ(graph.activeAlarms()[0].message, u"plan survey stopped"_s);
+    graph.acknowledge(graph.activeAlarms()[0].node);
 
     ASSERT_TRUE(desk.start(u"lauv-sim-1"_s, u"survey"_s));
     run(5);
     ASSERT_TRUE(desk.abort(u"lauv-sim-1"_s));
     EXPECT_FALSE(vehicle.plans().executing());
     EXPECT_EQ(planAlarm(), alarms::Warning);
-    EXPECT_EQ(graph.message(graph.find(u"systems/lauv-sim-1/plan"_s)), u"plan survey failed: plan aborted by 0x4001"_s);
+    // DUNE's words (Supervisors/Vehicle): this console never announced itself to the vehicle here.
+    EXPECT_EQ(graph.message(graph.find(u"systems/lauv-sim-1/plan"_s)),
+              u"plan survey failed: got abort request from system unknown - 0x4001 @ 0xFF"_s);
     EXPECT_EQ(graph.activeAlarms().size(), 1u) << "a line in the alarm window";
+    run(3); // BLOCKED, then READY: no second end
+    const QStringList log = desk.log(u"lauv-sim-1"_s);
+    EXPECT_EQ(log.filter(u"survey failed"_s).size(), 1) << log.join(u'\n').toStdString();
+    EXPECT_EQ(log.filter(u"survey stopped"_s).size(), 1) << log.join(u'\n').toStdString();
 }
 
 // What the plan editor marks as an error never reaches a vehicle: a

@@ -126,6 +126,23 @@ struct Sim : ::testing::Test
     {
         return m.enumText(m.def()->indexOf(QString::fromLatin1(field)));
     }
+    // The PlanControl replies among `messages`, as "TYPE op #id info".
+    static QStringList replies(const std::vector<msg::Message> &messages)
+    {
+        QStringList out;
+        for (const msg::Message &m : messages)
+            if (m.abbrev() == u"PlanControl")
+                out << u"%1 %2 #%3 %4"_s.arg(enumOf(m, "type"), enumOf(m, "op")).arg(m.integer(u"request_id")).arg(m.text(u"info"));
+        return out;
+    }
+    static QStringList states(const std::vector<msg::Message> &messages)
+    {
+        QStringList out;
+        for (const msg::Message &m : messages)
+            if (m.abbrev() == u"PlanControlState")
+                out << enumOf(m, "state") + u' ' + m.text(u"plan_id");
+        return out;
+    }
     std::optional<msg::Message> last(const char *abbrev) const
     {
         for (auto it = heard.rbegin(); it != heard.rend(); ++it)
@@ -141,13 +158,50 @@ struct Sim : ::testing::Test
 
 } // namespace
 
+// DUNE's plan engine (src/Plan/Engine/Task.cpp, startPlan): a START is
+// answered twice at once ("plan loaded", then "<maneuver>: executing
+// maneuver"), INITIALIZING first (still naming the previous plan), then
+// EXECUTING; the third reply, at the end, is "plan completed" under the same
+// id, then READY with last_outcome SUCCESS and the plan's id kept.
+TEST_F(Sim, AStartIsAnsweredAsDuneDoesThreeRepliesAndTheStates)
+{
+    const auto said = send(request("PlanControl", "START", u"survey"_s, specification(u"survey"_s)));
+    EXPECT_EQ(replies(said), (QStringList{u"SUCCESS START #1 plan loaded"_s, u"SUCCESS START #1 go: executing maneuver"_s}));
+    EXPECT_EQ(states(said), (QStringList{u"INITIALIZING "_s, u"EXECUTING survey"_s}));
+    for (const msg::Message &m : said)
+        EXPECT_EQ(m.header.dst, m.abbrev() == u"PlanControl" ? console : quint16(0xFFFF));
+    const auto done = runUntil([&] { return !vehicle.plans().executing(); }, 1200);
+    EXPECT_LT(done, 1200);
+    const auto end = last("PlanControl");
+    EXPECT_EQ(replies({*end}), QStringList{u"SUCCESS START #1 plan completed"_s});
+    run(1);
+    EXPECT_EQ(states({*last("PlanControlState")}), QStringList{u"READY survey"_s});
+    EXPECT_EQ(enumOf(*last("PlanControlState"), "last_outcome"), u"SUCCESS"_s);
+    EXPECT_EQ(last("PlanControlState")->number(u"plan_progress"), -1);
+    EXPECT_EQ(last("PlanControlState")->integer(u"man_type"), 0xFFFF);
+
+    // At DUNE's rate: 3 Hz (etc/common/plans.ini, State Report Frequency).
+    heard.clear();
+    run(10);
+    EXPECT_EQ(states(heard).size(), 30);
+}
+
+// DUNE's one reply record: its later words reuse the last request's id and
+// op, so a GET during the plan makes "plan completed" a reply to that GET.
+TEST_F(Sim, LaterWordsReuseTheLastRequestAsDunesDo)
+{
+    send(request("PlanControl", "START", u"survey"_s, specification(u"survey"_s)));
+    run(5);
+    const auto got = send(request("PlanControl", "GET"));
+    EXPECT_EQ(replies(got), QStringList{u"SUCCESS GET #2 OK"_s});
+    runUntil([&] { return !vehicle.plans().executing(); }, 1200);
+    EXPECT_EQ(replies({*last("PlanControl")}), QStringList{u"SUCCESS GET #2 plan completed"_s});
+    EXPECT_EQ(replies(send(request("PlanControl", "GET"))), QStringList{u"FAILURE GET #3 no plan is running"_s});
+}
+
 TEST_F(Sim, RunsGotoLoiterAndRowsToTheEndAndSaysSo)
 {
-    const auto replies = send(request("PlanControl", "START", u"survey"_s, specification(u"survey"_s)));
-    ASSERT_FALSE(replies.empty());
-    EXPECT_EQ(enumOf(replies.front(), "type"), u"SUCCESS") << replies.front().text(u"info").toStdString();
-    EXPECT_EQ(replies.front().header.dst, console);
-    EXPECT_EQ(replies.front().integer(u"request_id"), 1);
+    send(request("PlanControl", "START", u"survey"_s, specification(u"survey"_s)));
 
     std::vector<QString> maneuvers;
     double lastProgress = 0;
@@ -234,11 +288,10 @@ TEST_F(Sim, TheDatabaseKeepsPlansAndAnswersWithDunesMd5s)
 
     // A stored plan starts by its id alone.
     const auto started = send(request("PlanControl", "START", u"choice"_s));
-    EXPECT_EQ(enumOf(started.front(), "type"), u"SUCCESS");
+    EXPECT_EQ(Sim::replies(started).value(0), u"SUCCESS START #%1 plan loaded"_s.arg(nextRequest - 1));
     EXPECT_TRUE(vehicle.plans().executing());
     const auto unknown = send(request("PlanControl", "START", u"nothing"_s));
-    EXPECT_EQ(enumOf(unknown.front(), "type"), u"FAILURE");
-    EXPECT_TRUE(unknown.front().text(u"info").contains(u"undefined plan 'nothing'"_s));
+    EXPECT_EQ(Sim::replies(unknown), QStringList{u"FAILURE START #%1 undefined plan"_s.arg(nextRequest - 1)}) << "DUNE's words";
 }
 
 TEST_F(Sim, DatabaseMd5sMatchDunesForTheFixturePlans)
@@ -277,29 +330,39 @@ TEST_F(Sim, DatabaseMd5sMatchDunesForTheFixturePlans)
     EXPECT_EQ(engine.databaseMd5().toHex(), expected);
 }
 
-TEST_F(Sim, StopAndAbortEndThePlanAndSayWhy)
+// DUNE's STOP (Plan/Engine stopPlan): the STOP is answered "OK", the START
+// nothing more; READY with last_outcome FAILURE. Abort (Supervisors/Vehicle):
+// a FAILURE in the supervisor's words to the last requester, BLOCKED, and
+// READY again a second later.
+TEST_F(Sim, StopAndAbortEndThePlanAndSayWhyInDunesWords)
 {
+    msg::Message announce(schema->byAbbrev(u"Announce"));
+    announce.header.src = console;
+    announce.setBytes(announce.def()->indexOf(u"sys_name"), "neptus-qt");
+    send(announce);
     send(request("PlanControl", "START", u"survey"_s, specification(u"survey"_s)));
     run(5);
     const auto stopped = send(request("PlanControl", "STOP", u"survey"_s));
-    ASSERT_GE(stopped.size(), 2u);
-    EXPECT_EQ(enumOf(stopped[0], "type"), u"FAILURE") << "to who started it: the plan did not complete";
-    EXPECT_EQ(stopped[0].text(u"info"), u"plan stopped"_s);
-    EXPECT_EQ(stopped[0].integer(u"request_id"), 1);
-    EXPECT_EQ(enumOf(stopped[1], "type"), u"SUCCESS") << "the STOP itself worked";
-    EXPECT_EQ(stopped[1].integer(u"request_id"), 2);
+    EXPECT_EQ(replies(stopped), QStringList{u"SUCCESS STOP #2 OK"_s});
+    EXPECT_EQ(states(stopped), QStringList{u"READY survey"_s});
     EXPECT_FALSE(vehicle.plans().executing());
     EXPECT_EQ(enumOf(*last("PlanControlState"), "last_outcome"), u"FAILURE");
+    EXPECT_EQ(replies(send(request("PlanControl", "STOP"))), QStringList{u"FAILURE STOP #3 no plan is running, request ignored"_s});
 
     send(request("PlanControl", "START", u"survey"_s, specification(u"survey"_s)));
     run(5);
     msg::Message abort(schema->byAbbrev(u"Abort"));
     abort.header.src = console;
+    abort.header.srcEnt = 0xFF;
     abort.header.dst = 0x1f;
     const auto aborted = send(abort);
-    ASSERT_FALSE(aborted.empty());
-    EXPECT_EQ(aborted[0].text(u"info"), u"plan aborted by 0x4001"_s);
+    EXPECT_EQ(replies(aborted), QStringList{u"FAILURE START #4 got abort request from system neptus-qt - 0x4001 @ 0xFF"_s});
+    EXPECT_EQ(states(aborted), QStringList{u"BLOCKED survey"_s});
     EXPECT_FALSE(vehicle.plans().executing());
+    heard.clear();
+    run(1.5);
+    EXPECT_EQ(states(heard).back(), u"READY survey"_s);
+    EXPECT_TRUE(replies(heard).isEmpty()) << "one end";
     const double depth = vehicle.motion().ned.z();
     run(10);
     EXPECT_LT(vehicle.motion().ned.z(), depth) << "an AUV with no plan floats up";
@@ -337,17 +400,15 @@ TEST_F(Sim, OneManeuverStartsAsAPlanAndUnknownManeuversAreRefused)
     const msg::Message spec = specification(u"survey"_s);
     const msg::Message goTo = *spec.messages(spec.def()->indexOf(u"maneuvers"))[0].inlineMessage(
         schema->byAbbrev(u"PlanManeuver")->indexOf(u"data"));
-    const auto replies = send(request("PlanControl", "START", u"quick"_s, goTo));
-    EXPECT_EQ(enumOf(replies.front(), "type"), u"SUCCESS");
+    EXPECT_EQ(replies(send(request("PlanControl", "START", u"quick"_s, goTo))),
+              (QStringList{u"SUCCESS START #1 plan loaded"_s, u"SUCCESS START #1 Goto: executing maneuver"_s}));
     EXPECT_EQ(vehicle.plans().currentManeuver(), u"Goto"_s) << "named after its type, as DUNE does";
 
     msg::Message teleop(schema->byAbbrev(u"Teleoperation"));
     const auto refused = send(request("PlanControl", "START", u"quick"_s, teleop));
-    EXPECT_EQ(enumOf(refused.back().abbrev() == u"PlanControl" ? refused.back() : refused.front(), "type"), u"FAILURE");
-    bool said = false;
-    for (const msg::Message &m : refused)
-        said = said || m.text(u"info").contains(u"cannot do"_s);
-    EXPECT_TRUE(said);
+    EXPECT_EQ(replies(refused), QStringList{u"FAILURE START #2 parse error: Teleoperation: maneuver is not supported (a Teleoperation)"_s});
+    EXPECT_EQ(states(refused).back(), u"READY quick"_s) << "the quick plan it was running stopped, as DUNE's";
+    EXPECT_EQ(replies(send(request("PlanControl", "START", u"nothing"_s))), QStringList{u"FAILURE START #3 undefined plan"_s});
 }
 
 TEST(SimKinematics, AUavNeverStallsAndABoatStaysAtTheSurface)

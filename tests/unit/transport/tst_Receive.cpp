@@ -4,16 +4,24 @@
 // definitions lack, and a vehicle built from another IMC revision.
 #include "Paths.h"
 #include "core/Gzip.h"
+#include "log/LogFile.h"
+#include "log/Recorder.h"
 #include "session/Console.h"
 
 #include "Fixtures.h"
 #include "Schemas.h"
 
+#include <QCoreApplication>
 #include <QTemporaryDir>
+#include <QTest>
+#include <QUdpSocket>
 
 #include <gtest/gtest.h>
 
+#include <atomic>
+#include <chrono>
 #include <map>
+#include <thread>
 
 using namespace neptus;
 
@@ -267,4 +275,63 @@ TEST(ReceivePath, AnAnnouncedImcVersionOtherThanOursIsAWarning)
     EXPECT_EQ(session.alarmGraph().ownLevel(node), alarms::Warning);
     EXPECT_TRUE(session.alarmGraph().message(node).contains(QStringLiteral("announces IMC 5.4.11, ours is 5.4.31")))
         << session.alarmGraph().message(node).toStdString();
+}
+
+// Seen against a real DUNE (608 datagrams a second): the GUI thread stalled
+// for 18 s, the host's queue filled, 483 datagrams were dropped unread and
+// "input overload: 127.0.0.1 sent over 5000 datagrams a second" blamed the
+// vehicle. Now the link decodes and records on a thread of its own: a GUI
+// thread blocked for 20 s delays what it shows and loses nothing.
+TEST(ReceivePath, AGuiThreadBlockedFor20SecondsLosesNothingAndBlamesNoVehicle)
+{
+    QTemporaryDir root;
+    log::RecorderConfig recording;
+    recording.root = root.path();
+    recording.system = 0x4001;
+    recording.definitionFiles = msg::Schema::filesIn(test::msgdefsDirectory());
+    log::Recorder recorder(recording);
+    ASSERT_TRUE(recorder.start());
+    session::Console session(test::shippedSchema());
+    session.setRecorder(&recorder);
+    transport::ImcUdpConfig config;
+    config.port = 0;
+    config.discoveryPort = 0;
+    ASSERT_TRUE(session.startImc(config));
+    const quint16 port = session.imc()->port();
+
+    // A vehicle streaming 600 datagrams a second, in bursts of 60 every 100 ms, for 21 s.
+    const QByteArray packet = *msg::Codec(test::shippedSchema()).encode(make("EstimatedState", 0x23));
+    std::atomic<int> sent = 0;
+    std::thread vehicle([&] {
+        QUdpSocket socket;
+        const auto start = std::chrono::steady_clock::now();
+        for (int burst = 0; burst < 210; ++burst) {
+            std::this_thread::sleep_until(start + std::chrono::milliseconds(100 * burst));
+            for (int i = 0; i < 60; ++i)
+                if (socket.writeDatagram(packet, QHostAddress::LocalHost, port) == packet.size())
+                    ++sent;
+        }
+    });
+    std::this_thread::sleep_for(std::chrono::seconds(20)); // the GUI thread, blocked
+    vehicle.join();
+    ASSERT_GT(sent.load(), 12'000);
+    EXPECT_TRUE(QTest::qWaitFor([&] { return session.linkStatistics().system(0x23).messages == quint64(sent.load()); }, 5000))
+        << session.linkStatistics().system(0x23).messages << " of " << sent.load();
+    EXPECT_EQ(session.imc()->droppedDatagrams(), 0u);
+    QTest::qWait(1500); // a second for the overload report, had there been one
+    session.imc()->forgetSilent();
+    QCoreApplication::processEvents();
+    for (const auto &alarm : session.alarmGraph().activeAlarms())
+        EXPECT_FALSE(alarm.origin.startsWith(QStringLiteral("links/"))) << alarm.origin.toStdString() << ": "
+                                                                         << alarm.message.toStdString();
+
+    // Every one of them in the recording.
+    const QString folder = recorder.status().folder;
+    recorder.stop();
+    auto logFile = log::LogFile::open(folder);
+    ASSERT_TRUE(logFile) << logFile.error().toStdString();
+    qint64 fromVehicle = 0;
+    for (qsizetype i = 0; i < (*logFile)->count(); ++i)
+        fromVehicle += (*logFile)->source(i) == 0x23;
+    EXPECT_EQ(fromVehicle, sent.load());
 }
