@@ -29,6 +29,17 @@ nq_die() { printf '%sneptus-qt: error:%s %s\n' "$NQ_RED" "$NQ_PLAIN" "$*" >&2; e
 
 nq_packages() { sed -e 's/#.*//' -e 's/[[:space:]]//g' "$NQ_PACKAGES_FILE" | grep -v '^$'; }
 
+# The Python test peers (tools/python-packages.txt), pinned, in a venv: its
+# folder as seen inside the environment, and on the host.
+nq_python_packages() { sed -e 's/#.*//' -e 's/[[:space:]]//g' "$NQ_CHECKOUT/tools/python-packages.txt" | grep -v '^$'; }
+nq_python_hash() { { nq_python_packages; echo "$NQ_SUITE"; } | sha256sum | cut -c1-12; }
+nq_python_dir() {
+  if [ "$(nq_mode)" = native ]; then echo "$NQ_CACHE/python"; else echo /opt/neptus-python; fi
+}
+nq_python_host_dir() {
+  if [ "$(nq_mode)" = native ]; then echo "$NQ_CACHE/python"; else echo "$(nq_root_dir)/opt/neptus-python"; fi
+}
+
 nq_root_dir() {
   local hash
   hash=$({ nq_packages; echo "$NQ_SUITE recipe $NQ_ROOT_RECIPE"; } | sha256sum | cut -c1-12)
@@ -85,6 +96,7 @@ nq_as_root() {
 
 nq_ready() {
   [ -f "$(nq_install_root_dir)/.neptus-ready" ] || return 1
+  [ "$(cat "$(nq_python_host_dir)/.neptus-ready" 2>/dev/null)" = "$(nq_python_hash)" ] || return 1
   if [ "$(nq_mode)" = native ]; then
     [ -f "$NQ_CACHE/native-ready" ] && [ "$(cat "$NQ_CACHE/native-ready")" = "$(nq_packages | sha256sum)" ] \
       && command -v bwrap >/dev/null
@@ -121,7 +133,7 @@ nq_enter() {
          --bind "$NQ_CCACHE_DIR" "$NQ_CCACHE_DIR"
          --unshare-pid --unshare-ipc --unshare-uts --die-with-parent
          --clearenv
-         --setenv PATH "$NQ_BUILD_DIR/bin:/usr/local/sbin:/usr/local/bin:/usr/sbin:/usr/bin:/sbin:/bin"
+         --setenv PATH "$NQ_BUILD_DIR/bin:$(nq_python_dir)/bin:/usr/local/sbin:/usr/local/bin:/usr/sbin:/usr/bin:/sbin:/bin"
          --setenv HOME "$HOME"
          --setenv USER "$(id -un)"
          --setenv LANG C.UTF-8
@@ -129,6 +141,7 @@ nq_enter() {
          --setenv CCACHE_DIR "$NQ_CCACHE_DIR"
          --setenv CCACHE_BASEDIR "$NQ_CHECKOUT"
          --setenv CCACHE_NOHASHDIR 1
+         --setenv CCACHE_COMPILERCHECK content
          --setenv NEPTUS_CHECKOUT "$NQ_CHECKOUT"
          --setenv NEPTUS_BUILD_DIR "$NQ_BUILD_DIR")
   [ -d "$NQ_SHARED" ] && args+=(--ro-bind "$NQ_SHARED" "$NQ_SHARED")

@@ -14,9 +14,13 @@
 #include <QtEndian>
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
 #include <limits>
 #include <cstring>
+
+#include <fcntl.h>
+#include <unistd.h>
 
 namespace neptus::log {
 
@@ -286,6 +290,99 @@ bool LogFile::readIndex(const QString &path)
     }
     m_readBytes = m_data.size();
     return true;
+}
+
+namespace {
+
+bool writeFully(int fd, const void *data, std::size_t size)
+{
+    const char *at = static_cast<const char *>(data);
+    while (size > 0) {
+        const ssize_t written = ::write(fd, at, size);
+        if (written < 0 && errno == EINTR)
+            continue;
+        if (written <= 0)
+            return false;
+        at += written;
+        size -= std::size_t(written);
+    }
+    return true;
+}
+
+} // namespace
+
+void LogIndexWriter::open(const QString &dataFile)
+{
+    abandon();
+    m_dataFile = dataFile;
+    m_count = 0;
+    m_offsetsFd = ::open(QFile::encodeName(dataFile + QStringLiteral(".index.partial")).constData(),
+                         O_RDWR | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+    m_timesFd = ::open(QFile::encodeName(dataFile + QStringLiteral(".times.partial")).constData(),
+                       O_RDWR | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+    const IndexHead placeholder{};
+    if (m_offsetsFd < 0 || m_timesFd < 0 || !writeFully(m_offsetsFd, &placeholder, sizeof placeholder))
+        abandon();
+}
+
+void LogIndexWriter::append(const std::vector<quint64> &offsets, const std::vector<double> &times)
+{
+    if (m_offsetsFd < 0 || offsets.size() != times.size())
+        return;
+    if (!writeFully(m_offsetsFd, offsets.data(), offsets.size() * 8) || !writeFully(m_timesFd, times.data(), times.size() * 8)) {
+        abandon();
+        return;
+    }
+    m_count += offsets.size();
+}
+
+bool LogIndexWriter::finish()
+{
+    if (m_offsetsFd < 0)
+        return false;
+    // The timestamps after the offsets, then the head that says what was indexed.
+    bool ok = ::lseek(m_timesFd, 0, SEEK_SET) == 0;
+    std::vector<char> buffer(1 << 20);
+    while (ok) {
+        const ssize_t read = ::read(m_timesFd, buffer.data(), buffer.size());
+        if (read < 0 && errno == EINTR)
+            continue;
+        if (read <= 0) {
+            ok = read == 0;
+            break;
+        }
+        ok = writeFully(m_offsetsFd, buffer.data(), std::size_t(read));
+    }
+    const QFileInfo data(m_dataFile);
+    IndexHead head{};
+    std::memcpy(head.magic, indexMagic, 8);
+    head.version = indexVersion;
+    head.dataSize = quint64(data.size());
+    head.dataModifiedMs = data.lastModified().toMSecsSinceEpoch();
+    head.count = m_count;
+    ok = ok && ::pwrite(m_offsetsFd, &head, sizeof head, 0) == ssize_t(sizeof head) && ::fdatasync(m_offsetsFd) == 0;
+    const QString partial = m_dataFile + QStringLiteral(".index.partial");
+    ::close(m_offsetsFd);
+    ::close(m_timesFd);
+    m_offsetsFd = m_timesFd = -1;
+    QFile::remove(m_dataFile + QStringLiteral(".times.partial"));
+    ok = ok && ::rename(QFile::encodeName(partial).constData(), QFile::encodeName(m_dataFile + QStringLiteral(".index")).constData()) == 0;
+    if (!ok)
+        QFile::remove(partial);
+    return ok;
+}
+
+void LogIndexWriter::abandon()
+{
+    if (m_offsetsFd < 0 && m_timesFd < 0)
+        return;
+    for (int *fd : {&m_offsetsFd, &m_timesFd}) {
+        if (*fd >= 0)
+            ::close(*fd);
+        *fd = -1;
+    }
+    QFile::remove(m_dataFile + QStringLiteral(".index.partial"));
+    QFile::remove(m_dataFile + QStringLiteral(".times.partial"));
 }
 
 bool writeLogIndex(const QString &dataFile, const std::vector<quint64> &offsets, const std::vector<double> &times)

@@ -110,6 +110,32 @@ private:
 // start and their timestamps; false when it cannot (the log still opens, by scanning).
 bool writeLogIndex(const QString &dataFile, const std::vector<quint64> &offsets, const std::vector<double> &times);
 
+// Writes Data.lsf.index while the log is written, a batch of packets at a
+// time, so that a recorder holds no index in memory (16 bytes a packet for
+// an hour's part was most of a console's growth): the offsets go to
+// Data.lsf.index.partial, the timestamps to Data.lsf.times.partial; finish()
+// joins them into Data.lsf.index once Data.lsf is closed. Any failure makes
+// it give up quietly (the log still opens, by scanning).
+class LogIndexWriter
+{
+public:
+    LogIndexWriter() = default;
+    ~LogIndexWriter() { abandon(); }
+    LogIndexWriter(const LogIndexWriter &) = delete;
+    LogIndexWriter &operator=(const LogIndexWriter &) = delete;
+
+    void open(const QString &dataFile);
+    void append(const std::vector<quint64> &offsets, const std::vector<double> &times);
+    // Data.lsf is closed: its index goes in place. False when it could not be written.
+    bool finish();
+    void abandon();
+
+private:
+    QString m_dataFile;
+    int m_offsetsFd = -1, m_timesFd = -1;
+    quint64 m_count = 0;
+};
+
 // Reads an IMC packet's 20-byte header without decoding (the same in every IMC revision).
 struct PacketHeader
 {

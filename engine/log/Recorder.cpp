@@ -147,7 +147,8 @@ void Recorder::writeBatch(const QByteArray &batch, qint64 lostInQueue)
         }
         // The whole packets up to the part's size limit go in one write.
         const qint64 chunkStart = at;
-        const size_t firstPacket = m_offsets.size();
+        m_batchOffsets.clear();
+        m_batchTimes.clear();
         while (at < size) {
             const auto header = PacketHeader::read(QByteArrayView(data + at, size - at));
             const qint64 length = header ? header->packetSize() : size - at; // record() takes whole packets
@@ -157,13 +158,14 @@ void Recorder::writeBatch(const QByteArray &batch, qint64 lostInQueue)
                 partFull = true;
                 break;
             }
-            m_offsets.push_back(quint64(m_partBytes + (at - chunkStart)));
-            m_times.push_back(header ? header->timestamp : 0.0);
+            m_batchOffsets.push_back(quint64(m_partBytes + (at - chunkStart)));
+            m_batchTimes.push_back(header ? header->timestamp : 0.0);
             at += length;
         }
-        const qint64 packets = qint64(m_offsets.size() - firstPacket);
+        const qint64 packets = qint64(m_batchOffsets.size());
         if (m_fd >= 0 && writeAll(data + chunkStart, at - chunkStart)) {
             m_partBytes += at - chunkStart;
+            m_index.append(m_batchOffsets, m_batchTimes);
             partFull = partFull && at < size;
             QMutexLocker lock(&m_statusMutex);
             m_status.packets += quint64(packets);
@@ -177,8 +179,6 @@ void Recorder::writeBatch(const QByteArray &batch, qint64 lostInQueue)
         // Not written: back to the last whole packet, counted as lost.
         const bool open = m_fd >= 0;
         const QString why = QString::fromLocal8Bit(std::strerror(errno));
-        m_offsets.resize(firstPacket);
-        m_times.resize(firstPacket);
         if (m_fd >= 0 && (::ftruncate(m_fd, m_partBytes) != 0 || ::lseek(m_fd, m_partBytes, SEEK_SET) < 0)) {
             ::close(m_fd); // the file cannot be mended: the next batch starts a new part
             m_fd = -1;
@@ -270,8 +270,7 @@ bool Recorder::beginPart()
         return fail(QString::fromLocal8Bit(std::strerror(errno)));
     m_partBytes = 0;
     m_partStartedMs = monotonicMs();
-    m_offsets.clear();
-    m_times.clear();
+    m_index.open(QString::fromLocal8Bit(data));
     {
         QMutexLocker lock(&m_statusMutex);
         m_status.folder = folder;
@@ -288,7 +287,7 @@ void Recorder::endPart()
     ::fdatasync(m_fd);
     ::close(m_fd);
     m_fd = -1;
-    writeLogIndex(QDir(m_partFolder).filePath(QStringLiteral("Data.lsf")), m_offsets, m_times);
+    m_index.finish();
 }
 
 void Recorder::setProblem(const QString &problem)

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "log/LogFile.h"
+
 #include <QByteArray>
 #include <QByteArrayView>
 #include <QMutex>
@@ -99,8 +101,9 @@ private:
     qint64 m_partBytes = 0;
     qint64 m_partStartedMs = 0;
     qint64 m_partAttemptMs = 0;
-    std::vector<quint64> m_offsets;
-    std::vector<double> m_times;
+    LogIndexWriter m_index;
+    std::vector<quint64> m_batchOffsets; // of the batch being written, then appended to m_index
+    std::vector<double> m_batchTimes;
 
     mutable QMutex m_statusMutex;
     Status m_status;

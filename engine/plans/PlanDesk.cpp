@@ -218,7 +218,7 @@ QStringList PlanDesk::log(const QString &system) const
 
 void PlanDesk::note(quint16 id, const QString &line)
 {
-    Vehicle &v = m_vehicles[id];
+    Vehicle &v = vehicleFor(id);
     v.log.append(m_clock->now().toUTC().toString(u"HH:mm:ss"_s) + u"  "_s + line);
     if (v.log.size() > logLines)
         v.log.removeFirst();
@@ -409,7 +409,7 @@ void PlanDesk::replied(quint16 id, const PlanClient::Reply &r)
 
 void PlanDesk::told(const PlanRuns::Event &e)
 {
-    Vehicle &v = m_vehicles[e.system];
+    Vehicle &v = vehicleFor(e.system); // a vehicle this console never commanded, seen running a plan
     // A stretch of a supervised plan ("survey.2") stands for the whole plan;
     // one replaced by the next stretch is no end of it.
     QString plan = e.plan;

@@ -363,18 +363,42 @@ void Tracks::append(quint16 id, const QString &system, const std::vector<Fix> &f
 
 void Tracks::add(Track &t, const Fix &fix)
 {
-    t.latest = fix;
     bool keep = t.fixes.empty();
     if (!keep) {
         const Fix &last = t.fixes.back();
-        const Eigen::Vector3d d = toNed({fix.lat, fix.lon, fix.height}, {last.lat, last.lon, last.height});
-        keep = std::hypot(d.x(), d.y(), fix.depth - last.depth) >= m_minimumSpacing || fix.time - last.time >= 10;
+        const auto offset = [&](const Fix &f) {
+            const Eigen::Vector3d d = toNed({f.lat, f.lon, f.height}, {last.lat, last.lon, last.height});
+            return Eigen::Vector3d(d.x(), d.y(), double(f.depth - last.depth));
+        };
+        const Eigen::Vector3d to = offset(fix);
+        const double moved = to.norm();
+        keep = moved >= m_maximumSpacing || fix.time - last.time >= 10;
+        // Left out so far, but not if the straight line to this fix would pass
+        // further than `tolerance` from any of them: the one before is kept.
+        const bool bends = moved >= m_minimumSpacing && std::any_of(t.pending.begin(), t.pending.end(), [&](const Fix &f) {
+            const Eigen::Vector3d between = offset(f);
+            const double along = std::clamp(between.dot(to) / std::max(1e-9, to.squaredNorm()), 0.0, 1.0);
+            return (between - along * to).norm() > m_tolerance;
+        });
+        if (bends) {
+            t.fixes.push_back(t.pending.back());
+            t.pending.clear();
+        }
     }
-    if (keep) {
+    t.latest = fix;
+    if (!keep) {
+        t.pending.push_back(fix);
+    } else {
+        t.pending.clear();
         if (t.fixes.size() >= m_capacity) {
-            const std::size_t forget = m_capacity / 10;
-            t.fixes.erase(t.fixes.begin(), t.fixes.begin() + std::ptrdiff_t(forget));
-            t.dropped += forget;
+            // The older half thinned to every other fix (views draw it anew: `dropped` changes).
+            const std::size_t half = t.fixes.size() / 2;
+            std::size_t kept = 0;
+            for (std::size_t i = 0; i < half; i += 2)
+                t.fixes[kept++] = t.fixes[i];
+            const std::size_t removed = half - kept;
+            t.fixes.erase(t.fixes.begin() + std::ptrdiff_t(kept), t.fixes.begin() + std::ptrdiff_t(half));
+            t.dropped += removed;
         }
         t.fixes.push_back(fix);
     }

@@ -80,6 +80,7 @@ public:
         QString system;
         std::vector<Fix> fixes; // the trail, oldest first
         Fix latest;             // the last state heard, moved or not
+        std::vector<Fix> pending; // heard since the last fix kept, left out so far
         quint64 dropped = 0;    // fixes forgotten from the front so far
         quint64 revision = 0;   // grows with every change
         bool named = false;     // by Announce or configuration, not "0x4001"
@@ -124,8 +125,18 @@ public:
     Q_INVOKABLE QList<QPointF> nedPath(const QString &system, int maxPoints = 2000) const;
     Q_INVOKABLE void clear(const QString &system);
 
+    // A trail keeps a fix when the vehicle moved `maximumSpacing` since the
+    // last one kept, or 10 s went by, or leaving the fix before out would bend
+    // the trail by more than `tolerance` (turns keep their shape, straight
+    // legs cost a fix every few metres); never closer than `minimumSpacing`.
     double minimumSpacing() const { return m_minimumSpacing; }
     void setMinimumSpacing(double metres) { m_minimumSpacing = metres; }
+    double maximumSpacing() const { return m_maximumSpacing; }
+    void setMaximumSpacing(double metres) { m_maximumSpacing = metres; }
+    double tolerance() const { return m_tolerance; }
+    void setTolerance(double metres) { m_tolerance = metres; }
+    // Fixes a trail holds at most: when full, the older half is thinned to
+    // every other fix (the distant past coarser, the whole of it still drawn).
     std::size_t capacity() const { return m_capacity; }
     void setCapacity(std::size_t fixes) { m_capacity = std::max<std::size_t>(fixes, 10); }
 
@@ -186,7 +197,9 @@ private:
     bool m_hasHome = false;
     double m_homeLat = 0, m_homeLon = 0, m_homeHeight = 0;
     double m_minimumSpacing = 0.1;
-    std::size_t m_capacity = 2'000'000;
+    double m_maximumSpacing = 5;
+    double m_tolerance = 0.2;
+    std::size_t m_capacity = 50'000;
 };
 
 } // namespace neptus::geo

@@ -15,6 +15,8 @@ Rectangle {
     // Tree paths, one series each ("$main/EstimatedState/depth").
     property var paths: []
     property real span: 300
+    // How far back a live plot keeps its points (seconds): an hour, at any rate.
+    property real history: 3600
     property var seriesColors: Theme.traces
     readonly property alias series: series
     // The distinct units of the series, in order: one axis each ("" for a unitless series).
@@ -109,6 +111,7 @@ Rectangle {
         tickSpacing: Theme.mm(10)
         colors: plot.seriesColors
         span: plot.span
+        history: plot.history
         opacity: plot.stale && !plot.replay ? 0.4 : 1
         clip: true
 

@@ -84,6 +84,15 @@ void TimeSeriesItem::setCapacity(int points)
     clear();
 }
 
+void TimeSeriesItem::setHistory(double seconds)
+{
+    seconds = std::max(0.0, seconds);
+    if (seconds == m_history)
+        return;
+    m_history = seconds;
+    emit pointsChanged();
+}
+
 int TimeSeriesItem::pointCount() const
 {
     size_t n = 0;
@@ -99,7 +108,10 @@ void TimeSeriesItem::append(int series, double time, double value)
     Series &s = m_series[static_cast<size_t>(series)];
     if (s.size() > 0 && time < s.time(s.size() - 1))
         return;
-    if (s.size() < static_cast<size_t>(m_capacity)) {
+    // Full at `capacity`, or once the oldest point is older than `history`:
+    // from then on each point takes the oldest one's place.
+    const bool full = s.size() >= static_cast<size_t>(m_capacity) || (m_history > 0 && s.size() > 0 && time - s.time(0) > m_history);
+    if (!full) {
         s.t.push_back(time);
         s.v.push_back(value);
     } else {

@@ -35,6 +35,9 @@ class TimeSeriesItem : public QQuickItem
     Q_PROPERTY(double tickSpacing READ tickSpacing WRITE setTickSpacing NOTIFY axesChanged)
     Q_PROPERTY(int pointCount READ pointCount NOTIFY pointsChanged)
     Q_PROPERTY(int capacity READ capacity WRITE setCapacity NOTIFY pointsChanged) // points kept per series
+    // Seconds of live points kept per series (0: as many as `capacity`): a
+    // console that runs for days keeps a bounded look back, not every point.
+    Q_PROPERTY(double history READ history WRITE setHistory NOTIFY pointsChanged)
 
 public:
     explicit TimeSeriesItem(QQuickItem *parent = nullptr);
@@ -68,6 +71,8 @@ public:
     int pointCount() const;
     int capacity() const { return m_capacity; }
     void setCapacity(int points);
+    double history() const { return m_history; }
+    void setHistory(double seconds);
 
     // Adds a point; times must not go backwards within a series (an older
     // point is dropped). Non-finite values are gaps in the data, not drawn.
@@ -123,4 +128,5 @@ private:
     QList<int> m_axisOf;
     double m_tickSpacing = 40;
     int m_capacity = 1'000'000;
+    double m_history = 0;
 };

@@ -126,6 +126,18 @@ TestCase {
         s.clear()
     }
 
+    // A live plot keeps an hour of points however long the console runs
+    // (it kept a million a series: days of a console's memory).
+    function test_3b_anHourIsKeptNotEveryPoint() {
+        const s = plot.series
+        s.clear()
+        compare(plot.history, 3600)
+        for (let i = 0; i < 2 * 3600 * 10; ++i) // two hours at 10 Hz
+            s.append(0, 1000 + i * 0.1, i % 100)
+        verify(s.pointCount >= 36000 && s.pointCount <= 36002, s.pointCount)
+        s.clear()
+    }
+
     function test_4_staleGreys() {
         Fixtures.ingest("EstimatedState", 71, { depth: 5, alt: 2 })
         Fixtures.treeModel.sync()

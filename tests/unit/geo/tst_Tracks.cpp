@@ -125,7 +125,7 @@ TEST_F(TrackRecording, ATrackKeepsItsPointsWhenTheSystemIsNamedLater)
     model.sync();
     ASSERT_EQ(tracks.systems(), QStringList{QStringLiteral("0x001f")});
     tree.setSystemName(0x1f, QStringLiteral("lauv"));
-    tree.ingest(state(0x1f, 41.18, -8.70, 5, 0, 0));
+    tree.ingest(state(0x1f, 41.18, -8.70, 10, 0, 0));
     model.sync();
     EXPECT_EQ(tracks.systems(), QStringList{QStringLiteral("lauv")});
     EXPECT_EQ(tracks.count(QStringLiteral("lauv")), 2);
@@ -138,18 +138,62 @@ TEST_F(TrackRecording, InvalidPositionsAreNotDrawnAnywhere)
     EXPECT_EQ(tracks.count(QStringLiteral("0x001f")), 0);
 }
 
-TEST_F(TrackRecording, AFullTrackForgetsItsOldestTenth)
+// A full trail thins its older half to every other fix: the whole of it is
+// still drawn (the past coarser), and it never holds more than its capacity.
+TEST_F(TrackRecording, AFullTrackThinsItsOlderHalf)
 {
     tracks.setCapacity(100);
-    for (int i = 0; i < 150; ++i)
-        tracks.append(QStringLiteral("sim"), Tracks::Fix{double(i), radians(41) + i * 1e-5, radians(-8), 0, 0, 0, 0, 0});
+    for (int i = 0; i < 150; ++i) // 11 m apart: every one kept
+        tracks.append(QStringLiteral("sim"), Tracks::Fix{double(i), radians(41 + i * 1e-4), radians(-8), 0, 0, 0, 0, 0});
     const auto *t = tracks.track(QStringLiteral("sim"));
     ASSERT_TRUE(t);
     EXPECT_LE(t->fixes.size(), 100u);
     EXPECT_EQ(t->fixes.size() + t->dropped, 150u);
+    EXPECT_EQ(t->fixes.front().time, 0) << "where it began is still drawn";
+    EXPECT_GT(t->fixes[1].time, 1) << "the older part thinned";
+    EXPECT_EQ(t->fixes[t->fixes.size() - 2].time, 148) << "the newer part whole";
     EXPECT_EQ(t->fixes.back().time, 149);
     tracks.clear(QStringLiteral("sim"));
     EXPECT_EQ(tracks.count(QStringLiteral("sim")), 0);
+}
+
+// Memory over hours: a trail keeps a fix every few metres along a straight
+// leg and enough of a turn to keep its shape within 0.2 m, not every fix
+// (10 a second, each 0.15 m on: most of a console's growth over hours).
+TEST_F(TrackRecording, StraightLegsCostFewFixesAndTurnsKeepTheirShape)
+{
+    const double metre = 1.0 / 6'371'000; // rad of latitude
+    for (int i = 0; i <= 1000; ++i) // 150 m north, a fix each 0.15 m
+        tracks.append(QStringLiteral("leg"), Tracks::Fix{1000 + i * 0.1, radians(41) + i * 0.15 * metre, radians(-8), 0, 0, 0, 0, 0});
+    const auto *leg = tracks.track(QStringLiteral("leg"));
+    EXPECT_LE(leg->fixes.size(), 32u) << "one each 5 m";
+    EXPECT_GE(leg->fixes.size(), 29u);
+
+    // A 20 m circle: every fix of it within 0.2 m of the trail kept.
+    std::vector<Eigen::Vector2d> all;
+    for (int i = 0; i <= 838; ++i) { // 0.15 m steps round the circle
+        const double a = i * 0.15 / 20;
+        all.emplace_back(20 * std::cos(a), 20 * std::sin(a));
+        tracks.append(QStringLiteral("circle"), Tracks::Fix{1000 + i * 0.1, radians(41) + all.back().x() * metre,
+                                                            radians(-8) + all.back().y() * metre / std::cos(radians(41)), 0, 0, 0, 0, 0});
+    }
+    const auto *circle = tracks.track(QStringLiteral("circle"));
+    EXPECT_LT(circle->fixes.size(), 120u) << "not 839 fixes";
+    std::vector<Eigen::Vector2d> kept; // the trail, then the vehicle where it is now (the map draws it there)
+    for (const auto &f : circle->fixes)
+        kept.emplace_back((f.lat - radians(41)) / metre, (f.lon - radians(-8)) * std::cos(radians(41)) / metre);
+    kept.emplace_back((circle->latest.lat - radians(41)) / metre, (circle->latest.lon - radians(-8)) * std::cos(radians(41)) / metre);
+    double worst = 0;
+    for (const Eigen::Vector2d &p : all) {
+        double nearest = 1e9;
+        for (std::size_t k = 0; k + 1 < kept.size(); ++k) {
+            const Eigen::Vector2d d = kept[k + 1] - kept[k];
+            const double along = std::clamp((p - kept[k]).dot(d) / std::max(1e-12, d.squaredNorm()), 0.0, 1.0);
+            nearest = std::min(nearest, (p - kept[k] - along * d).norm());
+        }
+        worst = std::max(worst, nearest);
+    }
+    EXPECT_LT(worst, 0.21) << "the circle's shape kept";
 }
 
 TEST_F(TrackRecording, HomeIsSetAndBadHomesAreRefused)

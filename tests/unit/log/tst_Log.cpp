@@ -108,6 +108,9 @@ TEST(Log, WhatIsRecordedReadsBackByteForByteWithItsDefinitionsAndIndex)
     EXPECT_TRUE(part.exists(QStringLiteral("IMC.xml")));
     EXPECT_TRUE(part.exists(QStringLiteral("Meta.json")));
     EXPECT_TRUE(part.exists(QStringLiteral("Data.lsf.index")));
+    // The index was written as the packets were (the recorder holds none in memory), and put in place at the end.
+    EXPECT_FALSE(part.exists(QStringLiteral("Data.lsf.index.partial")));
+    EXPECT_FALSE(part.exists(QStringLiteral("Data.lsf.times.partial")));
     EXPECT_TRUE(part.exists(QStringLiteral("IMC-extra-motor.xml")));
 
     auto log = openLog(part.path());

@@ -5,6 +5,7 @@
 #include "plans/PlanDesk.h"
 #include "plans/Supervisor.h"
 
+#include "mission/ImcPlan.h"
 #include "mission/MissionXml.h"
 #include "sim/SimulatedVehicle.h"
 
@@ -226,6 +227,32 @@ TEST_F(Desk, StopIsAnInfoAbortAWarningWithTheVehiclesReason)
     const QStringList log = desk.log(u"lauv-sim-1"_s);
     EXPECT_EQ(log.filter(u"survey failed"_s).size(), 1) << log.join(u'\n').toStdString();
     EXPECT_EQ(log.filter(u"survey stopped"_s).size(), 1) << log.join(u'\n').toStdString();
+}
+
+// A console started (or restarted) while a vehicle runs a plan another
+// console started: it shows the plan from the vehicle's first report, draws
+// it (asking the vehicle for a plan the mission lacks), and reports its end.
+TEST_F(Desk, AConsoleThatJoinsMidPlanShowsThePlanAndItsEnd)
+{
+    const auto spec = mission::planSpecification(desk.mission().plans[0], *schema);
+    ASSERT_TRUE(spec);
+    msg::Message start(schema->byAbbrev(u"PlanControl"));
+    start.setInteger(start.def()->indexOf(u"type"), 0); // REQUEST
+    start.setInteger(start.def()->indexOf(u"op"), 0);   // START
+    start.setInteger(start.def()->indexOf(u"request_id"), 77);
+    start.setBytes(start.def()->indexOf(u"plan_id"), "elsewhere");
+    msg::Message other = *spec;
+    other.setBytes(other.def()->indexOf(u"plan_id"), "elsewhere");
+    start.setInlineMessage(start.def()->indexOf(u"arg"), other);
+    start.header.src = 0x4002; // another console
+    start.header.dst = 0x1f;
+    vehicle.answer(start, t); // its replies go to the other console; this one hears the vehicle's state
+    run(2);
+    EXPECT_EQ(lastLog(), u"elsewhere is running, at go (it started before this console heard lauv-sim-1)"_s);
+    EXPECT_FALSE(desk.plan(u"lauv-sim-1"_s, u"elsewhere"_s)) << "not in the mission: asked of the vehicle, not known yet";
+    run(400);
+    EXPECT_EQ(lastLog(), u"elsewhere completed"_s);
+    EXPECT_EQ(graph.message(graph.find(u"systems/lauv-sim-1/plan"_s)), u"plan elsewhere completed"_s);
 }
 
 // What the plan editor marks as an error never reaches a vehicle: a
