@@ -202,8 +202,9 @@ void SimNode::tick()
             if (m_clock.elapsed() - it.value() < 5000)
                 m_socket.writeDatagram(m_buffer, QHostAddress(it.key().first), it.key().second);
         }
+        // DUNE's UDP transport does not carry Announce (etc/common/transports.ini): only its discovery does.
         for (const Peer &peer : std::as_const(m_peers)) {
-            if (peer.active)
+            if (peer.active && m.abbrev() != u"Announce")
                 m_socket.writeDatagram(m_buffer, peer.address, peer.port);
         }
         if (m.abbrev() == u"Announce") {

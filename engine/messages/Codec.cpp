@@ -1,5 +1,6 @@
 #include "messages/Codec.h"
 
+#include "messages/CodecAccess.h"
 #include "messages/Crc16.h"
 
 #include <QtEndian>
@@ -7,18 +8,6 @@
 #include <cstring>
 
 namespace neptus::msg {
-
-// The codec reads and writes a Message's storage directly: no per-field
-// lookups on the hot path.
-struct CodecAccess
-{
-    static quint64 *scalars(Message &m) { return m.m_slots.data(); }
-    static const quint64 *scalars(const Message &m) { return m.m_slots.data(); }
-    static std::vector<QByteArray> &byteStrings(Message &m) { return m.m_byteStrings; }
-    static const std::vector<QByteArray> &byteStrings(const Message &m) { return m.m_byteStrings; }
-    static std::vector<std::vector<Message>> &lists(Message &m) { return m.m_lists; }
-    static const std::vector<std::vector<Message>> &lists(const Message &m) { return m.m_lists; }
-};
 
 QString CodecError::kindName(Kind kind)
 {
@@ -33,6 +22,7 @@ QString CodecError::kindName(Kind kind)
     case Kind::TooDeep: return QStringLiteral("nested too deep");
     case Kind::ListTooLong: return QStringLiteral("list too long");
     case Kind::TooLarge: return QStringLiteral("too large");
+    case Kind::Unsupported: return QStringLiteral("unsupported");
     }
     return {};
 }
@@ -143,6 +133,7 @@ public:
             case FieldType::Int32: value = static_cast<quint64>(static_cast<qint64>(load<qint32>())); break;
             case FieldType::UInt32: value = load<quint32>(); break;
             case FieldType::Int64: value = static_cast<quint64>(load<qint64>()); break;
+            case FieldType::UInt64: value = load<quint64>(); break;
             case FieldType::Fp32: value = load<quint32>(); break;
             case FieldType::Fp64: value = load<quint64>(); break;
             default:
@@ -401,6 +392,7 @@ uchar *putFields(uchar *p, const Message &message)
         case FieldType::UInt32:
         case FieldType::Fp32: p = put<Swap>(p, static_cast<quint32>(scalars[wire.storage])); break;
         case FieldType::Int64:
+        case FieldType::UInt64:
         case FieldType::Fp64: p = put<Swap>(p, scalars[wire.storage]); break;
         case FieldType::RawData:
         case FieldType::PlainText: {

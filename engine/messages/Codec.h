@@ -26,6 +26,7 @@ struct CodecError
         TooDeep,            // nesting deeper than the codec's limit
         ListTooLong,        // message-list count that cannot fit in the bytes left
         TooLarge,           // (encoding) payload, text or list over 65535
+        Unsupported,        // a frame or message the protocol's rules exclude (MAVLink: unknown incompatibility flags)
     };
 
     Kind kind;

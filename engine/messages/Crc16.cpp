@@ -203,4 +203,15 @@ quint16 crc16Portable(QByteArrayView data, quint16 crc)
     return crcTables(reinterpret_cast<const unsigned char *>(data.data()), data.size(), crc);
 }
 
+quint16 crcMcrf4xx(QByteArrayView data, quint16 crc)
+{
+    // MAVLink's own formulation (mavlink_crc_accumulate), a byte at a time: payloads are short.
+    for (const char c : data) {
+        quint8 tmp = quint8(c) ^ quint8(crc & 0xFF);
+        tmp ^= quint8(tmp << 4);
+        crc = quint16((crc >> 8) ^ (quint16(tmp) << 8) ^ (quint16(tmp) << 3) ^ (tmp >> 4));
+    }
+    return crc;
+}
+
 } // namespace neptus::msg

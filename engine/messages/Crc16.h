@@ -13,4 +13,8 @@ quint16 crc16(QByteArrayView data, quint16 crc = 0);
 // The table path alone, whatever the CPU: the reference the fast path is tested against.
 quint16 crc16Portable(QByteArrayView data, quint16 crc = 0);
 
+// CRC-16/MCRF4XX (X.25's accumulation: reflected 0x8408, initial 0xFFFF, no
+// final xor), MAVLink's checksum; chain calls by passing the last result.
+quint16 crcMcrf4xx(QByteArrayView data, quint16 crc = 0xFFFF);
+
 } // namespace neptus::msg

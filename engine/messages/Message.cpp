@@ -68,6 +68,7 @@ double Message::number(int index) const
     switch (f.type) {
     case FieldType::Fp32: return std::bit_cast<float>(static_cast<quint32>(rawSlot(index)));
     case FieldType::Fp64: return std::bit_cast<double>(rawSlot(index));
+    case FieldType::UInt64:
     case FieldType::UInt32:
     case FieldType::UInt16:
     case FieldType::UInt8: return static_cast<double>(rawSlot(index));
@@ -107,6 +108,7 @@ QVariant Message::value(int index) const
     switch (f.type) {
     case FieldType::Fp32:
     case FieldType::Fp64: return number(index);
+    case FieldType::UInt64:
     case FieldType::UInt32:
     case FieldType::UInt16:
     case FieldType::UInt8: return static_cast<quint64>(rawSlot(index));

@@ -2,6 +2,7 @@
 
 #include <QCryptographicHash>
 #include <QDir>
+#include <QFileInfo>
 #include <QRegularExpression>
 
 #include <algorithm>
@@ -25,7 +26,7 @@ constexpr TypeInfo typeTable[] = {
     {FieldType::Int8, "int8_t", 1},        {FieldType::UInt8, "uint8_t", 1},
     {FieldType::Int16, "int16_t", 2},      {FieldType::UInt16, "uint16_t", 2},
     {FieldType::Int32, "int32_t", 4},      {FieldType::UInt32, "uint32_t", 4},
-    {FieldType::Int64, "int64_t", 8},      {FieldType::Fp32, "fp32_t", 4},
+    {FieldType::Int64, "int64_t", 8},      {FieldType::UInt64, "uint64_t", 8}, {FieldType::Fp32, "fp32_t", 4},
     {FieldType::Fp64, "fp64_t", 8},        {FieldType::RawData, "rawdata", 0},
     {FieldType::PlainText, "plaintext", 0}, {FieldType::Message, "message", 0},
     {FieldType::MessageList, "message-list", 0},
@@ -90,7 +91,7 @@ int wireSize(FieldType type)
 
 bool isInteger(FieldType type)
 {
-    return type <= FieldType::Int64;
+    return type <= FieldType::UInt64;
 }
 
 bool isFloat(FieldType type)
@@ -459,7 +460,7 @@ std::expected<void, XmlError> Schema::Loader::readField(const XmlDocument &doc, 
     const auto parsed = typeFromName(type);
     if (!parsed)
         return fail(QStringLiteral("unknown type '%1' (known: int8_t, uint8_t, int16_t, uint16_t, int32_t, uint32_t, "
-                                   "int64_t, fp32_t, fp64_t, rawdata, plaintext, message, message-list)").arg(type));
+                                   "int64_t, uint64_t, fp32_t, fp64_t, rawdata, plaintext, message, message-list)").arg(type));
     field.type = *parsed;
     if (!field.messageType.isEmpty() && field.type != FieldType::Message && field.type != FieldType::MessageList)
         return fail(QStringLiteral("message-type is only for message and message-list fields"));
@@ -588,7 +589,12 @@ std::expected<std::shared_ptr<const Schema>, XmlError> Schema::load(const QStrin
 {
     if (files.isEmpty())
         return std::unexpected(XmlError{{}, 0, 0, QStringLiteral("no message definition files given")});
-    return build(files.size(), [&](qsizetype i) { return XmlDocument::load(files[i]); });
+    auto first = XmlDocument::load(files.front());
+    if (!first)
+        return std::unexpected(first.error());
+    if (xml::elementName(first->root()) == u"mavlink") // includes are read from beside the file that names them
+        return buildMavlink(files, [](const QString &path) { return XmlDocument::load(path); });
+    return build(files.size(), [&](qsizetype i) { return i == 0 ? std::move(first) : XmlDocument::load(files[i]); });
 }
 
 QStringList Schema::filesIn(const QString &directory)
@@ -603,6 +609,15 @@ QStringList Schema::filesIn(const QString &directory)
 std::expected<std::shared_ptr<const Schema>, XmlError>
 Schema::fromData(const QList<std::pair<QString, QByteArray>> &documents)
 {
+    if (!documents.isEmpty() && QByteArrayView(documents.front().second).contains("<mavlink>")) {
+        // Includes are found among the documents, by file name.
+        return buildMavlink({documents.front().first}, [documents](const QString &name) -> std::expected<XmlDocument, XmlError> {
+            for (const auto &[file, data] : documents)
+                if (file == name || QFileInfo(file).fileName() == QFileInfo(name).fileName())
+                    return XmlDocument::parse(data, file);
+            return std::unexpected(XmlError{name, 0, 0, QStringLiteral("%1: no such document given").arg(name)});
+        });
+    }
     return build(documents.size(),
                  [&](qsizetype i) { return XmlDocument::parse(documents[i].second, documents[i].first); });
 }

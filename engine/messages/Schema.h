@@ -10,15 +10,17 @@
 #include <QStringList>
 
 #include <expected>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <vector>
 
 namespace neptus::msg {
 
-// Wire types of the IMC definition format.
+// Wire types of a field. IMC's names them int8_t … fp64_t, rawdata,
+// plaintext, message, message-list; MAVLink's uint64_t is IMC's missing one.
 enum class FieldType : quint8 {
-    Int8, UInt8, Int16, UInt16, Int32, UInt32, Int64, Fp32, Fp64,
+    Int8, UInt8, Int16, UInt16, Int32, UInt32, Int64, UInt64, Fp32, Fp64,
     RawData, PlainText, Message, MessageList,
 };
 
@@ -73,6 +75,11 @@ struct FieldDef
     // The ids `messageType` allows; empty means any message.
     QSet<quint16> allowedIds;
     int line = 0;
+    // MAVLink: a char[N] (plaintext) or uint8_t[N] (rawdata) field takes N
+    // bytes on the wire whatever its value (0: IMC's length-prefixed ones).
+    // A numeric array (float q[4]) is a field per element, "q[0]" … "q[3]".
+    int fixedLength = 0;
+    bool extension = false; // MAVLink 2 extension field (after <extensions/>)
 
     // Where the value lives inside a Message: the slot for scalars, or the
     // index into its byte strings or message lists.
@@ -104,6 +111,22 @@ struct MessageDef
     int messageListCount = 0;  // message and message-list fields
     int fixedPayloadSize = 0;  // bytes of the fixed-size fields
 
+    // MAVLink: the fields in wire order (by element size, largest first, then
+    // the extensions as declared), each with its byte offset in the payload;
+    // the payload's length without and with the extensions; CRC_EXTRA.
+    struct MavlinkField
+    {
+        FieldType type;
+        quint8 size;     // bytes of the element (a fixed-length string's whole length)
+        quint16 storage;
+        quint16 offset;
+        quint16 field;   // index into `fields`
+    };
+    std::vector<MavlinkField> mavlinkWire;
+    int mavlinkBaseLength = 0;
+    int mavlinkLength = 0;
+    quint8 crcExtra = 0;
+
     QHash<QString, int> fieldIndex; // abbrev → index, made while loading
     int indexOf(QStringView fieldAbbrev) const;
     const FieldDef *field(QStringView fieldAbbrev) const;
@@ -116,14 +139,21 @@ struct MessageGroup
     QStringList members; // message abbrevs
 };
 
-// Message definitions loaded at run time from one or more files in the IMC
-// XML format (`<messages>` with `<enumerations>`, `<bitfields>`,
-// `<message-groups>`, `<header>`, `<footer>` and `<message>` elements).
+// Message definitions loaded at run time: one "messages defined in XML"
+// model, filled from either protocol's format —
+//  - IMC: one or more files of `<messages>` with `<enumerations>`,
+//    `<bitfields>`, `<message-groups>`, `<header>`, `<footer>` and `<message>`;
+//  - MAVLink: a dialect file (`<mavlink>` with `<include>`, `<enums>`,
+//    `<messages>`), its includes read from beside it (common.xml includes
+//    standard.xml, which includes minimal.xml), enums extended across files
+//    as MAVLink allows; each message's wire order, payload lengths and
+//    CRC_EXTRA worked out from the definition as MAVLink's rules say.
 // Immutable once loaded; share it with std::shared_ptr<const Schema>.
 class Schema
 {
 public:
     static constexpr quint16 noMessage = 0xFFFF;
+    enum class Protocol { Imc, Mavlink };
 
     // Loads and combines the files in order. Any problem is an error naming
     // the file and line: unknown types, dangling references, duplicate ids or
@@ -149,6 +179,7 @@ public:
     const MessageGroup *group(QStringView abbrev) const;
     int fieldCount() const;
 
+    Protocol protocol() const { return m_protocol; }
     // The packet's synchronisation number (0xFE54 for IMC 5).
     quint16 syncNumber() const { return m_sync; }
     QString name() const { return m_name; }
@@ -165,6 +196,12 @@ public:
 private:
     class Loader;
     friend class Loader;
+    class MavlinkLoader;
+    friend class MavlinkLoader;
+    // MAVLink: the dialect files (and what they include), read with `read`
+    // (a path or a name → the document).
+    using ReadByName = std::function<std::expected<xml::XmlDocument, xml::XmlError>(const QString &)>;
+    static std::expected<std::shared_ptr<const Schema>, xml::XmlError> buildMavlink(const QStringList &names, ReadByName read);
     template<typename ReadDocument>
     static std::expected<std::shared_ptr<const Schema>, xml::XmlError> build(qsizetype count, ReadDocument read);
 
@@ -174,6 +211,7 @@ private:
     std::vector<std::unique_ptr<Enumeration>> m_enumerations;
     std::vector<std::unique_ptr<Enumeration>> m_bitfields;
     std::vector<MessageGroup> m_groups;
+    Protocol m_protocol = Protocol::Imc;
     quint16 m_sync = 0xFE54;
     QString m_name;
     QString m_version;
