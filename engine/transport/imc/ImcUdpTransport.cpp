@@ -30,8 +30,6 @@ namespace {
 // IMC's discovery multicast group (DUNE and the Java Neptus use it).
 const QHostAddress discoveryGroup(QStringLiteral("224.0.75.69"));
 
-// Datagrams taken in one go: a flood must not keep the event loop in here.
-constexpr int datagramsPerDrain = 256;
 // Hosts remembered per system (an attacker can forge many source addresses).
 constexpr int sendersPerSystem = 16;
 
@@ -70,16 +68,7 @@ ImcUdpTransport::ImcUdpTransport(std::shared_ptr<const msg::Schema> schema, ImcU
 
 ImcUdpTransport::~ImcUdpTransport()
 {
-    // The decoder stops first (it takes from the reader), then reading, before the sockets close.
-    if (m_decoder.joinable()) {
-        {
-            std::lock_guard lock(m_wakeMutex);
-            m_stopping = true;
-        }
-        m_wake.notify_one();
-        m_decoder.join();
-    }
-    m_reader.reset();
+    m_pump.reset(); // stops taking and reading before the sockets close
     for (const int fd : {m_fd, m_discoveryFd}) {
         if (fd >= 0)
             ::close(fd);
@@ -108,14 +97,9 @@ std::expected<void, QString> ImcUdpTransport::start()
         return std::unexpected(QStringLiteral("IMC/UDP: cannot keep the socket: %1").arg(qt_error_string(errno)));
     DatagramReader::Limits limits;
     limits.datagramsPerSecond = m_config.maxDatagramsPerSecond;
-    m_reader = std::make_unique<DatagramReader>(fds, limits, [this] {
-        {
-            std::lock_guard lock(m_wakeMutex);
-            m_woken = true;
-        }
-        m_wake.notify_one();
-    });
-    m_decoder = std::thread([this] { decodeLoop(); });
+    m_pump = std::make_unique<DatagramPump>(
+        fds, limits, [this](const DatagramReader::Datagram &d) { process(d.bytes, d.from, d.port, d.host); },
+        [this](const QHash<QString, int> &overRate, const QHash<QString, int> &behind) { dropped(overRate, behind); });
     m_timer.start();
     heartbeat();
     return {};
@@ -196,48 +180,22 @@ void ImcUdpTransport::emitAll(Later &later)
     later.clear();
 }
 
-void ImcUdpTransport::decodeLoop()
+void ImcUdpTransport::dropped(const QHash<QString, int> &overRate, const QHash<QString, int> &behind)
 {
-    for (;;) {
-        {
-            std::unique_lock lock(m_wakeMutex);
-            m_wake.wait(lock, [this] { return m_woken || m_stopping; });
-            if (m_stopping)
-                return;
-            m_woken = false;
-        }
-        drain();
-    }
-}
-
-void ImcUdpTransport::drain()
-{
-    for (;;) {
-        DatagramReader::Batch batch = m_reader->take(datagramsPerDrain);
-        if (!batch.dropped.isEmpty() || !batch.behind.isEmpty()) {
-            Later later;
-            {
-                std::lock_guard lock(m_mutex);
-                const qint64 now = nowMs();
-                for (const auto *counts : {&batch.dropped, &batch.behind}) {
-                    for (auto it = counts->cbegin(); it != counts->cend(); ++it) {
-                        Budget &budget = m_budgets[it.key()];
-                        rollBudgetLocked(it.key(), budget, now, later);
-                        (counts == &batch.dropped ? budget.dropped : budget.behind) += it.value();
-                        m_dropped += quint64(it.value());
-                    }
-                }
+    Later later;
+    {
+        std::lock_guard lock(m_mutex);
+        const qint64 now = nowMs();
+        for (const auto *counts : {&overRate, &behind}) {
+            for (auto it = counts->cbegin(); it != counts->cend(); ++it) {
+                Budget &budget = m_budgets[it.key()];
+                rollBudgetLocked(it.key(), budget, now, later);
+                (counts == &overRate ? budget.dropped : budget.behind) += it.value();
+                m_dropped += quint64(it.value());
             }
-            emitAll(later);
         }
-        for (const DatagramReader::Datagram &datagram : batch.datagrams)
-            process(datagram.bytes, datagram.from, datagram.port, datagram.host);
-        if (!batch.more)
-            return;
-        std::lock_guard lock(m_wakeMutex);
-        if (m_stopping)
-            return;
     }
+    emitAll(later);
 }
 
 void ImcUdpTransport::receive(QByteArrayView datagram, const QHostAddress &from, quint16 fromPort)

@@ -3,7 +3,7 @@
 #include "core/Clock.h"
 #include "messages/SchemaSet.h"
 #include "transport/OutputSink.h"
-#include "transport/imc/DatagramReader.h"
+#include "transport/DatagramPump.h"
 
 #include <QHash>
 #include <QHostAddress>
@@ -13,13 +13,11 @@
 #include <QUdpSocket>
 
 #include <atomic>
-#include <condition_variable>
 #include <expected>
 #include <functional>
 #include <memory>
 #include <mutex>
 #include <optional>
-#include <thread>
 
 namespace neptus::transport {
 
@@ -82,13 +80,12 @@ struct ImcUdpConfig
 // kept, and each host may deliver at most maxDatagramsPerSecond (0: no limit,
 // for replaying logs); the excess is dropped before it is decoded.
 //
-// The sockets are read on a thread of their own (DatagramReader), which
-// keeps a bounded queue per sending host; a second thread of the transport's
-// takes datagrams from the queues one host at a time in turn, decodes them
-// and hands them on (`received`, the packet tap): a flooding host delays
-// and drops only its own datagrams, and a busy GUI thread none at all — a
-// receiver connected directly gets them on that thread (the console's
-// session is thread-safe), others through their event loop. What is known
+// The sockets are read and the datagrams decoded off the GUI thread
+// (DatagramPump: a bounded queue per sending host, taken in turns) and
+// handed on (`received`, the packet tap): a flooding host delays and drops
+// only its own datagrams, and a busy GUI thread none at all — a receiver
+// connected directly gets them on the pump's thread (the console's session
+// is thread-safe), others through their event loop. What is known
 // of peers is guarded for both threads; signals other than `received` are
 // emitted with nothing locked, from whichever thread found the change.
 //
@@ -225,9 +222,8 @@ private:
     // Our Announce to the discovery ports of `host`, a Heartbeat to `target` now and again shortly.
     void greetLocked(quint16 system, const QHostAddress &host, const Endpoint &target);
 
-    // The decoding thread: takes what the reader queued (already within budget), in turns.
-    void decodeLoop();
-    void drain();
+    // The pump's: datagrams dropped unread (over a host's rate, or its queue full).
+    void dropped(const QHash<QString, int> &overRate, const QHash<QString, int> &behind);
     // A datagram within its host's budget, from `host` (DatagramReader::hostName(from)), on any thread.
     void process(QByteArrayView datagram, const QHostAddress &from, quint16 fromPort, const QString &host);
     double now() const { return m_config.clock->now().toMSecsSinceEpoch() / 1000.0; }
@@ -253,11 +249,7 @@ private:
     std::atomic<quint64> m_dropped = 0;
     std::atomic<quint64> m_processed = 0;
     QByteArray m_buffer;
-    std::unique_ptr<DatagramReader> m_reader; // stops after the decoder, before the rest goes
-    std::mutex m_wakeMutex;
-    std::condition_variable m_wake;
-    bool m_woken = false, m_stopping = false;
-    std::thread m_decoder;
+    std::unique_ptr<DatagramPump> m_pump; // stops before the rest goes
 };
 
 } // namespace neptus::transport

@@ -1,6 +1,6 @@
 // DatagramReader: the IMC socket's own reading thread, its queue per host,
 // the turns hosts take and what each loses on its own. Loopback only.
-#include "transport/imc/DatagramReader.h"
+#include "transport/DatagramReader.h"
 
 #include <QThread>
 #include <QUdpSocket>

@@ -1,4 +1,4 @@
-#include "transport/imc/DatagramReader.h"
+#include "transport/DatagramReader.h"
 
 #include "core/Clock.h"
 
