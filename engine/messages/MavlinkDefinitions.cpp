@@ -176,6 +176,7 @@ std::expected<void, XmlError> Schema::MavlinkLoader::readEnum(const XmlDocument 
 std::expected<void, XmlError> Schema::MavlinkLoader::readMessage(const XmlDocument &doc, const xmlNode *element)
 {
     auto message = std::make_unique<MessageDef>();
+    message->mavlink = true;
     bool ok = false;
     const qint64 id = xml::attribute(element, "id").toLongLong(&ok);
     message->abbrev = message->name = xml::attribute(element, "name");

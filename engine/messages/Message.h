@@ -43,6 +43,7 @@ public:
     quint16 id() const { return m_def ? m_def->id : m_opaqueId; }
     QString abbrev() const;
     bool isOpaque() const { return !m_def; }
+    bool isMavlink() const { return m_def && m_def->mavlink; }
     const QByteArray &opaquePayload() const { return m_opaque; }
     int fieldCount() const { return m_def ? static_cast<int>(m_def->fields.size()) : 0; }
     const FieldDef &field(int index) const { return m_def->fields[static_cast<size_t>(index)]; }

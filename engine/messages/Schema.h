@@ -98,6 +98,9 @@ struct WireField
 struct MessageDef
 {
     quint16 id = 0;
+    // A MAVLink message: its id is MAVLink's (HEARTBEAT 0, SYS_STATUS 1), not
+    // IMC's, so a system that is both (a MAVLink vehicle in IMC words) keeps them apart.
+    bool mavlink = false;
     QString name;
     QString abbrev;
     QString category;

@@ -1,6 +1,8 @@
 #include "session/Console.h"
 #include "session/OperationsFeed.h"
 
+#include "core/DataFiles.h"
+
 namespace neptus::session {
 
 namespace {
@@ -36,6 +38,7 @@ Console::~Console()
     // The links stop first: nothing may arrive while the rest goes.
     m_dds.reset();
     m_imc.reset();
+    m_mavlink.clear();
 }
 
 scripting::ScriptHost *Console::scripts()
@@ -91,22 +94,106 @@ transport::ImcUdpTransport *Console::attachImc(std::unique_ptr<transport::ImcUdp
                 sources.ignoredMs = m_clock->now().toMSecsSinceEpoch();
                 updateSourcesAlarm(system);
             });
-    // Said as it is: a host that sends too much, or this console falling behind (not the vehicle's doing).
     connect(imc.get(), &transport::ImcUdpTransport::overloaded, this,
             [this, maximum = imc->maxDatagramsPerSecond()](const QString &host, int overRate, int behind) {
-                const auto node = m_graph.ensure(QStringLiteral("links/%1").arg(host));
-                QStringList why;
-                if (overRate > 0)
-                    why << tr("input overload: %1 sent over %2 datagrams a second; %3 dropped unread")
-                               .arg(host).arg(maximum).arg(overRate);
-                if (behind > 0)
-                    why << tr("this console fell behind what %1 sends: %2 datagrams dropped unread")
-                               .arg(host).arg(behind);
-                m_graph.raise(node, why.isEmpty() ? alarms::Normal : alarms::Warning, why.join(QStringLiteral("; ")));
+                overloaded(host, overRate, behind, maximum);
             });
     m_imc = std::move(imc);
     addLink(link, m_imc.get());
     return m_imc.get();
+}
+
+// Said as it is: a host that sends too much, or this console falling behind (not the vehicle's doing).
+void Console::overloaded(const QString &host, int overRate, int behind, int maximum)
+{
+    const auto node = m_graph.ensure(QStringLiteral("links/%1").arg(host));
+    QStringList why;
+    if (overRate > 0)
+        why << tr("input overload: %1 sent over %2 datagrams a second; %3 dropped unread").arg(host).arg(maximum).arg(overRate);
+    if (behind > 0)
+        why << tr("this console fell behind what %1 sends: %2 datagrams dropped unread").arg(host).arg(behind);
+    m_graph.raise(node, why.isEmpty() ? alarms::Normal : alarms::Warning, why.join(QStringLiteral("; ")));
+}
+
+std::shared_ptr<const msg::Schema> Console::mavlinkSchema()
+{
+    if (!m_mavlinkSchema) {
+        const QString file = m_mavlinkDialect.isEmpty() ? dataPath(QStringLiteral("msgdefs/mavlink")) + QStringLiteral("/ardupilotmega.xml")
+                                                        : m_mavlinkDialect;
+        if (auto loaded = msg::Schema::load({file}); loaded && (*loaded)->protocol() == msg::Schema::Protocol::Mavlink)
+            m_mavlinkSchema = *loaded;
+    }
+    return m_mavlinkSchema;
+}
+
+std::expected<void, QString> Console::setMavlinkDialect(const QString &file)
+{
+    auto loaded = msg::Schema::load({file});
+    if (!loaded)
+        return std::unexpected(tr("MAVLink dialect: %1").arg(loaded.error().toString()));
+    if ((*loaded)->protocol() != msg::Schema::Protocol::Mavlink)
+        return std::unexpected(tr("MAVLink dialect: %1 is not a MAVLink definition (<mavlink>)").arg(file));
+    m_mavlinkDialect = file;
+    m_mavlinkSchema = *loaded;
+    return {};
+}
+
+std::expected<void, QString> Console::startMavlink(transport::MavlinkConfig config)
+{
+    const auto schema = mavlinkSchema();
+    if (!schema)
+        return std::unexpected(tr("%1: the MAVLink dialects in %2 do not load").arg(config.linkName(), dataPath(QStringLiteral("msgdefs/mavlink"))));
+    config.clock = m_clock;
+    config.idBase = quint16(0xEA00 + 0x100 * m_mavlink.size());
+    auto link = std::make_unique<transport::MavlinkTransport>(schema, m_schema, config);
+    if (auto started = link->start(); !started)
+        return started;
+    attachMavlink(std::move(link));
+    return {};
+}
+
+transport::MavlinkTransport *Console::attachMavlink(std::unique_ptr<transport::MavlinkTransport> link)
+{
+    const QString name = link->linkName();
+    link->setPacketTap([this](QByteArrayView packet) { tap(packet); });
+    // Straight into the session from the link's reading thread, as IMC's.
+    connect(link.get(), &transport::MavlinkTransport::received, this,
+            [this, name](const msg::Message &m, qsizetype bytes) { ingest(m, name, bytes); }, Qt::DirectConnection);
+    connect(link.get(), &transport::MavlinkTransport::derived, this,
+            [this](const msg::Message &m) { ingestDerived(m); }, Qt::DirectConnection);
+    connect(link.get(), &transport::MavlinkTransport::decodeFailed, this,
+            [this, name](quint16 system, const QString &peer, const QString &reason) { decodeFailed(system, name, peer, reason); });
+    connect(link.get(), &transport::MavlinkTransport::sourcesChanged, this, &Console::sourcesChanged);
+    connect(link.get(), &transport::MavlinkTransport::refused, this,
+            [this](quint16 system, const QString &peer, const QString &reason) {
+                Sources &sources = m_sources[system];
+                sources.ignoredAnnounce = tr("frames from %1 refused: %2").arg(peer, reason);
+                sources.ignoredMs = m_clock->now().toMSecsSinceEpoch();
+                updateSourcesAlarm(system);
+            });
+    connect(link.get(), &transport::MavlinkTransport::statusText, this, &Console::statusText);
+    connect(link.get(), &transport::MavlinkTransport::overloaded, this,
+            [this](const QString &host, int overRate, int behind) { overloaded(host, overRate, behind, transport::MavlinkConfig{}.maxDatagramsPerSecond); });
+    m_mavlink.push_back(std::move(link));
+    addLink(name, m_mavlink.back().get());
+    return m_mavlink.back().get();
+}
+
+void Console::labelMission(quint16 system, const QString &planId, const QStringList &maneuverOfItem)
+{
+    for (const auto &link : m_mavlink)
+        link->setMission(system, planId, maneuverOfItem);
+}
+
+void Console::statusText(quint16 system, int severity, const QString &text)
+{
+    // MAV_SEVERITY: EMERGENCY 0, ALERT 1, CRITICAL 2 ("Arm: …", "PreArm: …"), ERROR 3, WARNING 4; NOTICE and below are only logged.
+    if (severity > 4)
+        return;
+    const alarms::Level level = severity <= 1 ? alarms::Error : alarms::Warning;
+    const auto node = m_graph.ensure(QStringLiteral("systems/%1/statustext").arg(m_tree.systemName(system)));
+    m_graph.raise(node, level, text);
+    m_statusTexts.insert(system, Said{level, m_clock->now().toMSecsSinceEpoch()});
 }
 
 std::expected<void, QString> Console::startDds(transport::DdsConfig config)
@@ -193,18 +280,43 @@ void Console::ingest(const msg::Message &message, const QString &link, qsizetype
     const quint16 source = message.header.src;
     if (!link.isEmpty())
         heardOn(source, link);
-    if (message.def() && message.def()->id == 151 && message.def()->abbrev == u"Announce")
+    take(message);
+    m_linkStatistics.received(source, link, message.id(), message.abbrev(), !message.isOpaque(), bytes, message.isMavlink());
+}
+
+void Console::ingestDerived(const msg::Message &message)
+{
+    take(message);
+}
+
+namespace {
+
+// What the plan desk follows: IMC's plan database and control, and a MAVLink
+// vehicle's mission protocol, command answers, words and heartbeat.
+bool forPlans(const msg::MessageDef &def)
+{
+    if (def.mavlink)
+        return def.abbrev.startsWith(u"MISSION_") || def.abbrev == u"COMMAND_ACK" || def.abbrev == u"STATUSTEXT"
+               || def.abbrev == u"HEARTBEAT";
+    return def.abbrev == u"PlanDB" || def.abbrev == u"PlanControl" || def.abbrev == u"PlanControlState";
+}
+
+} // namespace
+
+void Console::take(const msg::Message &message)
+{
+    const quint16 source = message.header.src;
+    const msg::MessageDef *def = message.def();
+    if (def && !def->mavlink && def->id == 151 && def->abbrev == u"Announce")
         m_schemas->learnName(source, message.text(u"sys_name"));
     m_tree.ingest(message);
     if (OperationsFeed *feed = m_feed.load(std::memory_order_relaxed))
         feed->observe(message, false);
     m_health.observe(message);
     m_naming.observe(message);
-    m_linkStatistics.received(source, link, message.id(), message.abbrev(), !message.isOpaque(), bytes);
-    if (const msg::MessageDef *def = message.def();
-        def && (def->abbrev == u"PlanDB" || def->abbrev == u"PlanControl" || def->abbrev == u"PlanControlState"))
+    if (def && forPlans(*def))
         emit planMessageReceived(message);
-    else if (def && def->abbrev == u"MissionChange")
+    else if (def && !def->mavlink && def->abbrev == u"MissionChange")
         emit sharedMissionReceived(message);
 }
 
@@ -287,11 +399,21 @@ void Console::forget(quint16 system)
     m_announcedVersions.remove(system);
     m_digestNotes.remove(system);
     m_sources.remove(system);
+    m_statusTexts.remove(system);
 }
 
 void Console::tick()
 {
     m_linkStatistics.tick();
+    const qint64 now = m_clock->now().toMSecsSinceEpoch();
+    for (auto it = m_statusTexts.begin(); it != m_statusTexts.end();) {
+        if (now - it->ms < 60000) {
+            ++it;
+            continue;
+        }
+        m_graph.clear(m_graph.ensure(QStringLiteral("systems/%1/statustext").arg(m_tree.systemName(it.key()))));
+        it = m_statusTexts.erase(it);
+    }
     updateLinkAlarms();
     for (const quint16 system : m_sources.keys()) {
         if (!m_sources.value(system).alarmText.isEmpty())

@@ -11,6 +11,7 @@
 #include "transport/LinkStatistics.h"
 #include "transport/dds/DdsTransport.h"
 #include "transport/imc/ImcUdpTransport.h"
+#include "transport/mavlink/MavlinkTransport.h"
 #include "tree/VariableTree.h"
 
 #include <QObject>
@@ -49,6 +50,11 @@ public:
     transport::LinkStatistics &linkStatistics() { return m_linkStatistics; }
     transport::ImcUdpTransport *imc() { return m_imc.get(); }
     transport::DdsTransport *dds() { return m_dds.get(); }
+    // The MAVLink links, in the order started.
+    const std::vector<std::unique_ptr<transport::MavlinkTransport>> &mavlinkLinks() const { return m_mavlink; }
+    // The MAVLink dialects (msgdefs/mavlink/ardupilotmega.xml and what it
+    // includes, or setMavlinkDialect's), loaded on first use; null if they do not load.
+    std::shared_ptr<const msg::Schema> mavlinkSchema();
     // Made on first use: a console that runs no alarm scripts (a headless
     // recorder, the receive-path fuzz target) starts no script engine.
     scripting::ScriptHost *scripts();
@@ -72,6 +78,17 @@ public:
     // and the console carries on without that link.
     std::expected<void, QString> startImc(transport::ImcUdpConfig config);
     std::expected<void, QString> startDds(transport::DdsConfig config);
+    // A MAVLink link (UDP, TCP or serial); each has 256 console ids of its
+    // own for the vehicles behind it (MavlinkConfig::idBase is set here).
+    std::expected<void, QString> startMavlink(transport::MavlinkConfig config);
+    // The MAVLink dialect file to read instead of ardupilotmega.xml (before startMavlink).
+    std::expected<void, QString> setMavlinkDialect(const QString &file);
+    // Takes a MAVLink link made with mavlinkSchema() and this console's IMC
+    // schema, started or not (the fuzz target feeds an unstarted one through receive()).
+    transport::MavlinkTransport *attachMavlink(std::unique_ptr<transport::MavlinkTransport> link);
+    // The plan a MAVLink vehicle holds, for its progress (its PlanControlState):
+    // the plan's id and, per mission item, the maneuver it belongs to.
+    void labelMission(quint16 system, const QString &planId, const QStringList &maneuverOfItem);
     // Takes an IMC/UDP link made with schemaSet(), started or not (the fuzz
     // target feeds an unstarted one through receive()).
     transport::ImcUdpTransport *attachImc(std::unique_ptr<transport::ImcUdpTransport> imc);
@@ -88,6 +105,10 @@ public:
     // A decoded message from any transport (any thread), the link it came on
     // and the size of its packet.
     void ingest(const msg::Message &message, const QString &link = {}, qsizetype bytes = 0);
+    // What a vehicle's message means, made by its link (a MAVLink vehicle's
+    // state in IMC words): into the tree, alarms and database like anything
+    // received, but not counted as traffic (any thread).
+    void ingestDerived(const msg::Message &message);
     // A packet from `peer` over `link` that could not be decoded (any thread);
     // `system` is 0xFFFF when even its header did not say who sent it.
     void decodeFailed(quint16 system, const QString &link, const QString &peer, const QString &reason);
@@ -141,6 +162,13 @@ private:
 
     // Hands a link's packet to the recorder, if there is one.
     void tap(QByteArrayView packet);
+    // What every received message goes to (the tree, database, health, naming, plan desk).
+    void take(const msg::Message &message);
+    // A host sent too much, or this console fell behind: a Warning on "links/<host>".
+    void overloaded(const QString &host, int overRate, int behind, int maximum);
+    // A MAVLink vehicle's STATUSTEXT: warnings and worse are an alarm on
+    // "systems/<vehicle>/statustext" that lapses a minute after the last.
+    void statusText(quint16 system, int severity, const QString &text);
 
     const Clock *m_clock;
     std::atomic<log::Recorder *> m_recorder = nullptr;
@@ -158,6 +186,15 @@ private:
     std::unique_ptr<scripting::ScriptHost> m_scripts;
     std::unique_ptr<transport::ImcUdpTransport> m_imc;
     std::unique_ptr<transport::DdsTransport> m_dds;
+    std::vector<std::unique_ptr<transport::MavlinkTransport>> m_mavlink;
+    std::shared_ptr<const msg::Schema> m_mavlinkSchema;
+    QString m_mavlinkDialect;
+    struct Said
+    {
+        alarms::Level level = alarms::Normal;
+        qint64 ms = 0;
+    };
+    QHash<quint16, Said> m_statusTexts; // the last STATUSTEXT alarm per MAVLink vehicle
     QTimer m_checkTimer;
     QTimer m_tickTimer;
     // What the link alarms last said, per system, so they change only when it does.
@@ -169,7 +206,7 @@ private:
     {
         QStringList hosts;
         QString destination;
-        QString ignoredAnnounce; // why the last Announce from elsewhere was ignored
+        QString ignoredAnnounce; // why the last Announce (or MAVLink frame) from elsewhere was ignored
         qint64 ignoredMs = 0;
         QString alarmText;
     };

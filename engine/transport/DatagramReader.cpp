@@ -204,4 +204,31 @@ DatagramReader::Batch DatagramReader::take(int max)
     return batch;
 }
 
+std::expected<void, QString> sendDatagram(int fd, QByteArrayView bytes, const QHostAddress &to, quint16 port, bool ipv6Socket)
+{
+    if (fd < 0)
+        return std::unexpected(QStringLiteral("not started"));
+    sockaddr_storage address{};
+    socklen_t size = 0;
+    bool isIpv4 = false;
+    const quint32 ipv4 = to.toIPv4Address(&isIpv4);
+    if (isIpv4 && !ipv6Socket) {
+        auto *v4 = reinterpret_cast<sockaddr_in *>(&address);
+        v4->sin_family = AF_INET;
+        v4->sin_port = htons(port);
+        v4->sin_addr.s_addr = htonl(ipv4);
+        size = sizeof *v4;
+    } else {
+        auto *v6 = reinterpret_cast<sockaddr_in6 *>(&address);
+        v6->sin6_family = AF_INET6;
+        v6->sin6_port = htons(port);
+        const Q_IPV6ADDR raw = to.toIPv6Address();
+        std::memcpy(&v6->sin6_addr, raw.c, sizeof v6->sin6_addr);
+        size = sizeof *v6;
+    }
+    if (::sendto(fd, bytes.data(), size_t(bytes.size()), 0, reinterpret_cast<sockaddr *>(&address), size) != bytes.size())
+        return std::unexpected(qt_error_string(errno));
+    return {};
+}
+
 } // namespace neptus::transport

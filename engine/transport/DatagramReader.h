@@ -6,6 +6,7 @@
 
 #include <atomic>
 #include <deque>
+#include <expected>
 #include <functional>
 #include <mutex>
 #include <thread>
@@ -105,5 +106,9 @@ private:
 
     std::thread m_thread;
 };
+
+// Sends one datagram from the UDP socket `fd` to `to`:`port` (an IPv4
+// address goes as IPv4 unless the socket is IPv6-only); an error says why.
+std::expected<void, QString> sendDatagram(int fd, QByteArrayView bytes, const QHostAddress &to, quint16 port, bool ipv6Socket);
 
 } // namespace neptus::transport

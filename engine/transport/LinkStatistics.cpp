@@ -29,7 +29,7 @@ LinkStatistics::Counter &LinkStatistics::counterLocked(quint16 system)
 }
 
 void LinkStatistics::received(quint16 system, const QString &link, quint16 messageId, const QString &abbrev,
-                              bool known, qsizetype bytes)
+                              bool known, qsizetype bytes, bool mavlink)
 {
     QMutexLocker lock(&m_mutex);
     Counter &counter = counterLocked(system);
@@ -37,9 +37,10 @@ void LinkStatistics::received(quint16 system, const QString &link, quint16 messa
         counter.system.link = link;
     ++counter.system.messages;
     counter.system.bytes += static_cast<quint64>(bytes);
-    auto type = counter.types.find(messageId);
+    const quint32 key = messageId | (mavlink ? 0x10000u : 0u);
+    auto type = counter.types.find(key);
     if (type == counter.types.end()) {
-        type = counter.types.insert(messageId, TypeCounter{});
+        type = counter.types.insert(key, TypeCounter{});
         type->type.id = messageId;
         type->type.abbrev = abbrev;
         type->type.known = known;

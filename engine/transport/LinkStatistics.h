@@ -52,8 +52,9 @@ public:
     explicit LinkStatistics(const Clock *clock = &Clock::system());
 
     // A decoded packet of `bytes` bytes from `system` over `link`.
+    // `mavlink`: a MAVLink message id (kept apart from IMC's).
     void received(quint16 system, const QString &link, quint16 messageId, const QString &abbrev, bool known,
-                  qsizetype bytes);
+                  qsizetype bytes, bool mavlink = false);
     // A packet that could not be decoded; `system` is unknownSystem when not
     // even its header said who sent it.
     void decodeFailed(quint16 system, const QString &link, const QString &peer, const QString &reason);
@@ -81,7 +82,7 @@ private:
         System system;
         quint64 messagesAtTick = 0;
         quint64 bytesAtTick = 0;
-        QHash<quint16, TypeCounter> types;
+        QHash<quint32, TypeCounter> types; // by id, MAVLink's with bit 16 set
     };
     Counter &counterLocked(quint16 system);
     System snapshotLocked(const Counter &counter) const;

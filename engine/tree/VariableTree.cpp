@@ -80,9 +80,14 @@ QString pathSafe(QString name)
     return name;
 }
 
-quint64 bindingKey(quint16 system, quint8 entity, quint16 id, bool perEntity)
+// MAVLink and IMC ids are apart: a MAVLink vehicle has both (SYS_STATUS and EntityState are both id 1).
+quint64 bindingKey(quint16 system, quint8 entity, quint16 id, bool mavlink, bool perEntity)
 {
-    return (quint64(system) << 32) | (quint64(entity) << 24) | (quint64(id) << 8) | (perEntity ? 1 : 0);
+    return (quint64(system) << 32) | (quint64(entity) << 24) | (quint64(id) << 8) | (mavlink ? 2 : 0) | (perEntity ? 1 : 0);
+}
+quint64 bindingKey(quint16 system, quint8 entity, const Message &message, bool perEntity)
+{
+    return bindingKey(system, entity, message.id(), message.isMavlink(), perEntity);
 }
 
 VariableTree::Kind kindOf(FieldType type)
@@ -232,7 +237,7 @@ int VariableTree::newBindingLocked(quint64 key)
 
 int VariableTree::bindingLocked(quint16 system, quint8 entity, const Message &message, bool perEntity)
 {
-    const quint64 key = bindingKey(system, entity, message.id(), perEntity);
+    const quint64 key = bindingKey(system, entity, message, perEntity);
     const auto it = m_bindingIndex.constFind(key);
     if (it != m_bindingIndex.cend())
         return *it;
@@ -378,7 +383,7 @@ bool VariableTree::forget(quint16 id)
     }
     for (const int index : std::as_const(bindings)) {
         const Binding &b = *m_bindings[static_cast<size_t>(index)];
-        m_bindingIndex.remove(bindingKey(b.system, b.entity, b.id, b.perEntity));
+        m_bindingIndex.remove(bindingKey(b.system, b.entity, b.id, b.def && b.def->mavlink, b.perEntity));
         m_bindings[static_cast<size_t>(index)].reset();
         m_freeBindings.push_back(index);
     }
@@ -567,7 +572,7 @@ void VariableTree::recordSent(quint16 id, Message message)
     if (info.out == noNode)
         info.out = addNode(info.node, QStringLiteral("out"), Kind::Inline, -1, {});
     // Recorded under system/out/Message, as the tree holds what it received.
-    const quint64 key = bindingKey(id, 0xFE, message.id(), false);
+    const quint64 key = bindingKey(id, 0xFE, message, false);
     int index;
     if (const auto it = m_bindingIndex.constFind(key); it != m_bindingIndex.cend()) {
         index = *it;

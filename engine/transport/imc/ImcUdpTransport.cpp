@@ -501,29 +501,9 @@ std::expected<void, QString> ImcUdpTransport::sendLocked(const msg::Message &mes
 {
     if (auto encoded = m_schemas->codecFor(message.header.dst)->encode(message, m_buffer); !encoded)
         return std::unexpected(QStringLiteral("%1 does not encode: %2").arg(message.abbrev(), encoded.error().toString()));
-    if (m_fd < 0)
-        return std::unexpected(QStringLiteral("cannot send to %1: not started").arg(to.name()));
-    sockaddr_storage address{};
-    socklen_t size = 0;
-    bool isIpv4 = false;
-    const quint32 ipv4 = to.address.toIPv4Address(&isIpv4);
-    if (isIpv4 && m_config.bindAddress.protocol() != QAbstractSocket::IPv6Protocol) {
-        auto *v4 = reinterpret_cast<sockaddr_in *>(&address);
-        v4->sin_family = AF_INET;
-        v4->sin_port = htons(to.port);
-        v4->sin_addr.s_addr = htonl(ipv4);
-        size = sizeof *v4;
-    } else {
-        auto *v6 = reinterpret_cast<sockaddr_in6 *>(&address);
-        v6->sin6_family = AF_INET6;
-        v6->sin6_port = htons(to.port);
-        const Q_IPV6ADDR bytes = to.address.toIPv6Address();
-        std::memcpy(&v6->sin6_addr, bytes.c, sizeof v6->sin6_addr);
-        size = sizeof *v6;
-    }
-    if (::sendto(m_fd, m_buffer.constData(), size_t(m_buffer.size()), 0, reinterpret_cast<sockaddr *>(&address), size)
-        != m_buffer.size())
-        return std::unexpected(QStringLiteral("cannot send to %1: %2").arg(to.name(), qt_error_string(errno)));
+    if (auto sent = sendDatagram(m_fd, m_buffer, to.address, to.port, m_config.bindAddress.protocol() == QAbstractSocket::IPv6Protocol);
+        !sent)
+        return std::unexpected(QStringLiteral("cannot send to %1: %2").arg(to.name(), sent.error()));
     if (m_tap)
         m_tap(m_buffer);
     return {};

@@ -1,0 +1,703 @@
+#include "transport/mavlink/MavlinkTransport.h"
+
+#include <QCryptographicHash>
+#include <QFile>
+#include <QRegularExpression>
+#include <QTcpSocket>
+#include <QUdpSocket>
+
+#if NEPTUS_HAVE_SERIALPORT
+#include <QSerialPort>
+#endif
+
+#include <unistd.h>
+
+namespace neptus::transport {
+
+using namespace Qt::StringLiterals;
+
+namespace {
+
+constexpr quint8 mavTypeGcs = 6, mavAutopilotInvalid = 8;
+constexpr quint16 cmdSetMessageInterval = 511, cmdDoSetMode = 176, cmdReturnToLaunch = 20;
+// Asked again this often until acknowledged, at most this many times.
+constexpr qint64 streamRetryMs = 2000;
+constexpr int streamAttempts = 3;
+// Parameters: missing indices asked again after this long without one, in rounds.
+constexpr qint64 parameterGapMs = 1000;
+constexpr int parameterRounds = 4;
+constexpr int parametersPerRound = 64;
+// A signed frame older than our clock by more than this is a replay (MAVLink's rule: one minute).
+constexpr quint64 signingWindow = 6'000'000;
+constexpr qint64 refusedReportMs = 60'000;
+
+quint64 signingStreamKey(quint8 system, quint8 component, quint8 link)
+{
+    return quint64(system) << 16 | quint64(component) << 8 | link;
+}
+
+QString familyName(MavlinkVehicle::Family family, MavlinkVehicle::Kind kind, int type)
+{
+    if (family == MavlinkVehicle::Family::Px4)
+        return u"px4"_s;
+    if (family == MavlinkVehicle::Family::ArduPilot) {
+        switch (kind) {
+        case MavlinkVehicle::Kind::Surface:
+        case MavlinkVehicle::Kind::Ground:
+            return u"ardurover"_s;
+        case MavlinkVehicle::Kind::Underwater:
+            return u"ardusub"_s;
+        case MavlinkVehicle::Kind::Air:
+            return type == 1 || (type >= 19 && type <= 25) ? u"arduplane"_s : u"arducopter"_s;
+        case MavlinkVehicle::Kind::Other:
+            break;
+        }
+        return u"ardupilot"_s;
+    }
+    return u"mavlink"_s;
+}
+
+void setField(msg::Message &m, QStringView field, double value)
+{
+    if (const int i = m.def()->indexOf(field); i >= 0)
+        m.setNumber(i, value);
+}
+
+} // namespace
+
+QString MavlinkConfig::linkName() const
+{
+    switch (kind) {
+    case Kind::Udp:
+        return u"MAVLink/UDP"_s;
+    case Kind::Tcp:
+        return u"MAVLink/TCP"_s;
+    case Kind::Serial:
+        return u"MAVLink/serial"_s;
+    }
+    return u"MAVLink"_s;
+}
+
+std::expected<QByteArray, QString> mavlinkKeyFromFile(const QString &path)
+{
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly))
+        return std::unexpected(u"signing key %1: %2"_s.arg(path, file.errorString()));
+    const QByteArray text = file.read(4096).trimmed();
+    if (text.isEmpty())
+        return std::unexpected(u"signing key %1: the file is empty (write a passphrase, or the key as 64 hex digits)"_s.arg(path));
+    static const QRegularExpression hex(u"^[0-9a-fA-F]{64}$"_s);
+    if (hex.match(QString::fromLatin1(text)).hasMatch())
+        return QByteArray::fromHex(text);
+    return QCryptographicHash::hash(text, QCryptographicHash::Sha256);
+}
+
+QString MavlinkTransport::Endpoint::name() const
+{
+    return address.isNull() ? u"the link"_s : u"%1:%2"_s.arg(address.toString()).arg(port);
+}
+
+MavlinkTransport::MavlinkTransport(std::shared_ptr<const msg::Schema> mavlink, std::shared_ptr<const msg::Schema> imc,
+                                   MavlinkConfig config, QObject *parent)
+    : QObject(parent)
+    , m_schema(mavlink)
+    , m_codec(std::move(mavlink))
+    , m_imc(imc)
+    , m_imcCodec(std::move(imc))
+    , m_config(std::move(config))
+{
+    m_signing.key = m_config.signingKey;
+    m_signing.linkId = m_config.signingLinkId;
+    m_heartbeat.setInterval(m_config.heartbeatMs);
+    connect(&m_heartbeat, &QTimer::timeout, this, &MavlinkTransport::heartbeat);
+    m_service.setInterval(250);
+    connect(&m_service, &QTimer::timeout, this, &MavlinkTransport::service);
+    m_reconnect.setInterval(2000);
+    m_reconnect.setSingleShot(true);
+    connect(&m_reconnect, &QTimer::timeout, this, &MavlinkTransport::connectTcp);
+}
+
+MavlinkTransport::~MavlinkTransport()
+{
+    m_pump.reset(); // stops reading before the socket closes
+    if (m_fd >= 0)
+        ::close(m_fd);
+    if (m_tcp)
+        m_tcp->disconnect(this);
+}
+
+void MavlinkTransport::emitAll(Later &later)
+{
+    for (auto &f : later)
+        f();
+    later.clear();
+}
+
+std::expected<void, QString> MavlinkTransport::start()
+{
+    const QString name = linkName();
+    switch (m_config.kind) {
+    case MavlinkConfig::Kind::Udp: {
+        QUdpSocket socket;
+        if (!socket.bind(m_config.bindAddress, m_config.port))
+            return std::unexpected(u"%1: cannot listen on %2:%3: %4"_s.arg(name, m_config.bindAddress.toString())
+                                       .arg(m_config.port).arg(socket.errorString()));
+        m_port = socket.localPort();
+        m_fd = ::dup(int(socket.socketDescriptor()));
+        if (m_fd < 0)
+            return std::unexpected(u"%1: cannot keep the socket: %2"_s.arg(name, qt_error_string(errno)));
+        DatagramReader::Limits limits;
+        limits.datagramsPerSecond = m_config.maxDatagramsPerSecond;
+        m_pump = std::make_unique<DatagramPump>(
+            std::vector<int>{m_fd}, limits, [this](const DatagramReader::Datagram &d) { receive(d.bytes, d.from, d.port); },
+            [this](const QHash<QString, int> &overRate, const QHash<QString, int> &behind) {
+                QSet<QString> hosts;
+                for (auto it = overRate.cbegin(); it != overRate.cend(); ++it)
+                    hosts.insert(it.key());
+                for (auto it = behind.cbegin(); it != behind.cend(); ++it)
+                    hosts.insert(it.key());
+                for (const QString &host : hosts)
+                    emit overloaded(host, overRate.value(host), behind.value(host));
+            });
+        break;
+    }
+    case MavlinkConfig::Kind::Tcp: {
+        if (m_config.peers.isEmpty())
+            return std::unexpected(u"%1: no address to connect to (--mavlink-tcp HOST:PORT)"_s.arg(name));
+        m_framer = std::make_unique<msg::MavlinkFramer>(m_codec);
+        auto socket = std::make_unique<QTcpSocket>();
+        m_tcp = socket.get();
+        connect(m_tcp, &QTcpSocket::readyRead, this, [this] { streamBytes(m_tcp); });
+        connect(m_tcp, &QTcpSocket::disconnected, this, [this] { m_reconnect.start(); });
+        connect(m_tcp, &QTcpSocket::errorOccurred, this, [this] {
+            if (m_tcp->state() != QAbstractSocket::ConnectedState)
+                m_reconnect.start();
+        });
+        m_device = std::move(socket);
+        connectTcp();
+        break;
+    }
+    case MavlinkConfig::Kind::Serial: {
+#if NEPTUS_HAVE_SERIALPORT
+        auto port = std::make_unique<QSerialPort>(m_config.serialDevice);
+        port->setBaudRate(m_config.baudRate);
+        if (!port->open(QIODevice::ReadWrite))
+            return std::unexpected(u"%1: cannot open %2 at %3 baud: %4"_s.arg(name, m_config.serialDevice)
+                                       .arg(m_config.baudRate).arg(port->errorString()));
+        m_framer = std::make_unique<msg::MavlinkFramer>(m_codec);
+        QSerialPort *raw = port.get();
+        connect(raw, &QSerialPort::readyRead, this, [this, raw] { streamBytes(raw); });
+        m_device = std::move(port);
+        break;
+#else
+        return std::unexpected(u"%1: this console was built without Qt Serial Port"_s.arg(name));
+#endif
+    }
+    }
+    m_heartbeat.start();
+    m_service.start();
+    heartbeat();
+    return {};
+}
+
+void MavlinkTransport::connectTcp()
+{
+    if (!m_tcp || m_tcp->state() != QAbstractSocket::UnconnectedState)
+        return;
+    const auto &[host, port] = m_config.peers.front();
+    m_tcp->connectToHost(host, port);
+}
+
+void MavlinkTransport::streamBytes(QIODevice *device)
+{
+    const QByteArray bytes = device->readAll();
+    receive(bytes, {}, 0);
+}
+
+// --- Receiving -----------------------------------------------------------------------
+
+void MavlinkTransport::receive(QByteArrayView bytes, const QHostAddress &from, quint16 fromPort)
+{
+    const Endpoint endpoint{from, fromPort};
+    if (fromPort == 0 && m_framer) { // a stream: frames may be split across reads
+        m_framer->feed(bytes);
+        while (auto frame = m_framer->next())
+            this->frame(*frame, endpoint);
+        return;
+    }
+    // A datagram: one frame or several back to back, nothing else.
+    while (!bytes.isEmpty()) {
+        const qsizetype length = msg::MavlinkCodec::frameLength(bytes);
+        if (length == 0 || length > bytes.size()) {
+            ++m_decodeErrors;
+            const quint8 system = bytes.size() > 5 && quint8(bytes[0]) == msg::MavlinkCodec::stx2 ? quint8(bytes[5])
+                                  : bytes.size() > 3 && quint8(bytes[0]) == msg::MavlinkCodec::stx1 ? quint8(bytes[3]) : 0;
+            emit decodeFailed(system ? quint16(m_config.idBase + system) : quint16(0xFFFF), endpoint.name(),
+                              length == 0 ? u"%1 bytes that are not a MAVLink frame"_s.arg(bytes.size())
+                                          : u"a frame cut short: %1 of %2 bytes"_s.arg(bytes.size()).arg(length));
+            return;
+        }
+        frame(bytes.first(length), endpoint);
+        bytes = bytes.sliced(length);
+    }
+}
+
+QByteArray MavlinkTransport::keyForLocked(quint8 system) const
+{
+    const QByteArray own = m_config.vehicles.value(system).signingKey;
+    return own.isEmpty() ? m_config.signingKey : own;
+}
+
+QString MavlinkTransport::signingRefusalLocked(QByteArrayView frame, const msg::MavlinkFrame &header)
+{
+    const QByteArray key = keyForLocked(header.system);
+    if (!header.isSigned)
+        return m_config.requireSigning ? u"unsigned frame on a link that requires signing"_s : QString();
+    if (key.isEmpty())
+        return m_config.requireSigning ? u"signed with a key this console does not have"_s : QString();
+    if (!msg::MavlinkCodec::signatureValid(frame, key))
+        return u"its signature does not verify with the key"_s;
+    // Replays: each (system, component, link) stream's timestamps only grow, and a new one is not a minute old.
+    const quint64 stream = signingStreamKey(header.system, header.component, header.linkId);
+    const auto last = m_signingStreams.constFind(stream);
+    if (last != m_signingStreams.cend() && header.timestamp <= *last)
+        return u"replayed (signing timestamp not newer than the last)"_s;
+    const quint64 ours = std::max(m_signing.timestamp, msg::MavlinkSigning::now());
+    if (last == m_signingStreams.cend() && header.timestamp + signingWindow < ours)
+        return u"replayed (signing timestamp more than a minute old)"_s;
+    m_signingStreams.insert(stream, header.timestamp);
+    return {};
+}
+
+void MavlinkTransport::frame(QByteArrayView bytes, const Endpoint &from)
+{
+    msg::MavlinkFrame header;
+    auto decoded = m_codec.decode(bytes, &header);
+    if (!decoded) {
+        ++m_decodeErrors;
+        emit decodeFailed(header.system ? quint16(m_config.idBase + header.system) : quint16(0xFFFF), from.name(),
+                          decoded.error().toString());
+        return;
+    }
+    if (header.system == m_config.system)
+        return; // our own, relayed back
+    msg::Message message = std::move(*decoded);
+    const quint16 id = quint16(m_config.idBase + header.system);
+    Later later;
+    // Whether the frame is read on (else only what `later` says of it is told).
+    const bool read = [&] {
+        std::lock_guard lock(m_mutex);
+        if (const QString refusal = signingRefusalLocked(bytes, header); !refusal.isEmpty()) {
+            ++m_refused;
+            auto known = m_vehicles.find(header.system);
+            const qint64 now = nowMs();
+            if (known == m_vehicles.end() || now - known->second.refusedReportMs >= refusedReportMs) {
+                if (known != m_vehicles.end())
+                    known->second.refusedReportMs = now;
+                later.push_back([this, id, peer = from.name(), refusal] { emit refused(id, peer, refusal); });
+            }
+            return false;
+        }
+        if (message.isOpaque()) {
+            ++m_decodeErrors;
+            later.push_back([this, id, peer = from.name(), msgid = header.messageId] {
+                emit decodeFailed(id, peer, u"message id %1 is not in the loaded MAVLink dialects"_s.arg(msgid));
+            });
+            return false;
+        }
+        const QString &type = message.def()->abbrev;
+        auto found = m_vehicles.find(header.system);
+        if (found == m_vehicles.end()) {
+            // Met by an autopilot's HEARTBEAT: not a ground station's, not a camera's or gimbal's.
+            if (type != u"HEARTBEAT" || message.integer(u"type") == mavTypeGcs
+                || message.integer(u"autopilot") == mavAutopilotInvalid)
+                return false;
+            Vehicle v;
+            v.component = header.component;
+            v.endpoint = from;
+            v.settings = m_config.vehicles.value(header.system);
+            QString name = v.settings.name;
+            if (name.isEmpty()) {
+                const int mavType = int(message.integer(u"type"));
+                name = u"%1-%2"_s.arg(familyName(MavlinkVehicle::familyOf(int(message.integer(u"autopilot"))),
+                                                 MavlinkVehicle::kindOf(mavType), mavType))
+                           .arg(header.system);
+            }
+            v.adapter = std::make_unique<MavlinkVehicle>(header.system, id, name, m_imc);
+            for (const auto &[stream, hz] : m_config.streams)
+                if (const msg::MessageDef *def = m_schema->byAbbrev(stream); def && hz > 0)
+                    v.streams.push_back({def->id, hz});
+            found = m_vehicles.emplace(header.system, std::move(v)).first;
+            later.push_back([this, id, name] { emit systemDiscovered(id, name); });
+        }
+        Vehicle &v = found->second;
+        const qint64 now = nowMs();
+        if (!(from == v.endpoint)) {
+            // Another address claims this vehicle: it takes it over only once
+            // the first has been silent a while, and only with a heartbeat.
+            const bool silent = now - v.lastMs > m_config.rebindAfterMs;
+            const QString host = from.name();
+            if (!(silent && type == u"HEARTBEAT" && header.component == v.component)) {
+                ++m_refused;
+                const bool fresh = !v.impostors.contains(host);
+                v.impostors.insert(host, now);
+                if (fresh) {
+                    v.sources = QStringList{v.endpoint.name()} + v.impostors.keys();
+                    later.push_back([this, id, sources = v.sources, destination = v.endpoint.name()] {
+                        emit sourcesChanged(id, sources, destination);
+                    });
+                    later.push_back([this, id, host] {
+                        emit refused(id, host, u"claims to be this vehicle from another address: ignored"_s);
+                    });
+                }
+                return false;
+            }
+            v.endpoint = from;
+            v.impostors.clear();
+            v.sources = QStringList{from.name()};
+            later.push_back([this, id, sources = v.sources, destination = from.name()] {
+                emit sourcesChanged(id, sources, destination);
+            });
+        }
+        v.lastMs = now;
+        message.header.src = id;
+        message.header.srcEnt = header.component == v.component ? 0xFF : header.component;
+        message.header.dst = 0xFFFF;
+        message.header.timestamp = now / 1000.0;
+        handleLocked(v, message, later);
+        return true;
+    }();
+    if (!read) {
+        emitAll(later);
+        return;
+    }
+    if (m_frameTap)
+        m_frameTap(bytes);
+    emit received(message, bytes.size());
+    emitAll(later);
+}
+
+void MavlinkTransport::handleLocked(Vehicle &v, const msg::Message &message, Later &later)
+{
+    const QString &type = message.def()->abbrev;
+    const bool first = !v.adapter->heard();
+    std::vector<msg::Message> meaning = v.adapter->translate(message, now());
+    for (msg::Message &m : meaning) {
+        if (m_tap && m_imcCodec.encode(m, m_buffer))
+            m_tap(m_buffer);
+        later.push_back([this, m = std::move(m)] { emit derived(m); });
+    }
+    if (first && type == u"HEARTBEAT") {
+        // Met: its streams and parameters are asked for now (service() asks again where due).
+        for (Stream &s : v.streams)
+            s.askedMs = 0;
+        if (m_config.readParameters) {
+            sendLocked(mavlinkMessage("PARAM_REQUEST_LIST"), &v);
+            v.parametersAsked = true;
+            v.parameterMs = nowMs();
+            parametersLocked(v, later, true);
+        }
+    }
+    if (type == u"COMMAND_ACK" && message.integer(u"command") == cmdSetMessageInterval) {
+        // Which stream it was is not in the ACK: the oldest asked and unacknowledged one.
+        for (Stream &s : v.streams)
+            if (!s.acknowledged && s.asked > 0) {
+                s.acknowledged = true;
+                break;
+            }
+    } else if (type == u"PARAM_VALUE") {
+        const int index = int(message.integer(u"param_index"));
+        const int count = int(message.integer(u"param_count"));
+        const QString name = message.text(u"param_id");
+        if (index != 0xFFFF && count > 0) {
+            v.parameters[index] = {name, message.number(u"param_value")};
+            v.parameterCount = count;
+            v.parameterMs = nowMs();
+        } else {
+            // A change the vehicle announces (index 65535): the value, where it is known by name.
+            for (auto &[i, named] : v.parameters)
+                if (named.first == name)
+                    named.second = message.number(u"param_value");
+        }
+        if (v.parametersAsked)
+            parametersLocked(v, later, true);
+    } else if (type == u"STATUSTEXT") {
+        later.push_back([this, id = v.adapter->consoleId(), severity = int(message.integer(u"severity")),
+                         text = message.text(u"text")] { emit statusText(id, severity, text); });
+    }
+}
+
+// Where the parameter list is: all read, still coming, or some missing (asked again, index by index).
+void MavlinkTransport::parametersLocked(Vehicle &v, Later &later, bool progressOnly)
+{
+    const int have = int(v.parameters.size());
+    const qint64 now = nowMs();
+    int state = 0; // BOOT
+    QString text;
+    if (v.parameterCount < 0) {
+        text = u"reading parameters"_s;
+    } else if (have >= v.parameterCount) {
+        state = 1; // NORMAL
+        text = u"%1 parameters read"_s.arg(v.parameterCount);
+        v.parametersAsked = false;
+    } else if (!progressOnly && now - v.parameterMs >= parameterGapMs) {
+        if (v.parameterRounds >= parameterRounds) {
+            QStringList missing;
+            for (int i = 0; i < v.parameterCount && missing.size() < 5; ++i)
+                if (!v.parameters.contains(i))
+                    missing << QString::number(i);
+            state = 2; // FAULT
+            text = u"%1 of %2 parameters read; %3 never came (indices %4%5)"_s.arg(have).arg(v.parameterCount)
+                       .arg(v.parameterCount - have).arg(missing.join(u", "_s), v.parameterCount - have > 5 ? u", …"_s : QString());
+            v.parametersAsked = false;
+        } else {
+            ++v.parameterRounds;
+            int asked = 0;
+            for (int i = 0; i < v.parameterCount && asked < parametersPerRound; ++i) {
+                if (v.parameters.contains(i))
+                    continue;
+                msg::Message read = mavlinkMessage("PARAM_REQUEST_READ");
+                setField(read, u"param_index", i);
+                sendLocked(read, &v);
+                ++asked;
+            }
+            v.parameterMs = now;
+            text = u"reading parameters: %1 of %2 (asking again for %3)"_s.arg(have).arg(v.parameterCount).arg(asked);
+        }
+    } else {
+        text = u"reading parameters: %1 of %2"_s.arg(have).arg(v.parameterCount);
+    }
+    if (text.isEmpty() || (text == v.parameterReport))
+        return;
+    // Progress at most twice a second; the end at once.
+    if (state == 0 && now - v.parameterReportMs < 500 && !v.parameterReport.isEmpty())
+        return;
+    v.parameterReport = text;
+    v.parameterReportMs = now;
+    msg::Message m = v.adapter->parameterState(state, text, now / 1000.0);
+    if (m_tap && m_imcCodec.encode(m, m_buffer))
+        m_tap(m_buffer);
+    later.push_back([this, m = std::move(m)] { emit derived(m); });
+}
+
+// --- Sending -------------------------------------------------------------------------
+
+msg::Message MavlinkTransport::mavlinkMessage(const char *name) const
+{
+    return msg::Message(m_schema->byAbbrev(QString::fromLatin1(name)));
+}
+
+msg::Message MavlinkTransport::commandLong(quint16 command, std::initializer_list<float> params, const Vehicle &) const
+{
+    msg::Message m = mavlinkMessage("COMMAND_LONG");
+    setField(m, u"command", command);
+    int i = 1;
+    for (const float p : params)
+        setField(m, u"param%1"_s.arg(i++), p);
+    return m;
+}
+
+msg::Message MavlinkTransport::setMode(const Vehicle &v, const QString &mode) const
+{
+    const auto number = v.adapter->modeNumber(mode);
+    if (!number)
+        return commandLong(cmdReturnToLaunch, {}, v);
+    if (v.adapter->family() == MavlinkVehicle::Family::Px4) // main mode and sub mode
+        return commandLong(cmdDoSetMode, {1, float((*number >> 16) & 0xFF), float((*number >> 24) & 0xFF)}, v);
+    return commandLong(cmdDoSetMode, {1, float(*number)}, v); // MAV_MODE_FLAG_CUSTOM_MODE_ENABLED, custom mode
+}
+
+std::expected<void, QString> MavlinkTransport::writeLocked(const QByteArray &frame, const Endpoint &to)
+{
+    if (m_fd >= 0) {
+        if (auto sent = sendDatagram(m_fd, frame, to.address, to.port, m_config.bindAddress.protocol() == QAbstractSocket::IPv6Protocol);
+            !sent)
+            return std::unexpected(u"cannot send to %1: %2"_s.arg(to.name(), sent.error()));
+    } else if (m_device && m_device->isOpen() && (!m_tcp || m_tcp->state() == QAbstractSocket::ConnectedState)) {
+        if (m_device->write(frame) != frame.size())
+            return std::unexpected(u"cannot write to %1: %2"_s.arg(linkName(), m_device->errorString()));
+    } else {
+        return std::unexpected(u"%1 is not connected"_s.arg(linkName()));
+    }
+    if (m_frameTap)
+        m_frameTap(frame);
+    return {};
+}
+
+std::expected<void, QString> MavlinkTransport::sendLocked(const msg::Message &message, const Vehicle *to)
+{
+    msg::Message addressed = message;
+    if (to) {
+        if (const int i = addressed.def()->indexOf(u"target_system"); i >= 0)
+            addressed.setInteger(i, to->adapter->mavlinkSystem());
+        if (const int i = addressed.def()->indexOf(u"target_component"); i >= 0)
+            addressed.setInteger(i, to->component);
+    }
+    msg::MavlinkCodec::Options options;
+    options.sequence = m_sequence++;
+    options.system = m_config.system;
+    options.component = m_config.component;
+    msg::MavlinkSigning vehicleSigning;
+    const QByteArray key = to ? keyForLocked(to->adapter->mavlinkSystem()) : m_config.signingKey;
+    if (!key.isEmpty()) {
+        m_signing.timestamp = std::max(m_signing.timestamp, msg::MavlinkSigning::now());
+        vehicleSigning = m_signing;
+        vehicleSigning.key = key;
+        options.signing = &vehicleSigning;
+    }
+    if (auto encoded = m_codec.encode(addressed, options, m_buffer); !encoded)
+        return std::unexpected(u"%1 does not encode: %2"_s.arg(message.abbrev(), encoded.error().toString()));
+    if (options.signing)
+        m_signing.timestamp = vehicleSigning.timestamp;
+    const QByteArray frame = m_buffer;
+    if (to)
+        return writeLocked(frame, to->endpoint);
+    // To everyone: the vehicles heard and the peers named.
+    QList<Endpoint> targets;
+    for (const auto &[system, v] : m_vehicles)
+        if (!targets.contains(v.endpoint))
+            targets << v.endpoint;
+    if (m_fd >= 0)
+        for (const auto &[address, port] : m_config.peers)
+            if (!targets.contains(Endpoint{address, port}))
+                targets << Endpoint{address, port};
+    if (m_fd < 0 && targets.isEmpty())
+        targets << Endpoint{};
+    std::expected<void, QString> result;
+    for (const Endpoint &target : targets)
+        if (auto sent = writeLocked(frame, target); !sent)
+            result = sent;
+    return result;
+}
+
+std::expected<void, QString> MavlinkTransport::publish(quint16 system, const msg::Message &message)
+{
+    if (!message.def())
+        return std::unexpected(u"an undefined message is not sent"_s);
+    Later later;
+    std::expected<void, QString> result;
+    {
+        std::lock_guard lock(m_mutex);
+        Vehicle *v = vehicleLocked(system);
+        if (!v)
+            return std::unexpected(u"no MAVLink vehicle is 0x%1 on %2"_s.arg(uint(system), 4, 16, QChar(u'0')).arg(linkName()));
+        if (message.isMavlink()) {
+            result = sendLocked(message, v);
+        } else if (message.abbrev() == u"Abort") {
+            const QString mode = !v->settings.abortMode.isEmpty() ? v->settings.abortMode : v->adapter->defaultAbortMode();
+            result = sendLocked(setMode(*v, mode), v);
+        } else if (message.abbrev() == u"EntityList" || message.abbrev() == u"EntityInfo") {
+            // The console asks who its entities are: the adapter's, said here.
+            later.push_back([this, m = v->adapter->entityList(now())] { emit derived(m); });
+        } else {
+            result = std::unexpected(u"%1 speaks MAVLink: %2 has no MAVLink equivalent"_s.arg(v->adapter->name(), message.abbrev()));
+        }
+    }
+    // Answers go on after the caller is done sending (it may be ingesting).
+    if (!later.empty())
+        QMetaObject::invokeMethod(this, [this, later = std::move(later)]() mutable { emitAll(later); }, Qt::QueuedConnection);
+    return result;
+}
+
+void MavlinkTransport::heartbeat()
+{
+    msg::Message beat = mavlinkMessage("HEARTBEAT");
+    setField(beat, u"type", mavTypeGcs);
+    setField(beat, u"autopilot", mavAutopilotInvalid);
+    setField(beat, u"system_status", 4); // MAV_STATE_ACTIVE
+    setField(beat, u"mavlink_version", 3);
+    std::lock_guard lock(m_mutex);
+    if (m_fd >= 0 || m_device)
+        sendLocked(beat, nullptr);
+}
+
+void MavlinkTransport::service()
+{
+    Later later;
+    {
+        std::lock_guard lock(m_mutex);
+        const qint64 now = nowMs();
+        for (auto &[system, v] : m_vehicles) {
+            if (!v.adapter->heard())
+                continue;
+            for (Stream &s : v.streams) {
+                if (s.acknowledged || s.asked >= streamAttempts || now - s.askedMs < streamRetryMs)
+                    continue;
+                ++s.asked;
+                s.askedMs = now;
+                sendLocked(commandLong(cmdSetMessageInterval, {float(s.messageId), float(1e6 / s.hz)}, v), &v);
+            }
+            if (v.parametersAsked)
+                parametersLocked(v, later, false);
+        }
+    }
+    emitAll(later);
+}
+
+// --- What is known -------------------------------------------------------------------
+
+MavlinkTransport::Vehicle *MavlinkTransport::vehicleLocked(quint16 id)
+{
+    if (id < m_config.idBase || id > m_config.idBase + 255)
+        return nullptr;
+    const auto found = m_vehicles.find(quint8(id - m_config.idBase));
+    return found == m_vehicles.end() ? nullptr : &found->second;
+}
+
+const MavlinkTransport::Vehicle *MavlinkTransport::vehicleLocked(quint16 id) const
+{
+    return const_cast<MavlinkTransport *>(this)->vehicleLocked(id);
+}
+
+QList<quint16> MavlinkTransport::vehicles() const
+{
+    std::lock_guard lock(m_mutex);
+    QList<quint16> ids;
+    for (const auto &[system, v] : m_vehicles)
+        ids << v.adapter->consoleId();
+    return ids;
+}
+
+std::optional<quint8> MavlinkTransport::mavlinkSystem(quint16 id) const
+{
+    std::lock_guard lock(m_mutex);
+    const Vehicle *v = vehicleLocked(id);
+    return v ? std::optional<quint8>(v->adapter->mavlinkSystem()) : std::nullopt;
+}
+
+QString MavlinkTransport::destination(quint16 id) const
+{
+    std::lock_guard lock(m_mutex);
+    const Vehicle *v = vehicleLocked(id);
+    if (!v)
+        return {};
+    return m_fd >= 0 ? v->endpoint.name() : linkName();
+}
+
+std::map<QString, double> MavlinkTransport::parameters(quint16 id) const
+{
+    std::lock_guard lock(m_mutex);
+    std::map<QString, double> out;
+    if (const Vehicle *v = vehicleLocked(id))
+        for (const auto &[index, named] : v->parameters)
+            out[named.first] = named.second;
+    return out;
+}
+
+std::pair<QString, bool> MavlinkTransport::mode(quint16 id) const
+{
+    std::lock_guard lock(m_mutex);
+    const Vehicle *v = vehicleLocked(id);
+    if (!v || !v->adapter->heard())
+        return {};
+    return {v->adapter->modeName(), v->adapter->armed()};
+}
+
+void MavlinkTransport::setMission(quint16 id, const QString &planId, const QStringList &maneuverOfItem)
+{
+    std::lock_guard lock(m_mutex);
+    if (Vehicle *v = vehicleLocked(id))
+        v->adapter->setMission(planId, maneuverOfItem);
+}
+
+} // namespace neptus::transport
