@@ -61,31 +61,47 @@ std::expected<void, QString> Console::startImc(transport::ImcUdpConfig config)
 {
     config.clock = m_clock;
     auto imc = std::make_unique<transport::ImcUdpTransport>(m_schemas, config);
+    // Wired before it starts: a vehicle answers the first Heartbeat at once, and its Announce must not be lost.
+    wireImc(*imc);
     if (auto started = imc->start(); !started)
         return started;
-    attachImc(std::move(imc));
+    keepImc(std::move(imc));
     return {};
 }
 
 transport::ImcUdpTransport *Console::attachImc(std::unique_ptr<transport::ImcUdpTransport> imc)
 {
+    wireImc(*imc);
+    return keepImc(std::move(imc));
+}
+
+transport::ImcUdpTransport *Console::keepImc(std::unique_ptr<transport::ImcUdpTransport> imc)
+{
+    m_imc = std::move(imc);
+    addLink(QStringLiteral("IMC/UDP"), m_imc.get());
+    return m_imc.get();
+}
+
+void Console::wireImc(transport::ImcUdpTransport &transport)
+{
+    auto *imc = &transport;
     const QString link = QStringLiteral("IMC/UDP");
     imc->setPacketTap([this](QByteArrayView packet) { tap(packet); });
     // Straight into the session from the link's decoding thread, as from DDS's: the GUI thread
     // being busy delays nothing and loses nothing (the tree, alarms and statistics are thread-safe).
-    connect(imc.get(), &transport::ImcUdpTransport::received, this,
+    connect(imc, &transport::ImcUdpTransport::received, this,
             [this, link](const msg::Message &m, qsizetype bytes) { ingest(m, link, bytes); }, Qt::DirectConnection);
-    connect(imc.get(), &transport::ImcUdpTransport::decodeFailed, this,
+    connect(imc, &transport::ImcUdpTransport::decodeFailed, this,
             [this, link](quint16 system, const QString &peer, const QString &reason) {
                 decodeFailed(system, link, peer, reason);
             });
-    connect(imc.get(), &transport::ImcUdpTransport::versionAnnounced, this,
+    connect(imc, &transport::ImcUdpTransport::versionAnnounced, this,
             [this](quint16 system, const QString &version) {
                 m_announcedVersions.insert(system, version);
                 updateDefinitionsAlarm(system, m_linkStatistics.system(system));
             });
-    connect(imc.get(), &transport::ImcUdpTransport::sourcesChanged, this, &Console::sourcesChanged);
-    connect(imc.get(), &transport::ImcUdpTransport::announceIgnored, this,
+    connect(imc, &transport::ImcUdpTransport::sourcesChanged, this, &Console::sourcesChanged);
+    connect(imc, &transport::ImcUdpTransport::announceIgnored, this,
             [this](quint16 system, const QString &from, const QString &services) {
                 Sources &sources = m_sources[system];
                 sources.ignoredAnnounce = tr("an Announce from %1 names addresses on other hosts only (%2): "
@@ -94,13 +110,10 @@ transport::ImcUdpTransport *Console::attachImc(std::unique_ptr<transport::ImcUdp
                 sources.ignoredMs = m_clock->now().toMSecsSinceEpoch();
                 updateSourcesAlarm(system);
             });
-    connect(imc.get(), &transport::ImcUdpTransport::overloaded, this,
+    connect(imc, &transport::ImcUdpTransport::overloaded, this,
             [this, maximum = imc->maxDatagramsPerSecond()](const QString &host, int overRate, int behind) {
                 overloaded(host, overRate, behind, maximum);
             });
-    m_imc = std::move(imc);
-    addLink(link, m_imc.get());
-    return m_imc.get();
 }
 
 // Said as it is: a host that sends too much, or this console falling behind (not the vehicle's doing).
@@ -146,37 +159,50 @@ std::expected<void, QString> Console::startMavlink(transport::MavlinkConfig conf
     config.clock = m_clock;
     config.idBase = quint16(0xEA00 + 0x100 * m_mavlink.size());
     auto link = std::make_unique<transport::MavlinkTransport>(schema, m_schema, config);
+    wireMavlink(*link); // before it starts, as IMC's
     if (auto started = link->start(); !started)
         return started;
-    attachMavlink(std::move(link));
+    keepMavlink(std::move(link));
     return {};
 }
 
 transport::MavlinkTransport *Console::attachMavlink(std::unique_ptr<transport::MavlinkTransport> link)
 {
+    wireMavlink(*link);
+    return keepMavlink(std::move(link));
+}
+
+transport::MavlinkTransport *Console::keepMavlink(std::unique_ptr<transport::MavlinkTransport> link)
+{
+    const QString name = link->linkName();
+    m_mavlink.push_back(std::move(link));
+    addLink(name, m_mavlink.back().get());
+    return m_mavlink.back().get();
+}
+
+void Console::wireMavlink(transport::MavlinkTransport &transport)
+{
+    auto *link = &transport;
     const QString name = link->linkName();
     link->setPacketTap([this](QByteArrayView packet) { tap(packet); });
     // Straight into the session from the link's reading thread, as IMC's.
-    connect(link.get(), &transport::MavlinkTransport::received, this,
+    connect(link, &transport::MavlinkTransport::received, this,
             [this, name](const msg::Message &m, qsizetype bytes) { ingest(m, name, bytes); }, Qt::DirectConnection);
-    connect(link.get(), &transport::MavlinkTransport::derived, this,
+    connect(link, &transport::MavlinkTransport::derived, this,
             [this](const msg::Message &m) { ingestDerived(m); }, Qt::DirectConnection);
-    connect(link.get(), &transport::MavlinkTransport::decodeFailed, this,
+    connect(link, &transport::MavlinkTransport::decodeFailed, this,
             [this, name](quint16 system, const QString &peer, const QString &reason) { decodeFailed(system, name, peer, reason); });
-    connect(link.get(), &transport::MavlinkTransport::sourcesChanged, this, &Console::sourcesChanged);
-    connect(link.get(), &transport::MavlinkTransport::refused, this,
+    connect(link, &transport::MavlinkTransport::sourcesChanged, this, &Console::sourcesChanged);
+    connect(link, &transport::MavlinkTransport::refused, this,
             [this](quint16 system, const QString &peer, const QString &reason) {
                 Sources &sources = m_sources[system];
                 sources.ignoredAnnounce = tr("frames from %1 refused: %2").arg(peer, reason);
                 sources.ignoredMs = m_clock->now().toMSecsSinceEpoch();
                 updateSourcesAlarm(system);
             });
-    connect(link.get(), &transport::MavlinkTransport::statusText, this, &Console::statusText);
-    connect(link.get(), &transport::MavlinkTransport::overloaded, this,
+    connect(link, &transport::MavlinkTransport::statusText, this, &Console::statusText);
+    connect(link, &transport::MavlinkTransport::overloaded, this,
             [this](const QString &host, int overRate, int behind) { overloaded(host, overRate, behind, transport::MavlinkConfig{}.maxDatagramsPerSecond); });
-    m_mavlink.push_back(std::move(link));
-    addLink(name, m_mavlink.back().get());
-    return m_mavlink.back().get();
 }
 
 void Console::labelMission(quint16 system, const QString &planId, const QStringList &maneuverOfItem)

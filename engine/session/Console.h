@@ -150,6 +150,10 @@ signals:
     void sharedMissionReceived(const neptus::msg::Message &message);
 
 private:
+    void wireImc(transport::ImcUdpTransport &imc);
+    transport::ImcUdpTransport *keepImc(std::unique_ptr<transport::ImcUdpTransport> imc);
+    void wireMavlink(transport::MavlinkTransport &link);
+    transport::MavlinkTransport *keepMavlink(std::unique_ptr<transport::MavlinkTransport> link);
     // Link health: decode errors in the last few seconds, and message types
     // the definitions lack, as alarms on "systems/<system>/link" and ".../definitions".
     void updateLinkAlarms();
