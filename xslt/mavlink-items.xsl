@@ -1,7 +1,7 @@
 <?xml version="1.0" encoding="UTF-8"?>
 <!--
   Shared by qgc-plan.xsl and qgc-wpl.xsl: a plan as MAVLink mission items,
-  in execution order, as <item command frame p1 p2 p3 p4 lat lon alt/>
+  in execution order, as <item maneuver command frame p1 p2 p3 p4 lat lon alt/>
   (p4 "nan" where MAVLink wants NaN). Surveys, paths and squares are expanded
   to waypoints through the points the engine worked out (<geometry>); a speed
   change (MAV_CMD_DO_CHANGE_SPEED) comes before a maneuver that changes speed.
@@ -18,28 +18,29 @@
     <xsl:for-each select="/translation/geometry/maneuver">
       <xsl:variable name="m" select="key('maneuver', @id)"/>
       <xsl:variable name="frame" select="3 + 7 * (@z-units = 'ALTITUDE')"/>
+      <xsl:variable name="id" select="@id"/>
       <xsl:if test="@step = 1 or key('step', @step - 1)/@speed != @speed">
-        <item command="178" frame="2" p1="{number(/translation/vehicle/@kind != 'UAV')}" p2="{@speed}" p3="-1" p4="0" lat="0" lon="0" alt="0"/>
+        <item maneuver="{$id}" command="178" frame="2" p1="{number(/translation/vehicle/@kind != 'UAV')}" p2="{@speed}" p3="-1" p4="0" lat="0" lon="0" alt="0"/>
       </xsl:if>
       <xsl:choose>
         <xsl:when test="@type = 'Takeoff'">
           <xsl:for-each select="point[last()]">
-            <item command="22" frame="{$frame}" p1="{sum($m/@takeoff_pitch)}" p2="0" p3="0" p4="nan" lat="{@lat}" lon="{@lon}"
+            <item maneuver="{$id}" command="22" frame="{$frame}" p1="{sum($m/@takeoff_pitch)}" p2="0" p3="0" p4="nan" lat="{@lat}" lon="{@lon}"
                   alt="{@z * (1 - 2 * (@z-units = 'DEPTH')) * (@z-units != 'NONE')}"/>
           </xsl:for-each>
         </xsl:when>
         <xsl:when test="@type = 'Land'">
-          <item command="21" frame="{$frame}" p1="0" p2="0" p3="0" p4="nan" lat="{point[last()]/@lat}" lon="{point[last()]/@lon}" alt="0"/>
+          <item maneuver="{$id}" command="21" frame="{$frame}" p1="0" p2="0" p3="0" p4="nan" lat="{point[last()]/@lat}" lon="{point[last()]/@lon}" alt="0"/>
         </xsl:when>
         <xsl:when test="@type = 'Loiter' or @type = 'StationKeeping'">
           <xsl:for-each select="point[last()]">
             <xsl:choose>
               <xsl:when test="number($m/@duration) &gt; 0">
-                <item command="19" frame="{$frame}" p1="{$m/@duration}" p2="0" p3="{sum($m/@radius) * (1 - 2 * ($m/@direction = 'CCLOCKW'))}"
+                <item maneuver="{$id}" command="19" frame="{$frame}" p1="{$m/@duration}" p2="0" p3="{sum($m/@radius) * (1 - 2 * ($m/@direction = 'CCLOCKW'))}"
                       p4="1" lat="{@lat}" lon="{@lon}" alt="{@z * (1 - 2 * (@z-units = 'DEPTH')) * (@z-units != 'NONE')}"/>
               </xsl:when>
               <xsl:otherwise>
-                <item command="17" frame="{$frame}" p1="0" p2="0" p3="{sum($m/@radius) * (1 - 2 * ($m/@direction = 'CCLOCKW'))}"
+                <item maneuver="{$id}" command="17" frame="{$frame}" p1="0" p2="0" p3="{sum($m/@radius) * (1 - 2 * ($m/@direction = 'CCLOCKW'))}"
                       p4="nan" lat="{@lat}" lon="{@lon}" alt="{@z * (1 - 2 * (@z-units = 'DEPTH')) * (@z-units != 'NONE')}"/>
               </xsl:otherwise>
             </xsl:choose>
@@ -48,7 +49,7 @@
         <xsl:otherwise>
           <!-- Waypoints; a pop-up or compass calibration holds its duration at the last one. -->
           <xsl:for-each select="point">
-            <item command="16" frame="{$frame}" p1="{sum($m/@duration) * (position() = last() and boolean($m/self::PopUp | $m/self::CompassCalibration))}"
+            <item maneuver="{$id}" command="16" frame="{$frame}" p1="{sum($m/@duration) * (position() = last() and boolean($m/self::PopUp | $m/self::CompassCalibration))}"
                   p2="0" p3="0" p4="nan" lat="{@lat}" lon="{@lon}" alt="{@z * (1 - 2 * (@z-units = 'DEPTH')) * (@z-units != 'NONE')}"/>
           </xsl:for-each>
         </xsl:otherwise>

@@ -158,6 +158,10 @@ std::expected<void, XmlError> Schema::MavlinkLoader::readEnum(const XmlDocument 
         value.abbrev = value.name = xml::attribute(entry, "name");
         if (value.abbrev.isEmpty())
             return std::unexpected(doc.errorAt(entry, u"%1: an <entry> needs a name"_s.arg(name)));
+        // What people read: the entry's description ("Current mission operation cancelled (e.g. …)").
+        if (const xmlNode *description = xml::firstChildElement(entry, "description"))
+            if (const QString said = xml::textContent(description).simplified(); !said.isEmpty())
+                value.name = said;
         const QString text = xml::attribute(entry, "value");
         if (text.isEmpty()) {
             value.value = m_enumHighest.value(e) + 1;

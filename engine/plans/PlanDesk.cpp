@@ -4,6 +4,7 @@
 #include "mission/MissionXml.h"
 #include "mission/PlanCheck.h"
 #include "mission/Vehicle.h"
+#include "messages/MavlinkModes.h"
 
 namespace neptus::plans {
 
@@ -71,6 +72,7 @@ void PlanDesk::setMission(mission::Mission mission, const QString &path)
     m_missionPath = path;
     // The MD5s the vehicles' copies are compared with, once per mission (not on every look).
     m_md5.clear();
+    m_mavlinkPlans.clear();
     for (const mission::Plan &p : m_mission.plans)
         if (const auto spec = mission::planSpecification(p, *m_schema))
             if (const auto md5 = planMd5(m_codec, *spec))
@@ -207,6 +209,10 @@ Sync PlanDesk::sync(const QString &system, const QString &planId) const
     const bool inMission = std::any_of(plans.begin(), plans.end(), [&](const mission::Plan *p) { return p->id == planId; });
     if (!inMission)
         return Sync::Same; // the vehicle's own plan: nothing here to differ from
+    if (v->mission) {
+        const auto &translated = mavlinkPlan(*missionPlan(system, planId));
+        return translated && missionDifference(translated->items, v->held, MissionType::Mission).isEmpty() ? Sync::Same : Sync::Differs;
+    }
     return ours != m_md5.end() && ours->second == stored->md5 ? Sync::Same : Sync::Differs;
 }
 
@@ -244,6 +250,12 @@ std::expected<void, QString> PlanDesk::send(const QString &system, const QString
     if (const QStringList errors = m_planErrors.value(planId); !errors.isEmpty())
         return std::unexpected(u"plan '%1' is not sent: %2%3"_s.arg(planId, errors.first(),
                                    errors.size() > 1 ? u" (and %1 more)"_s.arg(errors.size() - 1) : QString()));
+    if (const quint16 id = (*v)->client->vehicle(); isMavlink(id)) {
+        const mission::Plan *plan = missionPlan(system, planId);
+        if (!plan)
+            return std::unexpected(u"the mission has no plan '%1' for %2"_s.arg(planId, system));
+        return sendMavlink(id, *plan);
+    }
     auto spec = specification(system, planId);
     if (!spec)
         return std::unexpected(spec.error());
@@ -277,6 +289,8 @@ std::expected<void, QString> PlanDesk::start(const QString &system, const QStrin
     // A vehicle that says it evaluates conditions (its Announce lists
     // neptus:plan-conditions) is given the whole plan, unless a condition
     // reads something only the console sees.
+    if (conditional && isMavlink(id))
+        return std::unexpected(u"%1 speaks MAVLink: %2's conditions on transitions are not carried out for it"_s.arg(system, planId));
     if (conditional && evaluatesConditions(system)) {
         if (const QString beyond = Supervisor::beyondVehicle(*conditional, system); beyond.isEmpty()) {
             note(id, u"%1 evaluates %2's conditions itself"_s.arg(system, planId));
@@ -308,6 +322,8 @@ std::expected<void, QString> PlanDesk::start(const QString &system, const QStrin
     case Sync::Same:
         break;
     }
+    if (isMavlink(id))
+        return startMavlink(id, planId);
     note((*v)->client->vehicle(), u"starting %1"_s.arg(planId));
     (*v)->client->start(planId);
     return {};
@@ -325,6 +341,8 @@ std::expected<void, QString> PlanDesk::stop(const QString &system)
     if (!v)
         return std::unexpected(v.error());
     (*v)->supervisor.reset();
+    if (isMavlink((*v)->client->vehicle()))
+        return stopMavlink((*v)->client->vehicle());
     note((*v)->client->vehicle(), u"stopping"_s);
     (*v)->client->stop();
     return {};
@@ -350,6 +368,13 @@ std::expected<void, QString> PlanDesk::abort(const QString &system)
 void PlanDesk::receive(const msg::Message &message)
 {
     const auto found = m_vehicles.find(message.header.src);
+    if (found != m_vehicles.end() && message.isMavlink()) {
+        if (found->second.mission)
+            found->second.mission->receive(message);
+        return;
+    }
+    if (message.isMavlink())
+        return;
     if (found != m_vehicles.end() && found->second.client)
         found->second.client->receive(message);
     for (const PlanRuns::Event &e : m_runs.observe(message, m_clock->now().toMSecsSinceEpoch()))
@@ -365,6 +390,19 @@ void PlanDesk::ask(Vehicle &v)
     if (v.asking || m_quiet)
         return;
     v.asking = true;
+    const quint16 id = v.client->vehicle();
+    if (isMavlink(id)) {
+        // What it holds, read back and recognised by its digest.
+        after(id, missionClient(id).download(MissionType::Mission), [this, id](const MavlinkMissionClient::Result &r) {
+            m_vehicles[id].asking = false;
+            if (!r.ok) {
+                note(id, u"reading its mission failed: %1"_s.arg(r.info));
+                return;
+            }
+            heldMission(id, r.items);
+        });
+        return;
+    }
     v.client->getState(true);
 }
 
@@ -460,6 +498,238 @@ void PlanDesk::told(const PlanRuns::Event &e)
     const QString how = PlanRuns::outcomeName(e.outcome);
     note(e.system, u"%1 %2%3"_s.arg(plan, how, supervised));
     m_graph.notify(node, u"plan %1 %2"_s.arg(plan, how));
+}
+
+// --- MAVLink vehicles ------------------------------------------------------------------
+
+void PlanDesk::setMavlink(MavlinkSupport support)
+{
+    m_mavlink = std::move(support);
+    m_mavlinkPlans.clear();
+}
+
+bool PlanDesk::isMavlink(quint16 id) const
+{
+    return m_mavlink.schema && m_tree.find(m_tree.systemName(id) + u"/HEARTBEAT"_s) != tree::noNode;
+}
+
+bool PlanDesk::isMavlink(const QString &system) const
+{
+    const auto id = m_tree.systemId(system);
+    return id && isMavlink(*id);
+}
+
+std::optional<PlanDesk::Transfer> PlanDesk::transfer(const QString &system) const
+{
+    const Vehicle *v = known(system);
+    return v ? v->transfer : std::nullopt;
+}
+
+double PlanDesk::heartbeatNumber(quint16 id, const QString &field) const
+{
+    const tree::NodeId node = m_tree.find(m_tree.systemName(id) + u"/HEARTBEAT/"_s + field);
+    return node == tree::noNode ? std::nan("") : m_tree.snapshot(node).value.toDouble();
+}
+
+const mission::Plan *PlanDesk::missionPlan(const QString &system, const QString &planId) const
+{
+    for (const mission::Plan *p : missionPlans(system))
+        if (p->id == planId)
+            return p;
+    return nullptr;
+}
+
+const std::expected<MavlinkPlan, QString> &PlanDesk::mavlinkPlan(const mission::Plan &plan) const
+{
+    auto found = m_mavlinkPlans.find(plan.id);
+    if (found == m_mavlinkPlans.end())
+        found = m_mavlinkPlans.emplace(plan.id, m_mavlink.translate ? m_mavlink.translate(m_mission, plan)
+                                                                     : std::unexpected(u"no MAVLink translation"_s)).first;
+    return found->second;
+}
+
+MavlinkMissionClient &PlanDesk::missionClient(quint16 id)
+{
+    Vehicle &v = vehicleFor(id);
+    if (!v.mission) {
+        v.mission = std::make_unique<MavlinkMissionClient>(m_mavlink.schema(), id,
+                                                           [this, id](const msg::Message &m) { return m_send(id, m); });
+        v.mission->setTimeScale(m_mavlinkScale);
+        connect(v.mission.get(), &MavlinkMissionClient::finished, this, [this, id](const MavlinkMissionClient::Result &r) {
+            Vehicle &vehicle = m_vehicles[id];
+            vehicle.transfer.reset();
+            const auto then = vehicle.then.extract(r.id);
+            if (!then.empty())
+                then.mapped()(r);
+            emit changed(m_tree.systemName(id));
+        });
+        connect(v.mission.get(), &MavlinkMissionClient::progress, this, [this, id](int, int done, int total) {
+            Vehicle &vehicle = m_vehicles[id];
+            if (vehicle.transfer) {
+                vehicle.transfer->done = done;
+                vehicle.transfer->total = total;
+            }
+            emit changed(m_tree.systemName(id));
+        });
+    }
+    return *v.mission;
+}
+
+void PlanDesk::after(quint16 id, int operation, std::function<void(const MavlinkMissionClient::Result &)> then)
+{
+    m_vehicles[id].then[operation] = std::move(then);
+}
+
+// What a MAVLink vehicle holds: the mission's plan whose items digest alike, else "mission".
+void PlanDesk::heldMission(quint16 id, const std::vector<MissionItem> &items)
+{
+    Vehicle &v = vehicleFor(id);
+    v.stored.clear();
+    v.fetched = true;
+    v.held = items;
+    if (items.size() > 1) { // more than its home
+        StoredPlan held{u"mission"_s, missionDigest(items, MissionType::Mission), int(items.size()) - 1, 0};
+        for (const mission::Plan *p : missionPlans(m_tree.systemName(id))) {
+            const auto &translated = mavlinkPlan(*p);
+            if (translated && missionDifference(translated->items, items, MissionType::Mission).isEmpty()) {
+                held.id = p->id;
+                if (m_mavlink.label)
+                    m_mavlink.label(id, p->id, translated->maneuverOfItem());
+                break;
+            }
+        }
+        v.stored.push_back(held);
+    }
+    emit changed(m_tree.systemName(id));
+}
+
+std::expected<void, QString> PlanDesk::sendMavlink(quint16 id, const mission::Plan &plan)
+{
+    const auto &translated = mavlinkPlan(plan);
+    if (!translated)
+        return std::unexpected(u"plan '%1' is not sent: %2"_s.arg(plan.id, translated.error()));
+    const MavlinkPlan items = *translated;
+    const QString planId = plan.id;
+    MavlinkMissionClient &client = missionClient(id);
+    note(id, u"sending %1: %2 mission items%3"_s.arg(planId).arg(items.items.size() - 1)
+                 .arg(items.fence.empty() ? QString() : u", a geofence of %1 vertices"_s.arg(items.fence.size())));
+    const auto failed = [this, id, planId](const MavlinkMissionClient::Result &r) {
+        note(id, u"sending %1 failed: %2: %3"_s.arg(planId, r.what, r.info));
+        m_graph.raise(m_graph.ensure(u"systems/%1/plan"_s.arg(m_tree.systemName(id))), alarms::Warning,
+                      u"plan %1 was not sent: %2: %3"_s.arg(planId, r.what, r.info));
+    };
+    if (!items.fence.empty()) {
+        m_vehicles[id].transfer = Transfer{u"uploading the geofence of %1"_s.arg(planId), 0, int(items.fence.size())};
+        after(id, client.upload(MissionType::Fence, items.fence), [failed](const auto &r) {
+            if (!r.ok)
+                failed(r);
+        });
+    }
+    const int upload = client.upload(MissionType::Mission, items.items);
+    if (items.fence.empty())
+        m_vehicles[id].transfer = Transfer{u"uploading %1"_s.arg(planId), 0, int(items.items.size())};
+    after(id, upload, [this, id, planId, items, failed](const MavlinkMissionClient::Result &r) {
+        if (!r.ok) {
+            failed(r);
+            return;
+        }
+        // Read back and compared: what it holds is what runs.
+        m_vehicles[id].transfer = Transfer{u"reading %1 back"_s.arg(planId), 0, int(items.items.size())};
+        after(id, missionClient(id).download(MissionType::Mission), [this, id, planId, items, failed](const MavlinkMissionClient::Result &back) {
+            if (!back.ok) {
+                failed(back);
+                return;
+            }
+            const QString difference = missionDifference(items.items, back.items, MissionType::Mission);
+            if (difference.isEmpty()) {
+                note(id, u"%1 sent: the vehicle holds its %2 items as sent"_s.arg(planId).arg(items.items.size() - 1));
+                m_graph.raise(m_graph.ensure(u"systems/%1/plan"_s.arg(m_tree.systemName(id))), alarms::Normal, QString());
+            } else {
+                note(id, u"%1 sent, but the vehicle holds something else: %2"_s.arg(planId, difference));
+                m_graph.raise(m_graph.ensure(u"systems/%1/plan"_s.arg(m_tree.systemName(id))), alarms::Warning,
+                              u"plan %1: the vehicle holds something else than was sent: %2"_s.arg(planId, difference));
+            }
+            heldMission(id, back.items);
+        });
+    });
+    return {};
+}
+
+std::expected<void, QString> PlanDesk::startMavlink(quint16 id, const QString &planId)
+{
+    using namespace msg::mavlink;
+    const Family family = familyOf(int(heartbeatNumber(id, u"autopilot"_s)));
+    const int type = int(heartbeatNumber(id, u"type"_s));
+    const QString mode = missionMode(family);
+    const auto modeParams = setModeParams(family, type, mode);
+    if (!modeParams)
+        return std::unexpected(u"%1 has no %2 mode the console knows"_s.arg(m_tree.systemName(id), mode));
+    const bool armed = (qint64(heartbeatNumber(id, u"base_mode"_s)) & 128) != 0; // MAV_MODE_FLAG_SAFETY_ARMED
+    MavlinkMissionClient &client = missionClient(id);
+    note(id, u"starting %1: from its first item, %2%3"_s.arg(planId, armed ? QString() : u"arming, "_s, mode));
+    const auto refused = [this, id, planId](const MavlinkMissionClient::Result &r) {
+        note(id, u"%1 did not start: %2: %3"_s.arg(planId, r.what, r.info));
+        m_graph.raise(m_graph.ensure(u"systems/%1/plan"_s.arg(m_tree.systemName(id))), alarms::Warning,
+                      u"plan %1 did not start: %2: %3"_s.arg(planId, r.what, r.info));
+    };
+    // One step after another, each only once the one before is accepted.
+    const std::array<float, 7> setMode{(*modeParams)[0], (*modeParams)[1], (*modeParams)[2], 0, 0, 0, 0};
+    auto toMode = [this, id, planId, mode, setMode, refused] {
+        after(id, missionClient(id).command(176, setMode, u"mode "_s + mode), [this, id, planId, refused](const auto &r) {
+            if (!r.ok)
+                refused(r);
+            else
+                note(id, u"%1: %2 accepted"_s.arg(planId, r.what));
+        });
+    };
+    after(id, client.command(224, {1, 0, 0, 0, 0, 0, 0}, u"mission item 1"_s), [this, id, armed, refused, toMode](const auto &r) {
+        if (!r.ok) {
+            refused(r);
+            return;
+        }
+        if (armed) {
+            toMode();
+            return;
+        }
+        after(id, missionClient(id).command(400, {1, 0, 0, 0, 0, 0, 0}, u"arm"_s), [refused, toMode](const auto &armedNow) {
+            if (armedNow.ok)
+                toMode();
+            else
+                refused(armedNow);
+        });
+    });
+    return {};
+}
+
+std::expected<void, QString> PlanDesk::stopMavlink(quint16 id)
+{
+    using namespace msg::mavlink;
+    const Family family = familyOf(int(heartbeatNumber(id, u"autopilot"_s)));
+    const int type = int(heartbeatNumber(id, u"type"_s));
+    const QString mode = stopMode(family, type);
+    const auto params = setModeParams(family, type, mode);
+    if (!params)
+        return std::unexpected(u"%1 has no %2 mode the console knows"_s.arg(m_tree.systemName(id), mode));
+    note(id, u"stopping: %1"_s.arg(mode));
+    after(id, missionClient(id).command(176, {(*params)[0], (*params)[1], (*params)[2], 0, 0, 0, 0}, u"mode "_s + mode),
+          [this, id](const MavlinkMissionClient::Result &r) {
+              if (!r.ok) {
+                  note(id, u"stop failed: %1: %2"_s.arg(r.what, r.info));
+                  m_graph.raise(m_graph.ensure(u"systems/%1/plan"_s.arg(m_tree.systemName(id))), alarms::Warning,
+                                u"stop failed: %1: %2"_s.arg(r.what, r.info));
+                  return;
+              }
+              note(id, u"stopped: %1 accepted"_s.arg(r.what));
+              // As a plan engine's answer to STOP: the run's end is "stopped", not a failure.
+              msg::Message stopped(m_schema->byAbbrev(u"PlanControl"_s));
+              stopped.header.src = id;
+              const int type = stopped.def()->indexOf(u"type"), op = stopped.def()->indexOf(u"op");
+              stopped.setInteger(type, *stopped.field(type).enumeration->valueOf(u"SUCCESS"));
+              stopped.setInteger(op, *stopped.field(op).enumeration->valueOf(u"STOP"));
+              for (const PlanRuns::Event &e : m_runs.observe(stopped, m_clock->now().toMSecsSinceEpoch()))
+                  told(e);
+          });
+    return {};
 }
 
 } // namespace neptus::plans

@@ -2,6 +2,7 @@
 
 #include "alarms/AlarmGraph.h"
 #include "messages/Codec.h"
+#include "plans/MavlinkMission.h"
 #include "mission/Mission.h"
 #include "plans/PlanClient.h"
 #include "plans/PlanDatabase.h"
@@ -35,6 +36,16 @@ namespace neptus::plans {
 // conditions on its transitions is carried out by a Supervisor, one stretch
 // at a time, for every vehicle: DUNE ignores conditions, and only the
 // console sees every vehicle a condition may name.
+//
+// A MAVLink vehicle (its HEARTBEAT is in the tree) holds one mission, not a
+// database of plans: a plan is translated to mission items and a geofence
+// (MavlinkSupport::translate), uploaded with the MAVLink mission protocol
+// and read back to compare; the vehicle "holds" the plan whose items digest
+// alike. Start: mission item 1, arm when disarmed, then the mission mode
+// (ArduPilot AUTO); each refusal is said in the vehicle's own words. Stop:
+// its stop mode (ArduPilot Rover HOLD, Sub POSHOLD); Abort goes through the
+// link (its abort mode). Conditions on transitions are not carried out for
+// MAVLink vehicles (they are refused at start).
 class PlanDesk : public QObject
 {
     Q_OBJECT
@@ -52,8 +63,31 @@ public:
         double changeTime = 0;
     };
 
+    // What the desk needs for MAVLink vehicles, from the layers above it.
+    struct MavlinkSupport
+    {
+        std::function<std::shared_ptr<const msg::Schema>()> schema; // MAVLink's (loaded on first use)
+        // A plan as mission items and geofence; an error names the maneuver or item.
+        std::function<std::expected<MavlinkPlan, QString>(const mission::Mission &, const mission::Plan &)> translate;
+        // The plan a vehicle holds, for its progress (Console::labelMission).
+        std::function<void(quint16 system, const QString &planId, const QStringList &maneuverOfItem)> label;
+    };
+    // A mission transfer under way: "uploading plan1", items done of all.
+    struct Transfer
+    {
+        QString what;
+        int done = 0;
+        int total = 0;
+    };
+
     PlanDesk(std::shared_ptr<const msg::Schema> schema, const tree::VariableTree &tree, alarms::AlarmGraph &graph,
              Sender send, Scripts scripts = {}, const Clock *clock = &Clock::system(), QObject *parent = nullptr);
+
+    void setMavlink(MavlinkSupport support);
+    bool isMavlink(const QString &system) const;
+    std::optional<Transfer> transfer(const QString &system) const;
+    // Retries of the MAVLink mission protocol, scaled (tests shorten them).
+    void setMavlinkTimeScale(double scale) { m_mavlinkScale = scale; }
 
     // The mission whose plans are offered; an error names the file and line.
     std::expected<void, QString> openMission(const QString &path);
@@ -120,6 +154,11 @@ private:
         bool asking = false; // a GET_DSTATE is on its way
         std::unique_ptr<Supervisor> supervisor;
         QString supervisedPlan; // the plan whose stretches ("survey.2") it was last given
+        // A MAVLink vehicle's: its mission client, what to do when each operation ends, the transfer shown.
+        std::unique_ptr<MavlinkMissionClient> mission;
+        std::map<int, std::function<void(const MavlinkMissionClient::Result &)>> then;
+        std::optional<Transfer> transfer;
+        std::vector<MissionItem> held; // the mission it holds, as read back
     };
 
     std::expected<Vehicle *, QString> vehicle(const QString &system);
@@ -132,6 +171,16 @@ private:
     void replied(quint16 id, const PlanClient::Reply &reply);
     // A plan started, or ended (PlanRuns): the log, the alarm event, the supervisor.
     void told(const PlanRuns::Event &event);
+    bool isMavlink(quint16 id) const;
+    MavlinkMissionClient &missionClient(quint16 id);
+    void after(quint16 id, int operation, std::function<void(const MavlinkMissionClient::Result &)> then);
+    const std::expected<MavlinkPlan, QString> &mavlinkPlan(const mission::Plan &plan) const;
+    const mission::Plan *missionPlan(const QString &system, const QString &planId) const;
+    void heldMission(quint16 id, const std::vector<MissionItem> &items);
+    std::expected<void, QString> sendMavlink(quint16 id, const mission::Plan &plan);
+    std::expected<void, QString> startMavlink(quint16 id, const QString &planId);
+    std::expected<void, QString> stopMavlink(quint16 id);
+    double heartbeatNumber(quint16 id, const QString &field) const;
 
     std::shared_ptr<const msg::Schema> m_schema;
     msg::Codec m_codec;
@@ -150,6 +199,9 @@ private:
     PlanRuns m_runs;
     bool m_quiet = false; // setQuiet
     std::chrono::milliseconds m_timeout{3000};
+    MavlinkSupport m_mavlink;
+    mutable std::map<QString, std::expected<MavlinkPlan, QString>> m_mavlinkPlans; // by plan id, for this mission
+    double m_mavlinkScale = 1.0;
 };
 
 } // namespace neptus::plans

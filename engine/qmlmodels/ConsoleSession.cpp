@@ -1,5 +1,8 @@
 #include "qmlmodels/ConsoleSession.h"
 
+#include "mission/Vehicle.h"
+#include "processor/MissionTranslator.h"
+
 #include "log/LogExport.h"
 #include "messages/MessageJson.h"
 #include "mission/ImcPlan.h"
@@ -56,6 +59,40 @@ ConsoleSession::ConsoleSession(std::shared_ptr<const msg::Schema> schema, const 
 {
     connect(&m_console, &session::Console::planMessageReceived, &m_planDesk, &plans::PlanDesk::receive);
     connect(&m_console, &session::Console::sharedMissionReceived, &m_share, &plans::MissionShare::receive);
+    m_planDesk.setMavlink({[this] { return m_console.mavlinkSchema(); }, &mavlinkPlan,
+                           [this](quint16 system, const QString &planId, const QStringList &maneuverOfItem) {
+                               m_console.labelMission(system, planId, maneuverOfItem);
+                           }});
+}
+
+// A plan as a MAVLink vehicle's mission: its vehicle definition's "mavlink"
+// translation (xslt/mavlink-mission.xsl unless it names its own), or that
+// stylesheet for a vehicle with no definition; the home as item 0; the
+// mission's operating and no-go areas as its geofence.
+std::expected<plans::MavlinkPlan, QString> ConsoleSession::mavlinkPlan(const mission::Mission &mission, const mission::Plan &plan)
+{
+    const mission::VehicleCatalog definitions = mission::loadVehicles(mission::vehicleFolders());
+    mission::VehicleDefinition vehicle;
+    if (const mission::VehicleDefinition *known = definitions.find(plan.vehicle))
+        vehicle = *known;
+    else {
+        vehicle.id = vehicle.name = plan.vehicle;
+        vehicle.kind = u"USV"_s;
+    }
+    if (!vehicle.translation(u"mavlink"_s))
+        vehicle.translations.append({u"mavlink"_s, u"MAVLink mission"_s, u"mavlink-mission.xsl"_s, u"xml"_s, {},
+                                     mission::Translation::Geometry::Points});
+    const auto translated = processor::translatePlan(mission, plan.id, vehicle, u"mavlink"_s);
+    if (!translated) {
+        QStringList lines;
+        for (const auto &e : translated.error())
+            lines << e.toString();
+        return std::unexpected(lines.join(u"; "_s));
+    }
+    auto items = plans::missionItemsFromXml(*translated, mission.home);
+    if (!items)
+        return std::unexpected(items.error());
+    return plans::MavlinkPlan{std::move(*items), plans::missionFence(mission)};
 }
 
 ConsoleSession::~ConsoleSession() = default;

@@ -66,6 +66,7 @@ public:
     Q_INVOKABLE void forgetSystem(int systemId);
 
 private:
+    static std::expected<neptus::plans::MavlinkPlan, QString> mavlinkPlan(const neptus::mission::Mission &mission, const neptus::mission::Plan &plan);
     neptus::session::Console m_console;
     neptus::tree::VariableTreeModel m_treeModel{&m_console.tree()};
     neptus::geo::Tracks m_tracks{&m_treeModel};

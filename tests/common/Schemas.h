@@ -27,4 +27,14 @@ inline std::shared_ptr<const msg::Schema> imcSchema()
     return schema;
 }
 
+// The shipped MAVLink dialects (ArduPilot's, with common and minimal), as the console loads them.
+inline std::shared_ptr<const msg::Schema> mavlinkSchema()
+{
+    static const std::shared_ptr<const msg::Schema> schema = [] {
+        auto loaded = msg::Schema::load({msgdefsDirectory() + QStringLiteral("/mavlink/ardupilotmega.xml")});
+        return loaded ? *loaded : nullptr;
+    }();
+    return schema;
+}
+
 } // namespace neptus::test

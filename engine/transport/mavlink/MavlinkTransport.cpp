@@ -36,27 +36,6 @@ quint64 signingStreamKey(quint8 system, quint8 component, quint8 link)
     return quint64(system) << 16 | quint64(component) << 8 | link;
 }
 
-QString familyName(MavlinkVehicle::Family family, MavlinkVehicle::Kind kind, int type)
-{
-    if (family == MavlinkVehicle::Family::Px4)
-        return u"px4"_s;
-    if (family == MavlinkVehicle::Family::ArduPilot) {
-        switch (kind) {
-        case MavlinkVehicle::Kind::Surface:
-        case MavlinkVehicle::Kind::Ground:
-            return u"ardurover"_s;
-        case MavlinkVehicle::Kind::Underwater:
-            return u"ardusub"_s;
-        case MavlinkVehicle::Kind::Air:
-            return type == 1 || (type >= 19 && type <= 25) ? u"arduplane"_s : u"arducopter"_s;
-        case MavlinkVehicle::Kind::Other:
-            break;
-        }
-        return u"ardupilot"_s;
-    }
-    return u"mavlink"_s;
-}
-
 void setField(msg::Message &m, QStringView field, double value)
 {
     if (const int i = m.def()->indexOf(field); i >= 0)
@@ -319,8 +298,7 @@ void MavlinkTransport::frame(QByteArrayView bytes, const Endpoint &from)
             QString name = v.settings.name;
             if (name.isEmpty()) {
                 const int mavType = int(message.integer(u"type"));
-                name = u"%1-%2"_s.arg(familyName(MavlinkVehicle::familyOf(int(message.integer(u"autopilot"))),
-                                                 MavlinkVehicle::kindOf(mavType), mavType))
+                name = u"%1-%2"_s.arg(msg::mavlink::familyName(msg::mavlink::familyOf(int(message.integer(u"autopilot"))), mavType))
                            .arg(header.system);
             }
             v.adapter = std::make_unique<MavlinkVehicle>(header.system, id, name, m_imc);
@@ -499,12 +477,10 @@ msg::Message MavlinkTransport::commandLong(quint16 command, std::initializer_lis
 
 msg::Message MavlinkTransport::setMode(const Vehicle &v, const QString &mode) const
 {
-    const auto number = v.adapter->modeNumber(mode);
-    if (!number)
+    const auto params = msg::mavlink::setModeParams(v.adapter->family(), v.adapter->mavType(), mode);
+    if (!params)
         return commandLong(cmdReturnToLaunch, {}, v);
-    if (v.adapter->family() == MavlinkVehicle::Family::Px4) // main mode and sub mode
-        return commandLong(cmdDoSetMode, {1, float((*number >> 16) & 0xFF), float((*number >> 24) & 0xFF)}, v);
-    return commandLong(cmdDoSetMode, {1, float(*number)}, v); // MAV_MODE_FLAG_CUSTOM_MODE_ENABLED, custom mode
+    return commandLong(cmdDoSetMode, {(*params)[0], (*params)[1], (*params)[2]}, v);
 }
 
 std::expected<void, QString> MavlinkTransport::writeLocked(const QByteArray &frame, const Endpoint &to)

@@ -9,17 +9,6 @@ using namespace Qt::StringLiterals;
 
 namespace {
 
-// MAV_TYPE values (minimal.xml) the families tell apart by.
-constexpr int typeFixedWing = 1, typeGroundRover = 10, typeSurfaceBoat = 11, typeSubmarine = 12;
-bool isCopter(int type)
-{
-    return type == 2 || type == 3 || type == 4 || type == 13 || type == 14 || type == 15 || type == 29 || type == 35;
-}
-bool isVtol(int type)
-{
-    return type >= 19 && type <= 25;
-}
-
 // Entities of what the adapter reports (EntityList below).
 constexpr quint8 batteriesEntity = 3, navigationEntity = 4, gpsEntity = 5, autopilotEntity = 13, parametersEntity = 14;
 struct Sensor
@@ -34,49 +23,6 @@ constexpr Sensor sensors[] = {
     {0x20, gpsEntity, "GPS"},   {0x10000, 11, "RC"},       {0x200000, 10, "AHRS"},
     {0x2000000, batteriesEntity, "Batteries"},             {0x10000000, 12, "Pre-arm"},
 };
-
-// ArduPilot's modes (ArduPilot's mode.h of each vehicle, V4.7).
-const std::pair<quint32, const char *> roverModes[] = {
-    {0, "MANUAL"}, {1, "ACRO"}, {3, "STEERING"}, {4, "HOLD"}, {5, "LOITER"}, {6, "FOLLOW"}, {7, "SIMPLE"},
-    {8, "DOCK"}, {9, "CIRCLE"}, {10, "AUTO"}, {11, "RTL"}, {12, "SMART_RTL"}, {15, "GUIDED"}, {16, "INITIALISING"}};
-const std::pair<quint32, const char *> subModes[] = {
-    {0, "STABILIZE"}, {1, "ACRO"}, {2, "ALT_HOLD"}, {3, "AUTO"}, {4, "GUIDED"}, {7, "CIRCLE"}, {9, "SURFACE"},
-    {16, "POSHOLD"}, {19, "MANUAL"}, {20, "MOTOR_DETECT"}, {21, "SURFTRAK"}};
-const std::pair<quint32, const char *> planeModes[] = {
-    {0, "MANUAL"}, {1, "CIRCLE"}, {2, "STABILIZE"}, {3, "TRAINING"}, {4, "ACRO"}, {5, "FBWA"}, {6, "FBWB"},
-    {7, "CRUISE"}, {8, "AUTOTUNE"}, {10, "AUTO"}, {11, "RTL"}, {12, "LOITER"}, {13, "TAKEOFF"}, {14, "AVOID_ADSB"},
-    {15, "GUIDED"}, {16, "INITIALISING"}, {17, "QSTABILIZE"}, {18, "QHOVER"}, {19, "QLOITER"}, {20, "QLAND"},
-    {21, "QRTL"}, {22, "QAUTOTUNE"}, {23, "QACRO"}, {24, "THERMAL"}, {25, "LOITER_ALT_QLAND"}, {26, "AUTOLAND"}};
-const std::pair<quint32, const char *> copterModes[] = {
-    {0, "STABILIZE"}, {1, "ACRO"}, {2, "ALT_HOLD"}, {3, "AUTO"}, {4, "GUIDED"}, {5, "LOITER"}, {6, "RTL"},
-    {7, "CIRCLE"}, {9, "LAND"}, {11, "DRIFT"}, {13, "SPORT"}, {14, "FLIP"}, {15, "AUTOTUNE"}, {16, "POSHOLD"},
-    {17, "BRAKE"}, {18, "THROW"}, {19, "AVOID_ADSB"}, {20, "GUIDED_NOGPS"}, {21, "SMART_RTL"}, {22, "FLOWHOLD"},
-    {23, "FOLLOW"}, {24, "ZIGZAG"}, {25, "SYSTEMID"}, {26, "AUTOROTATE"}, {27, "AUTO_RTL"}, {28, "TURTLE"}};
-// PX4's main modes and AUTO's sub modes (px4_custom_mode.h): custom_mode = main << 16 | sub << 24.
-const std::pair<quint32, const char *> px4Main[] = {
-    {1, "MANUAL"}, {2, "ALTCTL"}, {3, "POSCTL"}, {4, "AUTO"}, {5, "ACRO"}, {6, "OFFBOARD"}, {7, "STABILIZED"},
-    {8, "RATTITUDE"}, {9, "SIMPLE"}, {10, "TERMINATION"}};
-const std::pair<quint32, const char *> px4Auto[] = {
-    {1, "READY"}, {2, "TAKEOFF"}, {3, "LOITER"}, {4, "MISSION"}, {5, "RTL"}, {6, "LAND"}, {8, "FOLLOW_TARGET"},
-    {9, "PRECLAND"}, {10, "VTOL_TAKEOFF"}};
-
-template<std::size_t N>
-const char *find(const std::pair<quint32, const char *> (&table)[N], quint32 value)
-{
-    for (const auto &[v, name] : table)
-        if (v == value)
-            return name;
-    return nullptr;
-}
-
-template<std::size_t N>
-std::optional<quint32> find(const std::pair<quint32, const char *> (&table)[N], const QString &name)
-{
-    for (const auto &[v, n] : table)
-        if (name == QLatin1StringView(n))
-            return v;
-    return std::nullopt;
-}
 
 void setNumber(msg::Message &m, QStringView field, double value)
 {
@@ -96,12 +42,6 @@ void setText(msg::Message &m, QStringView field, const QString &text)
 
 constexpr double degree = std::numbers::pi / 180;
 
-// The modes in which an ArduPilot or PX4 vehicle runs its mission.
-bool runsMission(MavlinkVehicle::Family family, const QString &mode)
-{
-    return family == MavlinkVehicle::Family::Px4 ? mode == u"AUTO.MISSION" : mode == u"AUTO";
-}
-
 } // namespace
 
 MavlinkVehicle::MavlinkVehicle(quint8 mavlinkSystem, quint16 consoleId, QString name, std::shared_ptr<const msg::Schema> imc)
@@ -110,70 +50,6 @@ MavlinkVehicle::MavlinkVehicle(quint8 mavlinkSystem, quint16 consoleId, QString 
     , m_name(std::move(name))
     , m_imc(std::move(imc))
 {
-}
-
-MavlinkVehicle::Family MavlinkVehicle::familyOf(int mavAutopilot)
-{
-    return mavAutopilot == 3 ? Family::ArduPilot : mavAutopilot == 12 ? Family::Px4 : Family::Generic;
-}
-
-MavlinkVehicle::Kind MavlinkVehicle::kindOf(int type)
-{
-    if (type == typeSurfaceBoat)
-        return Kind::Surface;
-    if (type == typeSubmarine)
-        return Kind::Underwater;
-    if (type == typeGroundRover)
-        return Kind::Ground;
-    if (type == typeFixedWing || isCopter(type) || isVtol(type) || type == 7 /* airship */ || type == 8 /* balloon */)
-        return Kind::Air;
-    return Kind::Other;
-}
-
-QString MavlinkVehicle::modeName(Family family, int mavType, quint32 customMode)
-{
-    const char *name = nullptr;
-    if (family == Family::ArduPilot) {
-        if (mavType == typeSubmarine)
-            name = find(subModes, customMode);
-        else if (mavType == typeGroundRover || mavType == typeSurfaceBoat)
-            name = find(roverModes, customMode);
-        else if (mavType == typeFixedWing || isVtol(mavType))
-            name = find(planeModes, customMode);
-        else if (isCopter(mavType))
-            name = find(copterModes, customMode);
-    } else if (family == Family::Px4) {
-        const quint32 main = (customMode >> 16) & 0xFF, sub = (customMode >> 24) & 0xFF;
-        const char *mainName = find(px4Main, main);
-        if (mainName && main == 4) {
-            const char *subName = find(px4Auto, sub);
-            return subName ? u"AUTO.%1"_s.arg(QLatin1StringView(subName)) : u"AUTO.%1"_s.arg(sub);
-        }
-        name = mainName;
-    }
-    return name ? QString::fromLatin1(name) : u"mode %1"_s.arg(customMode);
-}
-
-std::optional<quint32> MavlinkVehicle::modeNumber(const QString &name) const
-{
-    if (m_family == Family::ArduPilot) {
-        if (m_mavType == typeSubmarine)
-            return find(subModes, name);
-        if (m_mavType == typeGroundRover || m_mavType == typeSurfaceBoat)
-            return find(roverModes, name);
-        if (m_mavType == typeFixedWing || isVtol(m_mavType))
-            return find(planeModes, name);
-        if (isCopter(m_mavType))
-            return find(copterModes, name);
-    } else if (m_family == Family::Px4) {
-        if (name.startsWith(u"AUTO."_s)) {
-            const auto sub = find(px4Auto, name.mid(5));
-            return sub ? std::optional<quint32>(4u << 16 | *sub << 24) : std::nullopt;
-        }
-        const auto main = find(px4Main, name);
-        return main ? std::optional<quint32>(*main << 16) : std::nullopt;
-    }
-    return std::nullopt;
 }
 
 void MavlinkVehicle::setMission(QString planId, QStringList maneuverOfItem)
@@ -231,28 +107,6 @@ msg::Message MavlinkVehicle::parameterState(int state, const QString &descriptio
     return entityState(parametersEntity, state, description, now);
 }
 
-QString MavlinkVehicle::defaultStopMode() const
-{
-    if (m_family == Family::Px4)
-        return u"AUTO.LOITER"_s;
-    if (m_family != Family::ArduPilot)
-        return {};
-    if (m_mavType == typeSubmarine)
-        return u"POSHOLD"_s;
-    if (m_mavType == typeGroundRover || m_mavType == typeSurfaceBoat)
-        return u"HOLD"_s;
-    return u"LOITER"_s;
-}
-
-QString MavlinkVehicle::defaultAbortMode() const
-{
-    if (m_family == Family::Px4)
-        return u"AUTO.RTL"_s;
-    if (m_family != Family::ArduPilot)
-        return {};
-    return m_mavType == typeSubmarine ? u"SURFACE"_s : u"RTL"_s;
-}
-
 std::vector<msg::Message> MavlinkVehicle::translate(const msg::Message &message, double now)
 {
     std::vector<msg::Message> out;
@@ -265,8 +119,8 @@ std::vector<msg::Message> MavlinkVehicle::translate(const msg::Message &message,
         const bool first = !m_heard;
         m_heard = true;
         m_mavType = int(message.integer(u"type"));
-        m_family = familyOf(int(message.integer(u"autopilot")));
-        m_kind = kindOf(m_mavType);
+        m_family = msg::mavlink::familyOf(int(message.integer(u"autopilot")));
+        m_kind = msg::mavlink::kindOf(m_mavType);
         m_armed = message.integer(u"base_mode") & 0x80; // MAV_MODE_FLAG_SAFETY_ARMED
         m_customMode = quint32(message.integer(u"custom_mode"));
         if (first) {
@@ -297,7 +151,7 @@ std::vector<msg::Message> MavlinkVehicle::translate(const msg::Message &message,
             out.push_back(status == 5   ? entityState(autopilotEntity, 2, u"failsafe (MAV_STATE_CRITICAL) · "_s + said, now)
                           : status == 6 ? entityState(autopilotEntity, 3, u"emergency (MAV_STATE_EMERGENCY) · "_s + said, now)
                                         : entityState(autopilotEntity, 1, said, now));
-            if (changed && m_planState == 3 && !runsMission(m_family, mode)) // a mission stopped by a mode change
+            if (changed && m_planState == 3 && mode != msg::mavlink::missionMode(m_family)) // a mission stopped by a mode change
                 m_missionState = -1;
         }
     } else if (type == u"ATTITUDE") {
@@ -412,7 +266,7 @@ std::vector<msg::Message> MavlinkVehicle::translate(const msg::Message &message,
         const int missionState = int(message.integer(u"mission_state"));
         // 3 ACTIVE, 5 COMPLETE (MISSION_STATE); without the field (an older autopilot), AUTO and armed is running.
         const bool reportsState = missionState != 0;
-        const bool executing = runsMission(m_family, modeName()) && m_armed && (reportsState ? missionState == 3 : true);
+        const bool executing = modeName() == msg::mavlink::missionMode(m_family) && m_armed && (reportsState ? missionState == 3 : true);
         msg::Message s = make("PlanControlState", now);
         const QString plan = m_planId.isEmpty() ? u"mission"_s : m_planId;
         setText(s, u"plan_id", plan);

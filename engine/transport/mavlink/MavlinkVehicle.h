@@ -1,5 +1,6 @@
 #pragma once
 
+#include "messages/MavlinkModes.h"
 #include "messages/Message.h"
 
 #include <QString>
@@ -22,14 +23,13 @@ namespace neptus::transport {
 // the database and the web page read these whatever the protocol; the raw
 // MAVLink messages go to the tree beside them.
 //
-// The family rules (QGroundControl's FirmwarePlugin idea): ArduPilot's mode
-// numbers per vehicle (Rover, Sub, Plane, Copter), PX4's main and sub modes,
-// which mode runs a mission, holds, returns or surfaces.
+// The family rules (what each autopilot family calls its modes) are
+// msg::mavlink's (MavlinkModes.h).
 class MavlinkVehicle
 {
 public:
-    enum class Family { ArduPilot, Px4, Generic };
-    enum class Kind { Surface, Underwater, Air, Ground, Other };
+    using Family = msg::mavlink::Family;
+    using Kind = msg::mavlink::Kind;
 
     // MAVLink component of the autopilot: its messages are the system's own
     // (entity 0xFF); other components become entities of their own.
@@ -45,7 +45,7 @@ public:
     int mavType() const { return m_mavType; }
     bool armed() const { return m_armed; }
     quint32 customMode() const { return m_customMode; }
-    QString modeName() const { return modeName(m_family, m_mavType, m_customMode); }
+    QString modeName() const { return msg::mavlink::modeName(m_family, m_mavType, m_customMode); }
     bool heard() const { return m_heard; }
 
     // The IMC messages `message` (a MAVLink message from this vehicle) means,
@@ -59,20 +59,15 @@ public:
     // The modes Stop and Abort use when its vehicle definition names none:
     // ArduPilot HOLD (Rover), POSHOLD (Sub), LOITER (Plane, Copter), PX4
     // AUTO.LOITER; Abort RTL, and SURFACE for a Sub (which has no RTL).
-    QString defaultStopMode() const;
-    QString defaultAbortMode() const;
+    QString defaultStopMode() const { return msg::mavlink::stopMode(m_family, m_mavType); }
+    QString defaultAbortMode() const { return msg::mavlink::abortMode(m_family, m_mavType); }
 
     // The plan this console gave it, for the mission's progress: the plan's
     // id and, per mission item, the maneuver it belongs to ("" for home).
     void setMission(QString planId, QStringList maneuverOfItem);
 
-    // A mode's name ("AUTO", "HOLD", "SURFACE", PX4's "AUTO.MISSION"), or
-    // "mode 42" when the family does not name it.
-    static QString modeName(Family family, int mavType, quint32 customMode);
     // The custom mode of a name for this vehicle, if the family has it.
-    std::optional<quint32> modeNumber(const QString &name) const;
-    static Family familyOf(int mavAutopilot);
-    static Kind kindOf(int mavType);
+    std::optional<quint32> modeNumber(const QString &name) const { return msg::mavlink::modeNumber(m_family, m_mavType, name); }
 
 private:
     msg::Message make(const char *abbrev, double now, quint8 entity = 0xFF) const;

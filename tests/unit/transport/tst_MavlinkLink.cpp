@@ -31,14 +31,7 @@ using namespace Qt::StringLiterals;
 
 namespace {
 
-std::shared_ptr<const msg::Schema> mavlinkSchema()
-{
-    static const auto schema = [] {
-        session::Console console(test::shippedSchema());
-        return console.mavlinkSchema();
-    }();
-    return schema;
-}
+using test::mavlinkSchema;
 
 msg::Message make(const char *name, std::initializer_list<std::pair<const char *, double>> fields = {})
 {

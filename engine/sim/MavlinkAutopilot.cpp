@@ -1,0 +1,435 @@
+#include "sim/MavlinkAutopilot.h"
+
+#include "messages/MavlinkModes.h"
+
+#include <cmath>
+
+namespace neptus::sim {
+
+using namespace Qt::StringLiterals;
+
+namespace {
+
+// MAV_MISSION_RESULT, MAV_RESULT, MAV_SEVERITY, MISSION_STATE values used here.
+constexpr int missionAccepted = 0, missionError = 1, missionUnsupported = 3, missionInvalidSequence = 13,
+              missionCancelled = 15;
+constexpr int resultAccepted = 0, resultDenied = 2, resultUnsupported = 3, resultFailed = 4;
+constexpr int severityCritical = 2, severityWarning = 4, severityNotice = 5, severityInfo = 6;
+constexpr int stateNoMission = 1, stateNotStarted = 2, stateActive = 3, stateComplete = 5;
+
+bool isNavigation(quint16 command)
+{
+    return command < 95;
+}
+
+void set(msg::Message &m, QStringView field, double value)
+{
+    if (const int i = m.def()->indexOf(field); i >= 0)
+        m.setNumber(i, value);
+}
+
+// What AP_Mission keeps of an item, as it reads it back (mavlink_int_to_mission_cmd, then
+// mission_cmd_to_mavlink_int; MissionItemProtocol_Fence): see docs/mavlink.md.
+void keep(MavlinkAutopilot::Item &i, int missionType)
+{
+    const auto whole = [](float v) { return std::isnan(v) ? 0.0f : std::trunc(v); };
+    i.autocontinue = missionType == 1 ? 0 : 1;
+    if (missionType == 1) { // a fence vertex: its count and position
+        i.frame = 0;
+        i.p1 = whole(i.p1);
+        i.p2 = i.p3 = i.p4 = 0;
+        i.z = 0;
+        return;
+    }
+    i.frame = (i.frame == 3 || i.frame == 6) ? 3 : (i.frame == 10 || i.frame == 11) ? 10 : 0;
+    i.z = std::trunc(i.z * 100.0f) * 0.01f; // whole centimetres
+    const float p1 = i.p1, p2 = i.p2, p3 = i.p3, p4 = i.p4;
+    i.p1 = i.p2 = i.p3 = i.p4 = 0;
+    switch (i.command) {
+    case 16:
+    case 22:
+        i.p1 = whole(p1);
+        break;
+    case 17:
+        i.p3 = whole(p3);
+        break;
+    case 19:
+        i.p1 = whole(p1);
+        i.p3 = p3 < 0 ? -1 : 1;
+        i.p4 = p4 > 0 ? 1 : 0;
+        break;
+    case 21:
+        i.p1 = whole(p1);
+        i.p4 = p4 < 0 ? -1 : 1;
+        break;
+    case 178:
+        i.frame = 0;
+        i.p1 = whole(p1);
+        i.p2 = p2;
+        i.p3 = p3;
+        i.x = i.y = 0;
+        i.z = 0;
+        break;
+    default:
+        i.p1 = p1;
+        i.p2 = p2;
+        i.p3 = p3;
+        i.p4 = p4;
+        break;
+    }
+}
+
+} // namespace
+
+MavlinkAutopilot::MavlinkAutopilot(std::shared_ptr<const msg::Schema> mavlink, Config config)
+    : m_schema(std::move(mavlink))
+    , m_config(std::move(config))
+{
+    m_limits = m_config.type == Type::Boat ? Limits::asv() : Limits::auv();
+    m_mode = *modeNumber(u"MANUAL"_s);
+    Item home; // read back as a waypoint in frame 0 at its height above sea level
+    home.frame = 0;
+    home.x = qint32(std::lround(geo::degrees(m_config.home.lat) * 1e7));
+    home.y = qint32(std::lround(geo::degrees(m_config.home.lon) * 1e7));
+    home.z = float(m_config.home.height);
+    m_mission.push_back(home);
+}
+
+std::optional<quint32> MavlinkAutopilot::modeNumber(const QString &name) const
+{
+    return msg::mavlink::modeNumber(msg::mavlink::Family::ArduPilot, mavType(), name);
+}
+
+QString MavlinkAutopilot::modeName() const
+{
+    return msg::mavlink::modeName(msg::mavlink::Family::ArduPilot, mavType(), m_mode);
+}
+
+msg::Message MavlinkAutopilot::make(const char *name) const
+{
+    return msg::Message(m_schema->byAbbrev(QString::fromLatin1(name)));
+}
+
+msg::Message MavlinkAutopilot::ack(quint16 command, int result) const
+{
+    msg::Message m = make("COMMAND_ACK");
+    set(m, u"command", command);
+    set(m, u"result", result);
+    set(m, u"target_system", 255);
+    set(m, u"target_component", 190);
+    return m;
+}
+
+msg::Message MavlinkAutopilot::text(int severity, const QString &words) const
+{
+    msg::Message m = make("STATUSTEXT");
+    set(m, u"severity", severity);
+    m.setBytes(m.def()->indexOf(u"text"), words.toUtf8().left(50));
+    return m;
+}
+
+msg::Message MavlinkAutopilot::missionAck(int type, int result) const
+{
+    msg::Message m = make("MISSION_ACK");
+    set(m, u"type", result);
+    set(m, u"mission_type", type);
+    set(m, u"target_system", 255);
+    set(m, u"target_component", 190);
+    return m;
+}
+
+// ArduPilot asks with MISSION_REQUEST (not _INT), whatever the ground station uses.
+msg::Message MavlinkAutopilot::request(const Upload &u) const
+{
+    msg::Message m = make("MISSION_REQUEST");
+    set(m, u"seq", u.next);
+    set(m, u"mission_type", u.type);
+    set(m, u"target_system", 255);
+    set(m, u"target_component", 190);
+    return m;
+}
+
+msg::Message MavlinkAutopilot::item(int type, int seq) const
+{
+    const Item &i = type == 1 ? m_fence[size_t(seq)] : m_mission[size_t(seq)];
+    msg::Message m = make("MISSION_ITEM_INT");
+    set(m, u"seq", seq);
+    set(m, u"frame", i.frame);
+    set(m, u"command", i.command);
+    set(m, u"autocontinue", i.autocontinue);
+    const float p[] = {i.p1, i.p2, i.p3, i.p4};
+    for (int k = 0; k < 4; ++k)
+        set(m, u"param%1"_s.arg(k + 1), p[k]);
+    m.setInteger(m.def()->indexOf(u"x"), i.x);
+    m.setInteger(m.def()->indexOf(u"y"), i.y);
+    set(m, u"z", i.z);
+    set(m, u"mission_type", type);
+    set(m, u"target_system", 255);
+    set(m, u"target_component", 190);
+    return m;
+}
+
+std::vector<msg::Message> MavlinkAutopilot::receive(const msg::Message &m, double now)
+{
+    std::vector<msg::Message> out;
+    if (!m.def())
+        return out;
+    const QString &type = m.def()->abbrev;
+    const auto missionType = [&] { return int(m.integer(u"mission_type")); };
+    if (type == u"MISSION_COUNT") {
+        if (missionType() > 1) {
+            out.push_back(missionAck(missionType(), missionUnsupported));
+            return out;
+        }
+        Upload u;
+        u.type = missionType();
+        u.count = int(m.integer(u"count"));
+        u.askedAt = u.lastItemAt = now;
+        if (u.count == 0) {
+            (u.type == 1 ? m_fence : m_mission).resize(u.type == 1 ? 0 : 1);
+            out.push_back(missionAck(u.type, missionAccepted));
+            return out;
+        }
+        m_upload = u;
+        out.push_back(request(*m_upload));
+    } else if (type == u"MISSION_ITEM_INT" || type == u"MISSION_ITEM") {
+        if (!m_upload || missionType() != m_upload->type) {
+            out.push_back(missionAck(missionType(), missionError));
+            return out;
+        }
+        Upload &u = *m_upload;
+        if (m.integer(u"seq") != u.next) {
+            out.push_back(missionAck(u.type, missionInvalidSequence));
+            return out;
+        }
+        Item i = plans::missionItemFrom(m);
+        keep(i, u.type);
+        u.items.push_back(i);
+        ++u.next;
+        u.askedAt = u.lastItemAt = now;
+        if (u.next < u.count) {
+            out.push_back(request(u));
+            return out;
+        }
+        if (u.type == 1) {
+            m_fence = std::move(u.items);
+        } else {
+            u.items[0] = m_mission[0]; // its own home, whatever was sent
+            m_mission = std::move(u.items);
+            m_current = 1;
+            m_missionState = m_mission.size() > 1 ? stateNotStarted : stateNoMission;
+            out.push_back(text(severityInfo, u"Flight plan received"_s));
+        }
+        const int uploaded = u.type;
+        m_upload.reset();
+        out.push_back(missionAck(uploaded, missionAccepted));
+    } else if (type == u"MISSION_REQUEST_LIST") {
+        msg::Message count = make("MISSION_COUNT");
+        set(count, u"count", double(missionType() == 1 ? m_fence.size() : m_mission.size()));
+        set(count, u"mission_type", missionType());
+        set(count, u"target_system", 255);
+        set(count, u"target_component", 190);
+        out.push_back(std::move(count));
+    } else if (type == u"MISSION_REQUEST_INT" || type == u"MISSION_REQUEST") {
+        const int seq = int(m.integer(u"seq"));
+        const size_t size = missionType() == 1 ? m_fence.size() : m_mission.size();
+        if (seq < 0 || size_t(seq) >= size)
+            out.push_back(missionAck(missionType(), missionInvalidSequence));
+        else
+            out.push_back(item(missionType(), seq));
+    } else if (type == u"COMMAND_LONG") {
+        return command(m, now);
+    }
+    return out;
+}
+
+bool MavlinkAutopilot::setMode(quint32 mode, std::vector<msg::Message> &out)
+{
+    if (mode == *modeNumber(u"AUTO"_s) && m_mission.size() < 2) {
+        out.push_back(text(severityNotice, u"No Mission. Can't set AUTO."_s));
+        return false;
+    }
+    if (mode == *modeNumber(u"AUTO"_s) && m_mode != mode && m_missionState == stateComplete)
+        m_current = 1; // a finished mission starts again
+    m_mode = mode;
+    return true;
+}
+
+std::vector<msg::Message> MavlinkAutopilot::command(const msg::Message &m, double)
+{
+    std::vector<msg::Message> out;
+    const quint16 cmd = quint16(m.integer(u"command"));
+    const auto p = [&](int i) { return m.number(u"param%1"_s.arg(i)); };
+    switch (cmd) {
+    case 176: { // MAV_CMD_DO_SET_MODE
+        if (!(int(p(1)) & 1)) {
+            out.push_back(ack(cmd, resultDenied));
+            return out;
+        }
+        const quint32 mode = quint32(p(2));
+        if (msg::mavlink::modeName(msg::mavlink::Family::ArduPilot, mavType(), mode).startsWith(u"mode "_s)) {
+            out.push_back(ack(cmd, resultFailed));
+            out.push_back(text(severityWarning, u"No such mode %1"_s.arg(mode)));
+            return out;
+        }
+        std::vector<msg::Message> words;
+        const bool ok = setMode(mode, words);
+        out.push_back(ack(cmd, ok ? resultAccepted : resultFailed));
+        out.insert(out.end(), words.begin(), words.end());
+        return out;
+    }
+    case 300: { // MAV_CMD_MISSION_START (Rover: AUTO)
+        std::vector<msg::Message> words;
+        const bool ok = setMode(*modeNumber(u"AUTO"_s), words);
+        out.push_back(ack(cmd, ok ? resultAccepted : resultFailed));
+        out.insert(out.end(), words.begin(), words.end());
+        return out;
+    }
+    case 400: { // MAV_CMD_COMPONENT_ARM_DISARM
+        const bool arm = p(1) > 0.5;
+        if (arm && !m_armed && !m_config.armingFailures.isEmpty() && int(p(2)) != 2989) {
+            out.push_back(ack(cmd, resultFailed));
+            for (const QString &why : m_config.armingFailures)
+                out.push_back(text(severityCritical, u"Arm: "_s + why));
+            return out;
+        }
+        out.push_back(ack(cmd, resultAccepted));
+        if (arm != m_armed) {
+            m_armed = arm;
+            const bool rover = m_config.type == Type::Boat;
+            out.push_back(text(severityInfo, arm ? (rover ? u"Throttle armed"_s : u"Arming motors"_s)
+                                                 : (rover ? u"Throttle disarmed"_s : u"Disarming motors"_s)));
+        }
+        return out;
+    }
+    case 224: { // MAV_CMD_DO_SET_MISSION_CURRENT
+        const int seq = int(p(1));
+        if (seq < 1 || seq >= int(m_mission.size())) {
+            out.push_back(ack(cmd, resultFailed));
+            return out;
+        }
+        m_current = seq;
+        if (m_missionState == stateComplete)
+            m_missionState = stateNotStarted;
+        out.push_back(ack(cmd, resultAccepted));
+        return out;
+    }
+    case 511: // MAV_CMD_SET_MESSAGE_INTERVAL
+    case 512: // MAV_CMD_REQUEST_MESSAGE
+        out.push_back(ack(cmd, resultAccepted));
+        return out;
+    default:
+        out.push_back(ack(cmd, resultUnsupported));
+        return out;
+    }
+}
+
+const MavlinkAutopilot::Item *MavlinkAutopilot::currentNav()
+{
+    return m_current >= 1 && m_current < int(m_mission.size()) ? &m_mission[size_t(m_current)] : nullptr;
+}
+
+void MavlinkAutopilot::run(double dt, std::vector<msg::Message> &out)
+{
+    const bool autoMode = m_mode == *modeNumber(u"AUTO"_s);
+    if (!autoMode || m_missionState == stateComplete || m_mission.size() < 2) {
+        if (!autoMode && m_missionState == stateActive)
+            m_missionState = stateNotStarted; // left the mission: it resumes where it was
+        hold(m_motion, nullptr, dt, m_limits);
+        return;
+    }
+    // In AUTO the mission is ACTIVE, armed or not (ArduRover's MISSION_CURRENT in the fixture); it moves once armed.
+    if (m_missionState != stateActive) {
+        m_missionState = stateActive;
+        out.push_back(text(severityInfo, u"Mission: %1 WP"_s.arg(m_current)));
+    }
+    if (!m_armed) {
+        hold(m_motion, nullptr, dt, m_limits);
+        return;
+    }
+    // Commands that are not navigation ones happen at once.
+    while (const Item *i = currentNav()) {
+        if (isNavigation(i->command))
+            break;
+        if (i->command == 178 && i->p2 > 0) // MAV_CMD_DO_CHANGE_SPEED
+            m_speed = i->p2;
+        ++m_current;
+    }
+    const Item *target = currentNav();
+    if (!target) {
+        m_missionState = stateComplete;
+        if (m_config.type == Type::Boat)
+            out.push_back(text(severityNotice, u"Mission Complete"_s));
+        return;
+    }
+    const geo::Geodetic point{geo::radians(target->x * 1e-7), geo::radians(target->y * 1e-7), 0};
+    const Eigen::Vector3d ned = geo::toNed(point, m_config.home);
+    const double down = m_config.type == Type::Sub ? std::max(0.0, double(-target->z)) : 0.0;
+    if (!steer(m_motion, ned.head<2>(), m_speed, &down, dt, m_limits))
+        return;
+    msg::Message reached = make("MISSION_ITEM_REACHED");
+    set(reached, u"seq", m_current);
+    out.push_back(std::move(reached));
+    out.push_back(text(severityInfo, u"Reached waypoint #%1"_s.arg(m_current)));
+    ++m_current;
+    if (currentNav())
+        out.push_back(text(severityInfo, u"Mission: %1 WP"_s.arg(m_current)));
+}
+
+std::vector<msg::Message> MavlinkAutopilot::step(double now)
+{
+    std::vector<msg::Message> out;
+    const double dt = m_lastStep < 0 ? 0 : std::min(1.0, now - m_lastStep);
+    m_lastStep = now;
+    if (m_upload) {
+        Upload &u = *m_upload;
+        if (now - u.lastItemAt >= 8.0) { // GCS_MAVLink: the upload is given up 8 s after the last item
+            out.push_back(text(severityWarning, u"Mission upload timeout"_s));
+            out.push_back(missionAck(u.type, missionCancelled));
+            m_upload.reset();
+        } else if (now - u.askedAt >= 1.0) { // asked again a second later
+            u.askedAt = now;
+            out.push_back(request(u));
+        }
+    }
+    run(dt, out);
+    if (now - m_lastFast >= 0.2) {
+        m_lastFast = now;
+        const geo::Geodetic here = geo::fromNed(m_motion.ned, m_config.home);
+        msg::Message g = make("GLOBAL_POSITION_INT");
+        set(g, u"time_boot_ms", std::fmod(now * 1000, 4e9));
+        g.setInteger(g.def()->indexOf(u"lat"), std::lround(geo::degrees(here.lat) * 1e7));
+        g.setInteger(g.def()->indexOf(u"lon"), std::lround(geo::degrees(here.lon) * 1e7));
+        set(g, u"alt", std::lround(-m_motion.ned.z() * 1000));
+        set(g, u"relative_alt", std::lround(-m_motion.ned.z() * 1000));
+        set(g, u"vx", std::lround(m_motion.speed * std::cos(m_motion.psi) * 100));
+        set(g, u"vy", std::lround(m_motion.speed * std::sin(m_motion.psi) * 100));
+        set(g, u"hdg", std::lround(std::fmod(geo::degrees(m_motion.psi) + 360.0, 360.0) * 100));
+        out.push_back(std::move(g));
+    }
+    if (now - m_lastSlow >= 1.0) {
+        m_lastSlow = now;
+        msg::Message beat = make("HEARTBEAT");
+        set(beat, u"type", mavType());
+        set(beat, u"autopilot", 3); // MAV_AUTOPILOT_ARDUPILOTMEGA
+        set(beat, u"base_mode", 1 | (m_armed ? 128 : 0));
+        set(beat, u"custom_mode", m_mode);
+        set(beat, u"system_status", m_armed ? 4 : 3); // ACTIVE, STANDBY
+        set(beat, u"mavlink_version", 3);
+        out.push_back(std::move(beat));
+        msg::Message current = make("MISSION_CURRENT");
+        const bool done = m_missionState == stateComplete;
+        set(current, u"seq", done && m_mode != *modeNumber(u"AUTO"_s) ? 0 : m_current);
+        set(current, u"total", double(m_mission.size()) - 1);
+        set(current, u"mission_state", m_mission.size() < 2 ? stateNoMission : m_missionState);
+        set(current, u"mission_mode", m_mode == *modeNumber(u"AUTO"_s) ? 1 : 0);
+        out.push_back(std::move(current));
+        msg::Message status = make("SYS_STATUS");
+        set(status, u"voltage_battery", 15800);
+        set(status, u"battery_remaining", 87);
+        out.push_back(std::move(status));
+    }
+    return out;
+}
+
+} // namespace neptus::sim

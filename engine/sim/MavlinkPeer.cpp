@@ -1,0 +1,79 @@
+#include "sim/MavlinkPeer.h"
+
+#include <QNetworkDatagram>
+
+namespace neptus::sim {
+
+using namespace Qt::StringLiterals;
+
+MavlinkPeer::MavlinkPeer(std::shared_ptr<const msg::Schema> mavlink, Config config, QObject *parent)
+    : QObject(parent)
+    , m_codec(mavlink)
+    , m_config(std::move(config))
+    , m_autopilot(mavlink, m_config.autopilot)
+{
+    m_timer.setInterval(50);
+    connect(&m_timer, &QTimer::timeout, this, &MavlinkPeer::tick);
+    connect(&m_socket, &QUdpSocket::readyRead, this, &MavlinkPeer::read);
+}
+
+std::expected<void, QString> MavlinkPeer::start()
+{
+    if (!m_socket.bind(m_config.bindAddress, m_config.port))
+        return std::unexpected(u"cannot listen on %1:%2: %3"_s.arg(m_config.bindAddress.toString()).arg(m_config.port).arg(m_socket.errorString()));
+    m_clock.start();
+    m_timer.start();
+    tick();
+    return {};
+}
+
+double MavlinkPeer::now() const
+{
+    return m_clock.elapsed() / 1000.0 * m_config.timeFactor;
+}
+
+void MavlinkPeer::send(const std::vector<msg::Message> &messages, const QHostAddress &to, quint16 port)
+{
+    msg::MavlinkCodec::Options options;
+    options.system = m_config.system;
+    options.component = 1;
+    for (const msg::Message &m : messages) {
+        options.sequence = m_sequence++;
+        if (auto frame = m_codec.encode(m, options))
+            m_socket.writeDatagram(*frame, to, port);
+    }
+}
+
+void MavlinkPeer::tick()
+{
+    send(m_autopilot.step(now()), m_config.groundAddress, m_config.groundPort);
+}
+
+void MavlinkPeer::read()
+{
+    while (m_socket.hasPendingDatagrams()) {
+        const QNetworkDatagram datagram = m_socket.receiveDatagram();
+        const QByteArray data = datagram.data();
+        // A datagram may carry several frames (a radio bridge packs them).
+        for (qsizetype at = 0; at < data.size();) {
+            const qsizetype length = msg::MavlinkCodec::frameLength(QByteArrayView(data).sliced(at));
+            if (length == 0 || at + length > data.size()) {
+                ++m_bad;
+                break;
+            }
+            msg::MavlinkFrame header;
+            auto message = m_codec.decode(QByteArrayView(data).sliced(at, length), &header);
+            at += length;
+            if (!message) {
+                ++m_bad;
+                continue;
+            }
+            const int target = message->def() ? message->def()->indexOf(u"target_system") : -1;
+            if (target >= 0 && message->integer(target) != 0 && message->integer(target) != m_config.system)
+                continue; // for another vehicle
+            send(m_autopilot.receive(*message, now()), datagram.senderAddress(), quint16(datagram.senderPort()));
+        }
+    }
+}
+
+} // namespace neptus::sim

@@ -1,0 +1,95 @@
+// The simulator's ArduPilot: each behaviour the console relies on, named,
+// as ArduPilot's source has it (GCS_MAVLink MissionItemProtocol, AP_Mission,
+// Rover's mode.cpp) and the real vehicles of ../shared/fixtures/mavlink did.
+#include "sim/MavlinkAutopilot.h"
+
+#include "QtPrinters.h"
+#include "Schemas.h"
+
+#include <gtest/gtest.h>
+
+using namespace neptus;
+using namespace Qt::StringLiterals;
+
+namespace {
+
+msg::Message make(const char *name, std::initializer_list<std::pair<const char *, double>> fields = {})
+{
+    msg::Message m(test::mavlinkSchema()->byAbbrev(QString::fromLatin1(name)));
+    for (const auto &[field, value] : fields)
+        m.setNumber(m.def()->indexOf(QString::fromLatin1(field)), value);
+    return m;
+}
+
+QStringList said(const std::vector<msg::Message> &out)
+{
+    QStringList lines;
+    for (const msg::Message &m : out) {
+        const QString &type = m.def()->abbrev;
+        if (type == u"STATUSTEXT")
+            lines << u"STATUSTEXT %1 %2"_s.arg(m.integer(u"severity")).arg(m.text(u"text"));
+        else if (type == u"MISSION_REQUEST" || type == u"MISSION_REQUEST_INT")
+            lines << u"%1 %2"_s.arg(type).arg(m.integer(u"seq"));
+        else if (type == u"MISSION_ACK")
+            lines << u"MISSION_ACK %1"_s.arg(m.integer(u"type"));
+        else if (type == u"COMMAND_ACK")
+            lines << u"COMMAND_ACK %1 %2"_s.arg(m.integer(u"command")).arg(m.integer(u"result"));
+        else if (type == u"MISSION_ITEM_INT")
+            lines << u"MISSION_ITEM_INT %1 cmd %2 frame %3 p2 %4 z %5"_s.arg(m.integer(u"seq")).arg(m.integer(u"command"))
+                         .arg(m.integer(u"frame")).arg(m.number(u"param2")).arg(m.number(u"z"));
+    }
+    return lines;
+}
+
+msg::Message waypoint(int seq, double z = 0)
+{
+    return make("MISSION_ITEM_INT", {{"seq", seq}, {"command", 16}, {"frame", 3}, {"param2", 2}, {"x", 411861769}, {"y", -87060003}, {"z", z}});
+}
+
+} // namespace
+
+TEST(MavlinkAutopilot, ItAsksForItemsWithMissionRequestAgainAfterASecondAndGivesUpEightSecondsAfterTheLast)
+{
+    sim::MavlinkAutopilot boat(test::mavlinkSchema(), {});
+    EXPECT_EQ(said(boat.receive(make("MISSION_COUNT", {{"count", 3}}), 0)), QStringList{u"MISSION_REQUEST 0"_s});
+    EXPECT_EQ(said(boat.step(0.5)), QStringList());
+    EXPECT_EQ(said(boat.step(1.0)), QStringList{u"MISSION_REQUEST 0"_s});
+    EXPECT_EQ(said(boat.receive(waypoint(0), 1.2)), QStringList{u"MISSION_REQUEST 1"_s});
+    EXPECT_EQ(said(boat.receive(waypoint(2), 1.3)), QStringList{u"MISSION_ACK 13"_s}) << "INVALID_SEQUENCE";
+    QStringList late;
+    for (double t = 1.5; t <= 9.3; t += 0.1)
+        late << said(boat.step(t));
+    EXPECT_EQ(late.filter(u"MISSION_ACK"_s), QStringList{u"MISSION_ACK 15"_s}) << "OPERATION_CANCELLED";
+    EXPECT_TRUE(late.contains(u"STATUSTEXT 4 Mission upload timeout"_s));
+}
+
+TEST(MavlinkAutopilot, ItKeepsItsOwnHomeAsItemZeroAndWhatAPMissionKeepsOfEachItem)
+{
+    sim::MavlinkAutopilot boat(test::mavlinkSchema(), {});
+    boat.receive(make("MISSION_COUNT", {{"count", 3}}), 0);
+    boat.receive(waypoint(0, 99), 0);
+    boat.receive(make("MISSION_ITEM_INT", {{"seq", 1}, {"command", 178}, {"frame", 2}, {"param1", 1}, {"param2", 3}}), 0);
+    EXPECT_EQ(said(boat.receive(waypoint(2, 1.234), 0)),
+              (QStringList{u"STATUSTEXT 6 Flight plan received"_s, u"MISSION_ACK 0"_s}));
+    QStringList back;
+    for (int seq = 0; seq < 3; ++seq)
+        back << said(boat.receive(make("MISSION_REQUEST_INT", {{"seq", seq}}), 0));
+    EXPECT_EQ(back, (QStringList{u"MISSION_ITEM_INT 0 cmd 16 frame 0 p2 0 z 0"_s, u"MISSION_ITEM_INT 1 cmd 178 frame 0 p2 3 z 0"_s,
+                                 u"MISSION_ITEM_INT 2 cmd 16 frame 3 p2 0 z 1.23"_s}));
+}
+
+TEST(MavlinkAutopilot, AutoWithoutAMissionAndArmingThatFailsAreRefusedInArduRoversWords)
+{
+    sim::MavlinkAutopilot::Config config;
+    config.armingFailures = {u"Gyros inconsistent"_s};
+    sim::MavlinkAutopilot boat(test::mavlinkSchema(), config);
+    EXPECT_EQ(said(boat.receive(make("COMMAND_LONG", {{"command", 176}, {"param1", 1}, {"param2", 10}}), 0)),
+              (QStringList{u"COMMAND_ACK 176 4"_s, u"STATUSTEXT 5 No Mission. Can't set AUTO."_s}));
+    EXPECT_EQ(said(boat.receive(make("COMMAND_LONG", {{"command", 176}, {"param1", 0}, {"param2", 4}}), 0)),
+              QStringList{u"COMMAND_ACK 176 2"_s}) << "DENIED without the custom-mode flag";
+    EXPECT_EQ(said(boat.receive(make("COMMAND_LONG", {{"command", 400}, {"param1", 1}}), 0)),
+              (QStringList{u"COMMAND_ACK 400 4"_s, u"STATUSTEXT 2 Arm: Gyros inconsistent"_s}));
+    EXPECT_FALSE(boat.armed());
+    EXPECT_EQ(said(boat.receive(make("COMMAND_LONG", {{"command", 400}, {"param1", 1}, {"param2", 2989}}), 0)),
+              (QStringList{u"COMMAND_ACK 400 0"_s, u"STATUSTEXT 6 Throttle armed"_s})) << "forced";
+}

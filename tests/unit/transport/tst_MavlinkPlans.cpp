@@ -1,0 +1,136 @@
+// Plans on a MAVLink vehicle, through the console's own wiring
+// (ConsoleSession: link, plan desk, translation) against an ArduPilot-like
+// vehicle on loopback UDP (sim::MavlinkPeer, which answers as ArduPilot's
+// source and the fixtures say): the plan is translated, uploaded with its
+// geofence, read back and recognised; START arms and sets AUTO, or is
+// refused in the vehicle's words; the plan runs to its end, told once.
+#include "qmlmodels/ConsoleSession.h"
+#include "sim/MavlinkPeer.h"
+
+#include "mission/MissionXml.h"
+
+#include "Missions.h"
+#include "QtPrinters.h"
+#include "Schemas.h"
+
+#include <QTest>
+
+#include <gtest/gtest.h>
+
+using namespace neptus;
+using namespace Qt::StringLiterals;
+
+namespace {
+
+const char *const missionText = R"X(<?xml version="1.0" encoding="UTF-8"?>
+<mission format="1" id="boat" name="Boat">
+  <home lat="41.1854582" lon="-8.7060003" height="0"/>
+  <vehicle id="ardurover-1"/>
+  <map id="m">
+    <polygon id="ops" role="operating-area">
+      <point lat="41.1840" lon="-8.7080"/><point lat="41.1870" lon="-8.7080"/>
+      <point lat="41.1870" lon="-8.7040"/><point lat="41.1840" lon="-8.7040"/>
+    </polygon>
+  </map>
+  <plan id="box" vehicle="ardurover-1" start="out">
+    <maneuvers>
+      <Goto id="out" lat="41.1856" lon="-8.7060" z="0" z_units="DEPTH" speed="3" speed_units="METERS_PS"/>
+      <Goto id="back" lat="41.1855" lon="-8.7058" z="0" z_units="DEPTH" speed="3" speed_units="METERS_PS"/>
+    </maneuvers>
+    <transition from="out" to="back"/>
+  </plan>
+</mission>
+)X";
+
+struct MavlinkPlans : ::testing::Test
+{
+    ConsoleSession session{test::shippedSchema()};
+    plans::PlanDesk &desk = session.planDesk();
+    std::unique_ptr<sim::MavlinkPeer> boat;
+
+    void startBoat(QStringList armingFailures = {})
+    {
+        transport::MavlinkConfig config;
+        config.port = 0;
+        ASSERT_TRUE(session.console().startMavlink(config).has_value());
+        const quint16 consolePort = session.console().mavlinkLinks().front()->port();
+        sim::MavlinkPeer::Config peer;
+        peer.groundPort = consolePort;
+        peer.timeFactor = 8;
+        peer.autopilot.armingFailures = std::move(armingFailures);
+        boat = std::make_unique<sim::MavlinkPeer>(test::mavlinkSchema(), peer);
+        ASSERT_TRUE(boat->start().has_value());
+        desk.setMavlinkTimeScale(0.3);
+        auto m = mission::readMission(missionText, u"boat.xml"_s);
+        ASSERT_TRUE(m) << test::errorsText(m.error()).toStdString();
+        desk.setMission(std::move(*m), u"boat.xml"_s);
+        ASSERT_TRUE(QTest::qWaitFor([&] { return desk.isMavlink(u"ardurover-1"_s); }, 5000)) << "the boat was never seen";
+    }
+    bool logSays(const QString &words, int ms = 8000)
+    {
+        return QTest::qWaitFor([&] { return desk.log(u"ardurover-1"_s).join(u'\n').contains(words); }, ms);
+    }
+    QString log() const { return desk.log(u"ardurover-1"_s).join(u'\n'); }
+    QString planAlarm()
+    {
+        auto &graph = session.console().alarmGraph();
+        const auto node = graph.find(u"systems/ardurover-1/plan"_s);
+        return node == alarms::AlarmGraph::noNode ? QString() : graph.message(node);
+    }
+};
+
+} // namespace
+
+TEST_F(MavlinkPlans, APlanIsUploadedWithItsFenceReadBackStartedAndRunToItsEnd)
+{
+    startBoat();
+    ASSERT_TRUE(desk.refresh(u"ardurover-1"_s).has_value());
+    ASSERT_TRUE(QTest::qWaitFor([&] { return desk.fetched(u"ardurover-1"_s); }, 5000)) << log().toStdString();
+    EXPECT_TRUE(desk.storedPlans(u"ardurover-1"_s).empty()) << "a fresh vehicle holds only its home";
+    EXPECT_EQ(desk.sync(u"ardurover-1"_s, u"box"_s), plans::Sync::Absent);
+    const auto refused = desk.start(u"ardurover-1"_s, u"box"_s);
+    ASSERT_FALSE(refused.has_value());
+    EXPECT_EQ(refused.error(), u"ardurover-1 does not hold box: send it first"_s);
+
+    ASSERT_TRUE(desk.send(u"ardurover-1"_s, u"box"_s).has_value());
+    ASSERT_TRUE(logSays(u"box sent: the vehicle holds its 3 items as sent"_s)) << log().toStdString();
+    EXPECT_TRUE(log().contains(u"sending box: 3 mission items, a geofence of 4 vertices"_s)) << log().toStdString();
+    EXPECT_EQ(boat->autopilot().missionCount(), 4) << "home, the speed, two waypoints";
+    ASSERT_EQ(desk.storedPlans(u"ardurover-1"_s).size(), 1u);
+    EXPECT_EQ(desk.storedPlans(u"ardurover-1"_s).front().id, u"box"_s) << "recognised by what it holds";
+    EXPECT_EQ(desk.sync(u"ardurover-1"_s, u"box"_s), plans::Sync::Same);
+
+    ASSERT_TRUE(desk.start(u"ardurover-1"_s, u"box"_s).has_value());
+    ASSERT_TRUE(logSays(u"box: mode AUTO accepted"_s)) << log().toStdString();
+    EXPECT_TRUE(boat->autopilot().armed());
+    EXPECT_EQ(boat->autopilot().modeName(), u"AUTO"_s);
+    ASSERT_TRUE(logSays(u"box started"_s)) << log().toStdString();
+    ASSERT_TRUE(logSays(u"box completed"_s, 30000)) << log().toStdString();
+    EXPECT_EQ(log().count(u"box completed"_s), 1);
+}
+
+TEST_F(MavlinkPlans, ARefusedArmingStopsTheStartAndSaysTheVehiclesReasons)
+{
+    startBoat({u"Gyros inconsistent"_s});
+    ASSERT_TRUE(desk.send(u"ardurover-1"_s, u"box"_s).has_value());
+    ASSERT_TRUE(logSays(u"box sent"_s)) << log().toStdString();
+    ASSERT_TRUE(desk.start(u"ardurover-1"_s, u"box"_s).has_value());
+    ASSERT_TRUE(logSays(u"box did not start: arm: FAILED: Arm: Gyros inconsistent"_s)) << log().toStdString();
+    EXPECT_EQ(planAlarm(), u"plan box did not start: arm: FAILED: Arm: Gyros inconsistent"_s);
+    QTest::qWait(300);
+    EXPECT_NE(boat->autopilot().modeName(), u"AUTO"_s) << "no AUTO after a refused arming";
+    EXPECT_FALSE(boat->autopilot().armed());
+}
+
+TEST_F(MavlinkPlans, StopPutsTheBoatInHoldAndTheRunEndsStoppedNotFailed)
+{
+    startBoat();
+    ASSERT_TRUE(desk.send(u"ardurover-1"_s, u"box"_s).has_value());
+    ASSERT_TRUE(logSays(u"box sent"_s)) << log().toStdString();
+    ASSERT_TRUE(desk.start(u"ardurover-1"_s, u"box"_s).has_value());
+    ASSERT_TRUE(logSays(u"box started"_s)) << log().toStdString();
+    ASSERT_TRUE(desk.stop(u"ardurover-1"_s).has_value());
+    ASSERT_TRUE(logSays(u"box stopped"_s)) << log().toStdString();
+    EXPECT_EQ(boat->autopilot().modeName(), u"HOLD"_s);
+    EXPECT_FALSE(log().contains(u"box failed"_s)) << log().toStdString();
+}
