@@ -2,6 +2,7 @@
 #include "CommandLine.h"
 #include "database/Database.h"
 #include "transport/imc/ImcUdpTransport.h"
+#include "transport/mavlink/MavlinkTransport.h"
 
 #include <QNetworkInterface>
 
@@ -132,6 +133,20 @@ std::expected<CommandLine, QString> CommandLine::parse(const QStringList &argume
     const QCommandLineOption imcDiscovery(QStringLiteral("imc-discovery"),
         QStringLiteral("IMC discovery (announce to and listen on ports 30100-30104): on or off (default on)."),
         QStringLiteral("on|off"));
+    const QCommandLineOption mavlink(QStringLiteral("mavlink"),
+        QStringLiteral("A MAVLink link (ArduPilot, PX4): udp:14550 (listen on loopback), udp:ADDRESS:PORT, tcp:HOST:PORT "
+                       "(a vehicle or SITL), serial:/dev/ttyUSB0[:57600] (a telemetry radio); repeatable (docs/mavlink.md)."),
+        QStringLiteral("link"));
+    const QCommandLineOption mavlinkPeer(QStringLiteral("mavlink-peer"),
+        QStringLiteral("A MAVLink vehicle to send to over UDP before it is heard, as host:port (repeatable)."), QStringLiteral("host:port"));
+    const QCommandLineOption mavlinkKey(QStringLiteral("mavlink-key"),
+        QStringLiteral("Sign MAVLink frames with the key in this file: a passphrase (as MAVProxy and QGroundControl make "
+                       "keys of one) or 64 hex digits."),
+        QStringLiteral("file"));
+    const QCommandLineOption mavlinkRequireSigning(QStringLiteral("mavlink-require-signing"),
+        QStringLiteral("With --mavlink-key: refuse MAVLink frames that are unsigned or badly signed."));
+    const QCommandLineOption mavlinkDialect(QStringLiteral("mavlink-dialect"),
+        QStringLiteral("MAVLink message definitions to read instead of the shipped ardupilotmega.xml."), QStringLiteral("file"));
     const QCommandLineOption dumpTree(QStringLiteral("dump-tree"),
         QStringLiteral("On exit, write every variable of the tree (path, value, unit) to this file."), QStringLiteral("file"));
     const QCommandLineOption forgetAfter(QStringLiteral("forget-after"),
@@ -185,6 +200,7 @@ std::expected<CommandLine, QString> CommandLine::parse(const QStringList &argume
     const QCommandLineOption webKey(QStringLiteral("web-key"), QStringLiteral("The PEM private key of --web-cert."), QStringLiteral("file"));
     const QCommandLineOption webTiles(QStringLiteral("web-tiles"),
         QStringLiteral("Map tiles for the web page: a URL with {z}/{x}/{y} (default: the offline coastline only)."), QStringLiteral("url"));
+    parser.addOptions({mavlink, mavlinkPeer, mavlinkKey, mavlinkRequireSigning, mavlinkDialect});
     parser.addOptions({logDir, noRecord, database, replay, replaySession, replayFrom, replayPlay, webPort, webBind, webToken, webCert, webKey, webTiles});
     parser.addOptions({console, screenshot, screenshotDelay, components, edit, select, system, palette, uiScale, gps, size, selfTest,
                        imcPort, imcBind, imcPeer, ddsDomain, ddsConfig, ddsKeys, ddsIdentity, defs, defsFor, imcDiscovery, dumpTree, quitAfter, forgetAfter, mission, share, name});
@@ -379,6 +395,26 @@ std::expected<CommandLine, QString> CommandLine::parse(const QStringList &argume
             return std::unexpected(QStringLiteral("--imc-bind: %1").arg(address.error()));
         result.imcBind = *address;
     }
+    for (const QString &value : parser.values(mavlink)) {
+        if (auto link = neptus::transport::parseMavlinkLink(value); !link)
+            return std::unexpected(QStringLiteral("--mavlink: %1").arg(link.error()));
+        result.mavlinkLinks.append(value);
+    }
+    for (const QString &value : parser.values(mavlinkPeer)) {
+        const auto peer = neptus::transport::hostAndPort(value);
+        if (!peer)
+            return std::unexpected(QStringLiteral("--mavlink-peer must look like 127.0.0.1:14555, not '%1'").arg(value));
+        result.mavlinkPeers.append(*peer);
+    }
+    if (parser.isSet(mavlinkKey)) {
+        if (auto key = neptus::transport::mavlinkKeyFromFile(parser.value(mavlinkKey)); !key)
+            return std::unexpected(QStringLiteral("--mavlink-key: %1").arg(key.error()));
+        result.mavlinkKey = parser.value(mavlinkKey);
+    }
+    result.mavlinkRequireSigning = parser.isSet(mavlinkRequireSigning);
+    if (result.mavlinkRequireSigning && result.mavlinkKey.isEmpty())
+        return std::unexpected(QStringLiteral("--mavlink-require-signing needs --mavlink-key"));
+    result.mavlinkDialect = parser.value(mavlinkDialect);
     for (const QString &value : parser.values(imcPeer)) {
         const auto peer = neptus::transport::hostAndPort(value);
         if (!peer)

@@ -33,6 +33,11 @@ struct CommandLine
     QString imcBind;                    // its address ("10.0.0.5"); empty: settings, else 127.0.0.1
     QList<std::pair<QHostAddress, quint16>> imcPeers; // static IMC destinations (--imc-peer host:port)
     bool imcDiscovery = true;           // announce to and listen on 30100-30104
+    QStringList mavlinkLinks;           // --mavlink udp:14550, tcp:host:port, serial:/dev/ttyUSB0[:baud] (checked)
+    QList<std::pair<QHostAddress, quint16>> mavlinkPeers; // --mavlink-peer: UDP vehicles to call before they are heard
+    QString mavlinkKey;                 // --mavlink-key: signing key file (passphrase or 64 hex digits)
+    bool mavlinkRequireSigning = false; // --mavlink-require-signing
+    QString mavlinkDialect;             // --mavlink-dialect: a MAVLink XML instead of ardupilotmega.xml
     QString dumpTreeFile;               // write the variable tree there on exit
     int quitAfterMs = 0;                // run this long, then exit (0: until closed)
     double forgetAfterSeconds = 0;      // forget systems silent this long (0: the settings', else never)

@@ -2,6 +2,8 @@
 // renders it to a PNG (--screenshot) or checks every QML file (--self-test).
 #include "core/DataFiles.h"
 #include "CommandLine.h"
+#include "mission/Vehicle.h"
+#include "transport/mavlink/MavlinkTransport.h"
 #include "ComponentPalette.h"
 #include "ConsoleCatalog.h"
 #include "JsWatchdog.h"
@@ -238,6 +240,37 @@ int main(int argc, char *argv[])
             std::fprintf(stderr, "neptus: %s; carrying on without IMC\n", qPrintable(started.error()));
         else
             std::printf("neptus: IMC/UDP on %s:%u\n", qPrintable(config.bindAddress.toString()), session.console().imc()->port());
+    }
+
+    // MAVLink links (ArduPilot, PX4): --mavlink, else the settings' mavlink/links.
+    QStringList mavlinkLinks = commandLine->mavlinkLinks;
+    if (mavlinkLinks.isEmpty())
+        mavlinkLinks = QSettings().value(QStringLiteral("mavlink/links")).toStringList();
+    if (!commandLine->mavlinkDialect.isEmpty())
+        if (auto set = session.console().setMavlinkDialect(commandLine->mavlinkDialect); !set)
+            std::fprintf(stderr, "neptus: --mavlink-dialect: %s\n", qPrintable(set.error()));
+    for (const QString &spec : replay ? QStringList() : mavlinkLinks) {
+        auto config = neptus::transport::parseMavlinkLink(spec);
+        if (!config) {
+            std::fprintf(stderr, "neptus: %s; carrying on without it\n", qPrintable(config.error()));
+            continue;
+        }
+        if (config->kind == neptus::transport::MavlinkConfig::Kind::Udp)
+            config->peers += commandLine->mavlinkPeers;
+        // Vehicle definitions with a MAVLink link name its vehicles and their Stop and Abort modes.
+        for (const neptus::mission::VehicleDefinition &v : neptus::mission::loadVehicles(neptus::mission::vehicleFolders()).vehicles)
+            for (const neptus::mission::VehicleLink &l : v.links)
+                if (l.protocol == u"mavlink" && l.system)
+                    config->vehicles[quint8(*l.system)] = {v.id, {}, l.stopMode, l.abortMode};
+        if (!commandLine->mavlinkKey.isEmpty()) {
+            config->signingKey = *neptus::transport::mavlinkKeyFromFile(commandLine->mavlinkKey);
+            config->requireSigning = commandLine->mavlinkRequireSigning;
+        }
+        if (auto started = session.console().startMavlink(*config); !started)
+            std::fprintf(stderr, "neptus: %s; carrying on without it\n", qPrintable(started.error()));
+        else
+            std::printf("neptus: %s on %s%s\n", qPrintable(config->linkName()), qPrintable(spec),
+                        config->signingKey.isEmpty() ? "" : config->requireSigning ? " (signed, unsigned frames refused)" : " (signed)");
     }
 
     // The mission whose plans the plan panel offers: the one named, else the

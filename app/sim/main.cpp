@@ -6,9 +6,12 @@
 // (IMC discovery only, unknown senders ignored, the first transition out of
 // each maneuver whatever its condition). Faults can be switched on from the
 // command line. One vehicle from the options, or several from --scenario.
+// With --mavlink it is instead an ArduPilot vehicle (ArduRover on a boat, or
+// ArduSub) speaking MAVLink to a ground station (sim::MavlinkAutopilot).
 #include "SimNode.h"
 
 #include "core/DataFiles.h"
+#include "sim/MavlinkPeer.h"
 #include "sim/Scenario.h"
 #include "transport/imc/ImcUdpTransport.h"
 
@@ -27,6 +30,56 @@ int usage(const QString &why)
 {
     std::fprintf(stderr, "neptus-sim: %s (see --help)\n", qPrintable(why));
     return 2;
+}
+
+int runMavlink(const QCommandLineParser &parser, const QCommandLineOption &mavlink, const QCommandLineOption &type,
+               const QCommandLineOption &system, const QCommandLineOption &armingFailure, const QCommandLineOption &home,
+               const QCommandLineOption &port, const QCommandLineOption &host, const QCommandLineOption &timeFactor)
+{
+    const QString file = dataPath(QStringLiteral("msgdefs/mavlink/ardupilotmega.xml"));
+    auto schema = msg::Schema::load({file});
+    if (!schema) {
+        std::fprintf(stderr, "neptus-sim: %s\n", qPrintable(schema.error().toString()));
+        return 1;
+    }
+    sim::MavlinkPeer::Config config;
+    const auto ground = transport::hostAndPort(parser.value(mavlink));
+    if (!ground)
+        return usage(QStringLiteral("--mavlink must look like 127.0.0.1:14550, not '%1'").arg(parser.value(mavlink)));
+    config.groundAddress = ground->first;
+    config.groundPort = ground->second;
+    const QString kind = parser.value(type);
+    if (kind != u"boat" && kind != u"sub")
+        return usage(QStringLiteral("--mavlink-type must be boat or sub, not '%1'").arg(kind));
+    config.autopilot.type = kind == u"sub" ? sim::MavlinkAutopilot::Type::Sub : sim::MavlinkAutopilot::Type::Boat;
+    bool ok = false;
+    const uint id = parser.value(system).toUInt(&ok);
+    if (!ok || id < 1 || id > 254)
+        return usage(QStringLiteral("--mavlink-system must be from 1 to 254, not '%1'").arg(parser.value(system)));
+    config.system = quint8(id);
+    config.autopilot.armingFailures = parser.values(armingFailure);
+    const QStringList latLon = parser.value(home).split(u',');
+    bool latOk = false, lonOk = false;
+    const double lat = latLon.value(0).toDouble(&latOk), lon = latLon.value(1).toDouble(&lonOk);
+    if (latLon.size() != 2 || !latOk || !lonOk || std::abs(lat) > 90 || std::abs(lon) > 180)
+        return usage(QStringLiteral("--home must look like 41.1405,-8.6110, not '%1'").arg(parser.value(home)));
+    config.autopilot.home = geo::Geodetic{geo::radians(lat), geo::radians(lon), 0};
+    config.port = parser.isSet(port) ? quint16(parser.value(port).toUInt()) : 0;
+    config.bindAddress = QHostAddress(parser.value(host));
+    if (config.bindAddress.isNull())
+        return usage(QStringLiteral("--host must be an address, not '%1'").arg(parser.value(host)));
+    config.timeFactor = parser.value(timeFactor).toDouble(&ok);
+    if (!ok || !(config.timeFactor > 0) || config.timeFactor > 1000)
+        return usage(QStringLiteral("--time-factor must be a number above 0 and at most 1000"));
+    sim::MavlinkPeer peer(*schema, config);
+    if (auto started = peer.start(); !started) {
+        std::fprintf(stderr, "neptus-sim: %s\n", qPrintable(started.error()));
+        return 1;
+    }
+    std::printf("neptus-sim: %s (MAVLink system %u) on %s:%u, talking to %s:%u\n", kind == u"sub" ? "ardusub" : "ardurover", id,
+                qPrintable(config.bindAddress.toString()), peer.port(), qPrintable(config.groundAddress.toString()), config.groundPort);
+    std::fflush(stdout);
+    return QCoreApplication::exec();
 }
 
 } // namespace
@@ -76,14 +129,31 @@ int main(int argc, char *argv[])
         QStringLiteral("Several vehicles in this process, from a JSON file (see engine/sim/Scenario.h and docs/plans.md): "
                        "ids, names, kinds, ports, positions, DDS, transitions, faults."),
         QStringLiteral("file"));
+    const QCommandLineOption mavlink(QStringLiteral("mavlink"),
+        QStringLiteral("Be an ArduPilot vehicle speaking MAVLink 2 to the ground station at host:port (14550 by custom), "
+                       "from --port (0: any free one), as ArduPilot's SITL does."),
+        QStringLiteral("host:port"));
+    const QCommandLineOption mavlinkType(QStringLiteral("mavlink-type"),
+        QStringLiteral("With --mavlink: boat (ArduRover, default) or sub (ArduSub)."), QStringLiteral("type"), QStringLiteral("boat"));
+    const QCommandLineOption mavlinkSystem(QStringLiteral("mavlink-system"),
+        QStringLiteral("With --mavlink: its MAVLink system id (default 1)."), QStringLiteral("id"), QStringLiteral("1"));
+    const QCommandLineOption armingFailure(QStringLiteral("arming-failure"),
+        QStringLiteral("With --mavlink: arming is refused with this reason (\"Gyros inconsistent\"; repeatable)."),
+        QStringLiteral("reason"));
+    const QCommandLineOption home(QStringLiteral("home"),
+        QStringLiteral("With --mavlink: where it starts, lat,lon in degrees (default 41.1405,-8.6110, the Douro of docs/examples)."),
+        QStringLiteral("lat,lon"), QStringLiteral("41.1405,-8.6110"));
     parser.addOptions({id, name, kind, port, host, console, announcePort, phase, fault, drop, defs, dds, domain, ddsKeys,
-                       ddsIdentity, dune, timeFactor, transitions, scenario});
+                       ddsIdentity, dune, timeFactor, transitions, scenario, mavlink, mavlinkType, mavlinkSystem, armingFailure, home});
     if (!parser.parse(QCoreApplication::arguments()))
         return usage(parser.errorText());
     if (parser.isSet(QStringLiteral("help")))
         parser.showHelp(0);
     if (parser.isSet(QStringLiteral("version")))
         parser.showVersion();
+
+    if (parser.isSet(mavlink))
+        return runMavlink(parser, mavlink, mavlinkType, mavlinkSystem, armingFailure, home, port, host, timeFactor);
 
     auto schema = msg::Schema::load(parser.isSet(defs) ? parser.values(defs)
                                                        : msg::Schema::filesIn(dataPath(QStringLiteral("msgdefs"))));

@@ -11,6 +11,7 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QSaveFile>
+#include <QtEndian>
 
 #include <cerrno>
 #include <cstring>
@@ -97,6 +98,44 @@ void Recorder::record(QByteArrayView packet)
     }
 }
 
+void Recorder::recordMavlink(QByteArrayView frame)
+{
+    const qint64 usec = QDateTime::currentMSecsSinceEpoch() * 1000;
+    std::lock_guard lock(m_queueMutex);
+    if (m_queue.size() + m_tlogQueue.size() + frame.size() + 8 > m_config.maxQueuedBytes) {
+        ++m_queueLost;
+        return;
+    }
+    char stamp[8];
+    qToBigEndian(quint64(usec), stamp);
+    m_tlogQueue.append(stamp, 8);
+    m_tlogQueue.append(frame.data(), frame.size());
+}
+
+void Recorder::writeTlog(const QByteArray &frames)
+{
+    if (frames.isEmpty() || m_fd < 0)
+        return; // no part open: counted with the IMC packets' problem
+    if (m_tlogFd < 0) {
+        const QByteArray path = QFile::encodeName(QDir(m_partFolder).filePath(QStringLiteral("mavlink.tlog")));
+        m_tlogFd = ::open(path.constData(), O_WRONLY | O_CREAT | O_APPEND | O_CLOEXEC, 0644);
+        if (m_tlogFd < 0) {
+            setProblem(tr("cannot write %1: %2").arg(QString::fromLocal8Bit(path), QString::fromLocal8Bit(std::strerror(errno))));
+            return;
+        }
+    }
+    for (qint64 at = 0; at < frames.size();) {
+        const ssize_t written = ::write(m_tlogFd, frames.constData() + at, size_t(frames.size() - at));
+        if (written < 0 && errno == EINTR)
+            continue;
+        if (written <= 0) {
+            setProblem(tr("cannot write mavlink.tlog in %1: %2").arg(m_partFolder, QString::fromLocal8Bit(std::strerror(errno))));
+            return;
+        }
+        at += written;
+    }
+}
+
 Recorder::Status Recorder::status() const
 {
     QMutexLocker lock(&m_statusMutex);
@@ -105,7 +144,7 @@ Recorder::Status Recorder::status() const
 
 void Recorder::run()
 {
-    QByteArray batch;
+    QByteArray batch, frames;
     for (;;) {
         qint64 lost = 0;
         bool stopping = false;
@@ -115,11 +154,14 @@ void Recorder::run()
             // The queue takes the last batch's buffer (emptied, its capacity kept):
             // record() seldom reallocates.
             batch.swap(m_queue);
+            frames.swap(m_tlogQueue);
             lost = std::exchange(m_queueLost, 0);
             stopping = m_stopping;
         }
         writeBatch(batch, lost);
+        writeTlog(frames);
         batch.resize(0);
+        frames.resize(0);
         if (stopping)
             return;
     }
@@ -287,6 +329,11 @@ void Recorder::endPart()
     ::fdatasync(m_fd);
     ::close(m_fd);
     m_fd = -1;
+    if (m_tlogFd >= 0) {
+        ::fdatasync(m_tlogFd);
+        ::close(m_tlogFd);
+        m_tlogFd = -1;
+    }
     m_index.finish();
 }
 

@@ -59,6 +59,11 @@ public:
 
     // One IMC packet, exactly as on the wire. Any thread.
     void record(QByteArrayView packet);
+    // One MAVLink frame, received or sent, as on the wire: it goes to
+    // mavlink.tlog beside Data.lsf (made with the first frame), the tlog
+    // format MAVProxy, pymavlink and QGroundControl read (each frame after
+    // its time, 8 bytes big-endian, microseconds since 1970). Any thread.
+    void recordMavlink(QByteArrayView frame);
 
     struct Status
     {
@@ -81,6 +86,7 @@ private:
     void run();
     // Writes one batch of whole packets; rotates between packets.
     void writeBatch(const QByteArray &batch, qint64 lostInQueue);
+    void writeTlog(const QByteArray &frames);
     bool beginPart();
     void endPart();
     bool writeAll(const char *data, qint64 size);
@@ -91,12 +97,14 @@ private:
     std::mutex m_queueMutex;
     std::condition_variable m_wake;
     QByteArray m_queue;
+    QByteArray m_tlogQueue;
     qint64 m_queueLost = 0; // packets dropped because the queue was full
     bool m_stopping = false;
     bool m_running = false;
 
     // The writer thread's own state.
     int m_fd = -1;
+    int m_tlogFd = -1; // mavlink.tlog of the part, once a frame came
     QString m_partFolder;
     qint64 m_partBytes = 0;
     qint64 m_partStartedMs = 0;

@@ -196,7 +196,8 @@ std::expected<VehicleDefinition, Errors> readVehicle(QByteArrayView data, const 
     if (const xmlNode *d = firstChildElement(root, "description"))
         v.description = textContent(d).trimmed();
     for (const xmlNode *l : childElements(root, "link"))
-        v.links.append(VehicleLink{attribute(l, "protocol"), attribute(l, "host"), integerAttribute(l, "port"), integerAttribute(l, "domain")});
+        v.links.append(VehicleLink{attribute(l, "protocol"), attribute(l, "host"), integerAttribute(l, "port"), integerAttribute(l, "domain"),
+                                   integerAttribute(l, "system"), attribute(l, "stop-mode"), attribute(l, "abort-mode")});
     if (const xmlNode *l = firstChildElement(root, "limits")) {
         v.limits = VehicleLimits{numberAttribute(l, "max-depth"), numberAttribute(l, "max-altitude"), numberAttribute(l, "min-speed"),
                                  numberAttribute(l, "max-speed"), numberAttribute(l, "endurance"), numberAttribute(l, "turn-radius"),
@@ -265,6 +266,10 @@ QByteArray writeVehicle(const VehicleDefinition &v)
             out.writeAttribute(u"port"_s, QString::number(*l.port));
         if (l.domain)
             out.writeAttribute(u"domain"_s, QString::number(*l.domain));
+        if (l.system)
+            out.writeAttribute(u"system"_s, QString::number(*l.system));
+        writeText(out, u"stop-mode"_s, l.stopMode);
+        writeText(out, u"abort-mode"_s, l.abortMode);
     }
     if (v.limits != VehicleLimits{}) {
         out.writeEmptyElement(u"limits"_s);

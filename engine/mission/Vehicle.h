@@ -54,9 +54,12 @@ struct Translation
 
 struct VehicleLink
 {
-    QString protocol; // imc-udp, dds
+    QString protocol; // imc-udp, dds, mavlink (on any of the console's MAVLink links)
     QString host;
     std::optional<int> port, domain;
+    // MAVLink: the vehicle's system id, and the modes Stop and Abort put it in ("" its autopilot's default).
+    std::optional<int> system;
+    QString stopMode, abortMode;
     friend bool operator==(const VehicleLink &, const VehicleLink &) = default;
 };
 

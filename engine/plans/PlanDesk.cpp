@@ -558,17 +558,16 @@ MavlinkMissionClient &PlanDesk::missionClient(quint16 id)
         connect(v.mission.get(), &MavlinkMissionClient::finished, this, [this, id](const MavlinkMissionClient::Result &r) {
             Vehicle &vehicle = m_vehicles[id];
             vehicle.transfer.reset();
+            vehicle.transferNames.erase(r.id);
             const auto then = vehicle.then.extract(r.id);
             if (!then.empty())
                 then.mapped()(r);
             emit changed(m_tree.systemName(id));
         });
-        connect(v.mission.get(), &MavlinkMissionClient::progress, this, [this, id](int, int done, int total) {
+        connect(v.mission.get(), &MavlinkMissionClient::progress, this, [this, id](int operation, int done, int total) {
             Vehicle &vehicle = m_vehicles[id];
-            if (vehicle.transfer) {
-                vehicle.transfer->done = done;
-                vehicle.transfer->total = total;
-            }
+            if (const auto name = vehicle.transferNames.find(operation); name != vehicle.transferNames.end())
+                vehicle.transfer = Transfer{name->second, done, total};
             emit changed(m_tree.systemName(id));
         });
     }
@@ -619,23 +618,24 @@ std::expected<void, QString> PlanDesk::sendMavlink(quint16 id, const mission::Pl
                       u"plan %1 was not sent: %2: %3"_s.arg(planId, r.what, r.info));
     };
     if (!items.fence.empty()) {
-        m_vehicles[id].transfer = Transfer{u"uploading the geofence of %1"_s.arg(planId), 0, int(items.fence.size())};
-        after(id, client.upload(MissionType::Fence, items.fence), [failed](const auto &r) {
+        const int fence = client.upload(MissionType::Fence, items.fence);
+        m_vehicles[id].transferNames[fence] = u"uploading the geofence of %1"_s.arg(planId);
+        after(id, fence, [failed](const auto &r) {
             if (!r.ok)
                 failed(r);
         });
     }
     const int upload = client.upload(MissionType::Mission, items.items);
-    if (items.fence.empty())
-        m_vehicles[id].transfer = Transfer{u"uploading %1"_s.arg(planId), 0, int(items.items.size())};
+    m_vehicles[id].transferNames[upload] = u"uploading %1"_s.arg(planId);
     after(id, upload, [this, id, planId, items, failed](const MavlinkMissionClient::Result &r) {
         if (!r.ok) {
             failed(r);
             return;
         }
         // Read back and compared: what it holds is what runs.
-        m_vehicles[id].transfer = Transfer{u"reading %1 back"_s.arg(planId), 0, int(items.items.size())};
-        after(id, missionClient(id).download(MissionType::Mission), [this, id, planId, items, failed](const MavlinkMissionClient::Result &back) {
+        const int download = missionClient(id).download(MissionType::Mission);
+        m_vehicles[id].transferNames[download] = u"reading %1 back"_s.arg(planId);
+        after(id, download, [this, id, planId, items, failed](const MavlinkMissionClient::Result &back) {
             if (!back.ok) {
                 failed(back);
                 return;
@@ -706,7 +706,9 @@ std::expected<void, QString> PlanDesk::stopMavlink(quint16 id)
     using namespace msg::mavlink;
     const Family family = familyOf(int(heartbeatNumber(id, u"autopilot"_s)));
     const int type = int(heartbeatNumber(id, u"type"_s));
-    const QString mode = stopMode(family, type);
+    QString mode = m_mavlink.stopMode ? m_mavlink.stopMode(id) : QString();
+    if (mode.isEmpty())
+        mode = stopMode(family, type);
     const auto params = setModeParams(family, type, mode);
     if (!params)
         return std::unexpected(u"%1 has no %2 mode the console knows"_s.arg(m_tree.systemName(id), mode));

@@ -71,6 +71,8 @@ public:
         std::function<std::expected<MavlinkPlan, QString>(const mission::Mission &, const mission::Plan &)> translate;
         // The plan a vehicle holds, for its progress (Console::labelMission).
         std::function<void(quint16 system, const QString &planId, const QStringList &maneuverOfItem)> label;
+        // The mode Stop puts it in ("" for its autopilot's default).
+        std::function<QString(quint16 system)> stopMode;
     };
     // A mission transfer under way: "uploading plan1", items done of all.
     struct Transfer
@@ -158,6 +160,7 @@ private:
         std::unique_ptr<MavlinkMissionClient> mission;
         std::map<int, std::function<void(const MavlinkMissionClient::Result &)>> then;
         std::optional<Transfer> transfer;
+        std::map<int, QString> transferNames; // by operation: what its progress is called
         std::vector<MissionItem> held; // the mission it holds, as read back
     };
 

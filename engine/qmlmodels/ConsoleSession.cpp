@@ -62,7 +62,8 @@ ConsoleSession::ConsoleSession(std::shared_ptr<const msg::Schema> schema, const 
     m_planDesk.setMavlink({[this] { return m_console.mavlinkSchema(); }, &mavlinkPlan,
                            [this](quint16 system, const QString &planId, const QStringList &maneuverOfItem) {
                                m_console.labelMission(system, planId, maneuverOfItem);
-                           }});
+                           },
+                           [this](quint16 system) { return m_console.mavlinkStopMode(system); }});
 }
 
 // A plan as a MAVLink vehicle's mission: its vehicle definition's "mavlink"

@@ -213,6 +213,14 @@ void PlanDeskModel::remember(const QString &path)
     emit recentChanged();
 }
 
+QVariantMap PlanDeskModel::transferOf(const QString &system) const
+{
+    const auto t = m_desk->transfer(system);
+    if (!t)
+        return {};
+    return {{u"what"_s, t->what}, {u"done"_s, t->done}, {u"total"_s, t->total}};
+}
+
 QVariantList PlanDeskModel::plansFor(const QString &system)
 {
     if (!m_desk->fetched(system))

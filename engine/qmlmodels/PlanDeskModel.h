@@ -73,6 +73,8 @@ public:
     // "" or why a transition condition does not compile, for an editor checking as one types.
     Q_INVOKABLE QString checkCondition(const QString &expression) const { return neptus::plans::Supervisor::conditionError(expression); }
     Q_INVOKABLE QStringList logOf(const QString &system) const { return m_desk->log(system); }
+    // A MAVLink vehicle's mission transfer under way: {what, done, total}; {} when none.
+    Q_INVOKABLE QVariantMap transferOf(const QString &system) const;
     // What to check before starting a plan on `system`: the items of the
     // mission's checklists but those named after another of its vehicles,
     // [{checklist, group, text, note, checked, variable, min, max}], the

@@ -184,7 +184,11 @@ void Console::wireMavlink(transport::MavlinkTransport &transport)
 {
     auto *link = &transport;
     const QString name = link->linkName();
-    link->setPacketTap([this](QByteArrayView packet) { tap(packet); });
+    link->setPacketTap([this](QByteArrayView packet) { tap(packet); }); // what it means, in Data.lsf
+    link->setFrameTap([this](QByteArrayView frame) { // what was said, in mavlink.tlog
+        if (log::Recorder *recorder = m_recorder.load(std::memory_order_relaxed))
+            recorder->recordMavlink(frame);
+    });
     // Straight into the session from the link's reading thread, as IMC's.
     connect(link, &transport::MavlinkTransport::received, this,
             [this, name](const msg::Message &m, qsizetype bytes) { ingest(m, name, bytes); }, Qt::DirectConnection);
@@ -209,6 +213,14 @@ void Console::labelMission(quint16 system, const QString &planId, const QStringL
 {
     for (const auto &link : m_mavlink)
         link->setMission(system, planId, maneuverOfItem);
+}
+
+QString Console::mavlinkStopMode(quint16 system) const
+{
+    for (const auto &link : m_mavlink)
+        if (const QString mode = link->stopMode(system); !mode.isEmpty())
+            return mode;
+    return {};
 }
 
 void Console::statusText(quint16 system, int severity, const QString &text)

@@ -89,6 +89,8 @@ public:
     // The plan a MAVLink vehicle holds, for its progress (its PlanControlState):
     // the plan's id and, per mission item, the maneuver it belongs to.
     void labelMission(quint16 system, const QString &planId, const QStringList &maneuverOfItem);
+    // The mode Stop puts a MAVLink vehicle in (its settings', else its autopilot's); "" when none has it.
+    QString mavlinkStopMode(quint16 system) const;
     // Takes an IMC/UDP link made with schemaSet(), started or not (the fuzz
     // target feeds an unstarted one through receive()).
     transport::ImcUdpTransport *attachImc(std::unique_ptr<transport::ImcUdpTransport> imc);

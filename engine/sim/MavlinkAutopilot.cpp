@@ -428,6 +428,16 @@ std::vector<msg::Message> MavlinkAutopilot::step(double now)
         set(status, u"voltage_battery", 15800);
         set(status, u"battery_remaining", 87);
         out.push_back(std::move(status));
+        msg::Message battery = make("BATTERY_STATUS"); // as ArduPilot sends it beside SYS_STATUS
+        set(battery, u"voltages[0]", 15800);
+        for (int cell = 1; cell < 10; ++cell)
+            set(battery, u"voltages[%1]"_s.arg(cell), 65535);
+        set(battery, u"current_battery", m_armed ? 420 : 30);
+        set(battery, u"current_consumed", -1);
+        set(battery, u"energy_consumed", -1);
+        set(battery, u"temperature", 32767);
+        set(battery, u"battery_remaining", 87);
+        out.push_back(std::move(battery));
     }
     return out;
 }

@@ -29,6 +29,9 @@ Rectangle {
     readonly property bool heard: hasTarget && Session.systems.indexOf(target) >= 0
     readonly property var plans: desk && heard ? (revision, desk.plansFor(target)) : []
     readonly property var log: desk && hasTarget ? (revision, desk.logOf(target)) : []
+    // A MAVLink vehicle's mission going up or coming back: {what, done, total}, else {};
+    // read at each change the desk tells (a transfer lasts a moment: every step is shown).
+    property var transfer: ({})
     readonly property var selectedPlan: plans.find(p => p.id === selected)
 
     implicitWidth: Theme.mm(95)
@@ -42,11 +45,13 @@ Rectangle {
     Connections {
         target: panel.desk
         function onChanged(system) {
-            if (system === panel.target)
-                panel.revision++
+            if (system !== panel.target)
+                return
+            panel.transfer = panel.desk.transferOf(system)
+            panel.revision++
         }
     }
-    onTargetChanged: { selected = ""; outcome = "" }
+    onTargetChanged: { selected = ""; outcome = ""; transfer = desk && hasTarget ? desk.transferOf(target) : {} }
 
     function run(why) { panel.outcome = why }
     function formatSeconds(s) {
@@ -161,6 +166,44 @@ Rectangle {
                     color: Theme.textDim
                     font.pixelSize: Theme.smallFontPixelSize
                     font.family: Theme.monospaceFont
+                }
+            }
+        }
+
+        // A mission going up to a MAVLink vehicle (or read back), item by item.
+        Rectangle {
+            objectName: "transfer"
+            width: parent.width
+            visible: panel.transfer.what !== undefined
+            height: visible ? transferColumn.implicitHeight + Theme.spacing * 2 : 0
+            radius: Theme.radius
+            color: Theme.surface
+            border.color: Theme.accent
+            Column {
+                id: transferColumn
+                anchors { left: parent.left; right: parent.right; verticalCenter: parent.verticalCenter; margins: Theme.spacing }
+                spacing: Theme.spacing / 2
+                Text {
+                    objectName: "transferText"
+                    width: parent.width
+                    text: panel.transfer.what === undefined ? ""
+                          : qsTr("%1: %2 of %3 items").arg(panel.transfer.what).arg(panel.transfer.done).arg(panel.transfer.total)
+                    color: Theme.text
+                    font.pixelSize: Theme.smallFontPixelSize
+                    elide: Text.ElideRight
+                }
+                Rectangle {
+                    width: parent.width
+                    height: Theme.mm(3)
+                    radius: height / 2
+                    color: Theme.background
+                    Rectangle {
+                        objectName: "transferBar"
+                        width: panel.transfer.total > 0 ? parent.width * panel.transfer.done / panel.transfer.total : 0
+                        height: parent.height
+                        radius: parent.radius
+                        color: Theme.accent
+                    }
                 }
             }
         }

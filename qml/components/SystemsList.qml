@@ -54,6 +54,11 @@ Rectangle {
             // The system's one health level, as the health strip, map and 3D show it.
             AlarmState { id: health; alarms: Session.alarms; path: "systems/" + row.name }
             Variable { id: kindVariable; tree: Session.tree; path: row.name + "/Announce/sys_type" }
+            // An autopilot's mode and whether it is armed (MAVLink vehicles, and IMC ones that say).
+            Variable { id: modeVariable; tree: Session.tree; path: row.name + "/AutopilotMode/mode" }
+            Variable { id: armingVariable; tree: Session.tree; path: row.name + "/ArmingState/state" }
+            readonly property string mode: (modeVariable.present ? "  ·  " + modeVariable.text : "")
+                                           + (armingVariable.present ? "  ·  " + (armingVariable.text === "ARMED" ? qsTr("armed") : qsTr("disarmed")) : "")
 
             StatusLed {
                 id: led
@@ -68,7 +73,8 @@ Rectangle {
                 anchors { left: led.right; right: openButton.left; verticalCenter: parent.verticalCenter; rightMargin: Theme.spacing }
                 Text {
                     width: parent.width
-                    text: row.name + (row.kind ? "  ·  " + row.kind : "")
+                    objectName: "title"
+                    text: row.name + (row.kind ? "  ·  " + row.kind : "") + row.mode
                     color: Theme.text
                     font.pixelSize: Theme.fontPixelSize
                     font.bold: row.main

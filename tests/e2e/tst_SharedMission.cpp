@@ -44,7 +44,7 @@ TEST(SharedMission, OneConsoleEditsASharedMissionTheOtherShowsTheChange)
     plans::MissionShare share(b.sharedSchema(), u"console-b"_s, [&](const msg::Message &m) { return b.broadcast(m); });
     QObject::connect(&b, &session::Console::sharedMissionReceived, &share, &plans::MissionShare::receive);
     ASSERT_TRUE(share.start({}).has_value());
-    ASSERT_TRUE(QTest::qWaitFor([&] { return share.mission().plans.size() == 2 && !share.mission().maps.isEmpty(); }, 20000))
+    ASSERT_TRUE(QTest::qWaitFor([&] { return share.mission().plans.size() == 3 && !share.mission().maps.isEmpty(); }, 20000))
         << "B got A's mission: " << output();
     EXPECT_EQ(share.mission().id, u"douro"_s);
     EXPECT_EQ(share.authorOf(u"plan:survey"_s), u"console-a"_s);

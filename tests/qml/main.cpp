@@ -11,7 +11,9 @@
 #include "log/LogFile.h"
 #include "qmlmodels/ConsoleSession.h"
 #include "session/ConsoleReplay.h"
+#include "sim/MavlinkPeer.h"
 #include "sim/SimulatedVehicle.h"
+#include "transport/mavlink/MavlinkTransport.h"
 
 #include <QBuffer>
 #include <QDir>
@@ -176,6 +178,25 @@ public:
         };
         nameSystem(id, name);
     }
+    // An ArduRover boat (sim::MavlinkPeer, as ArduPilot answers) on a MAVLink/UDP link of
+    // the session, on loopback; it refuses arming with these reasons. "" when it runs.
+    Q_INVOKABLE QString startMavlinkBoat(const QStringList &armingFailures)
+    {
+        transport::MavlinkConfig config;
+        config.port = 0;
+        if (auto started = m_session.console().startMavlink(config); !started)
+            return started.error();
+        sim::MavlinkPeer::Config peer;
+        peer.groundPort = m_session.console().mavlinkLinks().back()->port();
+        peer.timeFactor = 5;
+        peer.autopilot.armingFailures = armingFailures;
+        m_boat = std::make_unique<sim::MavlinkPeer>(m_session.console().mavlinkSchema(), peer);
+        if (auto started = m_boat->start(); !started)
+            return started.error();
+        m_session.planDesk().setMavlinkTimeScale(0.3);
+        return {};
+    }
+    Q_INVOKABLE QString boatMode() { return m_boat ? m_boat->autopilot().modeName() : QString(); }
     Q_INVOKABLE void runVehicle(double seconds)
     {
         for (const double end = m_vehicleTime + seconds; m_vehicleTime < end;) {
@@ -415,6 +436,7 @@ private:
         std::unique_ptr<ReplayModel> model; // destroyed first: the player before the console it feeds
     };
     std::vector<std::unique_ptr<Replay>> m_replays;
+    std::unique_ptr<sim::MavlinkPeer> m_boat;
     QString m_replayError;
 };
 

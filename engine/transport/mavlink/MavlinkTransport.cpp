@@ -1,4 +1,5 @@
 #include "transport/mavlink/MavlinkTransport.h"
+#include "transport/imc/ImcUdpTransport.h"
 
 #include <QCryptographicHash>
 #include <QFile>
@@ -43,6 +44,58 @@ void setField(msg::Message &m, QStringView field, double value)
 }
 
 } // namespace
+
+std::expected<MavlinkConfig, QString> parseMavlinkLink(const QString &spec)
+{
+    MavlinkConfig config;
+    const QString kind = spec.section(u':', 0, 0).toLower(), rest = spec.section(u':', 1);
+    const auto port = [](QStringView text) -> std::optional<quint16> {
+        bool ok = false;
+        const uint value = text.toUInt(&ok);
+        return ok && value <= 65535 ? std::optional<quint16>(quint16(value)) : std::nullopt;
+    };
+    const QString expected = u"a MAVLink link is udp:PORT, udp:ADDRESS:PORT, tcp:HOST:PORT or serial:DEVICE[:BAUD], not '%1'"_s.arg(spec);
+    if (kind == u"udp") {
+        config.kind = MavlinkConfig::Kind::Udp;
+        const qsizetype colon = rest.lastIndexOf(u':');
+        const auto p = port(colon < 0 ? QStringView(rest) : QStringView(rest).mid(colon + 1));
+        if (!p)
+            return std::unexpected(expected);
+        config.port = *p;
+        if (colon >= 0) {
+            config.bindAddress = QHostAddress(rest.left(colon));
+            if (config.bindAddress.isNull())
+                return std::unexpected(u"%1: '%2' is not an address"_s.arg(spec, rest.left(colon)));
+        }
+        return config;
+    }
+    if (kind == u"tcp") {
+        config.kind = MavlinkConfig::Kind::Tcp;
+        const auto peer = hostAndPort(rest);
+        if (!peer)
+            return std::unexpected(expected);
+        config.peers.append(*peer);
+        return config;
+    }
+    if (kind == u"serial") {
+        config.kind = MavlinkConfig::Kind::Serial;
+        config.serialDevice = rest;
+        if (const qsizetype colon = rest.lastIndexOf(u':'); colon > 0) {
+            bool ok = false;
+            const int baud = rest.mid(colon + 1).toInt(&ok);
+            if (ok) {
+                if (baud < 1200 || baud > 4000000)
+                    return std::unexpected(u"%1: %2 is no baud rate"_s.arg(spec).arg(baud));
+                config.baudRate = baud;
+                config.serialDevice = rest.left(colon);
+            }
+        }
+        if (config.serialDevice.isEmpty())
+            return std::unexpected(expected);
+        return config;
+    }
+    return std::unexpected(expected);
+}
 
 QString MavlinkConfig::linkName() const
 {
@@ -667,6 +720,15 @@ std::pair<QString, bool> MavlinkTransport::mode(quint16 id) const
     if (!v || !v->adapter->heard())
         return {};
     return {v->adapter->modeName(), v->adapter->armed()};
+}
+
+QString MavlinkTransport::stopMode(quint16 id) const
+{
+    std::lock_guard lock(m_mutex);
+    const Vehicle *v = vehicleLocked(id);
+    if (!v)
+        return {};
+    return !v->settings.stopMode.isEmpty() ? v->settings.stopMode : v->adapter->defaultStopMode();
 }
 
 void MavlinkTransport::setMission(quint16 id, const QString &planId, const QStringList &maneuverOfItem)

@@ -80,6 +80,12 @@ struct MavlinkConfig
     QString linkName() const;
 };
 
+// A link as the command line and the settings write it: "udp:14550" (listen
+// on loopback), "udp:10.0.0.5:14550" (on the boat network's address),
+// "tcp:127.0.0.1:5760" (connect to a vehicle or SITL), "serial:/dev/ttyUSB0"
+// or "serial:/dev/ttyUSB0:115200". An error says what was expected.
+std::expected<MavlinkConfig, QString> parseMavlinkLink(const QString &spec);
+
 // "mypassphrase" → the 32-byte key MAVProxy's and QGroundControl's signing
 // setup make of it (SHA-256 of the passphrase); a file holding 64 hex digits
 // is the key itself. An error names the file and why.
@@ -153,6 +159,8 @@ public:
     std::map<QString, double> parameters(quint16 id) const;
     // Its mode's name and armed state ("", false until heard).
     std::pair<QString, bool> mode(quint16 id) const;
+    // The mode Stop puts it in: its settings', else its family's ("HOLD"); "" for no such vehicle.
+    QString stopMode(quint16 id) const;
     // The plan the vehicle holds, for its progress (PlanControlState): the
     // plan's id and, per mission item, the maneuver it belongs to.
     void setMission(quint16 id, const QString &planId, const QStringList &maneuverOfItem);

@@ -47,7 +47,7 @@ TEST(PlanEditor, OpensAMissionAtItsFirstPlanWithItsVehiclesManeuvers)
     PlanEditorModel editor;
     editor.setMissionPath(douroCopy(dir));
     EXPECT_EQ(editor.error(), QString());
-    EXPECT_EQ(editor.planIds(), (QStringList{u"survey"_s, u"patrol"_s}));
+    EXPECT_EQ(editor.planIds(), (QStringList{u"survey"_s, u"patrol"_s, u"harbour-loop"_s}));
     EXPECT_EQ(editor.planId(), u"survey"_s);
     EXPECT_EQ(editor.vehicle(), u"lauv-sim-1"_s);
     EXPECT_TRUE(editor.maneuverTypes().contains(u"Goto"_s));
@@ -72,9 +72,10 @@ TEST(PlanEditor, OpensAMissionAtItsFirstPlanWithItsVehiclesManeuvers)
     EXPECT_GE(rows, wait + 60);
     EXPECT_GT(surface, rows);
     EXPECT_LE(surface, editor.statistics().value(u"duration"_s).toDouble());
-    // The other vehicle's plan, drawn beside it.
-    ASSERT_EQ(editor.otherPlans().size(), 1);
+    // The other vehicles' plans, drawn beside it.
+    ASSERT_EQ(editor.otherPlans().size(), 2);
     EXPECT_EQ(editor.otherPlans()[0].toMap().value(u"vehicle"_s), u"caravela-sim"_s);
+    EXPECT_EQ(editor.otherPlans()[1].toMap().value(u"vehicle"_s), u"ardurover-1"_s);
     EXPECT_GE(editor.otherPlans()[0].toMap().value(u"path"_s).toList().size(), 3);
     editor.setPlanId(u"patrol"_s);
     EXPECT_EQ(editor.otherPlans()[0].toMap().value(u"id"_s), u"survey"_s);
@@ -327,7 +328,7 @@ TEST(PlanEditor, ASharedMissionsEditsGoOutAndComeIn)
     ASSERT_EQ(deskModel.share(true), QString());
     EXPECT_TRUE(deskModel.sharing());
     ASSERT_TRUE(theirs.start({}).has_value());
-    ASSERT_EQ(theirs.mission().plans.size(), 2) << "the other console joined and got it all";
+    ASSERT_EQ(theirs.mission().plans.size(), 3) << "the other console joined and got it all";
 
     // Ours: a Goto, at once on the other console.
     const QString id = editor.addManeuver(u"Goto"_s, 41.1420, -8.6100);

@@ -92,8 +92,17 @@ TEST_F(MavlinkPlans, APlanIsUploadedWithItsFenceReadBackStartedAndRunToItsEnd)
     ASSERT_FALSE(refused.has_value());
     EXPECT_EQ(refused.error(), u"ardurover-1 does not hold box: send it first"_s);
 
+    QStringList transfers; // as the plan panel shows them
+    QObject::connect(&desk, &plans::PlanDesk::changed, [&](const QString &system) {
+        if (const auto t = desk.transfer(system))
+            transfers << u"%1: %2 of %3"_s.arg(t->what).arg(t->done).arg(t->total);
+    });
     ASSERT_TRUE(desk.send(u"ardurover-1"_s, u"box"_s).has_value());
     ASSERT_TRUE(logSays(u"box sent: the vehicle holds its 3 items as sent"_s)) << log().toStdString();
+    EXPECT_TRUE(transfers.contains(u"uploading the geofence of box: 4 of 4"_s)) << transfers.join(u" | "_s).toStdString();
+    EXPECT_TRUE(transfers.contains(u"uploading box: 4 of 4"_s)) << transfers.join(u" | "_s).toStdString();
+    EXPECT_TRUE(transfers.contains(u"reading box back: 4 of 4"_s)) << transfers.join(u" | "_s).toStdString();
+    EXPECT_FALSE(desk.transfer(u"ardurover-1"_s).has_value());
     EXPECT_TRUE(log().contains(u"sending box: 3 mission items, a geofence of 4 vertices"_s)) << log().toStdString();
     EXPECT_EQ(boat->autopilot().missionCount(), 4) << "home, the speed, two waypoints";
     ASSERT_EQ(desk.storedPlans(u"ardurover-1"_s).size(), 1u);

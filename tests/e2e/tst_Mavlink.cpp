@@ -1,0 +1,128 @@
+// MAVLink vehicles end to end: neptus-sim playing ArduRover (sim::MavlinkPeer,
+// which answers as ArduPilot's source and the fixtures say) as a process of
+// its own, met by the console program over UDP on loopback (its tree, its
+// database, its mavlink.tlog beside Data.lsf), and by the console's own
+// wiring (ConsoleSession) sending it a plan and following it to its end.
+#include "database/Database.h"
+#include "mission/MissionXml.h"
+#include "qmlmodels/ConsoleSession.h"
+
+#include "Missions.h"
+#include "Paths.h"
+#include "Ports.h"
+#include "QtPrinters.h"
+#include "Schemas.h"
+#include "Tlog.h"
+
+#include <QDirIterator>
+#include <QFile>
+#include <QProcess>
+#include <QTemporaryDir>
+#include <QTest>
+
+#include <gtest/gtest.h>
+
+using namespace neptus;
+using namespace Qt::StringLiterals;
+using namespace neptus::test;
+
+namespace {
+
+struct Program
+{
+    QProcess process;
+    QByteArray output;
+    void start(const QString &program, const QStringList &arguments, const char *ready)
+    {
+        process.setProcessChannelMode(QProcess::MergedChannels);
+        QObject::connect(&process, &QProcess::readyRead, [this] { output += process.readAll(); });
+        process.start(programPath(program), arguments);
+        ASSERT_TRUE(process.waitForStarted(5000));
+        ASSERT_TRUE(QTest::qWaitFor([&] { return output.contains(ready); }, 15000)) << output.constData();
+    }
+    ~Program()
+    {
+        if (process.state() != QProcess::NotRunning) {
+            process.kill();
+            process.waitForFinished(5000);
+        }
+    }
+};
+
+QString firstFile(const QString &root, const QString &name)
+{
+    QDirIterator it(root, {name}, QDir::Files, QDirIterator::Subdirectories);
+    return it.hasNext() ? it.next() : QString();
+}
+
+} // namespace
+
+TEST(Mavlink, TheConsoleProgramMeetsAnArduRoverProcessRecordsItsFramesAndWritesItToTheDatabase)
+{
+    QTemporaryDir dir;
+    const quint16 port = freeUdpPort();
+    Program boat, console;
+    boat.start(u"neptus-sim"_s, {u"--mavlink"_s, u"127.0.0.1:%1"_s.arg(port)}, "talking to");
+    const QString tree = dir.filePath(u"tree.txt"_s), logs = dir.filePath(u"logs"_s);
+    console.start(u"neptus"_s, {u"--console"_s, sourcePath(u"qml/consoles/Inspector.qml"_s), u"--imc-port"_s, u"0"_s,
+                                u"--dds-domain"_s, u"-1"_s, u"--mavlink"_s, u"udp:%1"_s.arg(port), u"--log-dir"_s, logs,
+                                u"--dump-tree"_s, tree, u"--quit-after"_s, u"7000"_s},
+                  "neptus: MAVLink/UDP on");
+    ASSERT_TRUE(console.process.waitForFinished(20000)) << console.output.constData();
+    EXPECT_EQ(console.process.exitCode(), 0) << console.output.constData();
+
+    // Its tree: the vehicle's own messages and what they mean in the console's words.
+    QFile dump(tree);
+    ASSERT_TRUE(dump.open(QIODevice::ReadOnly)) << console.output.constData();
+    const QString text = QString::fromUtf8(dump.readAll());
+    EXPECT_TRUE(text.contains(u"ardurover-1/HEARTBEAT/custom_mode"_s)) << text.left(2000).toStdString();
+    EXPECT_TRUE(text.contains(u"ardurover-1/GLOBAL_POSITION_INT/lat"_s));
+    EXPECT_TRUE(text.contains(u"ardurover-1/EstimatedState/lat"_s));
+
+    // What was said both ways, in a tlog pymavlink and QGroundControl read.
+    const QString tlog = firstFile(logs, u"mavlink.tlog"_s);
+    ASSERT_FALSE(tlog.isEmpty()) << "no mavlink.tlog under " << logs.toStdString();
+    EXPECT_TRUE(QFile::exists(QFileInfo(tlog).dir().filePath(u"Data.lsf"_s)));
+    const auto records = readTlog(tlog);
+    ASSERT_GT(records.size(), 20u);
+    int fromBoat = 0, fromConsole = 0;
+    for (const TlogRecord &r : records) {
+        fromBoat += r.system() == 1;
+        fromConsole += r.system() == 255;
+    }
+    EXPECT_GT(fromBoat, 10);
+    EXPECT_GT(fromConsole, 3) << "the console's heartbeats and stream requests";
+    EXPECT_LE(records.front().usec, records.back().usec);
+
+    // Its database (beside the logs): the boat by name, and its track.
+    const auto location = db::Location::parse(logs + u"/operation.db"_s);
+    ASSERT_TRUE(location.has_value());
+    auto reader = db::Reader::open(*location);
+    ASSERT_TRUE(reader.has_value()) << reader.error().toStdString();
+    const auto systems = (*reader)->systems();
+    ASSERT_TRUE(systems.has_value());
+    EXPECT_TRUE(std::any_of(systems->begin(), systems->end(), [](const auto &s) { return s.name == u"ardurover-1"_s; }));
+    EXPECT_GT((*reader)->track(u"ardurover-1"_s, 0, std::numeric_limits<qint64>::max())->size(), 3u);
+}
+
+TEST(Mavlink, APlanSentToAnArduRoverProcessRunsToItsEnd)
+{
+    const quint16 port = freeUdpPort();
+    ConsoleSession session(shippedSchema());
+    transport::MavlinkConfig config;
+    config.port = port;
+    ASSERT_TRUE(session.console().startMavlink(config).has_value());
+    Program boat;
+    boat.start(u"neptus-sim"_s, {u"--mavlink"_s, u"127.0.0.1:%1"_s.arg(port), u"--time-factor"_s, u"10"_s}, "talking to");
+    auto &desk = session.planDesk();
+    QFile file(sourcePath(u"docs/examples/douro.xml"_s));
+    const auto opened = desk.openMission(file.fileName());
+    ASSERT_TRUE(opened.has_value()) << opened.error().toStdString();
+    ASSERT_TRUE(QTest::qWaitFor([&] { return desk.isMavlink(u"ardurover-1"_s); }, 10000)) << boat.output.constData();
+    const auto log = [&] { return desk.log(u"ardurover-1"_s).join(u'\n'); };
+    ASSERT_TRUE(desk.send(u"ardurover-1"_s, u"harbour-loop"_s).has_value());
+    ASSERT_TRUE(QTest::qWaitFor([&] { return log().contains(u"harbour-loop sent: the vehicle holds its"_s); }, 15000)) << log().toStdString();
+    ASSERT_TRUE(desk.start(u"ardurover-1"_s, u"harbour-loop"_s).has_value());
+    ASSERT_TRUE(QTest::qWaitFor([&] { return log().contains(u"harbour-loop started"_s); }, 10000)) << log().toStdString();
+    ASSERT_TRUE(QTest::qWaitFor([&] { return log().contains(u"harbour-loop completed"_s); }, 60000)) << log().toStdString();
+}
