@@ -43,11 +43,21 @@ int runMavlink(const QCommandLineParser &parser, const QCommandLineOption &mavli
         return 1;
     }
     sim::MavlinkPeer::Config config;
-    const auto ground = transport::hostAndPort(parser.value(mavlink));
-    if (!ground)
-        return usage(QStringLiteral("--mavlink must look like 127.0.0.1:14550, not '%1'").arg(parser.value(mavlink)));
-    config.groundAddress = ground->first;
-    config.groundPort = ground->second;
+    const QString where = parser.value(mavlink);
+    if (where.startsWith(u"tcp:")) { // as SITL: listen for the ground station
+        bool ok = false;
+        const uint tcpPort = where.mid(4).toUInt(&ok);
+        if (!ok || tcpPort == 0 || tcpPort > 65535)
+            return usage(QStringLiteral("--mavlink tcp:PORT needs a port, not '%1'").arg(where));
+        config.tcp = true;
+        config.port = quint16(tcpPort);
+    } else {
+        const auto ground = transport::hostAndPort(where);
+        if (!ground)
+            return usage(QStringLiteral("--mavlink must look like 127.0.0.1:14550 or tcp:5760, not '%1'").arg(where));
+        config.groundAddress = ground->first;
+        config.groundPort = ground->second;
+    }
     const QString kind = parser.value(type);
     if (kind != u"boat" && kind != u"sub")
         return usage(QStringLiteral("--mavlink-type must be boat or sub, not '%1'").arg(kind));
@@ -64,7 +74,8 @@ int runMavlink(const QCommandLineParser &parser, const QCommandLineOption &mavli
     if (latLon.size() != 2 || !latOk || !lonOk || std::abs(lat) > 90 || std::abs(lon) > 180)
         return usage(QStringLiteral("--home must look like 41.1405,-8.6110, not '%1'").arg(parser.value(home)));
     config.autopilot.home = geo::Geodetic{geo::radians(lat), geo::radians(lon), 0};
-    config.port = parser.isSet(port) ? quint16(parser.value(port).toUInt()) : 0;
+    if (!config.tcp)
+        config.port = parser.isSet(port) ? quint16(parser.value(port).toUInt()) : 0;
     config.bindAddress = QHostAddress(parser.value(host));
     if (config.bindAddress.isNull())
         return usage(QStringLiteral("--host must be an address, not '%1'").arg(parser.value(host)));
@@ -76,8 +87,12 @@ int runMavlink(const QCommandLineParser &parser, const QCommandLineOption &mavli
         std::fprintf(stderr, "neptus-sim: %s\n", qPrintable(started.error()));
         return 1;
     }
-    std::printf("neptus-sim: %s (MAVLink system %u) on %s:%u, talking to %s:%u\n", kind == u"sub" ? "ardusub" : "ardurover", id,
-                qPrintable(config.bindAddress.toString()), peer.port(), qPrintable(config.groundAddress.toString()), config.groundPort);
+    if (config.tcp)
+        std::printf("neptus-sim: %s (MAVLink system %u) listening on TCP %s:%u, talking to who connects\n",
+                    kind == u"sub" ? "ardusub" : "ardurover", id, qPrintable(config.bindAddress.toString()), peer.port());
+    else
+        std::printf("neptus-sim: %s (MAVLink system %u) on %s:%u, talking to %s:%u\n", kind == u"sub" ? "ardusub" : "ardurover", id,
+                    qPrintable(config.bindAddress.toString()), peer.port(), qPrintable(config.groundAddress.toString()), config.groundPort);
     std::fflush(stdout);
     return QCoreApplication::exec();
 }
@@ -130,9 +145,9 @@ int main(int argc, char *argv[])
                        "ids, names, kinds, ports, positions, DDS, transitions, faults."),
         QStringLiteral("file"));
     const QCommandLineOption mavlink(QStringLiteral("mavlink"),
-        QStringLiteral("Be an ArduPilot vehicle speaking MAVLink 2 to the ground station at host:port (14550 by custom), "
-                       "from --port (0: any free one), as ArduPilot's SITL does."),
-        QStringLiteral("host:port"));
+        QStringLiteral("Be an ArduPilot vehicle speaking MAVLink 2: to the ground station at host:port over UDP (14550 by "
+                       "custom), from --port (0: any free one); or tcp:PORT, listening for it as ArduPilot's SITL does (5760)."),
+        QStringLiteral("host:port|tcp:port"));
     const QCommandLineOption mavlinkType(QStringLiteral("mavlink-type"),
         QStringLiteral("With --mavlink: boat (ArduRover, default) or sub (ArduSub)."), QStringLiteral("type"), QStringLiteral("boat"));
     const QCommandLineOption mavlinkSystem(QStringLiteral("mavlink-system"),

@@ -19,6 +19,33 @@ MavlinkPeer::MavlinkPeer(std::shared_ptr<const msg::Schema> mavlink, Config conf
 
 std::expected<void, QString> MavlinkPeer::start()
 {
+    if (m_config.tcp) {
+        if (!m_server.listen(m_config.bindAddress, m_config.port))
+            return std::unexpected(u"cannot listen on TCP %1:%2: %3"_s.arg(m_config.bindAddress.toString()).arg(m_config.port).arg(m_server.errorString()));
+        connect(&m_server, &QTcpServer::newConnection, this, [this] {
+            while (QTcpSocket *next = m_server.nextPendingConnection()) {
+                if (m_client)
+                    m_client->deleteLater();
+                m_client = next;
+                m_framer = std::make_unique<msg::MavlinkFramer>(m_codec);
+                connect(next, &QTcpSocket::readyRead, this, [this, next] {
+                    if (next != m_client)
+                        return;
+                    m_framer->feed(next->readAll());
+                    while (const auto frame = m_framer->next())
+                        answer(*frame, {}, 0);
+                });
+                connect(next, &QTcpSocket::disconnected, this, [this, next] {
+                    if (next == m_client)
+                        m_client = nullptr;
+                    next->deleteLater();
+                });
+            }
+        });
+        m_clock.start();
+        m_timer.start();
+        return {};
+    }
     if (!m_socket.bind(m_config.bindAddress, m_config.port))
         return std::unexpected(u"cannot listen on %1:%2: %3"_s.arg(m_config.bindAddress.toString()).arg(m_config.port).arg(m_socket.errorString()));
     m_clock.start();
@@ -39,14 +66,34 @@ void MavlinkPeer::send(const std::vector<msg::Message> &messages, const QHostAdd
     options.component = 1;
     for (const msg::Message &m : messages) {
         options.sequence = m_sequence++;
-        if (auto frame = m_codec.encode(m, options))
+        auto frame = m_codec.encode(m, options);
+        if (!frame)
+            continue;
+        if (m_config.tcp) {
+            if (m_client && m_client->state() == QAbstractSocket::ConnectedState)
+                m_client->write(*frame);
+        } else {
             m_socket.writeDatagram(*frame, to, port);
+        }
     }
 }
 
 void MavlinkPeer::tick()
 {
     send(m_autopilot.step(now()), m_config.groundAddress, m_config.groundPort);
+}
+
+void MavlinkPeer::answer(QByteArrayView frame, const QHostAddress &from, quint16 port)
+{
+    auto message = m_codec.decode(frame);
+    if (!message) {
+        ++m_bad;
+        return;
+    }
+    const int target = message->def() ? message->def()->indexOf(u"target_system") : -1;
+    if (target >= 0 && message->integer(target) != 0 && message->integer(target) != m_config.system)
+        return; // for another vehicle
+    send(m_autopilot.receive(*message, now()), from, port);
 }
 
 void MavlinkPeer::read()
@@ -61,17 +108,8 @@ void MavlinkPeer::read()
                 ++m_bad;
                 break;
             }
-            msg::MavlinkFrame header;
-            auto message = m_codec.decode(QByteArrayView(data).sliced(at, length), &header);
+            answer(QByteArrayView(data).sliced(at, length), datagram.senderAddress(), quint16(datagram.senderPort()));
             at += length;
-            if (!message) {
-                ++m_bad;
-                continue;
-            }
-            const int target = message->def() ? message->def()->indexOf(u"target_system") : -1;
-            if (target >= 0 && message->integer(target) != 0 && message->integer(target) != m_config.system)
-                continue; // for another vehicle
-            send(m_autopilot.receive(*message, now()), datagram.senderAddress(), quint16(datagram.senderPort()));
         }
     }
 }

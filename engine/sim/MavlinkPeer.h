@@ -7,13 +7,19 @@
 #include <QHostAddress>
 #include <QObject>
 #include <QTimer>
+#include <QTcpServer>
+#include <QTcpSocket>
 #include <QUdpSocket>
+
+#include <memory>
 
 namespace neptus::sim {
 
 // A MavlinkAutopilot on UDP, as ArduPilot's SITL or a telemetry radio's
 // bridge presents a vehicle: it sends to the ground station's address
-// (14550 by default) from its own port and answers whoever talks to it.
+// (14550 by default) from its own port and answers whoever talks to it; or
+// on TCP, as SITL's first serial port (5760): it listens, and talks to the
+// ground station that connects (one at a time, the last one in).
 // MAVLink 2, system `system`, component 1 (the autopilot).
 class MavlinkPeer : public QObject
 {
@@ -29,12 +35,13 @@ public:
         QHostAddress groundAddress = QHostAddress::LocalHost;
         quint16 groundPort = 14550;
         double timeFactor = 1.0; // simulated seconds a second
+        bool tcp = false;        // listen on `port` for a ground station instead of UDP
     };
 
     MavlinkPeer(std::shared_ptr<const msg::Schema> mavlink, Config config, QObject *parent = nullptr);
     // Binds and starts talking; an error says why not.
     std::expected<void, QString> start();
-    quint16 port() const { return m_socket.localPort(); }
+    quint16 port() const { return m_config.tcp ? m_server.serverPort() : m_socket.localPort(); }
     MavlinkAutopilot &autopilot() { return m_autopilot; }
     // Frames it received that did not decode, and those it answered.
     int badFrames() const { return m_bad; }
@@ -43,12 +50,16 @@ private:
     void tick();
     void read();
     void send(const std::vector<msg::Message> &messages, const QHostAddress &to, quint16 port);
+    void answer(QByteArrayView frame, const QHostAddress &from, quint16 port);
     double now() const;
 
     msg::MavlinkCodec m_codec;
     Config m_config;
     MavlinkAutopilot m_autopilot;
     QUdpSocket m_socket;
+    QTcpServer m_server;
+    QTcpSocket *m_client = nullptr; // the ground station connected over TCP
+    std::unique_ptr<msg::MavlinkFramer> m_framer;
     QTimer m_timer;
     QElapsedTimer m_clock;
     quint8 m_sequence = 0;

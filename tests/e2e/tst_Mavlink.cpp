@@ -126,3 +126,26 @@ TEST(Mavlink, APlanSentToAnArduRoverProcessRunsToItsEnd)
     ASSERT_TRUE(QTest::qWaitFor([&] { return log().contains(u"harbour-loop started"_s); }, 10000)) << log().toStdString();
     ASSERT_TRUE(QTest::qWaitFor([&] { return log().contains(u"harbour-loop completed"_s); }, 60000)) << log().toStdString();
 }
+
+// As with ArduPilot's SITL: the vehicle listens on TCP and the console connects.
+TEST(Mavlink, OverTcpAPlanIsUploadedReadBackAndTheBoatStopped)
+{
+    const quint16 port = closedTcpPort(); // free for the boat to listen on
+    Program boat;
+    boat.start(u"neptus-sim"_s, {u"--mavlink"_s, u"tcp:%1"_s.arg(port), u"--time-factor"_s, u"10"_s}, "listening on TCP");
+    ConsoleSession session(shippedSchema());
+    const auto config = transport::parseMavlinkLink(u"tcp:127.0.0.1:%1"_s.arg(port));
+    ASSERT_TRUE(config.has_value());
+    ASSERT_TRUE(session.console().startMavlink(*config).has_value());
+    auto &desk = session.planDesk();
+    ASSERT_TRUE(desk.openMission(sourcePath(u"docs/examples/douro.xml"_s)).has_value());
+    ASSERT_TRUE(QTest::qWaitFor([&] { return desk.isMavlink(u"ardurover-1"_s); }, 10000)) << boat.output.constData();
+    const auto log = [&] { return desk.log(u"ardurover-1"_s).join(u'\n'); };
+    ASSERT_TRUE(desk.send(u"ardurover-1"_s, u"harbour-loop"_s).has_value());
+    ASSERT_TRUE(QTest::qWaitFor([&] { return log().contains(u"harbour-loop sent: the vehicle holds its"_s); }, 15000)) << log().toStdString();
+    EXPECT_EQ(desk.sync(u"ardurover-1"_s, u"harbour-loop"_s), plans::Sync::Same);
+    ASSERT_TRUE(desk.start(u"ardurover-1"_s, u"harbour-loop"_s).has_value());
+    ASSERT_TRUE(QTest::qWaitFor([&] { return log().contains(u"harbour-loop started"_s); }, 10000)) << log().toStdString();
+    ASSERT_TRUE(desk.stop(u"ardurover-1"_s).has_value());
+    ASSERT_TRUE(QTest::qWaitFor([&] { return log().contains(u"harbour-loop stopped"_s); }, 10000)) << log().toStdString();
+}

@@ -7,9 +7,7 @@
 #include <QTcpSocket>
 #include <QUdpSocket>
 
-#if NEPTUS_HAVE_SERIALPORT
 #include <QSerialPort>
-#endif
 
 #include <unistd.h>
 
@@ -210,7 +208,6 @@ std::expected<void, QString> MavlinkTransport::start()
         break;
     }
     case MavlinkConfig::Kind::Serial: {
-#if NEPTUS_HAVE_SERIALPORT
         auto port = std::make_unique<QSerialPort>(m_config.serialDevice);
         port->setBaudRate(m_config.baudRate);
         if (!port->open(QIODevice::ReadWrite))
@@ -221,9 +218,6 @@ std::expected<void, QString> MavlinkTransport::start()
         connect(raw, &QSerialPort::readyRead, this, [this, raw] { streamBytes(raw); });
         m_device = std::move(port);
         break;
-#else
-        return std::unexpected(u"%1: this console was built without Qt Serial Port"_s.arg(name));
-#endif
     }
     }
     m_heartbeat.start();

@@ -25,6 +25,13 @@
 
 #include <map>
 
+#include <cerrno>
+#include <cstring>
+#include <fcntl.h>
+#include <pty.h>
+#include <termios.h>
+#include <unistd.h>
+
 using namespace neptus;
 using namespace neptus::transport;
 using namespace Qt::StringLiterals;
@@ -415,4 +422,46 @@ TEST(MavlinkLink, ATcpVehicleIsReadHoweverTheStreamSplitsItsFrames)
                 gcs = true;
         return gcs;
     }, 3000));
+}
+
+// A telemetry radio is a serial line: here a pseudo-terminal, its far end the vehicle.
+TEST(MavlinkLink, ATelemetryRadioOnASerialLineIsReadAsAStreamAndAnswered)
+{
+    int vehicleEnd = -1, consoleEnd = -1;
+    char device[256] = {};
+    ASSERT_EQ(::openpty(&vehicleEnd, &consoleEnd, device, nullptr, nullptr), 0) << std::strerror(errno);
+    termios raw{};
+    ASSERT_EQ(::tcgetattr(vehicleEnd, &raw), 0);
+    ::cfmakeraw(&raw);
+    ASSERT_EQ(::tcsetattr(vehicleEnd, TCSANOW, &raw), 0);
+    ASSERT_EQ(::fcntl(vehicleEnd, F_SETFL, ::fcntl(vehicleEnd, F_GETFL) | O_NONBLOCK), 0);
+    MavlinkConfig config = loopback();
+    config.kind = MavlinkConfig::Kind::Serial;
+    config.serialDevice = QString::fromLocal8Bit(device);
+    config.baudRate = 57600;
+    auto l = link(config);
+    ::close(consoleEnd); // the link opened its own
+    QSignalSpy discovered(l.get(), &MavlinkTransport::systemDiscovered);
+    Peer encoder(3);
+    const QByteArray bytes = encoder.frame(heartbeat(11, 4, false)) + encoder.frame(heartbeat(11, 4, false));
+    for (qsizetype at = 0; at < bytes.size(); at += 7) // a radio delivers bytes as they come
+        ASSERT_EQ(::write(vehicleEnd, bytes.constData() + at, size_t(std::min<qsizetype>(7, bytes.size() - at))),
+                  std::min<qsizetype>(7, bytes.size() - at));
+    ASSERT_TRUE(QTest::qWaitFor([&] { return discovered.size() == 1; }, 3000));
+    EXPECT_EQ(discovered[0][1].toString(), u"ardurover-3"_s);
+    EXPECT_EQ(l->destination(0xEA03), u"MAVLink/serial"_s);
+    // The ground station's heartbeat goes back down the line.
+    msg::MavlinkFramer framer(encoder.codec);
+    bool gcs = false;
+    ASSERT_TRUE(QTest::qWaitFor([&] {
+        char buffer[512];
+        for (ssize_t n; (n = ::read(vehicleEnd, buffer, sizeof buffer)) > 0;)
+            framer.feed(QByteArray(buffer, n));
+        while (auto f = framer.next())
+            if (auto m = encoder.codec.decode(*f); m && m->abbrev() == u"HEARTBEAT" && m->integer(u"type") == 6)
+                gcs = true;
+        return gcs;
+    }, 3000));
+    l.reset();
+    ::close(vehicleEnd);
 }

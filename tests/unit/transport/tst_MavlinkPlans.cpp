@@ -143,3 +143,16 @@ TEST_F(MavlinkPlans, StopPutsTheBoatInHoldAndTheRunEndsStoppedNotFailed)
     EXPECT_EQ(boat->autopilot().modeName(), u"HOLD"_s);
     EXPECT_FALSE(log().contains(u"box failed"_s)) << log().toStdString();
 }
+
+TEST_F(MavlinkPlans, AbortPutsTheBoatInRtlAndTheRunEndsFailedWithWhy)
+{
+    startBoat();
+    ASSERT_TRUE(desk.send(u"ardurover-1"_s, u"box"_s).has_value());
+    ASSERT_TRUE(logSays(u"box sent"_s)) << log().toStdString();
+    ASSERT_TRUE(desk.start(u"ardurover-1"_s, u"box"_s).has_value());
+    ASSERT_TRUE(logSays(u"box started"_s)) << log().toStdString();
+    ASSERT_TRUE(desk.abort(u"ardurover-1"_s).has_value());
+    ASSERT_TRUE(QTest::qWaitFor([&] { return boat->autopilot().modeName() == u"RTL"_s; }, 3000)) << boat->autopilot().modeName().toStdString();
+    ASSERT_TRUE(logSays(u"box failed: left the mission for RTL"_s)) << log().toStdString();
+    EXPECT_EQ(planAlarm(), u"plan box failed: left the mission for RTL"_s);
+}
