@@ -239,6 +239,9 @@ std::vector<msg::Message> MavlinkAutopilot::receive(const msg::Message &m, doubl
             out.push_back(item(missionType(), seq));
     } else if (type == u"COMMAND_LONG") {
         return command(m, now);
+    } else if (type == u"MANUAL_CONTROL") {
+        m_manual = {int(m.integer(u"x")), int(m.integer(u"y")), int(m.integer(u"z")), int(m.integer(u"r"))};
+        m_manualAt = now;
     }
     return out;
 }
@@ -331,6 +334,26 @@ const MavlinkAutopilot::Item *MavlinkAutopilot::currentNav()
 
 void MavlinkAutopilot::run(double dt, std::vector<msg::Message> &out)
 {
+    if (m_manualAt >= 0 && m_lastStep - m_manualAt >= 3.0) { // the override is forgotten
+        m_manualAt = -1;
+        m_manual = {0, 0, 0, 0};
+        if (m_config.type == Type::Sub && m_armed) {
+            out.push_back(text(severityCritical, u"Lost manual control"_s));
+            m_armed = false;
+            out.push_back(text(severityInfo, u"Disarming motors"_s));
+        }
+    }
+    if (m_mode == *modeNumber(u"MANUAL"_s) && m_armed && m_manualAt >= 0) {
+        const bool sub = m_config.type == Type::Sub;
+        const double throttle = (sub ? m_manual[0] : m_manual[2]) / 1000.0, turn = (sub ? m_manual[3] : m_manual[1]) / 1000.0;
+        const double heading = m_motion.psi + turn * m_limits.turnRate * std::max(dt, 0.05) * 4;
+        const Eigen::Vector2d ahead = m_motion.ned.head<2>() + 50.0 * Eigen::Vector2d(std::cos(heading), std::sin(heading));
+        if (throttle > 0.01)
+            steer(m_motion, ahead, throttle * m_limits.maxSpeed, nullptr, dt, m_limits);
+        else
+            hold(m_motion, nullptr, dt, m_limits);
+        return;
+    }
     const bool autoMode = m_mode == *modeNumber(u"AUTO"_s);
     if (!autoMode || m_missionState == stateComplete || m_mission.size() < 2) {
         if (!autoMode && m_missionState == stateActive)

@@ -7,6 +7,8 @@
 
 #include <QString>
 
+#include <array>
+
 #include <memory>
 #include <optional>
 #include <vector>
@@ -28,6 +30,10 @@ namespace neptus::sim {
 //    "No Mission. Can't set AUTO."), arming (FAILED then its reasons,
 //    CRITICAL, "Arm: …"; "Throttle armed" or "Arming motors"),
 //    DO_SET_MISSION_CURRENT, MISSION_START (Rover: AUTO), SET_MESSAGE_INTERVAL;
+//  - MANUAL_CONTROL from the ground station in MANUAL, armed: Rover steers
+//    with y and throttles with z, Sub drives forward with x and turns with r;
+//    3 s after the last one the override is forgotten (Sub: "Lost manual
+//    control", CRITICAL, and it disarms: its pilot-input failsafe);
 //  - running the mission in AUTO when armed: MISSION_CURRENT (ACTIVE; COMPLETE
 //    with seq 0 once done and out of AUTO), MISSION_ITEM_REACHED and "Reached
 //    waypoint #n" per waypoint, DO_CHANGE_SPEED, "Mission Complete" (Rover).
@@ -56,6 +62,9 @@ public:
     QString modeName() const;
     bool armed() const { return m_armed; }
     int missionCount() const { return int(m_mission.size()); }
+    // The last MANUAL_CONTROL's axes (x, y, z, r), and whether it still drives (under 3 s old).
+    std::array<int, 4> manualControl() const { return m_manual; }
+    bool driven() const { return m_manualAt >= 0; }
     // A custom mode's number by name, for this vehicle ("AUTO" 10 on Rover, 3 on Sub).
     std::optional<quint32> modeNumber(const QString &name) const;
 
@@ -95,6 +104,8 @@ private:
     Motion m_motion;
     Limits m_limits;
     double m_lastStep = -1, m_lastSlow = -1e9, m_lastFast = -1e9;
+    std::array<int, 4> m_manual{0, 0, 0, 0};
+    double m_manualAt = -1; // when the last MANUAL_CONTROL came; -1: none driving
 };
 
 } // namespace neptus::sim

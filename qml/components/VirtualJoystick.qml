@@ -62,6 +62,8 @@ Item {
     // Keyboard.
     property bool keyHeld: false
     Keys.onPressed: (event) => {
+        if (!armed)
+            return // disarmed, the stick does not move (as it cannot be dragged)
         const step = pad.travel / 4
         if (event.key === Qt.Key_Left) knob.x -= step
         else if (event.key === Qt.Key_Right) knob.x += step

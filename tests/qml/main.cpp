@@ -197,6 +197,15 @@ public:
         return {};
     }
     Q_INVOKABLE QString boatMode() { return m_boat ? m_boat->autopilot().modeName() : QString(); }
+    // The boat's last MANUAL_CONTROL [x, y, z, r], and whether one came at all.
+    Q_INVOKABLE QVariantList boatManualControl()
+    {
+        if (!m_boat)
+            return {};
+        const auto axes = m_boat->autopilot().manualControl();
+        return {axes[0], axes[1], axes[2], axes[3]};
+    }
+    Q_INVOKABLE bool boatDriven() { return m_boat && m_boat->autopilot().driven(); }
     Q_INVOKABLE void runVehicle(double seconds)
     {
         for (const double end = m_vehicleTime + seconds; m_vehicleTime < end;) {

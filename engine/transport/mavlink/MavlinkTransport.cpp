@@ -522,6 +522,38 @@ msg::Message MavlinkTransport::commandLong(quint16 command, std::initializer_lis
     return m;
 }
 
+// A joystick's RemoteActions ("Heading=0.25;Thrust=0.80;Vertical=0", each
+// -1 … 1) as MANUAL_CONTROL, the way ArduPilot reads it: ArduSub takes x as
+// forward (Thrust), r as yaw (Heading, right positive) and z as the vertical
+// stick around 500 (GCS_MAVLink, Sub::transform_manual_control_to_rc_override);
+// Rover takes y as steering and z as throttle, -1000 … 1000. A released stick
+// sends zeros: neutral, the vehicle stops. ArduPilot forgets an override 3 s
+// after the last one (Sub: "Lost manual control", its pilot-input failsafe).
+msg::Message MavlinkTransport::manualControl(const Vehicle &v, const QString &actions) const
+{
+    QHash<QString, double> value;
+    for (const QString &pair : actions.split(u';', Qt::SkipEmptyParts)) {
+        const qsizetype equals = pair.indexOf(u'=');
+        if (equals > 0)
+            value.insert(pair.left(equals).trimmed().toLower(), std::clamp(pair.mid(equals + 1).toDouble(), -1.0, 1.0));
+    }
+    const auto axis = [&](const char *name) { return std::lround(value.value(QString::fromLatin1(name)) * 1000); };
+    msg::Message m = mavlinkMessage("MANUAL_CONTROL");
+    setField(m, u"target", v.adapter->mavlinkSystem());
+    if (v.adapter->kind() == msg::mavlink::Kind::Underwater) {
+        setField(m, u"x", axis("thrust"));
+        setField(m, u"y", axis("lateral"));
+        setField(m, u"z", 500 + axis("vertical") / 2);
+        setField(m, u"r", axis("heading"));
+    } else {
+        setField(m, u"x", 0);
+        setField(m, u"y", axis("heading"));
+        setField(m, u"z", axis("thrust"));
+        setField(m, u"r", 0);
+    }
+    return m;
+}
+
 msg::Message MavlinkTransport::setMode(const Vehicle &v, const QString &mode) const
 {
     const auto params = msg::mavlink::setModeParams(v.adapter->family(), v.adapter->mavType(), mode);
@@ -609,6 +641,8 @@ std::expected<void, QString> MavlinkTransport::publish(quint16 system, const msg
         } else if (message.abbrev() == u"Abort") {
             const QString mode = !v->settings.abortMode.isEmpty() ? v->settings.abortMode : v->adapter->defaultAbortMode();
             result = sendLocked(setMode(*v, mode), v);
+        } else if (message.abbrev() == u"RemoteActions") {
+            result = sendLocked(manualControl(*v, message.text(u"actions")), v);
         } else if (message.abbrev() == u"EntityList" || message.abbrev() == u"EntityInfo") {
             // The console asks who its entities are: the adapter's, said here.
             later.push_back([this, m = v->adapter->entityList(now())] { emit derived(m); });

@@ -237,6 +237,7 @@ private:
     std::expected<void, QString> writeLocked(const QByteArray &frame, const Endpoint &to);
     msg::Message mavlinkMessage(const char *name) const;
     msg::Message commandLong(quint16 command, std::initializer_list<float> params, const Vehicle &v) const;
+    msg::Message manualControl(const Vehicle &v, const QString &actions) const;
     msg::Message setMode(const Vehicle &v, const QString &mode) const;
     Vehicle *vehicleLocked(quint16 id);
     const Vehicle *vehicleLocked(quint16 id) const;

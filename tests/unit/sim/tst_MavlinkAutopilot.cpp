@@ -93,3 +93,22 @@ TEST(MavlinkAutopilot, AutoWithoutAMissionAndArmingThatFailsAreRefusedInArduRove
     EXPECT_EQ(said(boat.receive(make("COMMAND_LONG", {{"command", 400}, {"param1", 1}, {"param2", 2989}}), 0)),
               (QStringList{u"COMMAND_ACK 400 0"_s, u"STATUSTEXT 6 Throttle armed"_s})) << "forced";
 }
+
+TEST(MavlinkAutopilot, ASubLeftWithoutManualControlForThreeSecondsSaysSoAndDisarms)
+{
+    sim::MavlinkAutopilot::Config config;
+    config.type = sim::MavlinkAutopilot::Type::Sub;
+    sim::MavlinkAutopilot sub(test::mavlinkSchema(), config);
+    sub.receive(make("COMMAND_LONG", {{"command", 400}, {"param1", 1}}), 0);
+    ASSERT_TRUE(sub.armed());
+    sub.receive(make("MANUAL_CONTROL", {{"target", 1}, {"x", 800}, {"z", 500}}), 0.5);
+    QStringList words;
+    for (double t = 0.6; t < 3.4; t += 0.1)
+        words << said(sub.step(t));
+    EXPECT_TRUE(sub.armed()) << "still within 3 s";
+    EXPECT_FALSE(words.contains(u"STATUSTEXT 2 Lost manual control"_s));
+    for (double t = 3.4; t < 4.0; t += 0.1)
+        words << said(sub.step(t));
+    EXPECT_TRUE(words.contains(u"STATUSTEXT 2 Lost manual control"_s)) << words.join(u" | "_s).toStdString();
+    EXPECT_FALSE(sub.armed());
+}

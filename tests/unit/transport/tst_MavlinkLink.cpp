@@ -465,3 +465,35 @@ TEST(MavlinkLink, ATelemetryRadioOnASerialLineIsReadAsAStreamAndAnswered)
     l.reset();
     ::close(vehicleEnd);
 }
+
+// The joystick speaks the console's words (RemoteActions); a MAVLink vehicle
+// gets MANUAL_CONTROL as ArduPilot reads it: ArduSub forward x, yaw r,
+// vertical z around 500; ArduRover steering y, throttle z.
+TEST(MavlinkLink, AJoysticksRemoteActionsBecomeManualControlAsArduPilotReadsIt)
+{
+    Peer sub(2), boat(3);
+    auto l = link();
+    QSignalSpy discovered(l.get(), &MavlinkTransport::systemDiscovered);
+    sub.send(heartbeat(12, 19, true), l->port());
+    boat.send(heartbeat(11, 0, true), l->port());
+    ASSERT_TRUE(QTest::qWaitFor([&] { return discovered.size() == 2; }, 2000));
+    msg::Message actions(test::shippedSchema()->byAbbrev(u"RemoteActions"_s));
+    actions.setBytes(actions.def()->indexOf(u"actions"), "Heading=0.50;Thrust=0.80");
+    ASSERT_TRUE(l->publish(0xEA02, actions).has_value());
+    ASSERT_TRUE(l->publish(0xEA03, actions).has_value());
+    ASSERT_TRUE(QTest::qWaitFor([&] { return !sub.of("MANUAL_CONTROL").empty() && !boat.of("MANUAL_CONTROL").empty(); }, 2000));
+    const msg::Message toSub = sub.of("MANUAL_CONTROL").back(), toBoat = boat.of("MANUAL_CONTROL").back();
+    EXPECT_EQ(toSub.integer(u"target"), 2);
+    EXPECT_EQ(toSub.integer(u"x"), 800);
+    EXPECT_EQ(toSub.integer(u"r"), 500);
+    EXPECT_EQ(toSub.integer(u"z"), 500) << "the vertical stick at rest";
+    EXPECT_EQ(toBoat.integer(u"target"), 3);
+    EXPECT_EQ(toBoat.integer(u"y"), 500);
+    EXPECT_EQ(toBoat.integer(u"z"), 800);
+    // Released: zeros, the vehicle stops.
+    actions.setBytes(actions.def()->indexOf(u"actions"), "Heading=0.00;Thrust=0.00");
+    ASSERT_TRUE(l->publish(0xEA03, actions).has_value());
+    ASSERT_TRUE(QTest::qWaitFor([&] { return boat.of("MANUAL_CONTROL").size() == 2; }, 2000));
+    EXPECT_EQ(boat.of("MANUAL_CONTROL").back().integer(u"z"), 0);
+    EXPECT_EQ(boat.of("MANUAL_CONTROL").back().integer(u"y"), 0);
+}
