@@ -1,11 +1,15 @@
 // MAVLink vehicles end to end: neptus-sim playing ArduRover (sim::MavlinkPeer,
 // which answers as ArduPilot's source and the fixtures say) as a process of
 // its own, met by the console program over UDP on loopback (its tree, its
-// database, its mavlink.tlog beside Data.lsf), and by the console's own
-// wiring (ConsoleSession) sending it a plan and following it to its end.
+// database, its mavlink.tlog beside Data.lsf); by the console's own wiring
+// (ConsoleSession) over TCP; and in a mixed team with an IMC AUV and a DDS
+// ASV, each running its plan at once.
+#include "core/DataFiles.h"
 #include "database/Database.h"
 #include "mission/MissionXml.h"
 #include "qmlmodels/ConsoleSession.h"
+#include "session/OperationsFeed.h"
+#include "web/LiveServer.h"
 
 #include "Missions.h"
 #include "Paths.h"
@@ -13,9 +17,12 @@
 #include "QtPrinters.h"
 #include "Schemas.h"
 #include "Tlog.h"
+#include "PlanRun.h"
 
 #include <QDirIterator>
 #include <QFile>
+#include <QNetworkAccessManager>
+#include <QNetworkReply>
 #include <QProcess>
 #include <QTemporaryDir>
 #include <QTest>
@@ -105,28 +112,6 @@ TEST(Mavlink, TheConsoleProgramMeetsAnArduRoverProcessRecordsItsFramesAndWritesI
     EXPECT_GT((*reader)->track(u"ardurover-1"_s, 0, std::numeric_limits<qint64>::max())->size(), 3u);
 }
 
-TEST(Mavlink, APlanSentToAnArduRoverProcessRunsToItsEnd)
-{
-    const quint16 port = freeUdpPort();
-    ConsoleSession session(shippedSchema());
-    transport::MavlinkConfig config;
-    config.port = port;
-    ASSERT_TRUE(session.console().startMavlink(config).has_value());
-    Program boat;
-    boat.start(u"neptus-sim"_s, {u"--mavlink"_s, u"127.0.0.1:%1"_s.arg(port), u"--time-factor"_s, u"10"_s}, "talking to");
-    auto &desk = session.planDesk();
-    QFile file(sourcePath(u"docs/examples/douro.xml"_s));
-    const auto opened = desk.openMission(file.fileName());
-    ASSERT_TRUE(opened.has_value()) << opened.error().toStdString();
-    ASSERT_TRUE(QTest::qWaitFor([&] { return desk.isMavlink(u"ardurover-1"_s); }, 10000)) << boat.output.constData();
-    const auto log = [&] { return desk.log(u"ardurover-1"_s).join(u'\n'); };
-    ASSERT_TRUE(desk.send(u"ardurover-1"_s, u"harbour-loop"_s).has_value());
-    ASSERT_TRUE(QTest::qWaitFor([&] { return log().contains(u"harbour-loop sent: the vehicle holds its"_s); }, 15000)) << log().toStdString();
-    ASSERT_TRUE(desk.start(u"ardurover-1"_s, u"harbour-loop"_s).has_value());
-    ASSERT_TRUE(QTest::qWaitFor([&] { return log().contains(u"harbour-loop started"_s); }, 10000)) << log().toStdString();
-    ASSERT_TRUE(QTest::qWaitFor([&] { return log().contains(u"harbour-loop completed"_s); }, 60000)) << log().toStdString();
-}
-
 // As with ArduPilot's SITL: the vehicle listens on TCP and the console connects.
 TEST(Mavlink, OverTcpAPlanIsUploadedReadBackAndTheBoatStopped)
 {
@@ -148,4 +133,86 @@ TEST(Mavlink, OverTcpAPlanIsUploadedReadBackAndTheBoatStopped)
     ASSERT_TRUE(QTest::qWaitFor([&] { return log().contains(u"harbour-loop started"_s); }, 10000)) << log().toStdString();
     ASSERT_TRUE(desk.stop(u"ardurover-1"_s).has_value());
     ASSERT_TRUE(QTest::qWaitFor([&] { return log().contains(u"harbour-loop stopped"_s); }, 10000)) << log().toStdString();
+}
+
+// The paper's team in one console: an AUV on IMC, an ASV on DDS and an
+// ArduRover boat on MAVLink, each given its plan of docs/examples/douro.xml
+// at once; the plan logs, the database and the web page's state show all three.
+TEST(Mavlink, AMixedTeamRunsItsPlansAtOnceAndTheDatabaseAndWebPageShowAllThree)
+{
+    QTemporaryDir dir;
+    const quint16 mavlinkPort = freeUdpPort();
+    Program auv, asv, boat;
+    auv.start(u"neptus-sim"_s, {u"--id"_s, u"0x1f"_s, u"--name"_s, u"lauv-sim-1"_s, u"--port"_s, u"16190"_s, u"--time-factor"_s, u"30"_s},
+              "on 127.0.0.1");
+    asv.start(u"neptus-sim"_s, {u"--dds"_s, u"--dds-domain"_s, u"23"_s, u"--id"_s, u"0x20"_s, u"--name"_s, u"caravela-sim"_s, u"--kind"_s,
+                                u"asv"_s, u"--port"_s, u"16191"_s, u"--time-factor"_s, u"30"_s},
+              "on 127.0.0.1");
+    boat.start(u"neptus-sim"_s, {u"--mavlink"_s, u"127.0.0.1:%1"_s.arg(mavlinkPort), u"--time-factor"_s, u"10"_s}, "talking to");
+
+    ConsoleSession session(shippedSchema());
+    session::Console &console = session.console();
+    const db::Location location = *db::Location::parse(dir.filePath(u"operation.db"_s));
+    db::Writer writer(location, {dir.filePath(u"spool"_s), 512ll << 20, 250, 1000, u"mixed"_s, {}, u"tst_e2e_mavlink"_s});
+    session::OperationsFeed feed(console, &writer);
+    web::WebConfig webConfig;
+    webConfig.port = 0;
+    webConfig.pageDir = dataPath(u"web"_s);
+    webConfig.history = location;
+    web::LiveServer page(feed, webConfig);
+    ASSERT_TRUE(page.start().has_value());
+    ASSERT_TRUE(console.startImc(imcTo({16190})).has_value());
+    ASSERT_TRUE(console.startDds({23, {}, 0x4001}).has_value());
+    transport::MavlinkConfig mavlink;
+    mavlink.port = mavlinkPort;
+    ASSERT_TRUE(console.startMavlink(mavlink).has_value());
+    auto &desk = session.planDesk();
+    ASSERT_TRUE(desk.openMission(sourcePath(u"docs/examples/douro.xml"_s)).has_value());
+    ASSERT_TRUE(QTest::qWaitFor([&] { return heard(console.tree(), u"lauv-sim-1"_s) && heard(console.tree(), u"caravela-sim"_s)
+                                              && desk.isMavlink(u"ardurover-1"_s); }, 20000));
+
+    const std::pair<const char *, const char *> plans[] = {{"lauv-sim-1", "survey"}, {"caravela-sim", "patrol"}, {"ardurover-1", "harbour-loop"}};
+    const auto log = [&](const char *vehicle) { return desk.log(QString::fromLatin1(vehicle)).join(u'\n'); };
+    for (const auto &[vehicle, plan] : plans) {
+        const QString name = QString::fromLatin1(vehicle), id = QString::fromLatin1(plan);
+        ASSERT_TRUE(desk.refresh(name).has_value());
+        ASSERT_TRUE(QTest::qWaitFor([&] { return desk.fetched(name); }, 10000)) << vehicle;
+        ASSERT_TRUE(desk.send(name, id).has_value()) << vehicle;
+    }
+    for (const auto &[vehicle, plan] : plans) {
+        const QString name = QString::fromLatin1(vehicle), id = QString::fromLatin1(plan);
+        ASSERT_TRUE(QTest::qWaitFor([&] { return desk.sync(name, id) == plans::Sync::Same; }, 15000)) << vehicle << "\n" << log(vehicle).toStdString();
+        const auto started = desk.start(name, id);
+        ASSERT_TRUE(started.has_value()) << vehicle << ": " << started.error().toStdString();
+    }
+    for (const auto &[vehicle, plan] : plans)
+        ASSERT_TRUE(QTest::qWaitFor([&] { return log(vehicle).contains(QString::fromLatin1(plan) + u" started"_s); }, 15000))
+            << vehicle << "\n" << log(vehicle).toStdString();
+    ASSERT_TRUE(QTest::qWaitFor([&] { return log("ardurover-1").contains(u"harbour-loop completed"_s); }, 60000)) << log("ardurover-1").toStdString();
+
+    // The database: the three systems by name, and each plan's start.
+    ASSERT_TRUE(writer.flush(5000));
+    auto reader = db::Reader::open(location);
+    ASSERT_TRUE(reader.has_value()) << reader.error().toStdString();
+    const auto systems = (*reader)->systems();
+    const auto events = (*reader)->planEvents(0, std::numeric_limits<qint64>::max());
+    ASSERT_TRUE(systems.has_value() && events.has_value());
+    for (const auto &[vehicle, plan] : plans) {
+        EXPECT_TRUE(std::any_of(systems->begin(), systems->end(), [&](const auto &s) { return s.name == QLatin1StringView(vehicle); })) << vehicle;
+        EXPECT_TRUE(std::any_of(events->begin(), events->end(), [&](const auto &e) {
+            return e.system == QLatin1StringView(vehicle) && e.plan == QLatin1StringView(plan) && e.event == u"started"_s;
+        })) << vehicle << " " << plan;
+    }
+    EXPECT_TRUE(std::any_of(events->begin(), events->end(), [](const auto &e) {
+        return e.system == u"ardurover-1"_s && e.plan == u"harbour-loop"_s && e.event == u"success"_s; // as for an IMC vehicle
+    }));
+
+    // The web page's state: the three, each with a position.
+    QNetworkAccessManager http;
+    QNetworkReply *reply = http.get(QNetworkRequest(QUrl(page.url() + u"api/state"_s)));
+    ASSERT_TRUE(QTest::qWaitFor([&] { return reply->isFinished(); }, 10000));
+    const QByteArray state = reply->readAll();
+    reply->deleteLater();
+    for (const auto &[vehicle, plan] : plans)
+        EXPECT_TRUE(state.contains(QByteArray("\"") + vehicle + "\"")) << vehicle << ": " << state.left(600).constData();
 }
