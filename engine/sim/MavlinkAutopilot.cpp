@@ -93,6 +93,24 @@ MavlinkAutopilot::MavlinkAutopilot(std::shared_ptr<const msg::Schema> mavlink, C
     home.y = qint32(std::lround(geo::degrees(m_config.home.lon) * 1e7));
     home.z = float(m_config.home.height);
     m_mission.push_back(home);
+    // A few of the vehicle's parameters, with ArduPilot's defaults.
+    if (m_config.type == Type::Boat)
+        m_parameters = {{"ARMING_CHECK", 1}, {"CRUISE_SPEED", 2}, {"FRAME_CLASS", 2}, {"FS_GCS_ENABLE", 0}, {"MAV_GCS_SYSID", 255},
+                        {"MIS_DONE_BEHAVE", 0}, {"RC_OVERRIDE_TIME", 3}, {"SYSID_THISMAV", 1}, {"WP_RADIUS", 2}};
+    else
+        m_parameters = {{"ARMING_CHECK", 1}, {"FS_GCS_ENABLE", 2}, {"FS_PILOT_INPUT", 2}, {"FS_PILOT_TIMEOUT", 3},
+                        {"MAV_GCS_SYSID", 255}, {"SYSID_THISMAV", 1}, {"WPNAV_SPEED", 50}};
+}
+
+msg::Message MavlinkAutopilot::parameter(int index, int reportedIndex) const
+{
+    msg::Message m = make("PARAM_VALUE");
+    m.setBytes(m.def()->indexOf(u"param_id"), m_parameters[size_t(index)].first);
+    set(m, u"param_value", m_parameters[size_t(index)].second);
+    set(m, u"param_type", 9); // MAV_PARAM_TYPE_REAL32
+    set(m, u"param_count", double(m_parameters.size()));
+    set(m, u"param_index", reportedIndex);
+    return m;
 }
 
 std::optional<quint32> MavlinkAutopilot::modeNumber(const QString &name) const
@@ -239,6 +257,19 @@ std::vector<msg::Message> MavlinkAutopilot::receive(const msg::Message &m, doubl
             out.push_back(item(missionType(), seq));
     } else if (type == u"COMMAND_LONG") {
         return command(m, now);
+    } else if (type == u"PARAM_REQUEST_LIST") {
+        for (size_t i = 0; i < m_parameters.size(); ++i)
+            out.push_back(parameter(int(i), int(i)));
+    } else if (type == u"PARAM_REQUEST_READ" || type == u"PARAM_SET") {
+        const QByteArray id = m.bytes(m.def()->indexOf(u"param_id"));
+        const qint64 asked = type == u"PARAM_SET" ? -1 : m.integer(u"param_index");
+        for (size_t i = 0; i < m_parameters.size(); ++i) {
+            if (asked >= 0 ? qint64(i) != asked : m_parameters[i].first != id)
+                continue;
+            if (type == u"PARAM_SET")
+                m_parameters[i].second = float(m.number(u"param_value"));
+            out.push_back(parameter(int(i), type == u"PARAM_SET" ? 65535 : int(i)));
+        }
     } else if (type == u"MANUAL_CONTROL") {
         m_manual = {int(m.integer(u"x")), int(m.integer(u"y")), int(m.integer(u"z")), int(m.integer(u"r"))};
         m_manualAt = now;

@@ -34,6 +34,9 @@ namespace neptus::sim {
 //    with y and throttles with z, Sub drives forward with x and turns with r;
 //    3 s after the last one the override is forgotten (Sub: "Lost manual
 //    control", CRITICAL, and it disarms: its pilot-input failsafe);
+//  - parameters (a few of ArduRover's or ArduSub's): PARAM_REQUEST_LIST
+//    answered with every PARAM_VALUE (index, count), PARAM_REQUEST_READ by
+//    index or name, PARAM_SET echoed with index 65535;
 //  - running the mission in AUTO when armed: MISSION_CURRENT (ACTIVE; COMPLETE
 //    with seq 0 once done and out of AUTO), MISSION_ITEM_REACHED and "Reached
 //    waypoint #n" per waypoint, DO_CHANGE_SPEED, "Mission Complete" (Rover).
@@ -85,6 +88,7 @@ private:
     msg::Message text(int severity, const QString &words) const;
     msg::Message missionAck(int type, int result) const;
     msg::Message request(const Upload &u) const;
+    msg::Message parameter(int index, int reportedIndex) const;
     msg::Message item(int type, int seq) const;
     std::vector<msg::Message> command(const msg::Message &m, double now);
     bool setMode(quint32 mode, std::vector<msg::Message> &out);
@@ -104,6 +108,7 @@ private:
     Motion m_motion;
     Limits m_limits;
     double m_lastStep = -1, m_lastSlow = -1e9, m_lastFast = -1e9;
+    std::vector<std::pair<QByteArray, float>> m_parameters;
     std::array<int, 4> m_manual{0, 0, 0, 0};
     double m_manualAt = -1; // when the last MANUAL_CONTROL came; -1: none driving
 };

@@ -1,14 +1,17 @@
 import QtQuick
 import Neptus.Engine
 
-// A battery: charge as a fill between `empty` and `full` volts (or a
-// percentage when the variable is one), coloured by level, and the value.
-// A vehicle that says no voltage is read by its FuelLevel (%), as DUNE
-// vehicles report their charge.
+// A battery: charge as a fill, coloured by level, and the value. The charge
+// is the vehicle's own estimate when it gives one (FuelLevel, %: DUNE
+// vehicles, ArduPilot's battery_remaining), else the voltage on the scale
+// between `empty` and `full` volts (or the variable itself when it is a
+// percentage); the voltage is shown beside it when heard. A team mixes
+// packs (a 24 V AUV, a 4-cell boat at 15.8 V): one voltage scale cannot read them all.
 Item {
     id: battery
 
     property string path: "$main/Voltage@Batteries/value"
+    // The vehicle's charge estimate, read first when it is there.
     property string fallbackPath: "$main/FuelLevel/value"
     property real empty: 21
     property real full: 29.4
@@ -16,11 +19,14 @@ Item {
     property real dangerBelow: 15       // percent
     property string alarmScript: ""
 
-    readonly property Variable shown: !variable.present && fallback.present ? fallback : variable
-    readonly property bool present: shown.present && typeof shown.value === "number"
-    readonly property bool isPercent: shown.unit === "%"
-    readonly property real percent: !present ? 0
-        : Math.max(0, Math.min(100, isPercent ? shown.value : (shown.value - empty) / Math.max(1e-9, full - empty) * 100))
+    readonly property bool voltsKnown: variable.present && typeof variable.value === "number"
+    readonly property bool chargeKnown: fallback.present && typeof fallback.value === "number"
+    readonly property Variable shown: chargeKnown ? fallback : variable
+    readonly property bool present: voltsKnown || chargeKnown
+    readonly property bool isPercent: variable.unit === "%"
+    readonly property real percent: chargeKnown ? Math.max(0, Math.min(100, fallback.value))
+        : !voltsKnown ? 0
+        : Math.max(0, Math.min(100, isPercent ? variable.value : (variable.value - empty) / Math.max(1e-9, full - empty) * 100))
     readonly property int zone: !present ? 0 : percent <= dangerBelow ? 4 : percent <= warningBelow ? 3 : 1
     readonly property bool stale: shown.stale
 
@@ -61,7 +67,8 @@ Item {
         id: value
         objectName: "value"
         anchors.centerIn: body
-        text: battery.present ? Math.round(battery.percent) + " %" + (battery.isPercent ? "" : "  " + battery.shown.value.toFixed(1) + " " + battery.shown.unit) : "—"
+        text: battery.present ? Math.round(battery.percent) + " %"
+                                + (battery.voltsKnown && !battery.isPercent ? "  " + variable.value.toFixed(1) + " " + variable.unit : "") : "—"
         color: Theme.text
         style: Text.Outline
         styleColor: Theme.surface

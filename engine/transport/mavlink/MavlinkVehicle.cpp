@@ -268,7 +268,9 @@ std::vector<msg::Message> MavlinkVehicle::translate(const msg::Message &message,
         const bool reportsState = missionState != 0;
         const bool executing = modeName() == msg::mavlink::missionMode(m_family) && m_armed && (reportsState ? missionState == 3 : true);
         msg::Message s = make("PlanControlState", now);
-        const QString plan = m_planId.isEmpty() ? u"mission"_s : m_planId;
+        // Its mission by the plan it came from; "mission" once an unlabelled one ran; none before.
+        const QString plan = !m_planId.isEmpty() ? m_planId : executing || m_planState == 3 || m_ran ? u"mission"_s : QString();
+        m_ran = m_ran || executing;
         setText(s, u"plan_id", plan);
         int outcome = 0;
         if (executing) {

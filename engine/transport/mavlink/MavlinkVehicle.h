@@ -98,6 +98,7 @@ private:
     int m_missionState = 0;      // MISSION_CURRENT.mission_state
     int m_missionSeq = 0, m_missionTotal = 0;
     int m_planState = -1;        // what PlanControlState said last
+    bool m_ran = false;          // it ran its mission since the console heard it
 };
 
 } // namespace neptus::transport

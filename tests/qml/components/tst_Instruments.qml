@@ -19,6 +19,8 @@ TestCase {
     AttitudeIndicator { id: horizon; x: 420; y: 0; width: 200; height: 200
                         rollPath: "inst/EstimatedState/phi"; pitchPath: "inst/EstimatedState/theta" }
     Battery { id: battery; x: 630; y: 0; width: 200; height: 72; path: "inst/Voltage/value"; empty: 20; full: 30 }
+    // A 4-cell boat on the AUV's voltage scale: its own charge estimate is read first.
+    Battery { id: boatBattery; x: 630; y: 80; width: 200; height: 72; path: "boat/Voltage/value"; fallbackPath: "boat/FuelLevel/value" }
     DepthAltitudeBar { id: column; x: 840; y: 0; width: 96; height: 320; maximum: 50
                        depthPath: "inst/EstimatedState/depth"; altitudePath: "inst/EstimatedState/alt" }
 
@@ -81,6 +83,18 @@ TestCase {
         tryCompare(battery, "zone", 4)
         compare(String(fill.color), String(Theme.levelColor(4)))
         verify(text(battery).indexOf("10 %") === 0, text(battery))
+    }
+
+    function test_batteryReadsTheVehiclesOwnChargeBeforeAVoltageScale() {
+        Fixtures.nameSystem(62, "boat")
+        Fixtures.ingest("Voltage", 62, { value: 15.8 })
+        Fixtures.treeModel.sync()
+        tryCompare(boatBattery, "percent", 0) // 15.8 V on a 21-29.4 V scale
+        Fixtures.ingest("FuelLevel", 62, { value: 87 })
+        Fixtures.treeModel.sync()
+        tryCompare(boatBattery, "percent", 87)
+        compare(text(boatBattery), "87 %  15.8 V")
+        compare(boatBattery.zone, 1)
     }
 
     function test_waterColumnPlacesVehicleAndSeabed() {

@@ -112,3 +112,21 @@ TEST(MavlinkAutopilot, ASubLeftWithoutManualControlForThreeSecondsSaysSoAndDisar
     EXPECT_TRUE(words.contains(u"STATUSTEXT 2 Lost manual control"_s)) << words.join(u" | "_s).toStdString();
     EXPECT_FALSE(sub.armed());
 }
+
+TEST(MavlinkAutopilot, ItListsItsParametersByIndexAndEchoesASetOneWithIndex65535)
+{
+    sim::MavlinkAutopilot boat(test::mavlinkSchema(), {});
+    const auto all = boat.receive(make("PARAM_REQUEST_LIST"), 0);
+    ASSERT_GE(all.size(), 5u);
+    for (size_t i = 0; i < all.size(); ++i) {
+        EXPECT_EQ(all[i].integer(u"param_index"), qint64(i));
+        EXPECT_EQ(all[i].integer(u"param_count"), qint64(all.size()));
+    }
+    msg::Message set = make("PARAM_SET", {{"param_value", 1}, {"param_type", 9}});
+    set.setBytes(set.def()->indexOf(u"param_id"), "FS_GCS_ENABLE");
+    const auto echo = boat.receive(set, 0);
+    ASSERT_EQ(echo.size(), 1u);
+    EXPECT_EQ(echo[0].text(u"param_id"), u"FS_GCS_ENABLE"_s);
+    EXPECT_EQ(echo[0].number(u"param_value"), 1.0);
+    EXPECT_EQ(echo[0].integer(u"param_index"), 65535);
+}
