@@ -161,8 +161,8 @@ std::optional<mission::Plan> PlanDesk::plan(const QString &system, const QString
         return v->supervisor->plan();
     if (const auto copy = v->copies.find(planId); copy != v->copies.end())
         return copy->second;
-    if (m_quiet)
-        return std::nullopt;
+    if (m_quiet || isMavlink(v->client->vehicle()))
+        return std::nullopt; // a MAVLink vehicle holds one mission, no plan database to ask
     // Fetched once: an empty copy marks the question asked.
     v->copies[planId] = mission::Plan{};
     v->client->get(planId);
@@ -377,8 +377,16 @@ void PlanDesk::receive(const msg::Message &message)
         return;
     if (found != m_vehicles.end() && found->second.client)
         found->second.client->receive(message);
-    for (const PlanRuns::Event &e : m_runs.observe(message, m_clock->now().toMSecsSinceEpoch()))
-        told(e);
+    // A MAVLink vehicle's states said before its mission was recognised ("mission") are of that plan.
+    if (found != m_vehicles.end() && !found->second.heldPlan.isEmpty() && message.text(u"plan_id") == u"mission") {
+        msg::Message renamed = message;
+        renamed.setBytes(renamed.def()->indexOf(u"plan_id"), found->second.heldPlan.toUtf8());
+        for (const PlanRuns::Event &e : m_runs.observe(renamed, m_clock->now().toMSecsSinceEpoch()))
+            told(e);
+    } else {
+        for (const PlanRuns::Event &e : m_runs.observe(message, m_clock->now().toMSecsSinceEpoch()))
+            told(e);
+    }
     if (m_runs.waiting())
         m_supervision.start(); // an end waits for its reason: told by supervise() when it is late
 }
@@ -586,14 +594,21 @@ void PlanDesk::heldMission(quint16 id, const std::vector<MissionItem> &items)
     v.stored.clear();
     v.fetched = true;
     v.held = items;
+    v.heldPlan.clear();
     if (items.size() > 1) { // more than its home
         StoredPlan held{u"mission"_s, missionDigest(items, MissionType::Mission), int(items.size()) - 1, 0};
         for (const mission::Plan *p : missionPlans(m_tree.systemName(id))) {
             const auto &translated = mavlinkPlan(*p);
             if (translated && missionDifference(translated->items, items, MissionType::Mission).isEmpty()) {
                 held.id = p->id;
+                v.heldPlan = p->id;
                 if (m_mavlink.label)
                     m_mavlink.label(id, p->id, translated->maneuverOfItem());
+                // Running already (another station started it): the same run, by its plan's name.
+                if (const auto run = m_runs.running(id); run && run->plan != p->id) {
+                    note(id, u"%1 is %2"_s.arg(run->plan, p->id));
+                    m_runs.relabel(id, p->id);
+                }
                 break;
             }
         }

@@ -162,6 +162,7 @@ private:
         std::optional<Transfer> transfer;
         std::map<int, QString> transferNames; // by operation: what its progress is called
         std::vector<MissionItem> held; // the mission it holds, as read back
+        QString heldPlan;               // the plan it was recognised as ("" when none)
     };
 
     std::expected<Vehicle *, QString> vehicle(const QString &system);

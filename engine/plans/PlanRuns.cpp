@@ -147,6 +147,13 @@ std::optional<PlanRuns::Run> PlanRuns::running(quint16 system) const
     return it == m_vehicles.cend() ? std::nullopt : it->run;
 }
 
+void PlanRuns::relabel(quint16 system, const QString &plan)
+{
+    const auto it = m_vehicles.find(system);
+    if (it != m_vehicles.end() && it->run)
+        it->run->plan = plan;
+}
+
 void PlanRuns::forget(quint16 system)
 {
     m_vehicles.remove(system);

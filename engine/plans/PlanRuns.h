@@ -64,6 +64,9 @@ public:
     // The run a vehicle is in, if any.
     std::optional<Run> running(quint16 system) const;
     void forget(quint16 system);
+    // The run a vehicle is in is known by another name from now on (a MAVLink
+    // vehicle's mission, recognised as the plan it came from): no new run.
+    void relabel(quint16 system, const QString &plan);
 
     // "completed", "failed", "stopped", "replaced", "ended".
     static QString outcomeName(Outcome outcome);

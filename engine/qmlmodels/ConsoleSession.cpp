@@ -59,7 +59,7 @@ ConsoleSession::ConsoleSession(std::shared_ptr<const msg::Schema> schema, const 
 {
     connect(&m_console, &session::Console::planMessageReceived, &m_planDesk, &plans::PlanDesk::receive);
     connect(&m_console, &session::Console::sharedMissionReceived, &m_share, &plans::MissionShare::receive);
-    m_planDesk.setMavlink({[this] { return m_console.mavlinkSchema(); }, &mavlinkPlan,
+    m_planDesk.setMavlink({[this] { return m_console.mavlinkSchema(); }, &mavlinkPlanFor,
                            [this](quint16 system, const QString &planId, const QStringList &maneuverOfItem) {
                                m_console.labelMission(system, planId, maneuverOfItem);
                            },
@@ -70,7 +70,7 @@ ConsoleSession::ConsoleSession(std::shared_ptr<const msg::Schema> schema, const 
 // translation (xslt/mavlink-mission.xsl unless it names its own), or that
 // stylesheet for a vehicle with no definition; the home as item 0; the
 // mission's operating and no-go areas as its geofence.
-std::expected<plans::MavlinkPlan, QString> ConsoleSession::mavlinkPlan(const mission::Mission &mission, const mission::Plan &plan)
+std::expected<plans::MavlinkPlan, QString> ConsoleSession::mavlinkPlanFor(const mission::Mission &mission, const mission::Plan &plan)
 {
     const mission::VehicleCatalog definitions = mission::loadVehicles(mission::vehicleFolders());
     mission::VehicleDefinition vehicle;

@@ -65,8 +65,11 @@ public:
     // track and statistics go; heard again, it is met anew.
     Q_INVOKABLE void forgetSystem(int systemId);
 
+    // A plan as a MAVLink vehicle's mission and geofence (the desk's translation).
+    static std::expected<neptus::plans::MavlinkPlan, QString> mavlinkPlanFor(const neptus::mission::Mission &mission,
+                                                                             const neptus::mission::Plan &plan);
+
 private:
-    static std::expected<neptus::plans::MavlinkPlan, QString> mavlinkPlan(const neptus::mission::Mission &mission, const neptus::mission::Plan &plan);
     neptus::session::Console m_console;
     neptus::tree::VariableTreeModel m_treeModel{&m_console.tree()};
     neptus::geo::Tracks m_tracks{&m_treeModel};

@@ -133,8 +133,8 @@ msg::Message MavlinkAutopilot::ack(quint16 command, int result) const
     msg::Message m = make("COMMAND_ACK");
     set(m, u"command", command);
     set(m, u"result", result);
-    set(m, u"target_system", 255);
-    set(m, u"target_component", 190);
+    set(m, u"target_system", m_to);
+    set(m, u"target_component", m_toComponent);
     return m;
 }
 
@@ -151,8 +151,8 @@ msg::Message MavlinkAutopilot::missionAck(int type, int result) const
     msg::Message m = make("MISSION_ACK");
     set(m, u"type", result);
     set(m, u"mission_type", type);
-    set(m, u"target_system", 255);
-    set(m, u"target_component", 190);
+    set(m, u"target_system", m_to);
+    set(m, u"target_component", m_toComponent);
     return m;
 }
 
@@ -162,8 +162,8 @@ msg::Message MavlinkAutopilot::request(const Upload &u) const
     msg::Message m = make("MISSION_REQUEST");
     set(m, u"seq", u.next);
     set(m, u"mission_type", u.type);
-    set(m, u"target_system", 255);
-    set(m, u"target_component", 190);
+    set(m, u"target_system", m_to);
+    set(m, u"target_component", m_toComponent);
     return m;
 }
 
@@ -182,8 +182,8 @@ msg::Message MavlinkAutopilot::item(int type, int seq) const
     m.setInteger(m.def()->indexOf(u"y"), i.y);
     set(m, u"z", i.z);
     set(m, u"mission_type", type);
-    set(m, u"target_system", 255);
-    set(m, u"target_component", 190);
+    set(m, u"target_system", m_to);
+    set(m, u"target_component", m_toComponent);
     return m;
 }
 
@@ -192,6 +192,11 @@ std::vector<msg::Message> MavlinkAutopilot::receive(const msg::Message &m, doubl
     std::vector<msg::Message> out;
     if (!m.def())
         return out;
+    // Answers go to who asked (GCS_MAVLink: its system and component as targets).
+    if (m.header.src != 0 && m.header.src <= 255) {
+        m_to = quint8(m.header.src);
+        m_toComponent = quint8(m.header.srcEnt);
+    }
     const QString &type = m.def()->abbrev;
     const auto missionType = [&] { return int(m.integer(u"mission_type")); };
     if (type == u"MISSION_COUNT") {
@@ -245,8 +250,8 @@ std::vector<msg::Message> MavlinkAutopilot::receive(const msg::Message &m, doubl
         msg::Message count = make("MISSION_COUNT");
         set(count, u"count", double(missionType() == 1 ? m_fence.size() : m_mission.size()));
         set(count, u"mission_type", missionType());
-        set(count, u"target_system", 255);
-        set(count, u"target_component", 190);
+        set(count, u"target_system", m_to);
+        set(count, u"target_component", m_toComponent);
         out.push_back(std::move(count));
     } else if (type == u"MISSION_REQUEST_INT" || type == u"MISSION_REQUEST") {
         const int seq = int(m.integer(u"seq"));

@@ -109,6 +109,7 @@ private:
     Limits m_limits;
     double m_lastStep = -1, m_lastSlow = -1e9, m_lastFast = -1e9;
     std::vector<std::pair<QByteArray, float>> m_parameters;
+    quint8 m_to = 255, m_toComponent = 190; // who asked last: its answers' targets
     std::array<int, 4> m_manual{0, 0, 0, 0};
     double m_manualAt = -1; // when the last MANUAL_CONTROL came; -1: none driving
 };

@@ -14,6 +14,8 @@
 #include "Schemas.h"
 
 #include <QTest>
+#include <QNetworkDatagram>
+#include <QUdpSocket>
 
 #include <gtest/gtest.h>
 
@@ -155,4 +157,49 @@ TEST_F(MavlinkPlans, AbortPutsTheBoatInRtlAndTheRunEndsFailedWithWhy)
     ASSERT_TRUE(QTest::qWaitFor([&] { return boat->autopilot().modeName() == u"RTL"_s; }, 3000)) << boat->autopilot().modeName().toStdString();
     ASSERT_TRUE(logSays(u"box failed: left the mission for RTL"_s)) << log().toStdString();
     EXPECT_EQ(planAlarm(), u"plan box failed: left the mission for RTL"_s);
+}
+
+// Another ground station (here a mission client on a socket of its own) sent
+// and started the plan before this console looked: the console recognises
+// the mission as the plan, shows it running, and tells one run, not a
+// "mission" replaced by the plan.
+TEST_F(MavlinkPlans, AMissionAnotherStationStartedIsRecognisedAsItsPlanAndIsOneRun)
+{
+    startBoat();
+    auto m = mission::readMission(missionText, u"boat.xml"_s);
+    ASSERT_TRUE(m.has_value());
+    const auto translated = ConsoleSession::mavlinkPlanFor(*m, m->plans.front());
+    ASSERT_TRUE(translated.has_value()) << translated.error().toStdString();
+    QUdpSocket station;
+    ASSERT_TRUE(station.bind(QHostAddress::LocalHost, 0));
+    const msg::MavlinkCodec codec(test::mavlinkSchema());
+    plans::MavlinkMissionClient other(test::mavlinkSchema(), 1, [&](const msg::Message &message) -> std::expected<void, QString> {
+        msg::Message addressed = message;
+        if (const int t = addressed.def()->indexOf(u"target_system"); t >= 0)
+            addressed.setInteger(t, 1);
+        msg::MavlinkCodec::Options o;
+        o.system = 254;
+        station.writeDatagram(*codec.encode(addressed, o), QHostAddress::LocalHost, boat->port());
+        return {};
+    });
+    other.setOwnSystem(254);
+    QObject::connect(&station, &QUdpSocket::readyRead, [&] {
+        while (station.hasPendingDatagrams())
+            if (auto message = codec.decode(station.receiveDatagram().data()))
+                other.receive(*message);
+    });
+    int done = 0;
+    QObject::connect(&other, &plans::MavlinkMissionClient::finished, [&](const auto &r) { done += r.ok; });
+    other.upload(plans::MissionType::Mission, translated->items);
+    other.command(400, {1, 0, 0, 0, 0, 0, 0}, u"arm"_s);
+    other.command(176, {1, 10, 0, 0, 0, 0, 0}, u"mode AUTO"_s);
+    ASSERT_TRUE(QTest::qWaitFor([&] { return done == 3; }, 5000)) << done;
+    ASSERT_TRUE(QTest::qWaitFor([&] { return boat->autopilot().modeName() == u"AUTO"_s; }, 3000));
+
+    ASSERT_TRUE(desk.refresh(u"ardurover-1"_s).has_value());
+    ASSERT_TRUE(QTest::qWaitFor([&] { return desk.sync(u"ardurover-1"_s, u"box"_s) == plans::Sync::Same; }, 5000)) << log().toStdString();
+    ASSERT_TRUE(logSays(u"box completed"_s, 30000)) << log().toStdString();
+    EXPECT_FALSE(log().contains(u"started in its place"_s)) << log().toStdString();
+    EXPECT_FALSE(log().contains(u"PlanDB"_s)) << "a MAVLink vehicle is asked nothing of IMC's: " << log().toStdString();
+    EXPECT_EQ(planAlarm(), u"plan box completed"_s) << "its end, not a replacement";
 }
