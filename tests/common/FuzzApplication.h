@@ -4,6 +4,7 @@
 // QCoreApplication::applicationDirPath for helper programs), made on the
 // first input and never destroyed: objects a target keeps across inputs are
 // destroyed after it at exit and may still use it.
+#include <QAbstractItemModel>
 #include <QCoreApplication>
 
 #include <cstdio>
@@ -19,6 +20,18 @@ inline void fuzzCheck(bool ok, const char *target, const char *what)
         std::fprintf(stderr, "%s: %s\n", target, what);
         std::abort();
     }
+}
+
+// Reads every row a model shows (up to `budget` rows), as a view would.
+inline int readModel(const QAbstractItemModel &model, const QModelIndex &parent, int budget)
+{
+    for (int row = 0; row < model.rowCount(parent) && budget > 0; ++row) {
+        for (int column = 0; column < model.columnCount(parent); ++column)
+            model.data(model.index(row, column, parent), Qt::DisplayRole);
+        --budget;
+        budget = readModel(model, model.index(row, 0, parent), budget);
+    }
+    return budget;
 }
 
 inline void ensureFuzzApplication()

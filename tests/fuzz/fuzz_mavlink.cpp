@@ -57,17 +57,6 @@ struct Console
     int inputs = 0;
 };
 
-int readModel(const QAbstractItemModel &model, const QModelIndex &parent, int budget)
-{
-    for (int row = 0; row < model.rowCount(parent) && budget > 0; ++row) {
-        for (int column = 0; column < model.columnCount(parent); ++column)
-            model.data(model.index(row, column, parent), Qt::DisplayRole);
-        --budget;
-        budget = readModel(model, model.index(row, 0, parent), budget);
-    }
-    return budget;
-}
-
 std::unique_ptr<Console> &console(bool signing)
 {
     test::ensureFuzzApplication();
@@ -103,12 +92,9 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
             host = (host + 1) & 3;
     }
     c.link.service(); // what the link does once a second: streams, parameters, takeovers
-    readModel(c.model, {}, 2000);
-    for (const quint16 system : c.link.vehicles()) {
-        if (system < Console::config(false).idBase || system > Console::config(false).idBase + 255) {
-            std::fprintf(stderr, "fuzz_mavlink: a vehicle with console id 0x%04x, outside the link's range\n", system);
-            std::abort();
-        }
-    }
+    test::readModel(c.model, {}, 2000);
+    const quint16 base = Console::config(false).idBase;
+    for (const quint16 system : c.link.vehicles())
+        test::fuzzCheck(system >= base && system <= base + 255, "fuzz_mavlink", "a vehicle with a console id outside the link's range");
     return 0;
 }

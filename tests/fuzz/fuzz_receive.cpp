@@ -67,18 +67,6 @@ struct Console
     int inputs = 0;
 };
 
-// Reads every row the model shows, as a tree view would.
-int readModel(const QAbstractItemModel &model, const QModelIndex &parent, int budget)
-{
-    for (int row = 0; row < model.rowCount(parent) && budget > 0; ++row) {
-        for (int column = 0; column < model.columnCount(parent); ++column)
-            model.data(model.index(row, column, parent), Qt::DisplayRole);
-        --budget;
-        budget = readModel(model, model.index(row, 0, parent), budget);
-    }
-    return budget;
-}
-
 std::unique_ptr<Console> &console(bool tiny)
 {
     test::ensureFuzzApplication();
@@ -139,7 +127,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     // What the console does once a frame, then what it does once a second
     // (here every 16th input: it looks at everything, and costs as much).
     c.model.sync();
-    readModel(c.model, {}, 8);
+    test::readModel(c.model, {}, 8);
     if (c.inputs % 16 == 0) {
         c.model.refreshAges();
         c.session.check();
