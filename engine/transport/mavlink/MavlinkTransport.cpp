@@ -652,7 +652,7 @@ std::expected<void, QString> MavlinkTransport::publish(quint16 system, const msg
     }
     // Answers go on after the caller is done sending (it may be ingesting).
     if (!later.empty())
-        QMetaObject::invokeMethod(this, [this, later = std::move(later)]() mutable { emitAll(later); }, Qt::QueuedConnection);
+        QMetaObject::invokeMethod(this, [later = std::move(later)]() mutable { emitAll(later); }, Qt::QueuedConnection);
     return result;
 }
 
