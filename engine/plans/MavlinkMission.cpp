@@ -56,7 +56,9 @@ QString number(double value)
 // in whole centimetres; a fence vertex its count and position only. Applied
 // to both sides of a comparison, so that a vehicle that keeps more (PX4)
 // compares alike too.
-MissionItem asKept(const MissionItem &i, MissionType type)
+} // namespace
+
+MissionItem keptByArduPilot(const MissionItem &i, MissionType type)
 {
     MissionItem k;
     k.command = i.command;
@@ -65,6 +67,7 @@ MissionItem asKept(const MissionItem &i, MissionType type)
     const auto whole = [](float v) { return std::isnan(v) ? 0.0f : std::trunc(v); };
     if (type == MissionType::Fence) {
         k.frame = 0;
+        k.autocontinue = 0;
         k.p1 = whole(i.p1);
         if (i.command == 5003 || i.command == 5004) // a circle: its radius
             k.p1 = i.p1;
@@ -72,7 +75,7 @@ MissionItem asKept(const MissionItem &i, MissionType type)
         return k;
     }
     k.frame = (i.frame == 3 || i.frame == 6) ? 3 : (i.frame == 10 || i.frame == 11) ? 10 : 0;
-    k.z = std::isnan(i.z) ? 0.0f : i.z;
+    k.z = std::isnan(i.z) ? 0.0f : std::trunc(i.z * 100.0f) * 0.01f; // whole centimetres, cut towards zero
     switch (i.command) {
     case 16: // NAV_WAYPOINT: the hold time
     case 22: // NAV_TAKEOFF: the pitch
@@ -98,8 +101,9 @@ MissionItem asKept(const MissionItem &i, MissionType type)
         k.x = k.y = 0;
         k.z = 0;
         break;
-    default: // what it is not known to change
-        k.frame = isNavigation(i.command) ? i.frame : 0;
+    default: // what it is not known to change (a location command's frame folds as above)
+        if (!isNavigation(i.command))
+            k.frame = 0;
         k.p1 = i.p1;
         k.p2 = i.p2;
         k.p3 = i.p3;
@@ -109,9 +113,11 @@ MissionItem asKept(const MissionItem &i, MissionType type)
     return k;
 }
 
+namespace {
+
 std::optional<Compared> firstDifference(const MissionItem &sent, const MissionItem &held, MissionType type)
 {
-    const MissionItem a = asKept(sent, type), b = asKept(held, type);
+    const MissionItem a = keptByArduPilot(sent, type), b = keptByArduPilot(held, type);
     if (a.command != b.command)
         return Compared{u"command"_s, QString::number(a.command), QString::number(b.command)};
     if (a.frame != b.frame)
@@ -253,24 +259,6 @@ QString missionDifference(const std::vector<MissionItem> &sent, const std::vecto
             return u"item %1: %2 %3 sent, %4 held"_s.arg(i).arg(d->field, d->sent, d->held);
     }
     return {};
-}
-
-QByteArray missionDigest(const std::vector<MissionItem> &items, MissionType type)
-{
-    QCryptographicHash hash(QCryptographicHash::Md5);
-    for (size_t i = 0; i < items.size(); ++i) {
-        if (i == 0 && type == MissionType::Mission)
-            continue;
-        const MissionItem m = asKept(items[i], type);
-        // Floats to 6 significant digits and altitudes to the decimetre, so that what compares equal above digests alike.
-        const auto f = [](float v) { return std::isnan(v) ? u"nan"_s : QString::number(double(v), 'g', 6); };
-        hash.addData(u"%1 %2 %3 %4 %5 %6 %7 %8 %9\n"_s.arg(m.command).arg(m.frame)
-                         .arg(f(m.p1), f(m.p2), f(m.p3), f(m.p4))
-                         .arg(m.x).arg(m.y)
-                         .arg(std::lround(m.z * 10))
-                         .toUtf8());
-    }
-    return hash.result();
 }
 
 // --- The client ----------------------------------------------------------------------

@@ -62,8 +62,9 @@ std::vector<MissionItem> missionFence(const mission::Mission &mission);
 // kept in whole centimetres; a fence vertex keeps its count and position
 // only (AP_Mission, MissionItemProtocol_Fence; docs/mavlink.md).
 QString missionDifference(const std::vector<MissionItem> &sent, const std::vector<MissionItem> &held, MissionType type);
-// A digest of a mission as ArduPilot keeps it (its identity in the plan list).
-QByteArray missionDigest(const std::vector<MissionItem> &items, MissionType type);
+// What ArduPilot keeps of an item and reads back (the rules above); the
+// simulated ArduPilot (sim::MavlinkAutopilot) stores its items through it.
+MissionItem keptByArduPilot(const MissionItem &item, MissionType type);
 
 // Talks to one MAVLink vehicle's mission and command handling, through
 // MAVLink messages sent to its console id (the link fills in its system and

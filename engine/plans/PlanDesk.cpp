@@ -89,9 +89,9 @@ void PlanDesk::setMission(mission::Mission mission, const QString &path)
             m_problems << p.id + u": "_s + error;
         }
     }
-    const mission::VehicleCatalog definitions = mission::loadVehicles(mission::vehicleFolders());
+    m_definitions = mission::loadVehicles(mission::vehicleFolders());
     for (const mission::Plan &p : m_mission.plans) {
-        const mission::VehicleDefinition *v = definitions.find(p.vehicle);
+        const mission::VehicleDefinition *v = m_definitions.find(p.vehicle);
         for (const mission::PlanProblem &problem :
              mission::checkPlan(p, m_mission, mission::planGeometry(p, v ? v->speeds() : mission::SpeedModel{}), v)) {
             if (problem.severity != mission::PlanProblem::Severity::Error)
@@ -150,9 +150,8 @@ PlanDesk::Vehicle &PlanDesk::vehicleFor(quint16 to)
 
 std::optional<mission::Plan> PlanDesk::plan(const QString &system, const QString &planId)
 {
-    for (const mission::Plan *p : missionPlans(system))
-        if (p->id == planId)
-            return *p;
+    if (const mission::Plan *p = missionPlan(system, planId))
+        return *p;
     Vehicle *v = known(system);
     if (!v)
         return std::nullopt;
@@ -190,9 +189,8 @@ bool PlanDesk::fetched(const QString &system) const
 
 std::expected<msg::Message, QString> PlanDesk::specification(const QString &system, const QString &planId) const
 {
-    for (const mission::Plan *p : missionPlans(system))
-        if (p->id == planId)
-            return mission::planSpecification(*p, *m_schema);
+    if (const mission::Plan *p = missionPlan(system, planId))
+        return mission::planSpecification(*p, *m_schema);
     return std::unexpected(u"the mission has no plan '%1' for %2"_s.arg(planId, system));
 }
 
@@ -229,6 +227,17 @@ void PlanDesk::note(quint16 id, const QString &line)
     if (v.log.size() > logLines)
         v.log.removeFirst();
     emit changed(m_tree.systemName(id));
+}
+
+// The alarm node of a vehicle's plans: "systems/<vehicle>/plan".
+alarms::AlarmGraph::NodeId PlanDesk::planNode(quint16 id)
+{
+    return m_graph.ensure(u"systems/%1/plan"_s.arg(m_tree.systemName(id)));
+}
+
+void PlanDesk::planAlarm(quint16 id, alarms::Level level, const QString &text)
+{
+    m_graph.raise(planNode(id), level, text);
 }
 
 // --- Commands ------------------------------------------------------------------------
@@ -282,10 +291,9 @@ std::expected<void, QString> PlanDesk::start(const QString &system, const QStrin
         return std::unexpected(v.error());
     // Conditions the vehicle would ignore: carried out from here.
     const quint16 id = (*v)->client->vehicle();
-    const mission::Plan *conditional = nullptr;
-    for (const mission::Plan *p : missionPlans(system))
-        if (p->id == planId && Supervisor::needed(*p))
-            conditional = p;
+    const mission::Plan *conditional = missionPlan(system, planId);
+    if (conditional && !Supervisor::needed(*conditional))
+        conditional = nullptr;
     // A vehicle that says it evaluates conditions (its Announce lists
     // neptus:plan-conditions) is given the whole plan, unless a condition
     // reads something only the console sees.
@@ -422,10 +430,8 @@ void PlanDesk::replied(quint16 id, const PlanClient::Reply &r)
     const QString what = r.planId.isEmpty() ? r.op : r.op + u' ' + r.planId;
     if (!r.ok) {
         note(id, u"%1 failed: %2"_s.arg(what, r.info));
-        if (r.message == u"PlanControl" && r.op == u"START") {
-            const auto node = m_graph.ensure(u"systems/%1/plan"_s.arg(m_tree.systemName(id)));
-            m_graph.raise(node, alarms::Warning, u"plan %1 did not start: %2"_s.arg(r.planId, r.info));
-        }
+        if (r.message == u"PlanControl" && r.op == u"START")
+            planAlarm(id, alarms::Warning, u"plan %1 did not start: %2"_s.arg(r.planId, r.info));
         return;
     }
     if (r.message == u"PlanDB" && (r.op == u"GET_DSTATE" || r.op == u"GET_STATE")) {
@@ -482,7 +488,7 @@ void PlanDesk::told(const PlanRuns::Event &e)
         break;
     }
     const QString supervised = stretch ? u" (supervised)"_s : QString();
-    const auto node = m_graph.ensure(u"systems/%1/plan"_s.arg(m_tree.systemName(e.system)));
+    const auto node = planNode(e.system);
     switch (e.outcome) {
     case PlanRuns::Outcome::Failed: {
         const QString why = e.reason.isEmpty() ? u"the vehicle gave no reason"_s : e.reason;
@@ -551,7 +557,7 @@ const std::expected<MavlinkPlan, QString> &PlanDesk::mavlinkPlan(const mission::
 {
     auto found = m_mavlinkPlans.find(plan.id);
     if (found == m_mavlinkPlans.end())
-        found = m_mavlinkPlans.emplace(plan.id, m_mavlink.translate ? m_mavlink.translate(m_mission, plan)
+        found = m_mavlinkPlans.emplace(plan.id, m_mavlink.translate ? m_mavlink.translate(m_mission, plan, m_definitions.find(plan.vehicle))
                                                                      : std::unexpected(u"no MAVLink translation"_s)).first;
     return found->second;
 }
@@ -596,7 +602,7 @@ void PlanDesk::heldMission(quint16 id, const std::vector<MissionItem> &items)
     v.held = items;
     v.heldPlan.clear();
     if (items.size() > 1) { // more than its home
-        StoredPlan held{u"mission"_s, missionDigest(items, MissionType::Mission), int(items.size()) - 1, 0};
+        StoredPlan held{u"mission"_s, {}, int(items.size()) - 1, 0}; // no MD5: recognised by its items
         for (const mission::Plan *p : missionPlans(m_tree.systemName(id))) {
             const auto &translated = mavlinkPlan(*p);
             if (translated && missionDifference(translated->items, items, MissionType::Mission).isEmpty()) {
@@ -614,6 +620,9 @@ void PlanDesk::heldMission(quint16 id, const std::vector<MissionItem> &items)
         }
         v.stored.push_back(held);
     }
+    // Held as none of the mission's plans: its progress is no longer any plan's.
+    if (v.heldPlan.isEmpty() && m_mavlink.label)
+        m_mavlink.label(id, {}, {});
     emit changed(m_tree.systemName(id));
 }
 
@@ -629,7 +638,7 @@ std::expected<void, QString> PlanDesk::sendMavlink(quint16 id, const mission::Pl
                  .arg(items.fence.empty() ? QString() : u", a geofence of %1 vertices"_s.arg(items.fence.size())));
     const auto failed = [this, id, planId](const MavlinkMissionClient::Result &r) {
         note(id, u"sending %1 failed: %2: %3"_s.arg(planId, r.what, r.info));
-        m_graph.raise(m_graph.ensure(u"systems/%1/plan"_s.arg(m_tree.systemName(id))), alarms::Warning,
+        planAlarm(id, alarms::Warning,
                       u"plan %1 was not sent: %2: %3"_s.arg(planId, r.what, r.info));
     };
     if (!items.fence.empty()) {
@@ -658,10 +667,10 @@ std::expected<void, QString> PlanDesk::sendMavlink(quint16 id, const mission::Pl
             const QString difference = missionDifference(items.items, back.items, MissionType::Mission);
             if (difference.isEmpty()) {
                 note(id, u"%1 sent: the vehicle holds its %2 items as sent"_s.arg(planId).arg(items.items.size() - 1));
-                m_graph.raise(m_graph.ensure(u"systems/%1/plan"_s.arg(m_tree.systemName(id))), alarms::Normal, QString());
+                planAlarm(id, alarms::Normal, QString());
             } else {
                 note(id, u"%1 sent, but the vehicle holds something else: %2"_s.arg(planId, difference));
-                m_graph.raise(m_graph.ensure(u"systems/%1/plan"_s.arg(m_tree.systemName(id))), alarms::Warning,
+                planAlarm(id, alarms::Warning,
                               u"plan %1: the vehicle holds something else than was sent: %2"_s.arg(planId, difference));
             }
             heldMission(id, back.items);
@@ -684,7 +693,7 @@ std::expected<void, QString> PlanDesk::startMavlink(quint16 id, const QString &p
     note(id, u"starting %1: from its first item, %2%3"_s.arg(planId, armed ? QString() : u"arming, "_s, mode));
     const auto refused = [this, id, planId](const MavlinkMissionClient::Result &r) {
         note(id, u"%1 did not start: %2: %3"_s.arg(planId, r.what, r.info));
-        m_graph.raise(m_graph.ensure(u"systems/%1/plan"_s.arg(m_tree.systemName(id))), alarms::Warning,
+        planAlarm(id, alarms::Warning,
                       u"plan %1 did not start: %2: %3"_s.arg(planId, r.what, r.info));
     };
     // One step after another, each only once the one before is accepted.
@@ -732,18 +741,13 @@ std::expected<void, QString> PlanDesk::stopMavlink(quint16 id)
           [this, id](const MavlinkMissionClient::Result &r) {
               if (!r.ok) {
                   note(id, u"stop failed: %1: %2"_s.arg(r.what, r.info));
-                  m_graph.raise(m_graph.ensure(u"systems/%1/plan"_s.arg(m_tree.systemName(id))), alarms::Warning,
+                  planAlarm(id, alarms::Warning,
                                 u"stop failed: %1: %2"_s.arg(r.what, r.info));
                   return;
               }
               note(id, u"stopped: %1 accepted"_s.arg(r.what));
               // As a plan engine's answer to STOP: the run's end is "stopped", not a failure.
-              msg::Message stopped(m_schema->byAbbrev(u"PlanControl"_s));
-              stopped.header.src = id;
-              const int type = stopped.def()->indexOf(u"type"), op = stopped.def()->indexOf(u"op");
-              stopped.setInteger(type, *stopped.field(type).enumeration->valueOf(u"SUCCESS"));
-              stopped.setInteger(op, *stopped.field(op).enumeration->valueOf(u"STOP"));
-              for (const PlanRuns::Event &e : m_runs.observe(stopped, m_clock->now().toMSecsSinceEpoch()))
+              for (const PlanRuns::Event &e : m_runs.stopAnswered(id))
                   told(e);
           });
     return {};

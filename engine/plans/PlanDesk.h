@@ -4,6 +4,7 @@
 #include "messages/Codec.h"
 #include "plans/MavlinkMission.h"
 #include "mission/Mission.h"
+#include "mission/Vehicle.h"
 #include "plans/PlanClient.h"
 #include "plans/PlanDatabase.h"
 #include "plans/PlanRuns.h"
@@ -40,8 +41,8 @@ namespace neptus::plans {
 // A MAVLink vehicle (its HEARTBEAT is in the tree) holds one mission, not a
 // database of plans: a plan is translated to mission items and a geofence
 // (MavlinkSupport::translate), uploaded with the MAVLink mission protocol
-// and read back to compare; the vehicle "holds" the plan whose items digest
-// alike. Start: mission item 1, arm when disarmed, then the mission mode
+// and read back to compare; the vehicle "holds" the plan whose items are
+// what it keeps of them (missionDifference). Start: mission item 1, arm when disarmed, then the mission mode
 // (ArduPilot AUTO); each refusal is said in the vehicle's own words. Stop:
 // its stop mode (ArduPilot Rover HOLD, Sub POSHOLD); Abort goes through the
 // link (its abort mode). Conditions on transitions are not carried out for
@@ -68,7 +69,9 @@ public:
     {
         std::function<std::shared_ptr<const msg::Schema>()> schema; // MAVLink's (loaded on first use)
         // A plan as mission items and geofence; an error names the maneuver or item.
-        std::function<std::expected<MavlinkPlan, QString>(const mission::Mission &, const mission::Plan &)> translate;
+        // Given the plan's vehicle definition, if it has one.
+        std::function<std::expected<MavlinkPlan, QString>(const mission::Mission &, const mission::Plan &,
+                                                          const mission::VehicleDefinition *)> translate;
         // The plan a vehicle holds, for its progress (Console::labelMission).
         std::function<void(quint16 system, const QString &planId, const QStringList &maneuverOfItem)> label;
         // The mode Stop puts it in ("" for its autopilot's default).
@@ -176,6 +179,8 @@ private:
     // A plan started, or ended (PlanRuns): the log, the alarm event, the supervisor.
     void told(const PlanRuns::Event &event);
     bool isMavlink(quint16 id) const;
+    alarms::AlarmGraph::NodeId planNode(quint16 id);
+    void planAlarm(quint16 id, alarms::Level level, const QString &text);
     MavlinkMissionClient &missionClient(quint16 id);
     void after(quint16 id, int operation, std::function<void(const MavlinkMissionClient::Result &)> then);
     const std::expected<MavlinkPlan, QString> &mavlinkPlan(const mission::Plan &plan) const;
@@ -205,6 +210,7 @@ private:
     std::chrono::milliseconds m_timeout{3000};
     MavlinkSupport m_mavlink;
     mutable std::map<QString, std::expected<MavlinkPlan, QString>> m_mavlinkPlans; // by plan id, for this mission
+    mission::VehicleCatalog m_definitions; // read when a mission opens
     double m_mavlinkScale = 1.0;
 };
 

@@ -102,14 +102,28 @@ void PlanRuns::reply(Vehicle &v, const msg::Message &m, qint64 nowMs, std::vecto
             v.failureMs = nowMs;
         }
     } else if (stopDone) {
-        if (v.pending) {
-            v.pending->outcome = Outcome::Stopped;
-            out.push_back(std::move(*v.pending));
-            v.pending.reset();
-        } else if (v.run) {
-            v.stopAnswered = true;
-        }
+        stopped(v, out);
     }
+}
+
+void PlanRuns::stopped(Vehicle &v, std::vector<Event> &out)
+{
+    if (v.pending) {
+        v.pending->outcome = Outcome::Stopped;
+        out.push_back(std::move(*v.pending));
+        v.pending.reset();
+    } else if (v.run) {
+        v.stopAnswered = true;
+    }
+}
+
+std::vector<PlanRuns::Event> PlanRuns::stopAnswered(quint16 system)
+{
+    std::vector<Event> out;
+    const auto it = m_vehicles.find(system);
+    if (it != m_vehicles.end())
+        stopped(*it, out);
+    return out;
 }
 
 void PlanRuns::end(Vehicle &v, quint16 system, Outcome outcome, QString reason, qint64 nowMs, std::vector<Event> &out)

@@ -58,6 +58,9 @@ public:
 
     // A PlanControlState, or a PlanControl from a vehicle (requests are ignored).
     std::vector<Event> observe(const msg::Message &message, qint64 nowMs);
+    // The vehicle accepted a Stop by other means than a PlanControl reply (a
+    // MAVLink vehicle's stop mode): its run's end is "stopped", as after a STOP's SUCCESS.
+    std::vector<Event> stopAnswered(quint16 system);
     // Ends whose reason did not come in time, told without it.
     std::vector<Event> poll(qint64 nowMs);
     bool waiting() const;
@@ -85,6 +88,7 @@ private:
 
     void state(Vehicle &v, const msg::Message &m, qint64 nowMs, std::vector<Event> &out);
     void reply(Vehicle &v, const msg::Message &m, qint64 nowMs, std::vector<Event> &out);
+    static void stopped(Vehicle &v, std::vector<Event> &out);
     void end(Vehicle &v, quint16 system, Outcome outcome, QString reason, qint64 nowMs, std::vector<Event> &out);
 
     QHash<quint16, Vehicle> m_vehicles;

@@ -70,12 +70,12 @@ ConsoleSession::ConsoleSession(std::shared_ptr<const msg::Schema> schema, const 
 // translation (xslt/mavlink-mission.xsl unless it names its own), or that
 // stylesheet for a vehicle with no definition; the home as item 0; the
 // mission's operating and no-go areas as its geofence.
-std::expected<plans::MavlinkPlan, QString> ConsoleSession::mavlinkPlanFor(const mission::Mission &mission, const mission::Plan &plan)
+std::expected<plans::MavlinkPlan, QString> ConsoleSession::mavlinkPlanFor(const mission::Mission &mission, const mission::Plan &plan,
+                                                                           const mission::VehicleDefinition *definition)
 {
-    const mission::VehicleCatalog definitions = mission::loadVehicles(mission::vehicleFolders());
     mission::VehicleDefinition vehicle;
-    if (const mission::VehicleDefinition *known = definitions.find(plan.vehicle))
-        vehicle = *known;
+    if (definition)
+        vehicle = *definition;
     else {
         vehicle.id = vehicle.name = plan.vehicle;
         vehicle.kind = u"USV"_s;

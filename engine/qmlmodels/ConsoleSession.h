@@ -67,7 +67,8 @@ public:
 
     // A plan as a MAVLink vehicle's mission and geofence (the desk's translation).
     static std::expected<neptus::plans::MavlinkPlan, QString> mavlinkPlanFor(const neptus::mission::Mission &mission,
-                                                                             const neptus::mission::Plan &plan);
+                                                                             const neptus::mission::Plan &plan,
+                                                                             const neptus::mission::VehicleDefinition *definition = nullptr);
 
 private:
     neptus::session::Console m_console;

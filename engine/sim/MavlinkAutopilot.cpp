@@ -28,57 +28,6 @@ void set(msg::Message &m, QStringView field, double value)
         m.setNumber(i, value);
 }
 
-// What AP_Mission keeps of an item, as it reads it back (mavlink_int_to_mission_cmd, then
-// mission_cmd_to_mavlink_int; MissionItemProtocol_Fence): see docs/mavlink.md.
-void keep(MavlinkAutopilot::Item &i, int missionType)
-{
-    const auto whole = [](float v) { return std::isnan(v) ? 0.0f : std::trunc(v); };
-    i.autocontinue = missionType == 1 ? 0 : 1;
-    if (missionType == 1) { // a fence vertex: its count and position
-        i.frame = 0;
-        i.p1 = whole(i.p1);
-        i.p2 = i.p3 = i.p4 = 0;
-        i.z = 0;
-        return;
-    }
-    i.frame = (i.frame == 3 || i.frame == 6) ? 3 : (i.frame == 10 || i.frame == 11) ? 10 : 0;
-    i.z = std::trunc(i.z * 100.0f) * 0.01f; // whole centimetres
-    const float p1 = i.p1, p2 = i.p2, p3 = i.p3, p4 = i.p4;
-    i.p1 = i.p2 = i.p3 = i.p4 = 0;
-    switch (i.command) {
-    case 16:
-    case 22:
-        i.p1 = whole(p1);
-        break;
-    case 17:
-        i.p3 = whole(p3);
-        break;
-    case 19:
-        i.p1 = whole(p1);
-        i.p3 = p3 < 0 ? -1 : 1;
-        i.p4 = p4 > 0 ? 1 : 0;
-        break;
-    case 21:
-        i.p1 = whole(p1);
-        i.p4 = p4 < 0 ? -1 : 1;
-        break;
-    case 178:
-        i.frame = 0;
-        i.p1 = whole(p1);
-        i.p2 = p2;
-        i.p3 = p3;
-        i.x = i.y = 0;
-        i.z = 0;
-        break;
-    default:
-        i.p1 = p1;
-        i.p2 = p2;
-        i.p3 = p3;
-        i.p4 = p4;
-        break;
-    }
-}
-
 } // namespace
 
 MavlinkAutopilot::MavlinkAutopilot(std::shared_ptr<const msg::Schema> mavlink, Config config)
@@ -86,28 +35,43 @@ MavlinkAutopilot::MavlinkAutopilot(std::shared_ptr<const msg::Schema> mavlink, C
     , m_config(std::move(config))
 {
     m_limits = m_config.type == Type::Boat ? Limits::asv() : Limits::auv();
-    m_mode = *modeNumber(u"MANUAL"_s);
+    m_manualMode = *modeNumber(u"MANUAL"_s);
+    m_autoMode = *modeNumber(u"AUTO"_s);
+    m_holdMode = modeNumber(u"HOLD"_s).value_or(m_manualMode);
+    m_mode = m_manualMode;
     Item home; // read back as a waypoint in frame 0 at its height above sea level
     home.frame = 0;
     home.x = qint32(std::lround(geo::degrees(m_config.home.lat) * 1e7));
     home.y = qint32(std::lround(geo::degrees(m_config.home.lon) * 1e7));
     home.z = float(m_config.home.height);
     m_mission.push_back(home);
-    // A few of the vehicle's parameters, with ArduPilot's defaults.
+    // A few of the vehicle's parameters, with ArduPilot's defaults and types (MAV_PARAM_TYPE:
+    // INT8 2, INT16 4, INT32 6, REAL32 9; Rover/Parameters.cpp, ArduSub/Parameters.cpp, the fixtures).
     if (m_config.type == Type::Boat)
-        m_parameters = {{"ARMING_CHECK", 1}, {"CRUISE_SPEED", 2}, {"FRAME_CLASS", 2}, {"FS_GCS_ENABLE", 0}, {"MAV_GCS_SYSID", 255},
-                        {"MIS_DONE_BEHAVE", 0}, {"RC_OVERRIDE_TIME", 3}, {"SYSID_THISMAV", 1}, {"WP_RADIUS", 2}};
+        m_parameters = {{"ARMING_CHECK", 1, 6}, {"CRUISE_SPEED", 2, 9}, {"FRAME_CLASS", 2, 2}, {"FS_GCS_ENABLE", 0, 2},
+                        {"MAV_GCS_SYSID", 255, 4}, {"MAV_SYSID", 1, 4}, {"MIS_DONE_BEHAVE", 0, 2}, {"RC_OVERRIDE_TIME", 3, 9},
+                        {"WP_RADIUS", 2, 9}};
     else
-        m_parameters = {{"ARMING_CHECK", 1}, {"FS_GCS_ENABLE", 2}, {"FS_PILOT_INPUT", 2}, {"FS_PILOT_TIMEOUT", 3},
-                        {"MAV_GCS_SYSID", 255}, {"SYSID_THISMAV", 1}, {"WPNAV_SPEED", 50}};
+        m_parameters = {{"ARMING_CHECK", 1, 6}, {"FS_GCS_ENABLE", 2, 2}, {"FS_PILOT_INPUT", 2, 2}, {"FS_PILOT_TIMEOUT", 3, 9},
+                        {"MAV_GCS_SYSID", 255, 4}, {"MAV_SYSID", 1, 4}, {"WPNAV_SPEED", 100, 9}};
+    m_speed = cruiseSpeed();
+}
+
+double MavlinkAutopilot::parameterValue(const char *name) const
+{
+    for (const Parameter &p : m_parameters)
+        if (p.name == name)
+            return p.value;
+    return 0;
 }
 
 msg::Message MavlinkAutopilot::parameter(int index, int reportedIndex) const
 {
     msg::Message m = make("PARAM_VALUE");
-    m.setBytes(m.def()->indexOf(u"param_id"), m_parameters[size_t(index)].first);
-    set(m, u"param_value", m_parameters[size_t(index)].second);
-    set(m, u"param_type", 9); // MAV_PARAM_TYPE_REAL32
+    const Parameter &p = m_parameters[size_t(index)];
+    m.setBytes(m.def()->indexOf(u"param_id"), p.name);
+    set(m, u"param_value", p.value);
+    set(m, u"param_type", p.type);
     set(m, u"param_count", double(m_parameters.size()));
     set(m, u"param_index", reportedIndex);
     return m;
@@ -226,7 +190,7 @@ std::vector<msg::Message> MavlinkAutopilot::receive(const msg::Message &m, doubl
             return out;
         }
         Item i = plans::missionItemFrom(m);
-        keep(i, u.type);
+        i = plans::keptByArduPilot(i, u.type == 1 ? plans::MissionType::Fence : plans::MissionType::Mission); // what AP_Mission keeps
         u.items.push_back(i);
         ++u.next;
         u.askedAt = u.lastItemAt = now;
@@ -239,8 +203,9 @@ std::vector<msg::Message> MavlinkAutopilot::receive(const msg::Message &m, doubl
         } else {
             u.items[0] = m_mission[0]; // its own home, whatever was sent
             m_mission = std::move(u.items);
-            m_current = 1;
-            m_missionState = m_mission.size() > 1 ? stateNotStarted : stateNoMission;
+            resetMission();
+            if (m_mission.size() < 2)
+                m_missionState = stateNoMission;
             out.push_back(text(severityInfo, u"Flight plan received"_s));
         }
         const int uploaded = u.type;
@@ -266,15 +231,17 @@ std::vector<msg::Message> MavlinkAutopilot::receive(const msg::Message &m, doubl
         for (size_t i = 0; i < m_parameters.size(); ++i)
             out.push_back(parameter(int(i), int(i)));
     } else if (type == u"PARAM_REQUEST_READ" || type == u"PARAM_SET") {
+        const bool setting = type == u"PARAM_SET";
         const QByteArray id = m.bytes(m.def()->indexOf(u"param_id"));
-        const qint64 asked = type == u"PARAM_SET" ? -1 : m.integer(u"param_index");
-        for (size_t i = 0; i < m_parameters.size(); ++i) {
-            if (asked >= 0 ? qint64(i) != asked : m_parameters[i].first != id)
-                continue;
-            if (type == u"PARAM_SET")
-                m_parameters[i].second = float(m.number(u"param_value"));
-            out.push_back(parameter(int(i), type == u"PARAM_SET" ? 65535 : int(i)));
-        }
+        const qint64 index = setting ? -1 : m.integer(u"param_index"); // -1: by name
+        const auto found = std::find_if(m_parameters.begin(), m_parameters.end(), [&](const Parameter &p) {
+            return index >= 0 ? &p - m_parameters.data() == index : p.name == id;
+        });
+        if (found == m_parameters.end())
+            return out; // ArduPilot says nothing of a parameter it does not have
+        if (setting)
+            found->value = float(m.number(u"param_value"));
+        out.push_back(parameter(int(found - m_parameters.begin()), setting ? 65535 : int(found - m_parameters.begin())));
     } else if (type == u"MANUAL_CONTROL") {
         m_manual = {int(m.integer(u"x")), int(m.integer(u"y")), int(m.integer(u"z")), int(m.integer(u"r"))};
         m_manualAt = now;
@@ -284,12 +251,20 @@ std::vector<msg::Message> MavlinkAutopilot::receive(const msg::Message &m, doubl
 
 bool MavlinkAutopilot::setMode(quint32 mode, std::vector<msg::Message> &out)
 {
-    if (mode == *modeNumber(u"AUTO"_s) && m_mission.size() < 2) {
-        out.push_back(text(severityNotice, u"No Mission. Can't set AUTO."_s));
+    if (mode == m_autoMode && m_mission.size() < 2) {
+        // Rover/mode_auto.cpp and Rover/system.cpp; ArduSub/mode.cpp says only the second.
+        if (m_config.type == Type::Boat) {
+            out.push_back(text(severityNotice, u"No Mission. Can't set AUTO."_s));
+            out.push_back(text(severityWarning, u"Flight mode change failed"_s));
+        } else {
+            out.push_back(text(severityWarning, u"Flight mode change failed AUTO"_s));
+        }
         return false;
     }
-    if (mode == *modeNumber(u"AUTO"_s) && m_mode != mode && m_missionState == stateComplete)
+    if (mode == m_autoMode && m_mode != mode && m_missionState == stateComplete) {
         m_current = 1; // a finished mission starts again
+        m_missionState = stateNotStarted;
+    }
     m_mode = mode;
     return true;
 }
@@ -319,7 +294,7 @@ std::vector<msg::Message> MavlinkAutopilot::command(const msg::Message &m, doubl
     }
     case 300: { // MAV_CMD_MISSION_START (Rover: AUTO)
         std::vector<msg::Message> words;
-        const bool ok = setMode(*modeNumber(u"AUTO"_s), words);
+        const bool ok = setMode(m_autoMode, words);
         out.push_back(ack(cmd, ok ? resultAccepted : resultFailed));
         out.insert(out.end(), words.begin(), words.end());
         return out;
@@ -335,6 +310,8 @@ std::vector<msg::Message> MavlinkAutopilot::command(const msg::Message &m, doubl
         out.push_back(ack(cmd, resultAccepted));
         if (arm != m_armed) {
             m_armed = arm;
+            if (!arm && (m_config.type == Type::Sub || m_mode != m_autoMode))
+                resetMission();
             const bool rover = m_config.type == Type::Boat;
             out.push_back(text(severityInfo, arm ? (rover ? u"Throttle armed"_s : u"Arming motors"_s)
                                                  : (rover ? u"Throttle disarmed"_s : u"Disarming motors"_s)));
@@ -342,9 +319,9 @@ std::vector<msg::Message> MavlinkAutopilot::command(const msg::Message &m, doubl
         return out;
     }
     case 224: { // MAV_CMD_DO_SET_MISSION_CURRENT
-        const int seq = int(p(1));
-        if (seq < 1 || seq >= int(m_mission.size())) {
-            out.push_back(ack(cmd, resultFailed));
+        const int seq = std::max(1, int(p(1))); // 0 is the home: the mission's first item
+        if (seq >= int(m_mission.size())) {
+            out.push_back(ack(cmd, resultDenied));
             return out;
         }
         m_current = seq;
@@ -368,18 +345,34 @@ const MavlinkAutopilot::Item *MavlinkAutopilot::currentNav()
     return m_current >= 1 && m_current < int(m_mission.size()) ? &m_mission[size_t(m_current)] : nullptr;
 }
 
+void MavlinkAutopilot::resetMission()
+{
+    m_current = 1;
+    m_lastNav = 0;
+    m_speed = cruiseSpeed();
+    if (m_mission.size() > 1)
+        m_missionState = stateNotStarted;
+}
+
+double MavlinkAutopilot::cruiseSpeed() const
+{
+    return m_config.type == Type::Boat ? parameterValue("CRUISE_SPEED") : parameterValue("WPNAV_SPEED") / 100.0;
+}
+
 void MavlinkAutopilot::run(double dt, std::vector<msg::Message> &out)
 {
-    if (m_manualAt >= 0 && m_lastStep - m_manualAt >= 3.0) { // the override is forgotten
+    const double overrideSeconds = parameterValue(m_config.type == Type::Boat ? "RC_OVERRIDE_TIME" : "FS_PILOT_TIMEOUT");
+    if (m_manualAt >= 0 && m_lastStep - m_manualAt >= overrideSeconds) { // the override is forgotten
         m_manualAt = -1;
         m_manual = {0, 0, 0, 0};
-        if (m_config.type == Type::Sub && m_armed) {
+        if (m_config.type == Type::Sub && m_armed && parameterValue("FS_PILOT_INPUT") == 2) { // 2: disarm
             out.push_back(text(severityCritical, u"Lost manual control"_s));
             m_armed = false;
+            resetMission();
             out.push_back(text(severityInfo, u"Disarming motors"_s));
         }
     }
-    if (m_mode == *modeNumber(u"MANUAL"_s) && m_armed && m_manualAt >= 0) {
+    if (m_mode == m_manualMode && m_armed && m_manualAt >= 0) {
         const bool sub = m_config.type == Type::Sub;
         const double throttle = (sub ? m_manual[0] : m_manual[2]) / 1000.0, turn = (sub ? m_manual[3] : m_manual[1]) / 1000.0;
         const double heading = m_motion.psi + turn * m_limits.turnRate * std::max(dt, 0.05) * 4;
@@ -390,7 +383,7 @@ void MavlinkAutopilot::run(double dt, std::vector<msg::Message> &out)
             hold(m_motion, nullptr, dt, m_limits);
         return;
     }
-    const bool autoMode = m_mode == *modeNumber(u"AUTO"_s);
+    const bool autoMode = m_mode == m_autoMode;
     if (!autoMode || m_missionState == stateComplete || m_mission.size() < 2) {
         if (!autoMode && m_missionState == stateActive)
             m_missionState = stateNotStarted; // left the mission: it resumes where it was
@@ -410,8 +403,10 @@ void MavlinkAutopilot::run(double dt, std::vector<msg::Message> &out)
     while (const Item *i = currentNav()) {
         if (isNavigation(i->command))
             break;
-        if (i->command == 178 && i->p2 > 0) // MAV_CMD_DO_CHANGE_SPEED
+        if (i->command == 178 && i->p2 > 0) { // MAV_CMD_DO_CHANGE_SPEED (else CRUISE_SPEED / WPNAV_SPEED)
             m_speed = i->p2;
+            out.push_back(text(severityInfo, u"Mission: %1 ChangeSpeed"_s.arg(m_current))); // AP_Mission, as the fixture
+        }
         ++m_current;
     }
     const Item *target = currentNav();
@@ -428,8 +423,10 @@ void MavlinkAutopilot::run(double dt, std::vector<msg::Message> &out)
         return;
     msg::Message reached = make("MISSION_ITEM_REACHED");
     set(reached, u"seq", m_current);
+    m_lastNav = m_current;
     out.push_back(std::move(reached));
-    out.push_back(text(severityInfo, u"Reached waypoint #%1"_s.arg(m_current)));
+    // Rover/mode_auto.cpp; ArduSub/commands_logic.cpp says "command".
+    out.push_back(text(severityInfo, (m_config.type == Type::Boat ? u"Reached waypoint #%1"_s : u"Reached command #%1"_s).arg(m_current)));
     ++m_current;
     if (currentNav())
         out.push_back(text(severityInfo, u"Mission: %1 WP"_s.arg(m_current)));
@@ -473,15 +470,20 @@ std::vector<msg::Message> MavlinkAutopilot::step(double now)
         set(beat, u"autopilot", 3); // MAV_AUTOPILOT_ARDUPILOTMEGA
         set(beat, u"base_mode", 1 | (m_armed ? 128 : 0));
         set(beat, u"custom_mode", m_mode);
-        set(beat, u"system_status", m_armed ? 4 : 3); // ACTIVE, STANDBY
+        // MAV_STATE ACTIVE 4, STANDBY 3: Rover is STANDBY in HOLD only (GCS_MAVLink_Rover.cpp), Sub when disarmed.
+        const bool standby = m_config.type == Type::Boat ? m_mode == m_holdMode : !m_armed;
+        set(beat, u"system_status", standby ? 3 : 4);
         set(beat, u"mavlink_version", 3);
         out.push_back(std::move(beat));
         msg::Message current = make("MISSION_CURRENT");
-        const bool done = m_missionState == stateComplete;
-        set(current, u"seq", done && m_mode != *modeNumber(u"AUTO"_s) ? 0 : m_current);
+        // seq: the nav command running, 0 before one is (AP_Mission::get_current_nav_index), the
+        // last one once complete (the sub fixture: seq 3, COMPLETE, through SURFACE and MANUAL).
+        const int seq = m_missionState == stateActive ? m_current : m_missionState == stateComplete ? m_lastNav : 0;
+        set(current, u"seq", seq);
         set(current, u"total", double(m_mission.size()) - 1);
         set(current, u"mission_state", m_mission.size() < 2 ? stateNoMission : m_missionState);
-        set(current, u"mission_mode", m_mode == *modeNumber(u"AUTO"_s) ? 1 : 0);
+        // mission_mode: Rover's modes that run the mission (current_mode_requires_mission); Sub sends 0.
+        set(current, u"mission_mode", m_config.type == Type::Boat && m_mode == m_autoMode ? 1 : 0);
         out.push_back(std::move(current));
         msg::Message status = make("SYS_STATUS");
         set(status, u"voltage_battery", 15800);

@@ -37,8 +37,9 @@ namespace neptus::sim {
 //  - parameters (a few of ArduRover's or ArduSub's): PARAM_REQUEST_LIST
 //    answered with every PARAM_VALUE (index, count), PARAM_REQUEST_READ by
 //    index or name, PARAM_SET echoed with index 65535;
-//  - running the mission in AUTO when armed: MISSION_CURRENT (ACTIVE; COMPLETE
-//    with seq 0 once done and out of AUTO), MISSION_ITEM_REACHED and "Reached
+//  - running the mission in AUTO when armed: MISSION_CURRENT (seq 0 before a
+//    nav command runs, ACTIVE, COMPLETE keeping the last nav command; mission
+//    reset on disarm, Sub always, Rover out of AUTO; mission_mode Rover's only), MISSION_ITEM_REACHED and "Reached
 //    waypoint #n" per waypoint, DO_CHANGE_SPEED, "Mission Complete" (Rover).
 // Messages are MAVLink's (a MAVLink schema); step() advances time.
 class MavlinkAutopilot
@@ -94,6 +95,9 @@ private:
     bool setMode(quint32 mode, std::vector<msg::Message> &out);
     void run(double dt, std::vector<msg::Message> &out);
     const Item *currentNav();
+    void resetMission();
+    double cruiseSpeed() const;
+    double parameterValue(const char *name) const;
 
     std::shared_ptr<const msg::Schema> m_schema;
     Config m_config;
@@ -104,11 +108,19 @@ private:
     bool m_armed = false;
     int m_current = 1;
     int m_missionState = 1; // NO_MISSION
-    double m_speed = 2.0;
+    double m_speed = 0; // CRUISE_SPEED (Rover), WPNAV_SPEED (Sub), until DO_CHANGE_SPEED
     Motion m_motion;
     Limits m_limits;
     double m_lastStep = -1, m_lastSlow = -1e9, m_lastFast = -1e9;
-    std::vector<std::pair<QByteArray, float>> m_parameters;
+    struct Parameter
+    {
+        QByteArray name;
+        float value = 0;
+        int type = 9; // MAV_PARAM_TYPE
+    };
+    std::vector<Parameter> m_parameters;
+    quint32 m_manualMode = 0, m_autoMode = 0, m_holdMode = 0;
+    int m_lastNav = 0; // the last nav command reached
     quint8 m_to = 255, m_toComponent = 190; // who asked last: its answers' targets
     std::array<int, 4> m_manual{0, 0, 0, 0};
     double m_manualAt = -1; // when the last MANUAL_CONTROL came; -1: none driving

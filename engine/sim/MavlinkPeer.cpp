@@ -90,7 +90,10 @@ void MavlinkPeer::answer(QByteArrayView frame, const QHostAddress &from, quint16
         ++m_bad;
         return;
     }
-    const int target = message->def() ? message->def()->indexOf(u"target_system") : -1;
+    // Addressed by target_system, or MANUAL_CONTROL's target: another vehicle's is not ours.
+    int target = message->def() ? message->def()->indexOf(u"target_system") : -1;
+    if (target < 0 && message->def() && message->def()->abbrev == u"MANUAL_CONTROL")
+        target = message->def()->indexOf(u"target");
     if (target >= 0 && message->integer(target) != 0 && message->integer(target) != m_config.system)
         return; // for another vehicle
     send(m_autopilot.receive(*message, now()), from, port);

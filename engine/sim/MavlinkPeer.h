@@ -43,7 +43,7 @@ public:
     std::expected<void, QString> start();
     quint16 port() const { return m_config.tcp ? m_server.serverPort() : m_socket.localPort(); }
     MavlinkAutopilot &autopilot() { return m_autopilot; }
-    // Frames it received that did not decode, and those it answered.
+    // Frames it received that did not decode.
     int badFrames() const { return m_bad; }
 
 private:

@@ -8,6 +8,8 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
+
 using namespace neptus;
 using namespace Qt::StringLiterals;
 
@@ -84,7 +86,8 @@ TEST(MavlinkAutopilot, AutoWithoutAMissionAndArmingThatFailsAreRefusedInArduRove
     config.armingFailures = {u"Gyros inconsistent"_s};
     sim::MavlinkAutopilot boat(test::mavlinkSchema(), config);
     EXPECT_EQ(said(boat.receive(make("COMMAND_LONG", {{"command", 176}, {"param1", 1}, {"param2", 10}}), 0)),
-              (QStringList{u"COMMAND_ACK 176 4"_s, u"STATUSTEXT 5 No Mission. Can't set AUTO."_s}));
+              (QStringList{u"COMMAND_ACK 176 4"_s, u"STATUSTEXT 5 No Mission. Can't set AUTO."_s,
+                           u"STATUSTEXT 4 Flight mode change failed"_s}));
     EXPECT_EQ(said(boat.receive(make("COMMAND_LONG", {{"command", 176}, {"param1", 0}, {"param2", 4}}), 0)),
               QStringList{u"COMMAND_ACK 176 2"_s}) << "DENIED without the custom-mode flag";
     EXPECT_EQ(said(boat.receive(make("COMMAND_LONG", {{"command", 400}, {"param1", 1}}), 0)),
@@ -129,4 +132,56 @@ TEST(MavlinkAutopilot, ItListsItsParametersByIndexAndEchoesASetOneWithIndex65535
     EXPECT_EQ(echo[0].text(u"param_id"), u"FS_GCS_ENABLE"_s);
     EXPECT_EQ(echo[0].number(u"param_value"), 1.0);
     EXPECT_EQ(echo[0].integer(u"param_index"), 65535);
+}
+
+namespace {
+
+// What MISSION_CURRENT says now: seq, mission_state, mission_mode.
+std::array<qint64, 3> current(sim::MavlinkAutopilot &vehicle, double &t)
+{
+    std::array<qint64, 3> said{-1, -1, -1};
+    for (int i = 0; i < 12; ++i) // a second or so: one MISSION_CURRENT
+        for (const msg::Message &m : vehicle.step(t += 0.1))
+            if (m.def()->abbrev == u"MISSION_CURRENT")
+                said = {m.integer(u"seq"), m.integer(u"mission_state"), m.integer(u"mission_mode")};
+    return said;
+}
+
+} // namespace
+
+// As the sub-dive fixture shows it (../shared/fixtures/mavlink): seq 0 and NOT_STARTED before the
+// mission, the running item while ACTIVE, the last nav item and COMPLETE afterwards, in AUTO and
+// out of it; mission_mode 0 on a Sub (only Rover's modes require a mission); disarming resets it.
+TEST(MavlinkAutopilot, MissionCurrentSaysWhatArduSubsDoesBeforeDuringAndAfterItsMission)
+{
+    sim::MavlinkAutopilot::Config config;
+    config.type = sim::MavlinkAutopilot::Type::Sub;
+    sim::MavlinkAutopilot sub(test::mavlinkSchema(), config);
+    double t = 0;
+    sub.receive(make("MISSION_COUNT", {{"count", 2}}), t);
+    sub.receive(waypoint(0), t);
+    sub.receive(make("MISSION_ITEM_INT", {{"seq", 1}, {"command", 16}, {"frame", 3}, {"x", 411855000}, {"y", -87060003}, {"z", -2}}), t);
+    EXPECT_EQ(current(sub, t), (std::array<qint64, 3>{0, 2, 0})) << "NOT_STARTED, no item running";
+    sub.receive(make("COMMAND_LONG", {{"command", 400}, {"param1", 1}}), t);
+    sub.receive(make("COMMAND_LONG", {{"command", 176}, {"param1", 1}, {"param2", 3}}), t); // AUTO
+    EXPECT_EQ(current(sub, t), (std::array<qint64, 3>{1, 3, 0})) << "ACTIVE on item 1";
+    std::array<qint64, 3> now = current(sub, t);
+    for (int second = 0; second < 60 && now[1] != 5; ++second) // it dives and goes the 60 m
+        now = current(sub, t);
+    EXPECT_EQ(now, (std::array<qint64, 3>{1, 5, 0})) << "COMPLETE, keeping its last item";
+    sub.receive(make("COMMAND_LONG", {{"command", 176}, {"param1", 1}, {"param2", 9}}), t); // SURFACE
+    EXPECT_EQ(current(sub, t), (std::array<qint64, 3>{1, 5, 0})) << "still COMPLETE out of AUTO";
+    sub.receive(make("COMMAND_LONG", {{"command", 400}, {"param1", 0}}), t);
+    EXPECT_EQ(current(sub, t), (std::array<qint64, 3>{0, 2, 0})) << "disarmed: the mission is reset";
+}
+
+TEST(MavlinkAutopilot, SetMissionCurrentTakesZeroAsTheFirstItemAndDeniesOneOutOfRange)
+{
+    sim::MavlinkAutopilot boat(test::mavlinkSchema(), {});
+    boat.receive(make("MISSION_COUNT", {{"count", 2}}), 0);
+    boat.receive(waypoint(0), 0);
+    boat.receive(waypoint(1), 0);
+    EXPECT_EQ(said(boat.receive(make("COMMAND_LONG", {{"command", 224}, {"param1", 0}}), 0)), QStringList{u"COMMAND_ACK 224 0"_s});
+    EXPECT_EQ(said(boat.receive(make("COMMAND_LONG", {{"command", 224}, {"param1", 5}}), 0)), QStringList{u"COMMAND_ACK 224 2"_s})
+        << "DENIED (GCS_Common.cpp)";
 }
