@@ -400,27 +400,32 @@ std::expected<CommandLine, QString> CommandLine::parse(const QStringList &argume
             return std::unexpected(QStringLiteral("--mavlink: %1").arg(link.error()));
         result.mavlinkLinks.append(value);
     }
-    for (const QString &value : parser.values(mavlinkPeer)) {
-        const auto peer = neptus::transport::hostAndPort(value);
-        if (!peer)
-            return std::unexpected(QStringLiteral("--mavlink-peer must look like 127.0.0.1:14555, not '%1'").arg(value));
-        result.mavlinkPeers.append(*peer);
-    }
+    // host:port values of an option (--imc-peer, --mavlink-peer); an error shows one that is not.
+    const auto peers = [&](const QCommandLineOption &option, const char *example,
+                           QList<std::pair<QHostAddress, quint16>> &into) -> std::expected<void, QString> {
+        for (const QString &value : parser.values(option)) {
+            const auto peer = neptus::transport::hostAndPort(value);
+            if (!peer)
+                return std::unexpected(QStringLiteral("--%1 must look like %2, not '%3'").arg(option.names().constFirst(),
+                                                                                             QLatin1StringView(example), value));
+            into.append(*peer);
+        }
+        return {};
+    };
+    if (auto read = peers(mavlinkPeer, "127.0.0.1:14555", result.mavlinkPeers); !read)
+        return std::unexpected(read.error());
     if (parser.isSet(mavlinkKey)) {
-        if (auto key = neptus::transport::mavlinkKeyFromFile(parser.value(mavlinkKey)); !key)
+        auto key = neptus::transport::mavlinkKeyFromFile(parser.value(mavlinkKey));
+        if (!key)
             return std::unexpected(QStringLiteral("--mavlink-key: %1").arg(key.error()));
-        result.mavlinkKey = parser.value(mavlinkKey);
+        result.mavlinkKey = *key;
     }
     result.mavlinkRequireSigning = parser.isSet(mavlinkRequireSigning);
     if (result.mavlinkRequireSigning && result.mavlinkKey.isEmpty())
         return std::unexpected(QStringLiteral("--mavlink-require-signing needs --mavlink-key"));
     result.mavlinkDialect = parser.value(mavlinkDialect);
-    for (const QString &value : parser.values(imcPeer)) {
-        const auto peer = neptus::transport::hostAndPort(value);
-        if (!peer)
-            return std::unexpected(QStringLiteral("--imc-peer must look like 127.0.0.1:6002, not '%1'").arg(value));
-        result.imcPeers.append(*peer);
-    }
+    if (auto read = peers(imcPeer, "127.0.0.1:6002", result.imcPeers); !read)
+        return std::unexpected(read.error());
     return result;
 }
 

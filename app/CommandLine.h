@@ -35,7 +35,7 @@ struct CommandLine
     bool imcDiscovery = true;           // announce to and listen on 30100-30104
     QStringList mavlinkLinks;           // --mavlink udp:14550, tcp:host:port, serial:/dev/ttyUSB0[:baud] (checked)
     QList<std::pair<QHostAddress, quint16>> mavlinkPeers; // --mavlink-peer: UDP vehicles to call before they are heard
-    QString mavlinkKey;                 // --mavlink-key: signing key file (passphrase or 64 hex digits)
+    QByteArray mavlinkKey;              // --mavlink-key: the 32-byte signing key its file makes (passphrase or 64 hex digits)
     bool mavlinkRequireSigning = false; // --mavlink-require-signing
     QString mavlinkDialect;             // --mavlink-dialect: a MAVLink XML instead of ardupilotmega.xml
     QString dumpTreeFile;               // write the variable tree there on exit

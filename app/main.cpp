@@ -246,9 +246,16 @@ int main(int argc, char *argv[])
     QStringList mavlinkLinks = commandLine->mavlinkLinks;
     if (mavlinkLinks.isEmpty())
         mavlinkLinks = QSettings().value(QStringLiteral("mavlink/links")).toStringList();
-    if (!commandLine->mavlinkDialect.isEmpty())
+    if (!commandLine->mavlinkDialect.isEmpty() && !replay)
         if (auto set = session.console().setMavlinkDialect(commandLine->mavlinkDialect); !set)
             std::fprintf(stderr, "neptus: --mavlink-dialect: %s\n", qPrintable(set.error()));
+    // Vehicle definitions with a MAVLink link name its vehicles and their Stop and Abort modes (read once, for every link).
+    QHash<quint8, neptus::transport::MavlinkVehicleSettings> mavlinkVehicles;
+    if (!mavlinkLinks.isEmpty() && !replay)
+        for (const neptus::mission::VehicleDefinition &v : neptus::mission::loadVehicles(neptus::mission::vehicleFolders()).vehicles)
+            for (const neptus::mission::VehicleLink &l : v.links)
+                if (l.protocol == u"mavlink" && l.system)
+                    mavlinkVehicles[quint8(*l.system)] = {v.id, {}, l.stopMode, l.abortMode};
     for (const QString &spec : replay ? QStringList() : mavlinkLinks) {
         auto config = neptus::transport::parseMavlinkLink(spec);
         if (!config) {
@@ -257,15 +264,9 @@ int main(int argc, char *argv[])
         }
         if (config->kind == neptus::transport::MavlinkConfig::Kind::Udp)
             config->peers += commandLine->mavlinkPeers;
-        // Vehicle definitions with a MAVLink link name its vehicles and their Stop and Abort modes.
-        for (const neptus::mission::VehicleDefinition &v : neptus::mission::loadVehicles(neptus::mission::vehicleFolders()).vehicles)
-            for (const neptus::mission::VehicleLink &l : v.links)
-                if (l.protocol == u"mavlink" && l.system)
-                    config->vehicles[quint8(*l.system)] = {v.id, {}, l.stopMode, l.abortMode};
-        if (!commandLine->mavlinkKey.isEmpty()) {
-            config->signingKey = *neptus::transport::mavlinkKeyFromFile(commandLine->mavlinkKey);
-            config->requireSigning = commandLine->mavlinkRequireSigning;
-        }
+        config->vehicles = mavlinkVehicles;
+        config->signingKey = commandLine->mavlinkKey; // checked when the command line was read
+        config->requireSigning = commandLine->mavlinkRequireSigning;
         if (auto started = session.console().startMavlink(*config); !started)
             std::fprintf(stderr, "neptus: %s; carrying on without it\n", qPrintable(started.error()));
         else

@@ -147,7 +147,6 @@ std::expected<Message, CodecError> MavlinkCodec::decode(QByteArrayView frame, Ma
         f.linkId = quint8(tail[0]);
         for (int i = 0; i < 6; ++i)
             f.timestamp |= quint64(quint8(tail[1 + i])) << (8 * i);
-        f.signature = tail.sliced(7, 6).toByteArray();
     }
     if (header)
         *header = f;

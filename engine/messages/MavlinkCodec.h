@@ -22,11 +22,10 @@ struct MavlinkFrame
     quint8 system = 0;
     quint8 component = 0;
     quint32 messageId = 0;
-    // A signed frame's link id, timestamp (10 µs units since 2015-01-01 UTC) and 6-byte signature.
+    // A signed frame's link id and timestamp (10 µs units since 2015-01-01 UTC); signatureValid() checks the signature.
     bool isSigned = false;
     quint8 linkId = 0;
     quint64 timestamp = 0;
-    QByteArray signature;
 };
 
 // MAVLink signing: a 32-byte secret key shared by a link's ends, and the

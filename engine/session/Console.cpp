@@ -206,7 +206,9 @@ void Console::wireMavlink(transport::MavlinkTransport &transport)
             });
     connect(link, &transport::MavlinkTransport::statusText, this, &Console::statusText);
     connect(link, &transport::MavlinkTransport::overloaded, this,
-            [this](const QString &host, int overRate, int behind) { overloaded(host, overRate, behind, transport::MavlinkConfig{}.maxDatagramsPerSecond); });
+            [this, maximum = link->maxDatagramsPerSecond()](const QString &host, int overRate, int behind) {
+                overloaded(host, overRate, behind, maximum);
+            });
 }
 
 void Console::labelMission(quint16 system, const QString &planId, const QStringList &maneuverOfItem)

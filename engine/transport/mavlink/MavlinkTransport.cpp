@@ -18,17 +18,22 @@ using namespace Qt::StringLiterals;
 namespace {
 
 constexpr quint8 mavTypeGcs = 6, mavAutopilotInvalid = 8;
-constexpr quint16 cmdSetMessageInterval = 511, cmdDoSetMode = 176, cmdReturnToLaunch = 20;
+constexpr quint16 cmdSetMessageInterval = 511, cmdDoSetMode = 176;
 // Asked again this often until acknowledged, at most this many times.
 constexpr qint64 streamRetryMs = 2000;
 constexpr int streamAttempts = 3;
 // Parameters: missing indices asked again after this long without one, in rounds.
 constexpr qint64 parameterGapMs = 1000;
 constexpr int parameterRounds = 4;
-constexpr int parametersPerRound = 64;
+constexpr int parametersPerRound = 20; // ArduPilot queues 20 requests (GCS_Param.cpp); more are dropped
 // A signed frame older than our clock by more than this is a replay (MAVLink's rule: one minute).
 constexpr quint64 signingWindow = 6'000'000;
 constexpr qint64 refusedReportMs = 60'000;
+// Other addresses listed as claiming one vehicle, at most; forgotten after a minute of silence.
+constexpr qsizetype maxImpostors = 16;
+constexpr qint64 impostorForgetMs = 60'000;
+// An overloaded host is said to be well again after this long without a drop.
+constexpr qint64 overloadClearMs = 3000;
 
 quint64 signingStreamKey(quint8 system, quint8 component, quint8 link)
 {
@@ -186,6 +191,11 @@ std::expected<void, QString> MavlinkTransport::start()
                     hosts.insert(it.key());
                 for (auto it = behind.cbegin(); it != behind.cend(); ++it)
                     hosts.insert(it.key());
+                {
+                    std::lock_guard lock(m_mutex);
+                    for (const QString &host : hosts)
+                        m_overloadedMs.insert(host, nowMs());
+                }
                 for (const QString &host : hosts)
                     emit overloaded(host, overRate.value(host), behind.value(host));
             });
@@ -230,6 +240,7 @@ void MavlinkTransport::connectTcp()
 {
     if (!m_tcp || m_tcp->state() != QAbstractSocket::UnconnectedState)
         return;
+    m_framer = std::make_unique<msg::MavlinkFramer>(m_codec); // a new connection: no half frame of the last one
     const auto &[host, port] = m_config.peers.front();
     m_tcp->connectToHost(host, port);
 }
@@ -277,8 +288,11 @@ QByteArray MavlinkTransport::keyForLocked(quint8 system) const
 QString MavlinkTransport::signingRefusalLocked(QByteArrayView frame, const msg::MavlinkFrame &header)
 {
     const QByteArray key = keyForLocked(header.system);
+    // A telemetry radio's own RADIO_STATUS (109) and RADIO (166) come unsigned: ArduPilot takes them
+    // (GCS_Signing.cpp, accept_unsigned_callback), and so does this link.
     if (!header.isSigned)
-        return m_config.requireSigning ? u"unsigned frame on a link that requires signing"_s : QString();
+        return m_config.requireSigning && header.messageId != 109 && header.messageId != 166
+                   ? u"unsigned frame on a link that requires signing"_s : QString();
     if (key.isEmpty())
         return m_config.requireSigning ? u"signed with a key this console does not have"_s : QString();
     if (!msg::MavlinkCodec::signatureValid(frame, key))
@@ -315,11 +329,11 @@ void MavlinkTransport::frame(QByteArrayView bytes, const Endpoint &from)
         std::lock_guard lock(m_mutex);
         if (const QString refusal = signingRefusalLocked(bytes, header); !refusal.isEmpty()) {
             ++m_refused;
-            auto known = m_vehicles.find(header.system);
+            // Said once per system a minute, whoever sends: a flood of refused frames is no flood of alarms.
             const qint64 now = nowMs();
-            if (known == m_vehicles.end() || now - known->second.refusedReportMs >= refusedReportMs) {
-                if (known != m_vehicles.end())
-                    known->second.refusedReportMs = now;
+            qint64 &reported = m_refusedReportMs[header.system];
+            if (reported == 0 || now - reported >= refusedReportMs) {
+                reported = now;
                 later.push_back([this, id, peer = from.name(), refusal] { emit refused(id, peer, refusal); });
             }
             return false;
@@ -361,10 +375,12 @@ void MavlinkTransport::frame(QByteArrayView bytes, const Endpoint &from)
             // Another address claims this vehicle: it takes it over only once
             // the first has been silent a while, and only with a heartbeat.
             const bool silent = now - v.lastMs > m_config.rebindAfterMs;
-            const QString host = from.name();
+            const QString host = DatagramReader::hostName(from.address); // a port per frame is still one host
             if (!(silent && type == u"HEARTBEAT" && header.component == v.component)) {
                 ++m_refused;
                 const bool fresh = !v.impostors.contains(host);
+                if (fresh && v.impostors.size() >= maxImpostors)
+                    return false; // counted, not listed
                 v.impostors.insert(host, now);
                 if (fresh) {
                     v.sources = QStringList{v.endpoint.name()} + v.impostors.keys();
@@ -423,7 +439,8 @@ void MavlinkTransport::handleLocked(Vehicle &v, const msg::Message &message, Lat
             parametersLocked(v, later, true);
         }
     }
-    if (type == u"COMMAND_ACK" && message.integer(u"command") == cmdSetMessageInterval) {
+    if (type == u"COMMAND_ACK" && message.integer(u"command") == cmdSetMessageInterval && message.integer(u"result") == 0
+        && (message.integer(u"target_system") == 0 || message.integer(u"target_system") == m_config.system)) {
         // Which stream it was is not in the ACK: the oldest asked and unacknowledged one.
         for (Stream &s : v.streams)
             if (!s.acknowledged && s.asked > 0) {
@@ -461,6 +478,13 @@ void MavlinkTransport::parametersLocked(Vehicle &v, Later &later, bool progressO
     QString text;
     if (v.parameterCount < 0) {
         text = u"reading parameters"_s;
+        // The list's request (or its first answers) lost on a radio: asked again, a few times;
+        // an answer that comes later is still taken.
+        if (!progressOnly && now - v.parameterMs >= parameterGapMs * 3 && v.listRequests < parameterRounds) {
+            ++v.listRequests;
+            sendLocked(mavlinkMessage("PARAM_REQUEST_LIST"), &v);
+            v.parameterMs = now;
+        }
     } else if (have >= v.parameterCount) {
         state = 1; // NORMAL
         text = u"%1 parameters read"_s.arg(v.parameterCount);
@@ -512,7 +536,7 @@ msg::Message MavlinkTransport::mavlinkMessage(const char *name) const
     return msg::Message(m_schema->byAbbrev(QString::fromLatin1(name)));
 }
 
-msg::Message MavlinkTransport::commandLong(quint16 command, std::initializer_list<float> params, const Vehicle &) const
+msg::Message MavlinkTransport::commandLong(quint16 command, std::initializer_list<float> params) const
 {
     msg::Message m = mavlinkMessage("COMMAND_LONG");
     setField(m, u"command", command);
@@ -554,12 +578,12 @@ msg::Message MavlinkTransport::manualControl(const Vehicle &v, const QString &ac
     return m;
 }
 
-msg::Message MavlinkTransport::setMode(const Vehicle &v, const QString &mode) const
+std::expected<msg::Message, QString> MavlinkTransport::setMode(const Vehicle &v, const QString &mode) const
 {
     const auto params = msg::mavlink::setModeParams(v.adapter->family(), v.adapter->mavType(), mode);
-    if (!params)
-        return commandLong(cmdReturnToLaunch, {}, v);
-    return commandLong(cmdDoSetMode, {(*params)[0], (*params)[1], (*params)[2]}, v);
+    if (!params) // never something else instead (a mistyped abort mode must not mean RTL)
+        return std::unexpected(u"%1 has no mode called %2"_s.arg(v.adapter->name(), mode));
+    return commandLong(cmdDoSetMode, {(*params)[0], (*params)[1], (*params)[2]});
 }
 
 std::expected<void, QString> MavlinkTransport::writeLocked(const QByteArray &frame, const Endpoint &to)
@@ -640,7 +664,10 @@ std::expected<void, QString> MavlinkTransport::publish(quint16 system, const msg
             result = sendLocked(message, v);
         } else if (message.abbrev() == u"Abort") {
             const QString mode = !v->settings.abortMode.isEmpty() ? v->settings.abortMode : v->adapter->defaultAbortMode();
-            result = sendLocked(setMode(*v, mode), v);
+            if (auto command = setMode(*v, mode))
+                result = sendLocked(*command, v);
+            else
+                result = std::unexpected(command.error());
         } else if (message.abbrev() == u"RemoteActions") {
             result = sendLocked(manualControl(*v, message.text(u"actions")), v);
         } else if (message.abbrev() == u"EntityList" || message.abbrev() == u"EntityInfo") {
@@ -682,10 +709,24 @@ void MavlinkTransport::service()
                     continue;
                 ++s.asked;
                 s.askedMs = now;
-                sendLocked(commandLong(cmdSetMessageInterval, {float(s.messageId), float(1e6 / s.hz)}, v), &v);
+                sendLocked(commandLong(cmdSetMessageInterval, {float(s.messageId), float(1e6 / s.hz)}), &v);
             }
             if (v.parametersAsked)
                 parametersLocked(v, later, false);
+            // Claims from other addresses that stopped are forgotten (the sources alarm goes).
+            const qsizetype before = v.impostors.size();
+            v.impostors.removeIf([&](const auto &claim) { return now - claim.value() >= impostorForgetMs; });
+            if (v.impostors.size() != before)
+                later.push_back([this, id = v.adapter->consoleId(), sources = QStringList{v.endpoint.name()} + v.impostors.keys(),
+                                 destination = v.endpoint.name()] { emit sourcesChanged(id, sources, destination); });
+        }
+        for (auto it = m_overloadedMs.begin(); it != m_overloadedMs.end();) {
+            if (now - it.value() < overloadClearMs) {
+                ++it;
+                continue;
+            }
+            later.push_back([this, host = it.key()] { emit overloaded(host, 0, 0); }); // well again
+            it = m_overloadedMs.erase(it);
         }
     }
     emitAll(later);
@@ -713,13 +754,6 @@ QList<quint16> MavlinkTransport::vehicles() const
     for (const auto &[system, v] : m_vehicles)
         ids << v.adapter->consoleId();
     return ids;
-}
-
-std::optional<quint8> MavlinkTransport::mavlinkSystem(quint16 id) const
-{
-    std::lock_guard lock(m_mutex);
-    const Vehicle *v = vehicleLocked(id);
-    return v ? std::optional<quint8>(v->adapter->mavlinkSystem()) : std::nullopt;
 }
 
 QString MavlinkTransport::destination(quint16 id) const

@@ -10,6 +10,8 @@
 #include <QHash>
 #include <QHostAddress>
 #include <QObject>
+
+#include <array>
 #include <QTimer>
 
 #include <atomic>
@@ -133,8 +135,7 @@ public:
     std::expected<void, QString> start();
     QString linkName() const { return m_config.linkName(); }
     quint16 port() const { return m_port; }
-    const msg::Schema &schema() const { return m_codec.schema(); }
-    std::shared_ptr<const msg::Schema> sharedSchema() const { return m_schema; }
+    int maxDatagramsPerSecond() const { return m_config.maxDatagramsPerSecond; }
     // IMC packets of what vehicles mean, and MAVLink frames both ways, for the recorder.
     void setPacketTap(PacketTap tap) { m_tap = std::move(tap); }
     void setFrameTap(FrameTap tap) { m_frameTap = std::move(tap); }
@@ -152,7 +153,6 @@ public:
     void service();
 
     QList<quint16> vehicles() const;
-    std::optional<quint8> mavlinkSystem(quint16 id) const;
     // Where commands to a vehicle go ("127.0.0.1:14551", "tcp 127.0.0.1:5760").
     QString destination(quint16 id) const;
     // A vehicle's parameters as read so far, by name.
@@ -217,10 +217,10 @@ private:
         int parameterCount = -1;
         qint64 parameterMs = 0;
         int parameterRounds = 0;
+        int listRequests = 0;     // PARAM_REQUEST_LIST sent again while no answer came
         bool parametersAsked = false;
         QString parameterReport;
         qint64 parameterReportMs = 0;
-        qint64 refusedReportMs = 0;
     };
     using Later = std::vector<std::function<void()>>;
     static void emitAll(Later &later);
@@ -236,9 +236,9 @@ private:
     std::expected<void, QString> sendLocked(const msg::Message &message, const Vehicle *to);
     std::expected<void, QString> writeLocked(const QByteArray &frame, const Endpoint &to);
     msg::Message mavlinkMessage(const char *name) const;
-    msg::Message commandLong(quint16 command, std::initializer_list<float> params, const Vehicle &v) const;
+    msg::Message commandLong(quint16 command, std::initializer_list<float> params) const;
     msg::Message manualControl(const Vehicle &v, const QString &actions) const;
-    msg::Message setMode(const Vehicle &v, const QString &mode) const;
+    std::expected<msg::Message, QString> setMode(const Vehicle &v, const QString &mode) const;
     Vehicle *vehicleLocked(quint16 id);
     const Vehicle *vehicleLocked(quint16 id) const;
     void streamBytes(QIODevice *device);
@@ -254,6 +254,8 @@ private:
     mutable std::mutex m_mutex; // guards the vehicles, signing state, sequence and sending
     std::map<quint8, Vehicle> m_vehicles;
     QHash<quint64, quint64> m_signingStreams; // (system, component, link id) → last timestamp
+    std::array<qint64, 256> m_refusedReportMs{}; // by system id: when a refusal was last said
+    QHash<QString, qint64> m_overloadedMs;       // hosts said to overload the link, when last
     msg::MavlinkSigning m_signing;            // our timestamp, and the link's key
     quint8 m_sequence = 0;
     QByteArray m_buffer;

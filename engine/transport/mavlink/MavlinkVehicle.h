@@ -31,10 +31,6 @@ public:
     using Family = msg::mavlink::Family;
     using Kind = msg::mavlink::Kind;
 
-    // MAVLink component of the autopilot: its messages are the system's own
-    // (entity 0xFF); other components become entities of their own.
-    static constexpr quint8 autopilotComponent = 1;
-
     MavlinkVehicle(quint8 mavlinkSystem, quint16 consoleId, QString name, std::shared_ptr<const msg::Schema> imc);
 
     quint8 mavlinkSystem() const { return m_system; }
@@ -44,7 +40,6 @@ public:
     Kind kind() const { return m_kind; }
     int mavType() const { return m_mavType; }
     bool armed() const { return m_armed; }
-    quint32 customMode() const { return m_customMode; }
     QString modeName() const { return msg::mavlink::modeName(m_family, m_mavType, m_customMode); }
     bool heard() const { return m_heard; }
 
@@ -65,9 +60,6 @@ public:
     // The plan this console gave it, for the mission's progress: the plan's
     // id and, per mission item, the maneuver it belongs to ("" for home).
     void setMission(QString planId, QStringList maneuverOfItem);
-
-    // The custom mode of a name for this vehicle, if the family has it.
-    std::optional<quint32> modeNumber(const QString &name) const { return msg::mavlink::modeNumber(m_family, m_mavType, name); }
 
 private:
     msg::Message make(const char *abbrev, double now, quint8 entity = 0xFF) const;

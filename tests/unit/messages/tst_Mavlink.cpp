@@ -11,6 +11,8 @@
 #include "Fixtures.h"
 #include "Paths.h"
 #include "QtPrinters.h"
+#include "Schemas.h"
+#include "Tlog.h"
 
 #include <QFile>
 #include <QJsonArray>
@@ -28,15 +30,7 @@ using namespace Qt::StringLiterals;
 
 namespace {
 
-std::shared_ptr<const msg::Schema> ardupilot()
-{
-    static const auto schema = [] {
-        auto loaded = msg::Schema::load({dataPath(u"msgdefs/mavlink"_s) + u"/ardupilotmega.xml"_s});
-        EXPECT_TRUE(loaded) << loaded.error().toString().toStdString();
-        return loaded ? *loaded : nullptr;
-    }();
-    return schema;
-}
+using test::mavlinkSchema;
 
 // A field's value written as the vectors write it.
 QString textOf(const msg::Message &m, int i)
@@ -77,7 +71,7 @@ double number(const QString &text)
 // worked out here from the definitions, wire order and all.
 TEST(Mavlink, TheDialectLoadsWithItsIncludesAndMavlinksChecksums)
 {
-    const auto schema = ardupilot();
+    const auto schema = mavlinkSchema();
     ASSERT_TRUE(schema);
     EXPECT_EQ(schema->protocol(), msg::Schema::Protocol::Mavlink);
     EXPECT_EQ(schema->name(), u"ardupilotmega"_s);
@@ -121,7 +115,7 @@ TEST(Mavlink, TheDialectLoadsWithItsIncludesAndMavlinksChecksums)
 // the same values, and encoded from them to the same bytes.
 TEST(Mavlink, EveryMessageEncodesAndDecodesByteForByteAsPymavlinkDoes)
 {
-    const auto schema = ardupilot();
+    const auto schema = mavlinkSchema();
     ASSERT_TRUE(schema);
     QProcess python;
     python.start(u"python3"_s, {test::sourcePath(u"tests/tools/mavlink_vectors.py"_s)});
@@ -194,7 +188,7 @@ TEST(Mavlink, EveryMessageEncodesAndDecodesByteForByteAsPymavlinkDoes)
 
 TEST(Mavlink, AForgedOrDamagedFrameIsRefusedAndSaysWhy)
 {
-    const auto schema = ardupilot();
+    const auto schema = mavlinkSchema();
     const msg::MavlinkCodec codec(schema);
     msg::Message beat(schema->byAbbrev(u"HEARTBEAT"));
     beat.setInteger(beat.def()->indexOf(u"type"), 11);
@@ -256,7 +250,7 @@ TEST(Mavlink, ADialectMistakeIsNamedByFileAndLine)
 // A byte stream (TCP, a radio): frames found among noise and across reads.
 TEST(Mavlink, TheFramerFindsFramesInNoiseAndAcrossReads)
 {
-    const auto schema = ardupilot();
+    const auto schema = mavlinkSchema();
     const msg::MavlinkCodec codec(schema);
     msg::Message beat(schema->byAbbrev(u"HEARTBEAT"));
     msg::Message text(schema->byAbbrev(u"STATUSTEXT"));
@@ -284,7 +278,7 @@ TEST(Mavlink, TheFramerFindsFramesInNoiseAndAcrossReads)
 TEST(Mavlink, EveryFrameArduPilotSentInTheFixtureLogsDecodes)
 {
     NEPTUS_REQUIRE_FIXTURE(folder, "mavlink");
-    const auto schema = ardupilot();
+    const auto schema = mavlinkSchema();
     const msg::MavlinkCodec codec(schema);
     struct Expected
     {
@@ -301,24 +295,18 @@ TEST(Mavlink, EveryFrameArduPilotSentInTheFixtureLogsDecodes)
           {u"HEARTBEAT"_s, {152, 147}}, {u"SIMSTATE"_s, {1453, 0}}}},
     };
     for (const Expected &e : logs) {
-        QFile file(folder + u'/' + QLatin1StringView(e.file));
-        ASSERT_TRUE(file.open(QIODevice::ReadOnly)) << e.file;
-        const QByteArray data = file.readAll();
+        const auto records = test::readTlog(folder + u'/' + QLatin1StringView(e.file));
+        ASSERT_FALSE(records.empty()) << e.file << ": unreadable, or a record cut short";
         std::map<QString, std::pair<int, int>> counts;
         int frames = 0, fromVehicle = 0, fromGcs = 0;
-        for (qsizetype at = 0; at < data.size();) {
-            ASSERT_LE(at + 8, data.size()) << e.file;
-            const QByteArrayView rest = QByteArrayView(data).sliced(at + 8);
-            const qsizetype length = msg::MavlinkCodec::frameLength(rest);
-            ASSERT_GT(length, 0) << e.file << " at " << at;
-            auto m = codec.decode(rest.first(length));
-            ASSERT_TRUE(m) << e.file << " at " << at << ": " << m.error().toString().toStdString();
+        for (const test::TlogRecord &r : records) {
+            auto m = codec.decode(r.frame);
+            ASSERT_TRUE(m) << e.file << " frame " << frames << ": " << m.error().toString().toStdString();
             ASSERT_FALSE(m->isOpaque()) << e.file << ": unknown id " << m->id();
-            const bool vehicle = m->header.src == 1;
+            const bool vehicle = r.system() == 1;
             (vehicle ? counts[m->abbrev()].first : counts[m->abbrev()].second)++;
             (vehicle ? fromVehicle : fromGcs)++;
             ++frames;
-            at += 8 + length;
         }
         EXPECT_EQ(frames, e.frames) << e.file;
         EXPECT_EQ(fromVehicle, e.fromVehicle) << e.file;

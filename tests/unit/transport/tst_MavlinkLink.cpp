@@ -386,6 +386,47 @@ TEST(MavlinkLink, OnASigningLinkOnlyFramesSignedWithTheKeyAreRead)
     for (const QByteArray &frame : vehicle.raw)
         EXPECT_TRUE(msg::MavlinkCodec::signatureValid(frame, key));
     EXPECT_GE(refused.size(), 1);
+    EXPECT_EQ(refused.size(), 1) << "refusals from one system are said once a minute, however many frames";
+
+    // A telemetry radio's RADIO_STATUS comes unsigned, and is read (as ArduPilot reads it).
+    const quint64 refusedBefore = l->refusedFrames();
+    QSignalSpy received(l.get(), &MavlinkTransport::received); // before the frame: the link may read it at once
+    vehicle.send(make("RADIO_STATUS", {{"rssi", 180}, {"remrssi", 170}}), l->port());
+    ASSERT_TRUE(QTest::qWaitFor([&] {
+        return std::any_of(received.begin(), received.end(), [](const QList<QVariant> &r) {
+            return r[0].value<msg::Message>().abbrev() == u"RADIO_STATUS"_s;
+        });
+    }, 2000));
+    EXPECT_EQ(l->refusedFrames(), refusedBefore);
+}
+
+// An abort mode this vehicle does not have is an error naming it, never another mode
+// (the link used to send RTL for any name it did not know).
+TEST(MavlinkLink, AnUnknownAbortModeIsRefusedNotReplaced)
+{
+    MavlinkConfig config = loopback();
+    config.vehicles[1].abortMode = u"SURFASE"_s;
+    Peer vehicle;
+    auto l = link(config);
+    QSignalSpy discovered(l.get(), &MavlinkTransport::systemDiscovered);
+    vehicle.send(heartbeat(11, 10, true), l->port());
+    ASSERT_TRUE(QTest::qWaitFor([&] { return discovered.size() == 1; }, 2000));
+    const auto sent = l->publish(0xEA01, msg::Message(test::shippedSchema()->byAbbrev(u"Abort"_s)));
+    ASSERT_FALSE(sent.has_value());
+    EXPECT_EQ(sent.error(), u"ardurover-1 has no mode called SURFASE"_s);
+    QTest::qWait(200);
+    for (const msg::Message &c : vehicle.of("COMMAND_LONG"))
+        EXPECT_NE(c.integer(u"command"), 176) << "no mode change was sent";
+}
+
+// The parameter list's request lost (a radio): asked again after 3 s of silence.
+TEST(MavlinkLink, AParameterListNobodyAnsweredIsAskedForAgain)
+{
+    Peer vehicle;
+    auto l = link();
+    vehicle.send(heartbeat(11, 0, false), l->port());
+    ASSERT_TRUE(QTest::qWaitFor([&] { return vehicle.of("PARAM_REQUEST_LIST").size() == 1; }, 2000));
+    ASSERT_TRUE(QTest::qWaitFor([&] { return vehicle.of("PARAM_REQUEST_LIST").size() == 2; }, 5000));
 }
 
 // TCP (a simulator's 5760): the link connects, reads frames however the
