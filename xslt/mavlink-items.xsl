@@ -15,6 +15,26 @@
   <!-- (Computed with expressions, not xsl:choose into variables: a variable with content is a
        result tree fragment, a document of its own per maneuver, and costs ten times more.) -->
   <xsl:template name="mavlink-items">
+    <!-- A maneuver whose meaning mission items cannot carry is refused, naming it, before anything is made:
+         never turned into waypoints that do something else. -->
+    <xsl:variable name="refused" select="/translation/geometry/maneuver[not(contains(
+        ' Goto Rows FollowPath ExpandingSquare Loiter StationKeeping PopUp Elevator Takeoff Land ', concat(' ', @type, ' ')))]"/>
+    <xsl:if test="$refused">
+      <xsl:message terminate="yes">
+        <xsl:text>not expressible as MAVLink mission items: </xsl:text>
+        <xsl:for-each select="$refused">
+          <xsl:if test="position() &gt; 1">; </xsl:if>
+          <xsl:value-of select="concat('maneuver ', @id, ' (', @type, ')')"/>
+          <xsl:choose>
+            <xsl:when test="@type = 'YoYo'">, its rise and fall in depth</xsl:when>
+            <xsl:when test="@type = 'ScheduledGoto'">, its arrival time</xsl:when>
+            <xsl:when test="@type = 'FollowTrajectory'">, the times of its points</xsl:when>
+            <xsl:when test="@type = 'CompassCalibration'">, a calibration (ArduPilot calibrates outside missions)</xsl:when>
+            <xsl:when test="@type = 'Launch'">, a launch from a launcher</xsl:when>
+          </xsl:choose>
+        </xsl:for-each>
+      </xsl:message>
+    </xsl:if>
     <xsl:for-each select="/translation/geometry/maneuver">
       <xsl:variable name="m" select="key('maneuver', @id)"/>
       <xsl:variable name="frame" select="3 + 7 * (@z-units = 'ALTITUDE')"/>
@@ -47,9 +67,9 @@
           </xsl:for-each>
         </xsl:when>
         <xsl:otherwise>
-          <!-- Waypoints; a pop-up or compass calibration holds its duration at the last one. -->
+          <!-- Waypoints; a pop-up holds its duration at the last one. -->
           <xsl:for-each select="point">
-            <item maneuver="{$id}" command="16" frame="{$frame}" p1="{sum($m/@duration) * (position() = last() and boolean($m/self::PopUp | $m/self::CompassCalibration))}"
+            <item maneuver="{$id}" command="16" frame="{$frame}" p1="{sum($m/@duration) * (position() = last() and boolean($m/self::PopUp))}"
                   p2="0" p3="0" p4="nan" lat="{@lat}" lon="{@lon}" alt="{@z * (1 - 2 * (@z-units = 'DEPTH')) * (@z-units != 'NONE')}"/>
           </xsl:for-each>
         </xsl:otherwise>

@@ -71,7 +71,8 @@ QStringList VehicleDefinition::checkManeuver(const Maneuver &m) const
         QStringList feasible;
         for (const ManeuverSpec &s : maneuvers)
             feasible << s.type;
-        problems << u"%1 cannot do %2 (it can: %3)"_s.arg(id, m.type, feasible.join(u", "_s));
+        problems << (feasible.isEmpty() ? u"%1 cannot do %2 (its definition lists no maneuvers)"_s.arg(id, m.type)
+                                        : u"%1 cannot do %2 (it can: %3)"_s.arg(id, m.type, feasible.join(u", "_s)));
         return problems;
     }
     for (auto it = m.parameters.cbegin(); it != m.parameters.cend(); ++it) {

@@ -64,8 +64,8 @@ std::expected<QByteArray, xml::XmlError> translate(const QString &stylesheet, co
         return failure(QStringLiteral("stopped: it used more than its %1 MB of memory").arg(limits.megabytes));
     }
     if (helper.exitCode() != 0) {
-        // "file:line:column: message", as Stylesheet reports it.
-        static const QRegularExpression located(QStringLiteral(R"(^(.*?):(\d+)(?::(\d+))?: (.*)$)"),
+        // "file:line:column: message" or "file: message", as Stylesheet reports it.
+        static const QRegularExpression located(QStringLiteral(R"(^(.*?)(?::(\d+))?(?::(\d+))?: (.*)$)"),
                                                 QRegularExpression::DotMatchesEverythingOption);
         const auto match = located.match(errors);
         if (match.hasMatch())

@@ -40,8 +40,9 @@ double fastest(const std::vector<double> &v)
 
 // 10,000 maneuvers, a few hundred metres apart, chained by transitions:
 // "gotos" only (a plan comparable to what bare libxslt was measured on), or
-// "mixed", seven kinds in turn (Goto 4 in 10; Rows, Loiter, YoYo,
-// StationKeeping, FollowPath, PopUp 1 in 10 each).
+// "mixed", seven kinds in turn (Goto 4 in 10; Rows, Loiter, Elevator,
+// StationKeeping, FollowPath, PopUp 1 in 10 each; every one a kind the
+// MAVLink targets carry, so that all targets translate the same plan).
 QByteArray bigMission(bool mixed, int count)
 {
     QByteArray xml = R"(<?xml version="1.0" encoding="UTF-8"?>
@@ -64,7 +65,8 @@ QByteArray bigMission(bool mixed, int count)
             xml += "<Loiter" + at + " z=\"2\" z_units=\"DEPTH\" speed=\"1\" duration=\"60\" type=\"CIRCULAR\" radius=\"15\" direction=\"CLOCKW\"/>\n";
             break;
         case 6:
-            xml += "<YoYo" + at + " z=\"8\" z_units=\"DEPTH\" amplitude=\"3\" pitch=\"15\" speed=\"1.3\"/>\n";
+            xml += "<Elevator" + at + " start_z=\"2\" start_z_units=\"DEPTH\" end_z=\"8\" end_z_units=\"DEPTH\" radius=\"10\" "
+                   "speed=\"1.3\"/>\n";
             break;
         case 7:
             xml += "<StationKeeping" + at + " radius=\"10\" duration=\"30\" speed=\"1\"/>\n";
@@ -108,7 +110,7 @@ struct Fixture
         vehicle.name = u"AUV"_s;
         vehicle.kind = u"UUV"_s;
         vehicle.limits.zUnits = {u"DEPTH"_s, u"ALTITUDE"_s};
-        for (const char *type : {"Goto", "Rows", "Loiter", "YoYo", "StationKeeping", "FollowPath", "PopUp"})
+        for (const char *type : {"Goto", "Rows", "Loiter", "Elevator", "StationKeeping", "FollowPath", "PopUp"})
             vehicle.maneuvers.append(ManeuverSpec{QString::fromLatin1(type), {}});
         vehicle.translations = {{u"imc"_s, u"IMC"_s, u"imc-plan.xsl"_s, u"imc.xml"_s, {}, Translation::Geometry::None},
                                 {u"iver"_s, u"Iver"_s, u"iver-mis.xsl"_s, u"mis"_s, {}, Translation::Geometry::Points},

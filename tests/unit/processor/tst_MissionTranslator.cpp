@@ -50,6 +50,30 @@ Mission everything()
     return m ? *m : Mission{};
 }
 
+// The maneuvers MAVLink mission items cannot carry (mavlink-items.xsl refuses them).
+const QStringList notMavlink{u"YoYo"_s, u"FollowTrajectory"_s, u"CompassCalibration"_s, u"ScheduledGoto"_s, u"Launch"_s};
+
+// everything()'s survey without them, its maneuvers chained in execution order.
+Mission everythingMavlinkCarries()
+{
+    Mission m = everything();
+    Plan &plan = m.plans[0];
+    QList<Maneuver> kept;
+    for (const Maneuver *maneuver : plan.executionOrder())
+        if (!notMavlink.contains(maneuver->type))
+            kept.append(*maneuver);
+    plan.maneuvers = kept;
+    plan.start = kept.first().id;
+    plan.transitions.clear();
+    for (qsizetype i = 1; i < kept.size(); ++i) {
+        Transition t;
+        t.from = kept[i - 1].id;
+        t.to = kept[i].id;
+        plan.transitions.append(t);
+    }
+    return m;
+}
+
 // The stylesheet's IMC XML, read and encoded; and the same plan encoded directly.
 void expectSameImcBytes(const Mission &mission, const Plan &plan, const VehicleDefinition &vehicle)
 {
@@ -171,7 +195,7 @@ TEST(MissionTranslator, EveryNeptusFixturePlanTranslatesToImcIdentically)
 
 TEST(MissionTranslator, QgcPlanReadsBackAsAPlanWithEveryWaypoint)
 {
-    const Mission m = everything();
+    const Mission m = everythingMavlinkCarries();
     const VehicleDefinition uav = everyTarget(u"lauv-xplore-1"_s, u"UAV"_s);
     const auto out = processor::translatePlan(m, u"survey"_s, uav, u"qgc-plan"_s);
     ASSERT_TRUE(out) << errorsText(out.error()).toStdString();
@@ -194,9 +218,7 @@ TEST(MissionTranslator, QgcPlanReadsBackAsAPlanWithEveryWaypoint)
         EXPECT_EQ(item[u"params"_s].toArray().size(), 7);
     }
     for (const ManeuverGeometry &g : geometry.maneuvers) {
-        if (g.type == u"CompassCalibration")
-            expected += 1; // its centre (circles are their centre in the input)
-        else if (g.type != u"Loiter" && g.type != u"StationKeeping" && g.type != u"Takeoff" && g.type != u"Land")
+        if (g.type != u"Loiter" && g.type != u"StationKeeping" && g.type != u"Takeoff" && g.type != u"Land")
             expected += static_cast<int>(g.points.size());
     }
     EXPECT_EQ(waypoints, expected);
@@ -218,7 +240,7 @@ TEST(MissionTranslator, QgcPlanReadsBackAsAPlanWithEveryWaypoint)
 
 TEST(MissionTranslator, WaypointListHasHomeThenOneLinePerItem)
 {
-    const Mission m = everything();
+    const Mission m = everythingMavlinkCarries();
     const VehicleDefinition v = everyTarget(u"lauv-xplore-1"_s);
     const auto wpl = processor::translatePlan(m, u"survey"_s, v, u"qgc-wpl"_s);
     const auto plan = processor::translatePlan(m, u"survey"_s, v, u"qgc-plan"_s);
@@ -237,6 +259,33 @@ TEST(MissionTranslator, WaypointListHasHomeThenOneLinePerItem)
         EXPECT_TRUE(ok) << lines[i].toStdString();
     }
     EXPECT_TRUE(lines[1].startsWith(u"0\t1\t0\t16\t"_s)); // home
+}
+
+// A maneuver mission items cannot carry is refused by every MAVLink target, each named with
+// what would be lost, before any item is made: never flown as waypoints that mean something else.
+TEST(MissionTranslator, AManeuverMavlinkItemsCannotCarryIsRefusedNamingIt)
+{
+    const Mission m = everything();
+    const VehicleDefinition v = everyTarget(u"lauv-xplore-1"_s);
+    for (const QString &target : {u"qgc-plan"_s, u"qgc-wpl"_s}) {
+        const auto out = processor::translatePlan(m, u"survey"_s, v, target);
+        ASSERT_FALSE(out) << target.toStdString();
+        const QString text = errorsText(out.error());
+        ASSERT_EQ(out.error().size(), 1) << text.toStdString();
+        EXPECT_TRUE(out.error()[0].file.endsWith(target + u".xsl"_s)) << text.toStdString();
+        EXPECT_TRUE(out.error()[0].message.startsWith(u"not expressible as MAVLink mission items: "_s)) << text.toStdString();
+        for (const auto &[id, type, lost] : {std::tuple{"yoyo", "YoYo", "its rise and fall in depth"},
+                                             {"traj", "FollowTrajectory", "the times of its points"},
+                                             {"compass", "CompassCalibration", "a calibration"},
+                                             {"sched", "ScheduledGoto", "its arrival time"},
+                                             {"launch", "Launch", "a launch"}})
+            EXPECT_TRUE(text.contains(u"maneuver %1 (%2), %3"_s.arg(QLatin1StringView(id), QLatin1StringView(type),
+                                                                     QLatin1StringView(lost))))
+                << type << " not named in: " << text.toStdString();
+        for (const QString &carried : {u"(Goto)"_s, u"(Rows)"_s, u"(Loiter)"_s, u"(Elevator)"_s})
+            EXPECT_FALSE(text.contains(carried)) << text.toStdString();
+    }
+    EXPECT_TRUE(processor::translatePlan(everythingMavlinkCarries(), u"survey"_s, v, u"qgc-plan"_s));
 }
 
 TEST(MissionTranslator, IverMissionHasALinePerWaypointInFeetAndKnots)

@@ -10,9 +10,13 @@
 #include "mission/MissionXml.h"
 
 #include "Missions.h"
+#include "Paths.h"
 #include "QtPrinters.h"
 #include "Schemas.h"
 
+#include <QDir>
+#include <QFile>
+#include <QStandardPaths>
 #include <QTest>
 #include <QNetworkDatagram>
 #include <QUdpSocket>
@@ -157,6 +161,52 @@ TEST_F(MavlinkPlans, AbortPutsTheBoatInRtlAndTheRunEndsFailedWithWhy)
     ASSERT_TRUE(QTest::qWaitFor([&] { return boat->autopilot().modeName() == u"RTL"_s; }, 3000)) << boat->autopilot().modeName().toStdString();
     ASSERT_TRUE(logSays(u"box failed: left the mission for RTL"_s)) << log().toStdString();
     EXPECT_EQ(planAlarm(), u"plan box failed: left the mission for RTL"_s);
+}
+
+// A maneuver mission items cannot carry, in a plan for a MAVLink vehicle whose
+// definition lists it (an operator's own definition of the boat, adding YoYo),
+// is refused before anything reaches the vehicle, naming the maneuver.
+TEST_F(MavlinkPlans, AManeuverMissionItemsCannotCarryIsRefusedBeforeAnythingIsSent)
+{
+    QStandardPaths::setTestModeEnabled(true); // the user's vehicles folder, in a place of its own
+    const QString folder = QStandardPaths::writableLocation(QStandardPaths::GenericDataLocation) + u"/neptus-qt/vehicles"_s;
+    struct Restore
+    {
+        QString file;
+        ~Restore()
+        {
+            QFile::remove(file);
+            QStandardPaths::setTestModeEnabled(false);
+        }
+    } restore{folder + u"/ardurover-1.xml"_s};
+    ASSERT_TRUE(QDir().mkpath(folder));
+    QFile shipped(test::sourcePath(u"vehicles/ardurover-1.xml"_s));
+    ASSERT_TRUE(shipped.open(QIODevice::ReadOnly));
+    QByteArray definition = shipped.readAll();
+    definition.replace("<maneuver type=\"StationKeeping\"/>", "<maneuver type=\"StationKeeping\"/><maneuver type=\"YoYo\"/>");
+    QFile own(restore.file);
+    ASSERT_TRUE(own.open(QIODevice::WriteOnly) && own.write(definition) == definition.size());
+    own.close();
+
+    startBoat();
+    QString text = QString::fromUtf8(missionText);
+    text.replace(u"<Goto id=\"back\""_s, u"<YoYo id=\"dive\" lat=\"41.1857\" lon=\"-8.7059\" z=\"0\" z_units=\"DEPTH\" "
+                                       u"amplitude=\"0\" pitch=\"15\" speed=\"2\" speed_units=\"METERS_PS\"/>\n"
+                                       u"      <Goto id=\"back\""_s);
+    text.replace(u"<transition from=\"out\" to=\"back\"/>"_s,
+                 u"<transition from=\"out\" to=\"dive\"/><transition from=\"dive\" to=\"back\"/>"_s);
+    auto m = mission::readMission(text.toUtf8(), u"boat.xml"_s);
+    ASSERT_TRUE(m) << test::errorsText(m.error()).toStdString();
+    desk.setMission(std::move(*m), u"boat.xml"_s);
+    const int held = boat->autopilot().missionCount();
+    const auto sent = desk.send(u"ardurover-1"_s, u"box"_s);
+    ASSERT_FALSE(sent.has_value()) << "a yo-yo flown as waypoints would not rise and fall";
+    EXPECT_TRUE(sent.error().startsWith(u"plan 'box' is not sent: "_s)) << sent.error().toStdString();
+    EXPECT_TRUE(sent.error().contains(u"not expressible as MAVLink mission items: maneuver dive (YoYo), its rise and fall in depth"_s))
+        << sent.error().toStdString();
+    QTest::qWait(300);
+    EXPECT_EQ(boat->autopilot().missionCount(), held) << "nothing reached the vehicle";
+    EXPECT_FALSE(desk.transfer(u"ardurover-1"_s).has_value());
 }
 
 // Another ground station (here a mission client on a socket of its own) sent
