@@ -14,6 +14,7 @@
 #include "sim/MavlinkPeer.h"
 #include "sim/Scenario.h"
 #include "transport/imc/ImcUdpTransport.h"
+#include "transport/mavlink/MavlinkTransport.h"
 
 #include <QCommandLineParser>
 #include <QCoreApplication>
@@ -32,10 +33,12 @@ int usage(const QString &why)
     return 2;
 }
 
-int runMavlink(const QCommandLineParser &parser, const QCommandLineOption &mavlink, const QCommandLineOption &type,
-               const QCommandLineOption &system, const QCommandLineOption &armingFailure, const QCommandLineOption &home,
-               const QCommandLineOption &port, const QCommandLineOption &host, const QCommandLineOption &timeFactor)
+// The --mavlink options, read by name.
+int runMavlink(const QCommandLineParser &parser)
 {
+    const QString mavlink = QStringLiteral("mavlink"), type = QStringLiteral("mavlink-type"), system = QStringLiteral("mavlink-system"),
+                  armingFailure = QStringLiteral("arming-failure"), home = QStringLiteral("home"), port = QStringLiteral("port"),
+                  host = QStringLiteral("host"), timeFactor = QStringLiteral("time-factor"), key = QStringLiteral("mavlink-key");
     const QString file = dataPath(QStringLiteral("msgdefs/mavlink/ardupilotmega.xml"));
     auto schema = msg::Schema::load({file});
     if (!schema) {
@@ -79,6 +82,12 @@ int runMavlink(const QCommandLineParser &parser, const QCommandLineOption &mavli
     config.bindAddress = QHostAddress(parser.value(host));
     if (config.bindAddress.isNull())
         return usage(QStringLiteral("--host must be an address, not '%1'").arg(parser.value(host)));
+    if (parser.isSet(key)) {
+        auto read = transport::mavlinkKeyFromFile(parser.value(key));
+        if (!read)
+            return usage(QStringLiteral("--mavlink-key: %1").arg(read.error()));
+        config.signingKey = *read;
+    }
     config.timeFactor = parser.value(timeFactor).toDouble(&ok);
     if (!ok || !(config.timeFactor > 0) || config.timeFactor > 1000)
         return usage(QStringLiteral("--time-factor must be a number above 0 and at most 1000"));
@@ -87,11 +96,13 @@ int runMavlink(const QCommandLineParser &parser, const QCommandLineOption &mavli
         std::fprintf(stderr, "neptus-sim: %s\n", qPrintable(started.error()));
         return 1;
     }
+    const char *vehicle = kind == u"sub" ? "ardusub" : "ardurover";
+    const char *signing = config.signingKey.isEmpty() ? "" : ", signing and taking only signed frames";
     if (config.tcp)
-        std::printf("neptus-sim: %s (MAVLink system %u) listening on TCP %s:%u, talking to who connects\n",
-                    kind == u"sub" ? "ardusub" : "ardurover", id, qPrintable(config.bindAddress.toString()), peer.port());
+        std::printf("neptus-sim: %s (MAVLink system %u%s) listening on TCP %s:%u, talking to who connects\n", vehicle, id, signing,
+                    qPrintable(config.bindAddress.toString()), peer.port());
     else
-        std::printf("neptus-sim: %s (MAVLink system %u) on %s:%u, talking to %s:%u\n", kind == u"sub" ? "ardusub" : "ardurover", id,
+        std::printf("neptus-sim: %s (MAVLink system %u%s) on %s:%u, talking to %s:%u\n", vehicle, id, signing,
                     qPrintable(config.bindAddress.toString()), peer.port(), qPrintable(config.groundAddress.toString()), config.groundPort);
     std::fflush(stdout);
     return QCoreApplication::exec();
@@ -158,8 +169,14 @@ int main(int argc, char *argv[])
     const QCommandLineOption home(QStringLiteral("home"),
         QStringLiteral("With --mavlink: where it starts, lat,lon in degrees (default 41.1405,-8.6110, the Douro of docs/examples)."),
         QStringLiteral("lat,lon"), QStringLiteral("41.1405,-8.6110"));
+    const QCommandLineOption mavlinkKey(QStringLiteral("mavlink-key"),
+        QStringLiteral("With --mavlink: sign with the key in this file (a passphrase or 64 hex digits, as the console's "
+                       "--mavlink-key) and drop, as ArduPilot does on a telemetry link, every frame not signed with it "
+                       "but a radio's RADIO_STATUS."),
+        QStringLiteral("file"));
     parser.addOptions({id, name, kind, port, host, console, announcePort, phase, fault, drop, defs, dds, domain, ddsKeys,
-                       ddsIdentity, dune, timeFactor, transitions, scenario, mavlink, mavlinkType, mavlinkSystem, armingFailure, home});
+                       ddsIdentity, dune, timeFactor, transitions, scenario, mavlink, mavlinkType, mavlinkSystem, armingFailure,
+                       home, mavlinkKey});
     if (!parser.parse(QCoreApplication::arguments()))
         return usage(parser.errorText());
     if (parser.isSet(QStringLiteral("help")))
@@ -168,7 +185,7 @@ int main(int argc, char *argv[])
         parser.showVersion();
 
     if (parser.isSet(mavlink))
-        return runMavlink(parser, mavlink, mavlinkType, mavlinkSystem, armingFailure, home, port, host, timeFactor);
+        return runMavlink(parser);
 
     auto schema = msg::Schema::load(parser.isSet(defs) ? parser.values(defs)
                                                        : msg::Schema::filesIn(dataPath(QStringLiteral("msgdefs"))));

@@ -44,6 +44,16 @@ quint64 MavlinkSigning::now()
     return quint64(QDateTime::currentMSecsSinceEpoch() - signingEpochMs) * 100;
 }
 
+bool MavlinkSigningStreams::fresh(const MavlinkFrame &header, quint64 now)
+{
+    const quint32 stream = quint32(header.system) << 16 | quint32(header.component) << 8 | header.linkId;
+    const auto last = m_last.constFind(stream);
+    if (last != m_last.cend() ? header.timestamp <= *last : header.timestamp + window < now)
+        return false;
+    m_last.insert(stream, header.timestamp);
+    return true;
+}
+
 MavlinkCodec::MavlinkCodec(std::shared_ptr<const Schema> schema)
     : m_schema(std::move(schema))
 {

@@ -4,6 +4,7 @@
 
 #include <QByteArray>
 #include <QByteArrayView>
+#include <QHash>
 
 #include <deque>
 #include <expected>
@@ -38,6 +39,21 @@ struct MavlinkSigning
 
     // Now, in MAVLink's signing units (10 µs since 2015-01-01 00:00 UTC).
     static quint64 now();
+};
+
+// MAVLink signing's replay rule (the specification's, and ArduPilot's): each
+// (system, component, link id) stream's timestamps only grow, and a stream
+// first met is not more than a minute older than the receiver's clock.
+class MavlinkSigningStreams
+{
+public:
+    // Whether a signed frame is fresh by that rule; if so its timestamp is remembered.
+    // `now` in signing units (MavlinkSigning::now(), or later if the receiver signs ahead of it).
+    bool fresh(const MavlinkFrame &header, quint64 now);
+    static constexpr quint64 window = 6'000'000; // one minute, in 10 µs units
+
+private:
+    QHash<quint32, quint64> m_last;
 };
 
 // Encodes and decodes MAVLink frames with a MAVLink schema loaded at run time

@@ -12,6 +12,8 @@ MavlinkPeer::MavlinkPeer(std::shared_ptr<const msg::Schema> mavlink, Config conf
     , m_config(std::move(config))
     , m_autopilot(mavlink, m_config.autopilot)
 {
+    m_signing.key = m_config.signingKey;
+    m_signing.linkId = 1; // ArduPilot signs with the channel's number; SERIAL1, a telemetry radio
     m_timer.setInterval(50);
     connect(&m_timer, &QTimer::timeout, this, &MavlinkPeer::tick);
     connect(&m_socket, &QUdpSocket::readyRead, this, &MavlinkPeer::read);
@@ -64,6 +66,10 @@ void MavlinkPeer::send(const std::vector<msg::Message> &messages, const QHostAdd
     msg::MavlinkCodec::Options options;
     options.system = m_config.system;
     options.component = 1;
+    if (!m_signing.key.isEmpty()) {
+        m_signing.timestamp = std::max(m_signing.timestamp, msg::MavlinkSigning::now());
+        options.signing = &m_signing;
+    }
     for (const msg::Message &m : messages) {
         options.sequence = m_sequence++;
         auto frame = m_codec.encode(m, options);
@@ -83,11 +89,27 @@ void MavlinkPeer::tick()
     send(m_autopilot.step(now()), m_config.groundAddress, m_config.groundPort);
 }
 
+bool MavlinkPeer::signedWell(QByteArrayView frame, const msg::MavlinkFrame &header)
+{
+    if (m_signing.key.isEmpty())
+        return true;
+    if (!header.isSigned)
+        return header.messageId == 109 || header.messageId == 166; // accept_unsigned_callback's list
+    if (!msg::MavlinkCodec::signatureValid(frame, m_signing.key))
+        return false;
+    return m_streams.fresh(header, std::max(m_signing.timestamp, msg::MavlinkSigning::now()));
+}
+
 void MavlinkPeer::answer(QByteArrayView frame, const QHostAddress &from, quint16 port)
 {
-    auto message = m_codec.decode(frame);
+    msg::MavlinkFrame header;
+    auto message = m_codec.decode(frame, &header);
     if (!message) {
         ++m_bad;
+        return;
+    }
+    if (!signedWell(frame, header)) {
+        ++m_refused; // dropped without a word, as ArduPilot does
         return;
     }
     // Addressed by target_system, or MANUAL_CONTROL's target: another vehicle's is not ours.

@@ -21,6 +21,11 @@ namespace neptus::sim {
 // on TCP, as SITL's first serial port (5760): it listens, and talks to the
 // ground station that connects (one at a time, the last one in).
 // MAVLink 2, system `system`, component 1 (the autopilot).
+// With a signing key it is a telemetry channel of an ArduPilot whose key is
+// set (GCS_Signing.cpp): it signs what it sends and silently drops unsigned
+// frames (but a radio's RADIO_STATUS and RADIO), frames whose signature does
+// not verify, and replays (a stream's timestamp not newer than its last, or
+// a new stream's more than a minute old).
 class MavlinkPeer : public QObject
 {
     Q_OBJECT
@@ -36,6 +41,7 @@ public:
         quint16 groundPort = 14550;
         double timeFactor = 1.0; // simulated seconds a second
         bool tcp = false;        // listen on `port` for a ground station instead of UDP
+        QByteArray signingKey;   // 32 bytes: sign, and take only frames signed with it
     };
 
     MavlinkPeer(std::shared_ptr<const msg::Schema> mavlink, Config config, QObject *parent = nullptr);
@@ -45,6 +51,8 @@ public:
     MavlinkAutopilot &autopilot() { return m_autopilot; }
     // Frames it received that did not decode.
     int badFrames() const { return m_bad; }
+    // Frames it dropped for their signing (unsigned, wrongly signed, replayed).
+    int refusedFrames() const { return m_refused; }
 
 private:
     void tick();
@@ -52,6 +60,7 @@ private:
     void send(const std::vector<msg::Message> &messages, const QHostAddress &to, quint16 port);
     void answer(QByteArrayView frame, const QHostAddress &from, quint16 port);
     double now() const;
+    bool signedWell(QByteArrayView frame, const msg::MavlinkFrame &header);
 
     msg::MavlinkCodec m_codec;
     Config m_config;
@@ -64,6 +73,9 @@ private:
     QElapsedTimer m_clock;
     quint8 m_sequence = 0;
     int m_bad = 0;
+    int m_refused = 0;
+    msg::MavlinkSigning m_signing;
+    msg::MavlinkSigningStreams m_streams;
 };
 
 } // namespace neptus::sim

@@ -6,9 +6,11 @@
 // ASV, each running its plan at once.
 #include "core/DataFiles.h"
 #include "database/Database.h"
+#include "messages/MavlinkCodec.h"
 #include "mission/MissionXml.h"
 #include "qmlmodels/ConsoleSession.h"
 #include "session/OperationsFeed.h"
+#include "transport/mavlink/MavlinkTransport.h"
 #include "web/LiveServer.h"
 
 #include "Missions.h"
@@ -24,8 +26,10 @@
 #include <QNetworkAccessManager>
 #include <QNetworkReply>
 #include <QProcess>
+#include <QRegularExpression>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QUdpSocket>
 
 #include <gtest/gtest.h>
 
@@ -131,6 +135,84 @@ TEST(Mavlink, OverTcpAPlanIsUploadedReadBackAndTheBoatStopped)
     EXPECT_EQ(desk.sync(u"ardurover-1"_s, u"harbour-loop"_s), plans::Sync::Same);
     ASSERT_TRUE(desk.start(u"ardurover-1"_s, u"harbour-loop"_s).has_value());
     ASSERT_TRUE(QTest::qWaitFor([&] { return log().contains(u"harbour-loop started"_s); }, 10000)) << log().toStdString();
+    ASSERT_TRUE(desk.stop(u"ardurover-1"_s).has_value());
+    ASSERT_TRUE(QTest::qWaitFor([&] { return log().contains(u"harbour-loop stopped"_s); }, 10000)) << log().toStdString();
+}
+
+// Signing on at both ends (the console requires it; the boat drops what is not signed
+// with the key, as ArduPilot does on a telemetry link): an unsigned impostor that tells
+// the boat to arm and go AUTO, to clear its mission, and tells the console the boat is
+// armed in AUTO, changes nothing; the console's own signed commands still work.
+TEST(Mavlink, WithSigningOnAnUnsignedImpostorsCommandsAndHeartbeatsChangeNothing)
+{
+    QTemporaryDir dir;
+    const QString keyFile = dir.filePath(u"boat.key"_s);
+    {
+        QFile key(keyFile);
+        ASSERT_TRUE(key.open(QIODevice::WriteOnly) && key.write("douro harbour boat\n") > 0);
+    }
+    const quint16 port = freeUdpPort();
+    Program boat;
+    boat.start(u"neptus-sim"_s, {u"--mavlink"_s, u"127.0.0.1:%1"_s.arg(port), u"--mavlink-key"_s, keyFile, u"--time-factor"_s, u"10"_s},
+               "talking to");
+    ASSERT_TRUE(boat.output.contains("signing and taking only signed frames")) << boat.output.constData();
+    const QRegularExpressionMatch at = QRegularExpression(u"on 127\\.0\\.0\\.1:(\\d+),"_s).match(QString::fromUtf8(boat.output));
+    ASSERT_TRUE(at.hasMatch()) << boat.output.constData();
+    const quint16 boatPort = quint16(at.captured(1).toUInt());
+
+    ConsoleSession session(shippedSchema());
+    auto config = transport::parseMavlinkLink(u"udp:%1"_s.arg(port));
+    ASSERT_TRUE(config.has_value());
+    config->signingKey = *transport::mavlinkKeyFromFile(keyFile);
+    config->requireSigning = true;
+    ASSERT_TRUE(session.console().startMavlink(*config).has_value());
+    transport::MavlinkTransport &link = *session.console().mavlinkLinks().front();
+    auto &desk = session.planDesk();
+    ASSERT_TRUE(desk.openMission(sourcePath(u"docs/examples/douro.xml"_s)).has_value());
+    ASSERT_TRUE(QTest::qWaitFor([&] { return desk.isMavlink(u"ardurover-1"_s); }, 10000)) << boat.output.constData();
+    const quint16 id = config->idBase + 1;
+    const auto log = [&] { return desk.log(u"ardurover-1"_s).join(u'\n'); };
+    ASSERT_TRUE(desk.send(u"ardurover-1"_s, u"harbour-loop"_s).has_value());
+    ASSERT_TRUE(QTest::qWaitFor([&] { return log().contains(u"harbour-loop sent: the vehicle holds its"_s); }, 15000)) << log().toStdString();
+    EXPECT_EQ(link.mode(id), std::pair(u"MANUAL"_s, false));
+
+    // The impostor: unsigned frames as a ground station to the boat, and as the boat to the console.
+    msg::MavlinkCodec codec(mavlinkSchema());
+    QUdpSocket impostor;
+    ASSERT_TRUE(impostor.bind(QHostAddress::LocalHost, 0));
+    const auto make = [&](const char *name, std::initializer_list<std::pair<const char *, double>> fields, quint8 system) {
+        msg::Message m(mavlinkSchema()->byAbbrev(QString::fromLatin1(name)));
+        for (const auto &[field, value] : fields)
+            m.setNumber(m.def()->indexOf(QString::fromLatin1(field)), value);
+        msg::MavlinkCodec::Options options;
+        options.system = system;
+        options.component = 1;
+        return *codec.encode(m, options);
+    };
+    const quint64 refusedBefore = link.refusedFrames();
+    for (int round = 0; round < 3; ++round) {
+        impostor.writeDatagram(make("COMMAND_LONG", {{"target_system", 1}, {"target_component", 1}, {"command", 400}, {"param1", 1}}, 255),
+                               QHostAddress::LocalHost, boatPort); // arm
+        impostor.writeDatagram(make("COMMAND_LONG", {{"target_system", 1}, {"target_component", 1}, {"command", 176}, {"param1", 1},
+                                                     {"param2", 10}}, 255), QHostAddress::LocalHost, boatPort); // AUTO
+        impostor.writeDatagram(make("MISSION_CLEAR_ALL", {{"target_system", 1}, {"target_component", 1}}, 255), QHostAddress::LocalHost,
+                               boatPort);
+        impostor.writeDatagram(make("HEARTBEAT", {{"type", 11}, {"autopilot", 3}, {"base_mode", 0x81}, {"custom_mode", 10},
+                                                  {"system_status", 4}, {"mavlink_version", 3}}, 1),
+                               QHostAddress::LocalHost, port); // "armed, in AUTO"
+        QTest::qWait(400);
+    }
+    EXPECT_GE(link.refusedFrames(), refusedBefore + 3) << "the impostor's heartbeats were read";
+    QTest::qWait(1000); // the boat's own heartbeats, a second of them
+    EXPECT_EQ(link.mode(id), std::pair(u"MANUAL"_s, false)) << "the boat obeyed the impostor, or the console believed it";
+    ASSERT_TRUE(desk.refresh(u"ardurover-1"_s).has_value());
+    ASSERT_TRUE(QTest::qWaitFor([&] { return desk.fetched(u"ardurover-1"_s); }, 10000)) << log().toStdString();
+    EXPECT_EQ(desk.sync(u"ardurover-1"_s, u"harbour-loop"_s), plans::Sync::Same) << "the impostor cleared the mission";
+
+    // The console's own, signed, commands are obeyed.
+    ASSERT_TRUE(desk.start(u"ardurover-1"_s, u"harbour-loop"_s).has_value());
+    ASSERT_TRUE(QTest::qWaitFor([&] { return log().contains(u"harbour-loop started"_s); }, 10000)) << log().toStdString();
+    EXPECT_EQ(link.mode(id), std::pair(u"AUTO"_s, true));
     ASSERT_TRUE(desk.stop(u"ardurover-1"_s).has_value());
     ASSERT_TRUE(QTest::qWaitFor([&] { return log().contains(u"harbour-loop stopped"_s); }, 10000)) << log().toStdString();
 }

@@ -26,19 +26,12 @@ constexpr int streamAttempts = 3;
 constexpr qint64 parameterGapMs = 1000;
 constexpr int parameterRounds = 4;
 constexpr int parametersPerRound = 20; // ArduPilot queues 20 requests (GCS_Param.cpp); more are dropped
-// A signed frame older than our clock by more than this is a replay (MAVLink's rule: one minute).
-constexpr quint64 signingWindow = 6'000'000;
 constexpr qint64 refusedReportMs = 60'000;
 // Other addresses listed as claiming one vehicle, at most; forgotten after a minute of silence.
 constexpr qsizetype maxImpostors = 16;
 constexpr qint64 impostorForgetMs = 60'000;
 // An overloaded host is said to be well again after this long without a drop.
 constexpr qint64 overloadClearMs = 3000;
-
-quint64 signingStreamKey(quint8 system, quint8 component, quint8 link)
-{
-    return quint64(system) << 16 | quint64(component) << 8 | link;
-}
 
 void setField(msg::Message &m, QStringView field, double value)
 {
@@ -297,15 +290,8 @@ QString MavlinkTransport::signingRefusalLocked(QByteArrayView frame, const msg::
         return m_config.requireSigning ? u"signed with a key this console does not have"_s : QString();
     if (!msg::MavlinkCodec::signatureValid(frame, key))
         return u"its signature does not verify with the key"_s;
-    // Replays: each (system, component, link) stream's timestamps only grow, and a new one is not a minute old.
-    const quint64 stream = signingStreamKey(header.system, header.component, header.linkId);
-    const auto last = m_signingStreams.constFind(stream);
-    if (last != m_signingStreams.cend() && header.timestamp <= *last)
-        return u"replayed (signing timestamp not newer than the last)"_s;
-    const quint64 ours = std::max(m_signing.timestamp, msg::MavlinkSigning::now());
-    if (last == m_signingStreams.cend() && header.timestamp + signingWindow < ours)
-        return u"replayed (signing timestamp more than a minute old)"_s;
-    m_signingStreams.insert(stream, header.timestamp);
+    if (!m_signingStreams.fresh(header, std::max(m_signing.timestamp, msg::MavlinkSigning::now())))
+        return u"replayed (its signing timestamp is not newer than its stream's last, or more than a minute old)"_s;
     return {};
 }
 

@@ -253,7 +253,7 @@ private:
     FrameTap m_frameTap;
     mutable std::mutex m_mutex; // guards the vehicles, signing state, sequence and sending
     std::map<quint8, Vehicle> m_vehicles;
-    QHash<quint64, quint64> m_signingStreams; // (system, component, link id) → last timestamp
+    msg::MavlinkSigningStreams m_signingStreams;
     std::array<qint64, 256> m_refusedReportMs{}; // by system id: when a refusal was last said
     QHash<QString, qint64> m_overloadedMs;       // hosts said to overload the link, when last
     msg::MavlinkSigning m_signing;            // our timestamp, and the link's key

@@ -1,10 +1,15 @@
-// The simulator's ArduPilot: each behaviour the console relies on, named,
+// The simulator's ArduPilot (and its link, MavlinkPeer): each behaviour the console relies on, named,
 // as ArduPilot's source has it (GCS_MAVLink MissionItemProtocol, AP_Mission,
 // Rover's mode.cpp) and the real vehicles of ../shared/fixtures/mavlink did.
 #include "sim/MavlinkAutopilot.h"
+#include "sim/MavlinkPeer.h"
 
 #include "QtPrinters.h"
 #include "Schemas.h"
+
+#include <QNetworkDatagram>
+#include <QTest>
+#include <QUdpSocket>
 
 #include <gtest/gtest.h>
 
@@ -184,4 +189,62 @@ TEST(MavlinkAutopilot, SetMissionCurrentTakesZeroAsTheFirstItemAndDeniesOneOutOf
     EXPECT_EQ(said(boat.receive(make("COMMAND_LONG", {{"command", 224}, {"param1", 0}}), 0)), QStringList{u"COMMAND_ACK 224 0"_s});
     EXPECT_EQ(said(boat.receive(make("COMMAND_LONG", {{"command", 224}, {"param1", 5}}), 0)), QStringList{u"COMMAND_ACK 224 2"_s})
         << "DENIED (GCS_Common.cpp)";
+}
+
+// With a key, the simulated vehicle is an ArduPilot telemetry channel with signing set
+// (GCS_Signing.cpp): what it sends is signed and verifies with the key; it silently drops
+// unsigned frames but a radio's RADIO_STATUS, frames signed with another key, replays of a
+// stream's frame and a new stream's frame more than a minute old.
+TEST(MavlinkPeer, WithAKeyItSignsAndTakesOnlyFreshFramesSignedWithItButARadiosStatus)
+{
+    const QByteArray key(32, '\x42');
+    sim::MavlinkPeer::Config config;
+    config.signingKey = key;
+    QUdpSocket ground;
+    ASSERT_TRUE(ground.bind(QHostAddress::LocalHost, 0));
+    config.groundPort = ground.localPort();
+    sim::MavlinkPeer boat(test::mavlinkSchema(), config);
+    ASSERT_TRUE(boat.start().has_value());
+    ASSERT_TRUE(QTest::qWaitFor([&] { return ground.hasPendingDatagrams(); }, 3000));
+    const QByteArray first = ground.receiveDatagram().data();
+    msg::MavlinkCodec codec(test::mavlinkSchema());
+    msg::MavlinkFrame header;
+    ASSERT_TRUE(codec.decode(first, &header).has_value());
+    EXPECT_TRUE(header.isSigned);
+    EXPECT_TRUE(msg::MavlinkCodec::signatureValid(first, key));
+
+    const auto frame = [&](const msg::Message &m, msg::MavlinkSigning *signing) {
+        msg::MavlinkCodec::Options options;
+        options.system = 255;
+        options.component = 190;
+        options.signing = signing;
+        return *codec.encode(m, options);
+    };
+    const auto arm = make("COMMAND_LONG", {{"target_system", 1}, {"target_component", 1}, {"command", 400}, {"param1", 1}});
+    const auto deliver = [&](const QByteArray &bytes) {
+        ground.writeDatagram(bytes, QHostAddress::LocalHost, boat.port());
+        QTest::qWait(150);
+    };
+    deliver(frame(arm, nullptr));
+    EXPECT_EQ(boat.refusedFrames(), 1) << "unsigned";
+    msg::MavlinkSigning other{QByteArray(32, '\x01'), 0, msg::MavlinkSigning::now()};
+    deliver(frame(arm, &other));
+    EXPECT_EQ(boat.refusedFrames(), 2) << "another key";
+    msg::MavlinkSigning stale{key, 0, msg::MavlinkSigning::now() - 2 * msg::MavlinkSigningStreams::window};
+    deliver(frame(arm, &stale));
+    EXPECT_EQ(boat.refusedFrames(), 3) << "a new stream two minutes old";
+    EXPECT_FALSE(boat.autopilot().armed());
+    deliver(frame(make("RADIO_STATUS", {{"rssi", 200}}), nullptr));
+    EXPECT_EQ(boat.refusedFrames(), 3) << "a radio's status is taken unsigned";
+
+    msg::MavlinkSigning signing{key, 0, msg::MavlinkSigning::now()};
+    const QByteArray signedArm = frame(arm, &signing);
+    deliver(signedArm);
+    EXPECT_EQ(boat.refusedFrames(), 3);
+    EXPECT_TRUE(boat.autopilot().armed());
+    deliver(frame(make("COMMAND_LONG", {{"target_system", 1}, {"target_component", 1}, {"command", 400}, {"param1", 0}}), &signing));
+    EXPECT_FALSE(boat.autopilot().armed());
+    deliver(signedArm); // the arming again, byte for byte
+    EXPECT_EQ(boat.refusedFrames(), 4) << "a replay";
+    EXPECT_FALSE(boat.autopilot().armed());
 }
