@@ -6,6 +6,7 @@
 // sent (../shared/fixtures/mavlink).
 #include "messages/Crc16.h"
 #include "messages/MavlinkCodec.h"
+#include "messages/MavlinkModes.h"
 
 #include "core/DataFiles.h"
 #include "Fixtures.h"
@@ -318,4 +319,77 @@ TEST(Mavlink, EveryFrameArduPilotSentInTheFixtureLogsDecodes)
             EXPECT_EQ(counts[type].second, n.second) << e.file << " " << type.toStdString();
         }
     }
+}
+
+// ArduPilot's mode names, per vehicle, are the dialect's own enums (ardupilotmega.xml's ROVER_MODE,
+// SUB_MODE, PLANE_MODE, COPTER_MODE, written by ArduPilot): every entry of each named alike
+// (underscores aside, ArduPilot's own "INITIALISING", and Plane's FBWA/FBWB, as ArduPilot's
+// mode.h, MAVProxy and QGroundControl show them, for FLY_BY_WIRE_A/B), and back to its number.
+TEST(MavlinkModes, ArduPilotsModesAreTheDialectsModeEnumsForEveryVehicle)
+{
+    namespace mav = msg::mavlink;
+    const auto schema = mavlinkSchema();
+    ASSERT_TRUE(schema);
+    const auto plain = [](QString name) {
+        return name.remove(u'_').replace(u"INITIALIZING"_s, u"INITIALISING"_s).replace(u"FLYBYWIRE"_s, u"FBW"_s);
+    };
+    for (const auto &[enumName, mavType] : {std::pair{"ROVER_MODE", 11}, {"ROVER_MODE", 10}, {"SUB_MODE", 12}, {"PLANE_MODE", 1},
+                                            {"PLANE_MODE", 22}, {"COPTER_MODE", 2}, {"COPTER_MODE", 13}}) {
+        const msg::Enumeration *modes = schema->enumeration(QString::fromLatin1(enumName));
+        ASSERT_TRUE(modes) << enumName;
+        ASSERT_GE(modes->values.size(), 9u) << enumName;
+        for (const msg::Enumeration::Value &v : modes->values) {
+            const QString expected = v.abbrev.mid(qsizetype(std::strlen(enumName)) + 1);
+            const QString ours = mav::modeName(mav::Family::ArduPilot, mavType, quint32(v.value));
+            EXPECT_EQ(plain(ours), plain(expected)) << enumName << " " << v.value << " as MAV_TYPE " << mavType;
+            EXPECT_EQ(mav::modeNumber(mav::Family::ArduPilot, mavType, ours), quint32(v.value)) << ours.toStdString();
+        }
+    }
+    EXPECT_EQ(mav::modeName(mav::Family::ArduPilot, 11, 2), u"mode 2"_s) << "Rover's LEARNING is gone from ArduPilot";
+    EXPECT_EQ(mav::abortMode(mav::Family::ArduPilot, 12), u"SURFACE"_s);
+    EXPECT_EQ(mav::stopMode(mav::Family::ArduPilot, 2), u"LOITER"_s);
+    EXPECT_EQ(*mav::setModeParams(mav::Family::ArduPilot, 1, u"RTL"_s), (std::array<float, 3>{1, 11, 0}));
+}
+
+// PX4's modes: main mode in custom_mode's third byte, AUTO's sub mode in its fourth
+// (px4_custom_mode.h), each named as pymavlink 2.4.50 names it (mavutil.interpret_px4_mode,
+// an independent reading, AUTO's sub modes behind "AUTO."); MAV_CMD_DO_SET_MODE carries
+// the main mode in param2 and the sub mode in param3, as PX4's commander reads them.
+TEST(MavlinkModes, Px4ModesAreItsMainAndAutoSubModesAsPymavlinkReadsThem)
+{
+    namespace mav = msg::mavlink;
+    QProcess python;
+    python.start(u"python3"_s, {u"-c"_s, u"from pymavlink import mavutil\n"
+                                         u"for main in range(1, 11):\n"
+                                         u"  for sub in range(0, 11) if main == 4 else [0]:\n"
+                                         u"    print(main, sub, mavutil.interpret_px4_mode(0x81, main << 16 | sub << 24))\n"_s});
+    ASSERT_TRUE(python.waitForFinished(60000)) << "python3 with pymavlink (tools/python-packages.txt)";
+    ASSERT_EQ(python.exitCode(), 0) << python.readAllStandardError().toStdString();
+    // Where they differ, and why: PX4's sub mode 7 is reserved since RTGS went (v1.14), and 8 is
+    // FOLLOW_TARGET, which pymavlink calls FOLLOWME; main modes pymavlink does not know.
+    const std::map<QString, QString> differences{{u"4 7"_s, u"AUTO.7"_s}, {u"4 8"_s, u"AUTO.FOLLOW_TARGET"_s},
+                                                 {u"4 9"_s, u"AUTO.PRECLAND"_s}, {u"4 10"_s, u"AUTO.VTOL_TAKEOFF"_s},
+                                                 {u"4 1"_s, u"AUTO.READY"_s}, {u"4 0"_s, u"AUTO.0"_s},
+                                                 {u"9 0"_s, u"SIMPLE"_s}, {u"10 0"_s, u"TERMINATION"_s}};
+    int compared = 0;
+    for (const QByteArray &line : python.readAllStandardOutput().split('\n')) {
+        const QStringList words = QString::fromLatin1(line).split(u' ', Qt::SkipEmptyParts);
+        if (words.size() != 3)
+            continue;
+        const quint32 main = words[0].toUInt(), sub = words[1].toUInt();
+        const QString ours = mav::modeName(mav::Family::Px4, 2, main << 16 | sub << 24);
+        const auto difference = differences.find(words[0] + u' ' + words[1]);
+        if (difference != differences.end()) {
+            EXPECT_EQ(ours, difference->second) << line.constData();
+            continue;
+        }
+        EXPECT_EQ(ours, main == 4 ? u"AUTO."_s + words[2] : words[2]) << line.constData();
+        EXPECT_EQ(mav::modeNumber(mav::Family::Px4, 2, ours), main << 16 | sub << 24) << line.constData();
+        ++compared;
+    }
+    EXPECT_EQ(compared, 12) << "7 main modes and AUTO's TAKEOFF, LOITER, MISSION, RTL, LAND";
+    EXPECT_EQ(mav::missionMode(mav::Family::Px4), u"AUTO.MISSION"_s);
+    EXPECT_EQ(*mav::setModeParams(mav::Family::Px4, 2, u"AUTO.RTL"_s), (std::array<float, 3>{1, 4, 5}));
+    EXPECT_EQ(*mav::setModeParams(mav::Family::Px4, 2, u"POSCTL"_s), (std::array<float, 3>{1, 3, 0}));
+    EXPECT_EQ(mav::familyOf(12), mav::Family::Px4);
 }
