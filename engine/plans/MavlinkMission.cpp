@@ -75,6 +75,12 @@ MissionItem keptByArduPilot(const MissionItem &i, MissionType type)
         return k;
     }
     k.frame = (i.frame == 3 || i.frame == 6) ? 3 : (i.frame == 10 || i.frame == 11) ? 10 : 0;
+    if (type == MissionType::Rally) {
+        // RallyLocation: position, altitude frame, altitude in whole metres (int16, cut towards zero); no parameters.
+        k.autocontinue = 0;
+        k.z = std::isnan(i.z) ? 0.0f : std::trunc(i.z);
+        return k;
+    }
     k.z = std::isnan(i.z) ? 0.0f : std::trunc(i.z * 100.0f) * 0.01f; // whole centimetres, cut towards zero
     switch (i.command) {
     case 16: // NAV_WAYPOINT: the hold time
@@ -130,7 +136,7 @@ std::optional<Compared> firstDifference(const MissionItem &sent, const MissionIt
         return Compared{u"latitude"_s, number(a.x * 1e-7), number(b.x * 1e-7)};
     if (a.y != b.y)
         return Compared{u"longitude"_s, number(a.y * 1e-7), number(b.y * 1e-7)};
-    if (std::abs(a.z - b.z) > 0.02f) // kept in whole centimetres, cut towards zero
+    if (std::abs(a.z - b.z) > 0.02f) // kept in whole centimetres (a rally point's in metres), cut towards zero
         return Compared{u"altitude"_s, number(a.z), number(b.z)};
     return std::nullopt;
 }
@@ -246,6 +252,30 @@ std::vector<MissionItem> missionFence(const mission::Mission &mission)
         }
     }
     return fence;
+}
+
+std::vector<MissionItem> missionRally(const mission::Mission &mission)
+{
+    std::vector<MissionItem> rally;
+    for (const mission::Map &map : mission.maps) {
+        for (const mission::Feature &f : map.features) {
+            if (f.kind != u"mark" || f.attributes.value(u"role"_s) != u"rally")
+                continue;
+            const auto at = mission.position(f.position);
+            if (!at)
+                continue;
+            MissionItem point;
+            point.command = 5100; // MAV_CMD_NAV_RALLY_POINT
+            point.frame = 3;      // above home, as ArduPilot reads a rally point back by default
+            point.x = qint32(std::lround(at->lat * 1e7));
+            point.y = qint32(std::lround(at->lon * 1e7));
+            point.z = float(f.position.height.value_or(0) - f.position.depth.value_or(0));
+            point.autocontinue = 0;
+            point.maneuver = f.id;
+            rally.push_back(point);
+        }
+    }
+    return rally;
 }
 
 QString missionDifference(const std::vector<MissionItem> &sent, const std::vector<MissionItem> &held, MissionType type)

@@ -36,12 +36,13 @@ MissionItem missionItemFrom(const msg::Message &message);
 enum class MissionType { Mission = 0, Fence = 1, Rally = 2 };
 
 // What a plan becomes on a MAVLink vehicle: the mission's items (item 0
-// home, as ArduPilot counts it) and the geofence made of the mission's
-// operating areas (inclusion) and no-go areas (exclusion).
+// home, as ArduPilot counts it), the geofence made of the mission's
+// operating areas (inclusion) and no-go areas (exclusion), and its rally points.
 struct MavlinkPlan
 {
     std::vector<MissionItem> items;
     std::vector<MissionItem> fence;
+    std::vector<MissionItem> rally;
     QStringList maneuverOfItem() const;
 };
 
@@ -52,6 +53,9 @@ std::expected<std::vector<MissionItem>, QString> missionItemsFromXml(QByteArrayV
 // The geofence of a mission's areas: each operating area an inclusion
 // polygon, each no-go area an exclusion polygon (MAV_CMD_NAV_FENCE_POLYGON_VERTEX_*).
 std::vector<MissionItem> missionFence(const mission::Mission &mission);
+// The rally points of a mission: each mark of role "rally", a
+// MAV_CMD_NAV_RALLY_POINT at its position and height above home (frame 3).
+std::vector<MissionItem> missionRally(const mission::Mission &mission);
 
 // Whether the vehicle holds what was sent: "" when it does, else the first
 // difference, said for people ("item 3: latitude 41.1861769 sent, 41.186177
@@ -60,7 +64,9 @@ std::vector<MissionItem> missionFence(const mission::Mission &mission);
 // parameters a command does not keep read back 0 (a waypoint's acceptance
 // radius and yaw), those it keeps in 16 bits come back whole; altitudes are
 // kept in whole centimetres; a fence vertex keeps its count and position
-// only (AP_Mission, MissionItemProtocol_Fence; docs/mavlink.md).
+// only; a rally point its position, its frame and its altitude in whole
+// metres (AP_Mission, MissionItemProtocol_Fence, MissionItemProtocol_Rally;
+// docs/mavlink.md).
 QString missionDifference(const std::vector<MissionItem> &sent, const std::vector<MissionItem> &held, MissionType type);
 // What ArduPilot keeps of an item and reads back (the rules above); the
 // simulated ArduPilot (sim::MavlinkAutopilot) stores its items through it.

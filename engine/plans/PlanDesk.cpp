@@ -634,17 +634,22 @@ std::expected<void, QString> PlanDesk::sendMavlink(quint16 id, const mission::Pl
     const MavlinkPlan items = *translated;
     const QString planId = plan.id;
     MavlinkMissionClient &client = missionClient(id);
-    note(id, u"sending %1: %2 mission items%3"_s.arg(planId).arg(items.items.size() - 1)
-                 .arg(items.fence.empty() ? QString() : u", a geofence of %1 vertices"_s.arg(items.fence.size())));
+    note(id, u"sending %1: %2 mission items%3%4"_s.arg(planId).arg(items.items.size() - 1)
+                 .arg(items.fence.empty() ? QString() : u", a geofence of %1 vertices"_s.arg(items.fence.size()))
+                 .arg(items.rally.empty() ? QString() : items.rally.size() == 1 ? u", a rally point"_s
+                                                                                : u", %1 rally points"_s.arg(items.rally.size())));
     const auto failed = [this, id, planId](const MavlinkMissionClient::Result &r) {
         note(id, u"sending %1 failed: %2: %3"_s.arg(planId, r.what, r.info));
         planAlarm(id, alarms::Warning,
                       u"plan %1 was not sent: %2: %3"_s.arg(planId, r.what, r.info));
     };
-    if (!items.fence.empty()) {
-        const int fence = client.upload(MissionType::Fence, items.fence);
-        m_vehicles[id].transferNames[fence] = u"uploading the geofence of %1"_s.arg(planId);
-        after(id, fence, [failed](const auto &r) {
+    for (const auto &[type, sent, what] : {std::tuple{MissionType::Fence, &items.fence, u"geofence"_s},
+                                           std::tuple{MissionType::Rally, &items.rally, u"rally points"_s}}) {
+        if (sent->empty())
+            continue;
+        const int upload = client.upload(type, *sent);
+        m_vehicles[id].transferNames[upload] = u"uploading the %1 of %2"_s.arg(what, planId);
+        after(id, upload, [failed](const auto &r) {
             if (!r.ok)
                 failed(r);
         });
@@ -674,9 +679,33 @@ std::expected<void, QString> PlanDesk::sendMavlink(quint16 id, const mission::Pl
                               u"plan %1: the vehicle holds something else than was sent: %2"_s.arg(planId, difference));
             }
             heldMission(id, back.items);
+            readBack(id, planId, MissionType::Fence, items.fence);
+            readBack(id, planId, MissionType::Rally, items.rally);
         });
     });
     return {};
+}
+
+void PlanDesk::readBack(quint16 id, const QString &planId, MissionType type, const std::vector<MissionItem> &sent)
+{
+    if (sent.empty())
+        return;
+    const QString what = type == MissionType::Fence ? u"geofence"_s : u"rally points"_s;
+    const int download = missionClient(id).download(type);
+    m_vehicles[id].transferNames[download] = u"reading the %1 of %2 back"_s.arg(what, planId);
+    after(id, download, [this, id, planId, type, what, sent](const MavlinkMissionClient::Result &back) {
+        const QString difference = back.ok ? missionDifference(sent, back.items, type) : back.what + u": "_s + back.info;
+        if (back.ok && difference.isEmpty()) {
+            note(id, u"%1: the vehicle holds its %2 as sent (%3 item%4)"_s.arg(planId, what).arg(sent.size())
+                         .arg(sent.size() == 1 ? u""_s : u"s"_s));
+            return;
+        }
+        note(id, u"%1: the vehicle's %2 %3: %4"_s.arg(planId, what, back.ok ? u"differ"_s : u"could not be read back"_s, difference));
+        planAlarm(id, alarms::Warning, u"plan %1: the vehicle's %2 %3: %4"_s.arg(planId, what,
+                                                                             back.ok ? u"differ from what was sent"_s
+                                                                                     : u"could not be read back"_s,
+                                                                             difference));
+    });
 }
 
 std::expected<void, QString> PlanDesk::startMavlink(quint16 id, const QString &planId)

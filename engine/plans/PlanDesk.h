@@ -187,6 +187,8 @@ private:
     const mission::Plan *missionPlan(const QString &system, const QString &planId) const;
     void heldMission(quint16 id, const std::vector<MissionItem> &items);
     std::expected<void, QString> sendMavlink(quint16 id, const mission::Plan &plan);
+    // The geofence or rally points sent with a plan, read back and compared (nothing when none were sent).
+    void readBack(quint16 id, const QString &planId, MissionType type, const std::vector<MissionItem> &sent);
     std::expected<void, QString> startMavlink(quint16 id, const QString &planId);
     std::expected<void, QString> stopMavlink(quint16 id);
     double heartbeatNumber(quint16 id, const QString &field) const;

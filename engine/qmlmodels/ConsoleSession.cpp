@@ -93,7 +93,7 @@ std::expected<plans::MavlinkPlan, QString> ConsoleSession::mavlinkPlanFor(const 
     auto items = plans::missionItemsFromXml(*translated, mission.home);
     if (!items)
         return std::unexpected(items.error());
-    return plans::MavlinkPlan{std::move(*items), plans::missionFence(mission)};
+    return plans::MavlinkPlan{std::move(*items), plans::missionFence(mission), plans::missionRally(mission)};
 }
 
 ConsoleSession::~ConsoleSession() = default;

@@ -424,6 +424,8 @@ QList<PropertySpec> propertiesOf(const QString &kind)
     const QStringList roles{u"area"_s, u"operating-area"_s, u"no-go"_s, u"survey-area"_s};
     if (areaKinds.contains(kind))
         specs.append({u"role"_s, u"choice"_s, {}, roles, {}});
+    if (kind == u"mark"_s)
+        specs.append({u"role"_s, u"choice"_s, {}, {u"mark"_s, u"rally"_s}, {}});
     if (kind == u"circle"_s)
         specs.append({u"radius"_s, u"number"_s, u"m"_s, {}, 0.0});
     if (solidKinds.contains(kind)) {

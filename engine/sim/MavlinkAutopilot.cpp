@@ -131,9 +131,20 @@ msg::Message MavlinkAutopilot::request(const Upload &u) const
     return m;
 }
 
+// What it holds of a MAV_MISSION_TYPE (0 mission, 1 fence, 2 rally; callers keep to these).
+std::vector<MavlinkAutopilot::Item> &MavlinkAutopilot::held(int type)
+{
+    return type == 1 ? m_fence : type == 2 ? m_rally : m_mission;
+}
+
+const std::vector<MavlinkAutopilot::Item> &MavlinkAutopilot::held(int type) const
+{
+    return type == 1 ? m_fence : type == 2 ? m_rally : m_mission;
+}
+
 msg::Message MavlinkAutopilot::item(int type, int seq) const
 {
-    const Item &i = type == 1 ? m_fence[size_t(seq)] : m_mission[size_t(seq)];
+    const Item &i = held(type)[size_t(seq)];
     msg::Message m = make("MISSION_ITEM_INT");
     set(m, u"seq", seq);
     set(m, u"frame", i.frame);
@@ -164,7 +175,7 @@ std::vector<msg::Message> MavlinkAutopilot::receive(const msg::Message &m, doubl
     const QString &type = m.def()->abbrev;
     const auto missionType = [&] { return int(m.integer(u"mission_type")); };
     if (type == u"MISSION_COUNT") {
-        if (missionType() > 1) {
+        if (missionType() > 2) {
             out.push_back(missionAck(missionType(), missionUnsupported));
             return out;
         }
@@ -173,7 +184,7 @@ std::vector<msg::Message> MavlinkAutopilot::receive(const msg::Message &m, doubl
         u.count = int(m.integer(u"count"));
         u.askedAt = u.lastItemAt = now;
         if (u.count == 0) {
-            (u.type == 1 ? m_fence : m_mission).resize(u.type == 1 ? 0 : 1);
+            held(u.type).resize(u.type == 0 ? 1 : 0); // a mission keeps its home
             out.push_back(missionAck(u.type, missionAccepted));
             return out;
         }
@@ -190,7 +201,7 @@ std::vector<msg::Message> MavlinkAutopilot::receive(const msg::Message &m, doubl
             return out;
         }
         Item i = plans::missionItemFrom(m);
-        i = plans::keptByArduPilot(i, u.type == 1 ? plans::MissionType::Fence : plans::MissionType::Mission); // what AP_Mission keeps
+        i = plans::keptByArduPilot(i, plans::MissionType(u.type)); // what AP_Mission, the fence and AP_Rally keep
         u.items.push_back(i);
         ++u.next;
         u.askedAt = u.lastItemAt = now;
@@ -198,8 +209,8 @@ std::vector<msg::Message> MavlinkAutopilot::receive(const msg::Message &m, doubl
             out.push_back(request(u));
             return out;
         }
-        if (u.type == 1) {
-            m_fence = std::move(u.items);
+        if (u.type != 0) {
+            held(u.type) = std::move(u.items);
         } else {
             u.items[0] = m_mission[0]; // its own home, whatever was sent
             m_mission = std::move(u.items);
@@ -211,16 +222,34 @@ std::vector<msg::Message> MavlinkAutopilot::receive(const msg::Message &m, doubl
         const int uploaded = u.type;
         m_upload.reset();
         out.push_back(missionAck(uploaded, missionAccepted));
+    } else if (type == u"MISSION_CLEAR_ALL") {
+        // MissionItemProtocol::handle_mission_clear_all: an upload under way is cancelled, all is gone but the
+        // mission's home, and ACCEPTED; but AP_Mission::clear() refuses while armed and running the mission.
+        if (missionType() > 2) {
+            out.push_back(missionAck(missionType(), missionUnsupported));
+            return out;
+        }
+        m_upload.reset();
+        if (missionType() == 0 && m_armed && m_missionState == stateActive) {
+            out.push_back(missionAck(missionType(), missionError));
+            return out;
+        }
+        held(missionType()).resize(missionType() == 0 ? 1 : 0);
+        if (missionType() == 0) {
+            resetMission();
+            m_missionState = stateNoMission;
+        }
+        out.push_back(missionAck(missionType(), missionAccepted));
     } else if (type == u"MISSION_REQUEST_LIST") {
         msg::Message count = make("MISSION_COUNT");
-        set(count, u"count", double(missionType() == 1 ? m_fence.size() : m_mission.size()));
+        set(count, u"count", double(missionType() > 2 ? 0 : held(missionType()).size()));
         set(count, u"mission_type", missionType());
         set(count, u"target_system", m_to);
         set(count, u"target_component", m_toComponent);
         out.push_back(std::move(count));
     } else if (type == u"MISSION_REQUEST_INT" || type == u"MISSION_REQUEST") {
         const int seq = int(m.integer(u"seq"));
-        const size_t size = missionType() == 1 ? m_fence.size() : m_mission.size();
+        const size_t size = missionType() > 2 ? 0 : held(missionType()).size();
         if (seq < 0 || size_t(seq) >= size)
             out.push_back(missionAck(missionType(), missionInvalidSequence));
         else

@@ -66,6 +66,8 @@ public:
     QString modeName() const;
     bool armed() const { return m_armed; }
     int missionCount() const { return int(m_mission.size()); }
+    int fenceCount() const { return int(m_fence.size()); }
+    int rallyCount() const { return int(m_rally.size()); }
     // The last MANUAL_CONTROL's axes (x, y, z, r), and whether it still drives (under 3 s old).
     std::array<int, 4> manualControl() const { return m_manual; }
     bool driven() const { return m_manualAt >= 0; }
@@ -89,6 +91,8 @@ private:
     msg::Message text(int severity, const QString &words) const;
     msg::Message missionAck(int type, int result) const;
     msg::Message request(const Upload &u) const;
+    std::vector<Item> &held(int type);
+    const std::vector<Item> &held(int type) const;
     msg::Message parameter(int index, int reportedIndex) const;
     msg::Message item(int type, int seq) const;
     std::vector<msg::Message> command(const msg::Message &m, double now);
@@ -103,6 +107,7 @@ private:
     Config m_config;
     std::vector<Item> m_mission; // item 0: home
     std::vector<Item> m_fence;
+    std::vector<Item> m_rally;
     std::optional<Upload> m_upload;
     quint32 m_mode = 0;
     bool m_armed = false;

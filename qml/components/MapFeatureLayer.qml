@@ -137,7 +137,8 @@ Item {
             y: at.y
             Text {
                 anchors.centerIn: parent
-                text: glyph.modelData.kind === "mark" ? "◆" : glyph.modelData.kind === "transponder" ? "▲"
+                text: glyph.modelData.kind === "mark" ? (glyph.modelData.role === "rally" ? "R" : "◆")
+                      : glyph.modelData.kind === "transponder" ? "▲"
                       : glyph.modelData.kind === "model" ? "⬢" : glyph.modelData.kind === "image" ? "▣" : "+"
                 color: layer.colourOf(glyph.modelData)
                 style: Text.Outline

@@ -3,9 +3,11 @@
 // replayed against MavlinkMissionClient — it must say what the recorded
 // ground station said, item for item, and take ArduPilot's answers as they
 // came — and what ArduPilot changes in what it holds is not a difference.
+#include "mission/MissionXml.h"
 #include "plans/MavlinkMission.h"
 
 #include "Fixtures.h"
+#include "Missions.h"
 #include "QtPrinters.h"
 #include "Schemas.h"
 #include "Tlog.h"
@@ -261,6 +263,48 @@ TEST(MavlinkMission, WhatArduPilotKeepsOfAnItemIsNoDifference)
     EXPECT_FLOAT_EQ(keptByArduPilot(spline, MissionType::Mission).p2, 2.0f);
     held[2].p3 = 1; // the other way round
     EXPECT_EQ(missionDifference(sent, held, MissionType::Mission), u"item 2: param3 -1 sent, 1 held"_s);
+}
+
+// A rally point is kept as AP_Rally's RallyLocation (MissionItemProtocol_Rally): its position, its
+// altitude frame (5/6/11 read back as 0/3/10) and its altitude as a whole number of metres (int16,
+// cut towards zero); no parameters, no autocontinue. The mission's rally marks become such points.
+TEST(MavlinkMission, ARallyPointKeepsItsPositionFrameAndWholeMetres)
+{
+    MissionItem point;
+    point.command = 5100;
+    point.frame = 6;
+    point.p1 = 3;
+    point.x = 411861769;
+    point.y = -87060003;
+    point.z = 12.7f;
+    const MissionItem kept = keptByArduPilot(point, MissionType::Rally);
+    EXPECT_EQ(kept.frame, 3);
+    EXPECT_FLOAT_EQ(kept.z, 12.0f);
+    EXPECT_FLOAT_EQ(kept.p1, 0.0f);
+    EXPECT_EQ(kept.autocontinue, 0);
+    EXPECT_EQ(kept.x, point.x);
+    point.z = -3.5f;
+    EXPECT_FLOAT_EQ(keptByArduPilot(point, MissionType::Rally).z, -3.0f);
+    MissionItem held = kept;
+    EXPECT_EQ(missionDifference({point}, {keptByArduPilot(point, MissionType::Rally)}, MissionType::Rally), QString())
+        << "item 0 of rally points is a point like the others, and what AP_Rally keeps is no difference";
+    held.y += 10;
+    EXPECT_EQ(missionDifference({point}, {held}, MissionType::Rally), u"item 0: longitude -8.7060003 sent, -8.7059993 held"_s);
+
+    auto m = mission::readMission(R"(<?xml version="1.0" encoding="UTF-8"?>
+<mission format="1" id="r" name="R"><home lat="41.18" lon="-8.70" height="0"/>
+  <map id="m"><mark id="pier" lat="41.185" lon="-8.706"/><mark id="safe" role="rally" lat="41.186" lon="-8.707" height="15"/>
+    <mark id="north" role="rally" north="100" east="0"/></map></mission>)", u"r.xml"_s);
+    ASSERT_TRUE(m.has_value()) << test::errorsText(m.error()).toStdString();
+    const std::vector<MissionItem> rally = missionRally(*m);
+    ASSERT_EQ(rally.size(), 2u) << "the rally marks, not the plain one";
+    EXPECT_EQ(rally[0].command, 5100);
+    EXPECT_EQ(rally[0].frame, 3);
+    EXPECT_EQ(rally[0].x, 411860000);
+    EXPECT_EQ(rally[0].y, -87070000);
+    EXPECT_FLOAT_EQ(rally[0].z, 15.0f);
+    EXPECT_EQ(rally[0].maneuver, u"safe"_s);
+    EXPECT_NEAR(rally[1].x * 1e-7, 41.18 + 100 / 111000.0, 2e-5) << "placed north of home";
 }
 
 TEST(MavlinkMission, TranslatedItemsFollowAHomeItemAndABadOneIsNamed)

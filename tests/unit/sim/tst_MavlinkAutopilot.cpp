@@ -85,6 +85,38 @@ TEST(MavlinkAutopilot, ItKeepsItsOwnHomeAsItemZeroAndWhatAPMissionKeepsOfEachIte
                                  u"MISSION_ITEM_INT 2 cmd 16 frame 3 p2 0 z 1.23"_s}));
 }
 
+// Rally points (MissionItemProtocol_Rally): taken as RallyLocations (altitude in whole metres) and read
+// back above home; MISSION_CLEAR_ALL clears one mission type and is ACCEPTED (the mission keeps its home),
+// but AP_Mission::clear() refuses while the vehicle is armed and running its mission (MAV_MISSION_ERROR).
+TEST(MavlinkAutopilot, ItKeepsRallyPointsInWholeMetresAndClearsATypeUnlessItsMissionIsRunning)
+{
+    sim::MavlinkAutopilot boat(test::mavlinkSchema(), {});
+    EXPECT_EQ(said(boat.receive(make("MISSION_COUNT", {{"count", 1}, {"mission_type", 2}}), 0)), QStringList{u"MISSION_REQUEST 0"_s});
+    EXPECT_EQ(said(boat.receive(make("MISSION_ITEM_INT", {{"seq", 0}, {"command", 5100}, {"frame", 6}, {"x", 411860000}, {"y", -87070000},
+                                                          {"z", 15.8}, {"mission_type", 2}}), 0)),
+              QStringList{u"MISSION_ACK 0"_s});
+    EXPECT_EQ(boat.rallyCount(), 1);
+    EXPECT_EQ(said(boat.receive(make("MISSION_REQUEST_INT", {{"seq", 0}, {"mission_type", 2}}), 0)),
+              QStringList{u"MISSION_ITEM_INT 0 cmd 5100 frame 3 p2 0 z 15"_s});
+    EXPECT_EQ(said(boat.receive(make("MISSION_CLEAR_ALL", {{"mission_type", 2}}), 0)), QStringList{u"MISSION_ACK 0"_s});
+    EXPECT_EQ(boat.rallyCount(), 0);
+
+    boat.receive(make("MISSION_COUNT", {{"count", 2}}), 0);
+    boat.receive(waypoint(0), 0);
+    boat.receive(waypoint(1), 0);
+    ASSERT_EQ(boat.missionCount(), 2);
+    boat.receive(make("COMMAND_LONG", {{"command", 400}, {"param1", 1}}), 0);
+    boat.receive(make("COMMAND_LONG", {{"command", 176}, {"param1", 1}, {"param2", 10}}), 0);
+    boat.step(0.1);
+    ASSERT_EQ(boat.modeName(), u"AUTO"_s);
+    EXPECT_EQ(said(boat.receive(make("MISSION_CLEAR_ALL", {}), 0.2)), QStringList{u"MISSION_ACK 1"_s}) << "ERROR: it is running";
+    EXPECT_EQ(boat.missionCount(), 2);
+    boat.receive(make("COMMAND_LONG", {{"command", 176}, {"param1", 1}, {"param2", 4}}), 0.3); // HOLD
+    boat.receive(make("COMMAND_LONG", {{"command", 400}, {"param1", 0}}), 0.3);
+    EXPECT_EQ(said(boat.receive(make("MISSION_CLEAR_ALL", {}), 0.4)), QStringList{u"MISSION_ACK 0"_s});
+    EXPECT_EQ(boat.missionCount(), 1) << "its home";
+}
+
 TEST(MavlinkAutopilot, AutoWithoutAMissionAndArmingThatFailsAreRefusedInArduRoversWords)
 {
     sim::MavlinkAutopilot::Config config;

@@ -37,6 +37,7 @@ const char *const missionText = R"X(<?xml version="1.0" encoding="UTF-8"?>
       <point lat="41.1840" lon="-8.7080"/><point lat="41.1870" lon="-8.7080"/>
       <point lat="41.1870" lon="-8.7040"/><point lat="41.1840" lon="-8.7040"/>
     </polygon>
+    <mark id="slipway" name="Slipway" role="rally" lat="41.1852" lon="-8.7064" height="2.6"/>
   </map>
   <plan id="box" vehicle="ardurover-1" start="out">
     <maneuvers>
@@ -109,8 +110,14 @@ TEST_F(MavlinkPlans, APlanIsUploadedWithItsFenceReadBackStartedAndRunToItsEnd)
     EXPECT_TRUE(transfers.contains(u"uploading box: 4 of 4"_s)) << transfers.join(u" | "_s).toStdString();
     EXPECT_TRUE(transfers.contains(u"reading box back: 4 of 4"_s)) << transfers.join(u" | "_s).toStdString();
     EXPECT_FALSE(desk.transfer(u"ardurover-1"_s).has_value());
-    EXPECT_TRUE(log().contains(u"sending box: 3 mission items, a geofence of 4 vertices"_s)) << log().toStdString();
+    EXPECT_TRUE(log().contains(u"sending box: 3 mission items, a geofence of 4 vertices, a rally point"_s)) << log().toStdString();
+    EXPECT_TRUE(transfers.contains(u"uploading the rally points of box: 1 of 1"_s)) << transfers.join(u" | "_s).toStdString();
     EXPECT_EQ(boat->autopilot().missionCount(), 4) << "home, the speed, two waypoints";
+    // The geofence and the rally point are read back and compared too (the point's 2.6 m kept as 2 m is no difference).
+    ASSERT_TRUE(logSays(u"box: the vehicle holds its geofence as sent (4 items)"_s)) << log().toStdString();
+    ASSERT_TRUE(logSays(u"box: the vehicle holds its rally points as sent (1 item)"_s)) << log().toStdString();
+    EXPECT_EQ(boat->autopilot().fenceCount(), 4);
+    EXPECT_EQ(boat->autopilot().rallyCount(), 1);
     ASSERT_EQ(desk.storedPlans(u"ardurover-1"_s).size(), 1u);
     EXPECT_EQ(desk.storedPlans(u"ardurover-1"_s).front().id, u"box"_s) << "recognised by what it holds";
     EXPECT_EQ(desk.sync(u"ardurover-1"_s, u"box"_s), plans::Sync::Same);
