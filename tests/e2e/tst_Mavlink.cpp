@@ -272,6 +272,15 @@ TEST(Mavlink, AMixedTeamRunsItsPlansAtOnceAndTheDatabaseAndWebPageShowAllThree)
             << vehicle << "\n" << log(vehicle).toStdString();
     ASSERT_TRUE(QTest::qWaitFor([&] { return log("ardurover-1").contains(u"harbour-loop completed"_s); }, 60000)) << log("ardurover-1").toStdString();
 
+    // The map (Map2D draws session.tracks): each of the three on the Douro, with a trail.
+    for (const auto &[vehicle, plan] : plans) {
+        const QVariantMap at = session.tracks()->latest(QString::fromLatin1(vehicle));
+        ASSERT_FALSE(at.isEmpty()) << vehicle << " is not on the map";
+        EXPECT_NEAR(at.value(u"lat"_s).toDouble(), 41.1405, 0.01) << vehicle;
+        EXPECT_NEAR(at.value(u"lon"_s).toDouble(), -8.6110, 0.01) << vehicle;
+        EXPECT_GT(session.tracks()->count(QString::fromLatin1(vehicle)), 5) << vehicle << " has no trail";
+    }
+
     // The database: the three systems by name, and each plan's start.
     ASSERT_TRUE(writer.flush(5000));
     auto reader = db::Reader::open(location);
