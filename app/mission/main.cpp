@@ -126,7 +126,9 @@ int validate(const QStringList &files, const VehicleCatalog &vehicles)
                              qPrintable(path), qPrintable(plan.vehicle), qPrintable(plan.id));
             Errors warnings;
             for (const PlanProblem &p : checkPlan(plan, *m, planGeometry(plan, v ? v->speeds() : SpeedModel{}), v)) {
-                const QString message = p.maneuver.isEmpty() ? p.message : u"plan '%1', %2"_s.arg(plan.id, p.message);
+                QString message = p.maneuver.isEmpty() ? p.message : u"plan '%1', %2"_s.arg(plan.id, p.message);
+                if (!p.verdict().isEmpty())
+                    message += u" (%1)"_s.arg(p.verdict());
                 (p.severity == PlanProblem::Severity::Error ? problems : warnings).append(xml::XmlError{path, p.line, 0, message});
             }
             warnAll(warnings);
@@ -197,6 +199,8 @@ int translate(const QString &path, const QString &planId, const QString &vehicle
         return fail(u"no definition of vehicle '%1' (in %2)"_s.arg(id, vehicleFolders().join(u", "_s)));
     if (const Errors problems = vehicle->check(*plan, path); !problems.isEmpty())
         return failAll(problems);
+    if (const QString past = vehicle->checkEndurance(plan->id, planGeometry(*plan, vehicle->speeds())); !past.isEmpty())
+        warnAll({xml::XmlError{path, plan->line.value, 0, past + u" (an estimate: translated all the same)"_s}});
     const auto bytes = processor::translatePlan(*m, planId, *vehicle, target);
     if (!bytes)
         return failAll(bytes.error());

@@ -177,6 +177,13 @@ struct Leg
 
 } // namespace
 
+QString PlanProblem::verdict() const
+{
+    if (severity != Severity::Error)
+        return {};
+    return kind == Kind::NoGo || kind == Kind::OutsideOperatingArea || kind == Kind::BelowBottom ? u"unsafe"_s : u"impossible"_s;
+}
+
 QList<PlanProblem> checkPlan(const Plan &plan, const Mission &mission, const PlanGeometry &geometry,
                              const VehicleDefinition *vehicle)
 {
@@ -315,7 +322,7 @@ QList<PlanProblem> checkPlan(const Plan &plan, const Mission &mission, const Pla
                 add(Severity::Error, Kind::Vehicle, m.id, u"'%1' (%2): %3"_s.arg(m.id, m.type, what));
         }
         if (const QString past = vehicle->checkEndurance(plan.id, geometry); !past.isEmpty())
-            add(Severity::Error, Kind::Endurance, {}, past);
+            add(Severity::Warning, Kind::Endurance, {}, past);
     }
 
     // Where it goes: every leg, the transits between maneuvers included,

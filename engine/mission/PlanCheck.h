@@ -29,7 +29,7 @@ struct PlanProblem
         EndlessLoop,      // maneuvers that lead only to each other (warning)
         NoGo,             // a leg crosses a no-go area
         OutsideOperatingArea,
-        Endurance,        // longer than the vehicle can go
+        Endurance,        // longer than the vehicle can go (a warning: the duration is an estimate)
         Vehicle,          // a maneuver or parameter the vehicle cannot do (VehicleDefinition::check)
         Condition,        // a transition's condition does not compile (found by plans::Supervisor)
         BelowBottom,      // planned deeper than the mission's terrain (found by the plan editor)
@@ -40,6 +40,10 @@ struct PlanProblem
     QString message;  // for people, naming the maneuver and what it crosses
     std::optional<double> lat, lon; // where to mark it (degrees)
     int line = 0;     // in the plan's file, when it was read from one
+
+    // Why an error fails the plan: "unsafe" (it takes the vehicle where it must
+    // not go) or "impossible" (it cannot be run as drawn); empty for a warning.
+    QString verdict() const;
 
     friend bool operator==(const PlanProblem &, const PlanProblem &) = default;
 };

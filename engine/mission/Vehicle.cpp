@@ -130,10 +130,6 @@ Errors VehicleDefinition::check(const Plan &plan, const QString &planFile) const
         for (const QString &what : checkManeuver(m))
             errors.append(XmlError{planFile, m.line.value, 0, u"plan '%1', maneuver '%2' (%3): %4"_s.arg(plan.id, m.id, m.type, what)});
     }
-    if (limits.endurance) {
-        if (const QString past = checkEndurance(plan.id, planGeometry(plan, speeds())); !past.isEmpty())
-            errors.append(XmlError{planFile, plan.line.value, 0, past});
-    }
     return errors;
 }
 

@@ -97,10 +97,26 @@ cat >"$work/legs.xml" <<'EOF'
 </plan></mission>
 EOF
 "$tool" validate "$work/legs.xml" 2>"$work/err"
-[ $? = 1 ] && grep -q "legs.xml:6: plan 'survey', 'b' (Goto): a leg crosses the no-go area 'wreck'" "$work/err" \
+[ $? = 1 ] && grep -q "legs.xml:6: plan 'survey', 'b' (Goto): a leg crosses the no-go area 'wreck' (unsafe)" "$work/err" \
   && grep -q "warning: .*legs.xml:7: plan 'survey', 'spare' (Goto) cannot be reached from the start 'a'" "$work/err"
 status=$?
 check "a leg through a no-go area fails validation with its line; an unreachable maneuver is a warning$(sed 's/^/\n    /' "$work/err")" $status
+
+# A duration past the vehicle's endurance is an estimate past a soft limit: a
+# warning, and the file is valid (x8-02 can fly an hour; this is 100 km at 18 m/s).
+cat >"$work/long.xml" <<'EOF'
+<mission format="1" id="m"><home lat="41" lon="-8"/><vehicle id="x8-02"/>
+<plan id="far" vehicle="x8-02" start="a">
+<maneuvers>
+<Goto id="a" lat="41" lon="-8" z="100" z_units="HEIGHT" speed="18" speed_units="METERS_PS"/>
+<Goto id="b" lat="41.9" lon="-8" z="100" z_units="HEIGHT" speed="18" speed_units="METERS_PS"/>
+</maneuvers>
+<transition from="a" to="b"/>
+</plan></mission>
+EOF
+"$tool" validate "$work/long.xml" >/dev/null 2>"$work/err"
+[ $? = 0 ] && grep -q "warning: .*long.xml.*plan 'far' lasts 93 min, past x8-02's endurance of 60 min" "$work/err"
+check "a plan past its vehicle's endurance is a warning, not an error$(sed 's/^/\n    /' "$work/err")" $?
 
 # A vehicle and a target of one's own: files only.
 mkdir -p "$work/mine"

@@ -194,6 +194,7 @@ TEST(PlanCheck, ALegThatLeavesTheOperatingAreaIsFlagged)
     ASSERT_EQ(problems.size(), 1);
     EXPECT_EQ(problems[0].kind, PlanProblem::Kind::OutsideOperatingArea);
     EXPECT_EQ(problems[0].message, u"'b' (Goto): a leg leaves the operating area 'ops'"_s);
+    EXPECT_EQ(problems[0].verdict(), u"unsafe"_s);
     EXPECT_NEAR((*problems[0].lon - home[1]) / metreLon, 100, 1.5) << "marked where it leaves";
     // A waypoint outside every operating area.
     EXPECT_EQ(kinds(check(linear({gotoAt(u"a"_s, 50, 50), gotoAt(u"b"_s, 500, 50)}), m)),
@@ -216,10 +217,13 @@ TEST(PlanCheck, WhatTheVehicleCannotDoAndHowLongItCanGo)
     auto problems = check(linear({gotoAt(u"a"_s, 0, 0), deep, loiter}), m, &v);
     ASSERT_EQ(kinds(problems), (QList{PlanProblem::Kind::Vehicle, PlanProblem::Kind::Vehicle}));
     EXPECT_EQ(problems[0].message, u"'deep' (Goto): depth 80 m is past lauv's 50 m"_s);
+    EXPECT_EQ(problems[0].verdict(), u"impossible"_s);
     EXPECT_TRUE(problems[1].message.startsWith(u"'wait' (Loiter): lauv cannot do Loiter"_s)) << problems[1].message.toStdString();
     // 2 km at 1.5 m/s: 22 minutes, past 10.
     problems = check(linear({gotoAt(u"a"_s, 0, 0), gotoAt(u"far"_s, 2000, 0)}), m, &v);
     ASSERT_EQ(kinds(problems), QList{PlanProblem::Kind::Endurance});
+    EXPECT_EQ(problems[0].severity, PlanProblem::Severity::Warning) << "the duration is an estimate: past a soft limit warns";
+    EXPECT_EQ(problems[0].verdict(), QString());
     EXPECT_EQ(problems[0].message, u"plan 'p' lasts 22 min, past lauv's endurance of 10 min"_s);
 }
 
