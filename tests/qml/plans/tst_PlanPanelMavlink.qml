@@ -81,7 +81,11 @@ TestCase {
         verify(transfers.some(t => t.indexOf("uploading the geofence of box") === 0), transfers.join(" | "))
         verify(transfers.some(t => t === "uploading box: 5 of 5 items"), transfers.join(" | "))
         verify(transfers.some(t => t.indexOf("reading box back") === 0), transfers.join(" | "))
-        verify(!findChild(panel, "transfer").visible, "no transfer once done")
+        // Then the geofence is read back too, and the transfer line goes.
+        tryVerify(() => panel.log.join("\n").indexOf("box: the vehicle holds its geofence as sent (4 items)") >= 0, 5000,
+                  panel.log.join("\n"))
+        verify(transfers.some(t => t.indexOf("reading the geofence of box back") === 0), transfers.join(" | "))
+        tryVerify(() => !findChild(panel, "transfer").visible, 2000, "no transfer once done")
     }
 
     function test_2_aRefusedArmingIsSaidInTheBoatsWords() {
