@@ -8,7 +8,8 @@ import Neptus.Testing
 // loopback UDP): Send uploads the plan's items and geofence, with the
 // transfer shown item by item, then reads them back (✓ once it holds them
 // as sent); Start (the slide) arms it and sets AUTO; a boat that refuses
-// arming says why, in its own words, in the log and on the plan's alarm.
+// arming says why, in its own words, in the log and on the plan's alarm; a
+// plan edited after it was sent is badged "differs".
 TestCase {
     id: test
     name: "PlanPanelMavlink"
@@ -86,6 +87,19 @@ TestCase {
                   panel.log.join("\n"))
         verify(transfers.some(t => t.indexOf("reading the geofence of box back") === 0), transfers.join(" | "))
         tryVerify(() => !findChild(panel, "transfer").visible, 2000, "no transfer once done")
+    }
+
+    function test_3_aPlanEditedAfterItWasSentIsBadgedAsDiffering() {
+        // The boat holds box; the mission's box is then moved (its last waypoint 20 m north).
+        compare(syncOf("box"), "same")
+        const file = Fixtures.makeTempDir() + "/boat.xml"
+        verify(Fixtures.writeFile(file, mission.replace('id="back" lat="41.1855"', 'id="back" lat="41.1857"')))
+        compare(Fixtures.session.plans.openMission(file), "")
+        panel.revision++
+        tryVerify(() => syncOf("box") === "differs", 5000, syncOf("box"))
+        const badge = findChild(findChild(panel, "plan-box"), "sync")
+        verify(badge.visible)
+        compare(badge.children[0].text, "differs ≠")
     }
 
     function test_2_aRefusedArmingIsSaidInTheBoatsWords() {
