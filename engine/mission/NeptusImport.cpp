@@ -473,28 +473,67 @@ std::optional<Feature> Importer::feature(const XmlDocument &doc, const xmlNode *
 {
     static const QHash<QString, QString> kinds{
         {u"mark"_s, u"mark"_s}, {u"transponder"_s, u"transponder"_s}, {u"path"_s, u"path"_s},
-        {u"MineDangerAreaElement"_s, u"circle"_s}, {u"parallelepiped"_s, u"box"_s},
-        {u"ellipsoid"_s, u"ellipsoid"_s}, {u"cylinder"_s, u"cylinder"_s}, {u"image"_s, u"image"_s},
-        {u"model3d"_s, u"model"_s}};
+        {u"MineDangerAreaElement"_s, u"circle"_s}, {u"image"_s, u"image"_s}, {u"model3d"_s, u"model"_s}};
+    // Neptus's 3D shapes: <geometry> with <type> (GeometryElement.java); older files wrote "Parallel Piped".
+    static const QHash<QString, QString> shapes{{u"Parallelepiped"_s, u"box"_s}, {u"Parallel Piped"_s, u"box"_s},
+                                                {u"Ellipsoid"_s, u"ellipsoid"_s}, {u"Cylinder"_s, u"cylinder"_s}};
     const QString neptusKind = elementName(node);
-    if (!kinds.contains(neptusKind)) {
-        warn(doc, node, u"map feature type not understood; left out"_s);
+    const QString shape = textContent(firstChildElement(node, "type")).trimmed();
+    const QString kind = neptusKind == u"geometry" ? shapes.value(shape) : kinds.value(neptusKind);
+    if (kind.isEmpty()) {
+        warn(doc, node, neptusKind == u"geometry" ? u"geometry type '%1' not understood; left out"_s.arg(shape)
+                                                   : u"map feature type not understood; left out"_s);
         return std::nullopt;
     }
     Feature f;
-    f.kind = kinds.value(neptusKind);
+    f.kind = kind;
     f.line.value = static_cast<int>(xmlGetLineNo(node));
     const QString id = textContent(firstChildElement(node, "id")).trimmed();
     f.id = validId(id);
     f.name = id; // what Neptus shows; its <name> is an internal tag
     Position origin;
     bool closed = false;
+    std::optional<double> zExtent; // a geometry's height, centred on its position
     QList<Eigen::Vector3d> offsets;
     for (const xmlNode *c : childElements(node)) {
         const QString name = elementName(c);
         const QString text = textContent(c).trimmed();
-        if (name == u"id" || name == u"name" || name == u"filled" || name == u"obstacle" || name == u"buoy-attached") {
-            continue; // docs/missions.md: read, no counterpart
+        if (name == u"id" || name == u"name" || name == u"filled" || name == u"obstacle" || name == u"buoy-attached"
+            || (name == u"type" && neptusKind == u"geometry") || name == u"texture") {
+            continue; // docs/missions.md: read, no counterpart (or read above)
+        } else if (name == u"attitude") {
+            // Degrees (AbstractElement.java). psi turns a shape, an image or a model; phi and theta tilt a model.
+            for (const xmlNode *a : childElements(c)) {
+                const QString angle = elementName(a);
+                const auto v = number(doc, a);
+                if (!v)
+                    continue;
+                if (angle == u"psi")
+                    f.attributes.insert(f.kind == u"image" ? u"rotation"_s : f.kind == u"model" ? u"yaw"_s : u"bearing"_s, formatNumber(*v));
+                else if ((angle == u"phi" || angle == u"theta") && f.kind == u"model")
+                    f.attributes.insert(angle == u"phi" ? u"roll"_s : u"pitch"_s, formatNumber(*v));
+                else if (*v != 0)
+                    warn(doc, a, u"only a model can be tilted here, not %1 '%2': %3 = %4° left out"_s.arg(f.kind, f.id, angle, formatNumber(*v)));
+            }
+        } else if (name == u"transparency") {
+            if (const auto v = number(doc, c))
+                f.attributes.insert(u"transparency"_s, formatNumber(std::round(std::clamp(*v, 0.0, 100.0)))); // Neptus keeps an int
+        } else if (name == u"dimensions" && neptusKind == u"geometry") {
+            // Full extents: x east, y north (before the turn by psi), z up (GeometryElement.java).
+            for (const xmlNode *d : childElements(c)) {
+                const QString axis = elementName(d);
+                const auto v = number(doc, d);
+                if (!v)
+                    continue;
+                if (axis == u"x-dim")
+                    f.attributes.insert(u"width"_s, formatNumber(std::abs(*v)));
+                else if (axis == u"y-dim")
+                    f.attributes.insert(u"length"_s, formatNumber(std::abs(*v)));
+                else if (axis == u"z-dim")
+                    zExtent = std::abs(*v);
+                else
+                    notUnderstood(doc, d);
+            }
         } else if (name == u"coordinate") {
             const auto at = coordinate(doc, c);
             if (!at)
@@ -564,6 +603,17 @@ std::optional<Feature> Importer::feature(const XmlDocument &doc, const xmlNode *
         f.position.height = origin.height;
     else if (origin.height < 0)
         f.position.depth = -origin.height;
+    if (zExtent && *zExtent > 0) {
+        // Its vertical range, in depth below the surface or height above it, as its centre is.
+        const double top = origin.height + *zExtent / 2, bottom = origin.height - *zExtent / 2;
+        const bool under = origin.height < 0;
+        f.attributes.insert(u"z-units"_s, under ? u"DEPTH"_s : u"HEIGHT"_s);
+        f.attributes.insert(u"z-min"_s, formatNumber(under ? -top : bottom));
+        f.attributes.insert(u"z-max"_s, formatNumber(under ? -bottom : top));
+    }
+    // An obstacle is where no vehicle may go.
+    if ((f.kind == u"box" || f.kind == u"ellipsoid" || f.kind == u"cylinder") && !f.attributes.contains(u"role"_s))
+        f.attributes.insert(u"role"_s, isTrue(attribute(node, "obstacle")) ? u"no-go"_s : u"area"_s);
     if ((f.kind == u"image" || f.kind == u"model") && !f.attributes.contains(u"file"_s)) {
         warn(doc, node, u"no file named; left out"_s);
         return std::nullopt;

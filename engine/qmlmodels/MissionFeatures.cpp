@@ -5,6 +5,7 @@
 #include <QDir>
 #include <QFileInfo>
 
+#include <algorithm>
 #include <limits>
 
 using namespace neptus::mission;
@@ -41,7 +42,8 @@ QVariantList missionFeatures(const Mission &mission, const QString &missionPath)
                                     {u"zUnits"_s, f.attributes.value(u"z-units"_s, u"DEPTH"_s)},
                                     {u"file"_s, file.isEmpty() ? QString() : folder.absoluteFilePath(file)},
                                     {u"scale"_s, number(u"scale"_s, 1)}, {u"rotation"_s, number(u"rotation"_s, 0)},
-                                    {u"roll"_s, number(u"roll"_s, 0)}, {u"pitch"_s, number(u"pitch"_s, 0)}, {u"yaw"_s, number(u"yaw"_s, 0)}});
+                                    {u"roll"_s, number(u"roll"_s, 0)}, {u"pitch"_s, number(u"pitch"_s, 0)}, {u"yaw"_s, number(u"yaw"_s, 0)},
+                                    {u"opacity"_s, 1 - std::clamp(number(u"transparency"_s, 0), 0.0, 100.0) / 100}});
         }
     }
     return list;

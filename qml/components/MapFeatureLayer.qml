@@ -67,6 +67,7 @@ Item {
             readonly property color colour: layer.colourOf(modelData)
             objectName: "area:" + modelData.id
             anchors.fill: parent
+            opacity: modelData.opacity // Neptus's transparency
             ShapePath {
                 strokeColor: areaShape.colour
                 strokeWidth: Math.max(1.5, Theme.mm(layer.selected === areaShape.modelData.id ? 0.6 : 0.3))
@@ -87,6 +88,7 @@ Item {
             required property var modelData
             objectName: "path:" + modelData.id
             anchors.fill: parent
+            opacity: modelData.opacity // Neptus's transparency
             ShapePath {
                 strokeColor: layer.colourOf(pathShape.modelData)
                 strokeWidth: Math.max(2, Theme.mm(layer.selected === pathShape.modelData.id ? 0.7 : 0.4))
@@ -114,7 +116,8 @@ Item {
             objectName: "image:" + modelData.id
             source: "file://" + modelData.file
             asynchronous: true
-            opacity: Theme.palette === Theme.Night ? 0.3 : 0.8 // a bright picture would blind a night watch
+            // A bright picture would blind a night watch; and as transparent as Neptus had it.
+            opacity: (Theme.palette === Theme.Night ? 0.3 : 0.8) * modelData.opacity
             transformOrigin: byCorners ? Item.TopLeft : Item.Center
             width: byCorners ? Math.hypot(northEnd.x - origin.x, northEnd.y - origin.y) : pixelsAcross
             height: byCorners ? Math.hypot(southEnd.x - origin.x, southEnd.y - origin.y) : pixelsDown

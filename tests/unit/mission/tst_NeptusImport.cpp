@@ -281,3 +281,91 @@ TEST(NeptusImport, BareMissionsAndMapsImportToo)
     ASSERT_TRUE(alone) << errorsText(alone.error()).toStdString();
     EXPECT_EQ(alone->mission.maps[0].features.size(), 1);
 }
+
+namespace {
+
+// A map of Neptus's 3D shapes as GeometryElement.java writes them (the box is the one
+// in LSTS's missions/APDL/apdl-necsave.nmisz; the cylinder and ellipsoid as Neptus writes
+// them, an obstacle under water and a tilted one).
+const QByteArray geometryMap = R"(<map><header><id>g</id></header><features>
+<geometry obstacle="false">
+  <id>necsave_area</id><name>id_tevm44</name>
+  <coordinate><latitude>41N11'4.46''</latitude><longitude>8W42'23.57''</longitude><height>0.0</height></coordinate>
+  <attitude><psi>-37.0</psi></attitude>
+  <transparency>50.0</transparency>
+  <filled>true</filled><type>Parallelepiped</type><filled>true</filled>
+  <dimensions><x-dim>200.0</x-dim><y-dim>135.0</y-dim><z-dim>0.0</z-dim></dimensions>
+  <color><r>102</r><g>0</g><b>102</b></color>
+</geometry>
+<geometry obstacle="true">
+  <id>wreck</id><name>id_x</name>
+  <coordinate><latitude>41.185</latitude><longitude>-8.705</longitude><depth>12.0</depth></coordinate>
+  <filled>true</filled><type>Cylinder</type><filled>true</filled>
+  <dimensions><x-dim>40.0</x-dim><y-dim>40.0</y-dim><z-dim>6.0</z-dim></dimensions>
+  <color><r>255</r><g>0</g><b>0</b></color>
+</geometry>
+<geometry obstacle="false">
+  <id>balloon</id><name>id_y</name>
+  <coordinate><latitude>41.186</latitude><longitude>-8.704</longitude><height>30.0</height></coordinate>
+  <attitude><phi>10.0</phi><psi>90.0</psi></attitude>
+  <type>Ellipsoid</type>
+  <dimensions><x-dim>20.0</x-dim><y-dim>10.0</y-dim><z-dim>8.0</z-dim></dimensions>
+  <color><r>0</r><g>0</g><b>255</b></color>
+</geometry>
+<image obstacle="false"><id>chart</id><name>id_z</name>
+  <coordinate><latitude>41.18</latitude><longitude>-8.70</longitude><height>0.0</height></coordinate>
+  <attitude><psi>-12.375</psi></attitude><transparency>100.0</transparency>
+  <href>../images/pista-ota.png</href><scale>1.374940678531098</scale>
+</image>
+</features></map>)";
+
+} // namespace
+
+// Neptus's <geometry> features (GeometryElement.java: <type> says which; dimensions are full
+// extents, x east and y north before the turn by psi, z up about the centre) become our box,
+// cylinder and ellipsoid: width, length, bearing, and a vertical range in depth or height as
+// their centre is; an obstacle is a no-go area; transparency is kept; a tilt only a model can
+// take is a warning naming it.
+TEST(NeptusImport, GeometryShapesBecomeBoxesCylindersAndEllipsoidsWithTheirTurnRangeAndTransparency)
+{
+    const auto imported = importNeptus(geometryMap, u"shapes.nmap"_s);
+    ASSERT_TRUE(imported) << errorsText(imported.error()).toStdString();
+    const QList<Feature> &features = imported->mission.maps[0].features;
+    ASSERT_EQ(features.size(), 4) << errorsText(imported->warnings).toStdString();
+    const Feature &box = features[0], &cylinder = features[1], &ellipsoid = features[2], &image = features[3];
+    EXPECT_EQ(box.kind, u"box"_s);
+    EXPECT_EQ(box.attributes.value(u"width"_s), u"200"_s);
+    EXPECT_EQ(box.attributes.value(u"length"_s), u"135"_s);
+    EXPECT_EQ(box.attributes.value(u"bearing"_s), u"-37"_s);
+    EXPECT_EQ(box.attributes.value(u"transparency"_s), u"50"_s);
+    EXPECT_EQ(box.attributes.value(u"role"_s), u"area"_s);
+    EXPECT_FALSE(box.attributes.contains(u"z-units"_s)) << "a flat shape bars every depth";
+    EXPECT_EQ(box.color, u"#660066"_s);
+    EXPECT_NEAR(*box.position.lat, 41 + 11 / 60.0 + 4.46 / 3600, 1e-9);
+
+    EXPECT_EQ(cylinder.kind, u"cylinder"_s);
+    EXPECT_EQ(cylinder.attributes.value(u"role"_s), u"no-go"_s) << "an obstacle";
+    EXPECT_EQ(cylinder.attributes.value(u"z-units"_s), u"DEPTH"_s);
+    EXPECT_EQ(cylinder.attributes.value(u"z-min"_s), u"9"_s);
+    EXPECT_EQ(cylinder.attributes.value(u"z-max"_s), u"15"_s);
+    EXPECT_EQ(cylinder.position.depth, 12.0);
+
+    EXPECT_EQ(ellipsoid.kind, u"ellipsoid"_s);
+    EXPECT_EQ(ellipsoid.attributes.value(u"width"_s), u"20"_s);
+    EXPECT_EQ(ellipsoid.attributes.value(u"bearing"_s), u"90"_s);
+    EXPECT_EQ(ellipsoid.attributes.value(u"z-units"_s), u"HEIGHT"_s);
+    EXPECT_EQ(ellipsoid.attributes.value(u"z-min"_s), u"26"_s);
+    EXPECT_EQ(ellipsoid.attributes.value(u"z-max"_s), u"34"_s);
+
+    EXPECT_EQ(image.attributes.value(u"rotation"_s), u"-12.375"_s) << "psi turns an image";
+    EXPECT_EQ(image.attributes.value(u"transparency"_s), u"100"_s);
+
+    const QString warnings = errorsText(imported->warnings);
+    EXPECT_EQ(imported->warnings.size(), 1) << warnings.toStdString();
+    EXPECT_TRUE(warnings.contains(u"shapes.nmap:21: Element 'phi': only a model can be tilted here, not ellipsoid 'balloon': phi = 10° left out"_s))
+        << warnings.toStdString();
+    // What it became is a valid file of ours.
+    const auto back = readMission(writeMission(imported->mission), u"back.xml"_s);
+    ASSERT_TRUE(back) << errorsText(back.error()).toStdString();
+    EXPECT_EQ(back->maps[0].features, features);
+}
