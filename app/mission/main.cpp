@@ -169,8 +169,11 @@ int import(const QString &path, const QString &output)
             maneuvers += p.maneuvers.size();
         for (const Map &m : imported->mission.maps)
             features += m.features.size();
-        summary = u"mission %1: %2 plans, %3 maneuvers, %4 map features, %5 warnings"_s.arg(imported->mission.id)
-                      .arg(imported->mission.plans.size()).arg(maneuvers).arg(features).arg(imported->warnings.size());
+        summary = u"mission %1: %2 plans, %3 maneuvers, %4 map features, %5 files carried beside it, %6 warnings"_s
+                      .arg(imported->mission.id).arg(imported->mission.plans.size()).arg(maneuvers).arg(features)
+                      .arg(imported->files.size()).arg(imported->warnings.size());
+        if (auto carried = writeCarriedFiles(*imported, output); !carried)
+            return fail(carried.error());
     }
     if (auto saved = saveFileKeepingPrevious(output, bytes); !saved)
         return fail(saved.error());

@@ -1,6 +1,7 @@
 #include "mission/NeptusImport.h"
 
 #include "core/Gzip.h"
+#include "core/SafeFile.h"
 #include "geo/Geodesy.h"
 
 #include <QDir>
@@ -48,6 +49,13 @@ namespace {
 // Reads one file the mission refers to (a map), relative to the mission.
 using FileSource = std::function<std::expected<QByteArray, QString>(const QString &relative)>;
 
+// A file a mission names: relative, inside the mission's folder.
+bool isInside(const QString &href)
+{
+    const QString clean = QDir::cleanPath(href);
+    return !href.isEmpty() && !QDir::isAbsolutePath(clean) && !clean.startsWith(u".."_s);
+}
+
 QString colorText(int r, int g, int b)
 {
     return QStringLiteral("#%1%2%3").arg(r & 255, 2, 16, QChar(u'0')).arg(g & 255, 2, 16, QChar(u'0')).arg(b & 255, 2, 16, QChar(u'0'));
@@ -63,9 +71,13 @@ class Importer
 public:
     Errors warnings;
     Errors errors;
+    // The mission's files (maps, and the images and models they name) and those carried out.
+    FileSource files;
+    QMap<QString, QByteArray> carried;
 
     std::optional<Mission> mission(const XmlDocument &doc, const FileSource &files);
-    std::optional<Map> map(const XmlDocument &doc);
+    // `href`: where the map is, from the mission's folder (its images' paths are from there).
+    std::optional<Map> map(const XmlDocument &doc, const QString &href = {});
     std::optional<VehicleDefinition> vehicle(const XmlDocument &doc);
 
 private:
@@ -98,8 +110,23 @@ private:
     std::optional<Maneuver> maneuver(const XmlDocument &doc, const xmlNode *node, const QString &id,
                                      bool positionOptional = false);
     std::optional<Plan> plan(const XmlDocument &doc, const xmlNode *node);
-    std::optional<Feature> feature(const XmlDocument &doc, const xmlNode *node);
+    std::optional<Feature> feature(const XmlDocument &doc, const xmlNode *node, const QString &mapHref);
+    // An image's or model's file, carried out beside the mission: the path it has there, or empty (said why).
+    QString carry(const XmlDocument &doc, const xmlNode *node, const QString &mapHref, const QString &href);
 };
+
+QString Importer::carry(const XmlDocument &doc, const xmlNode *node, const QString &mapHref, const QString &href)
+{
+    // Neptus writes it relative to the map (../images/x.png from maps/a.nmap).
+    const QString path = QDir::cleanPath(QFileInfo(mapHref).path() + u'/' + href);
+    const auto bytes = isInside(path) && files ? files(path) : std::unexpected(u"outside the mission's folder"_s);
+    if (!bytes) {
+        warn(doc, node, u"file '%1' not carried out: %2"_s.arg(href, bytes.error()));
+        return {};
+    }
+    carried.insert(path, *bytes);
+    return path;
+}
 
 std::optional<double> Importer::number(const XmlDocument &doc, const xmlNode *node)
 {
@@ -469,7 +496,7 @@ std::optional<Plan> Importer::plan(const XmlDocument &doc, const xmlNode *node)
     return p;
 }
 
-std::optional<Feature> Importer::feature(const XmlDocument &doc, const xmlNode *node)
+std::optional<Feature> Importer::feature(const XmlDocument &doc, const xmlNode *node, const QString &mapHref)
 {
     static const QHash<QString, QString> kinds{
         {u"mark"_s, u"mark"_s}, {u"transponder"_s, u"transponder"_s}, {u"path"_s, u"path"_s},
@@ -566,7 +593,8 @@ std::optional<Feature> Importer::feature(const XmlDocument &doc, const xmlNode *
             if (const auto v = number(doc, c))
                 f.attributes.insert(f.kind == u"image" ? u"rotation"_s : f.kind == u"model" ? u"yaw"_s : u"bearing"_s, formatNumber(*v));
         } else if (name == u"href" && (f.kind == u"image" || f.kind == u"model")) {
-            f.attributes.insert(u"file"_s, text);
+            const QString path = carry(doc, c, mapHref, text);
+            f.attributes.insert(u"file"_s, path.isEmpty() ? text : path);
         } else if (name == u"imageScale" || name == u"scale") {
             if (const auto v = number(doc, c))
                 f.attributes.insert(u"scale"_s, formatNumber(*v));
@@ -794,7 +822,7 @@ std::optional<VehicleDefinition> Importer::vehicle(const XmlDocument &doc)
     return v;
 }
 
-std::optional<Map> Importer::map(const XmlDocument &doc)
+std::optional<Map> Importer::map(const XmlDocument &doc, const QString &href)
 {
     const xmlNode *root = doc.root();
     if (!expectRoot(doc, "map", u"a Neptus map (.nmap)"_s))
@@ -813,7 +841,7 @@ std::optional<Map> Importer::map(const XmlDocument &doc)
             continue;
         }
         for (const xmlNode *f : childElements(c)) {
-            if (auto feature = this->feature(doc, f))
+            if (auto feature = this->feature(doc, f, href))
                 map.features.append(*feature);
             else if (!errors.isEmpty())
                 return std::nullopt;
@@ -859,7 +887,7 @@ std::optional<Mission> Importer::mission(const XmlDocument &doc, const FileSourc
                             errors.append(mapDoc.error());
                             return std::nullopt;
                         }
-                        auto read = map(*mapDoc);
+                        auto read = map(*mapDoc, href);
                         if (!read)
                             return std::nullopt;
                         m.maps.append(*read);
@@ -945,13 +973,6 @@ std::expected<QHash<QString, QByteArray>, QString> unzip(QByteArrayView data)
     return files;
 }
 
-// A file a mission names: relative, inside the mission's folder.
-bool isInside(const QString &href)
-{
-    const QString clean = QDir::cleanPath(href);
-    return !href.isEmpty() && !QDir::isAbsolutePath(clean) && !clean.startsWith(u".."_s);
-}
-
 std::expected<NeptusImport, Errors> finish(Importer &importer, std::optional<Mission> mission, const QString &fileName)
 {
     if (!mission || !importer.errors.isEmpty()) {
@@ -964,7 +985,7 @@ std::expected<NeptusImport, Errors> finish(Importer &importer, std::optional<Mis
     const auto check = readMission(written, fileName + u" (imported)"_s);
     if (!check)
         return std::unexpected(check.error());
-    return NeptusImport{*check, importer.warnings};
+    return NeptusImport{*check, importer.warnings, importer.carried};
 }
 
 std::expected<NeptusImport, Errors> importDocument(QByteArrayView data, const QString &fileName, const FileSource &files)
@@ -973,6 +994,7 @@ std::expected<NeptusImport, Errors> importDocument(QByteArrayView data, const QS
     if (!doc)
         return std::unexpected(Errors{doc.error()});
     Importer importer;
+    importer.files = files;
     if (fileName.endsWith(u".nmap"_s, Qt::CaseInsensitive)) {
         auto map = importer.map(*doc);
         std::optional<Mission> mission;
@@ -1050,7 +1072,7 @@ std::expected<NeptusImport, Errors> importNeptus(const QString &path)
     const auto data = readFile(path, maxArchiveBytes);
     if (!data)
         return std::unexpected(data.error());
-    if (path.endsWith(u".nmisz"_s, Qt::CaseInsensitive) || path.endsWith(u".nmap"_s, Qt::CaseInsensitive))
+    if (path.endsWith(u".nmisz"_s, Qt::CaseInsensitive))
         return importNeptus(*data, path);
     const QDir folder = QFileInfo(path).dir();
     return importDocument(*data, path, [&](const QString &href) -> std::expected<QByteArray, QString> {
@@ -1058,6 +1080,21 @@ std::expected<NeptusImport, Errors> importNeptus(const QString &path)
             return std::unexpected(u"outside the mission's folder"_s);
         return readFileMaybeGzip(folder.filePath(href), XmlDocument::maxBytes);
     });
+}
+
+std::expected<void, QString> writeCarriedFiles(const NeptusImport &imported, const QString &missionPath)
+{
+    const QDir folder = QFileInfo(missionPath).absoluteDir();
+    for (auto it = imported.files.cbegin(); it != imported.files.cend(); ++it) {
+        if (!isInside(it.key()))
+            return std::unexpected(u"%1: outside the mission's folder"_s.arg(it.key()));
+        const QString path = folder.filePath(it.key());
+        if (!QDir().mkpath(QFileInfo(path).path()))
+            return std::unexpected(u"%1: cannot make its folder"_s.arg(path));
+        if (auto saved = saveFileKeepingPrevious(path, it.value()); !saved)
+            return std::unexpected(saved.error());
+    }
+    return {};
 }
 
 } // namespace neptus::mission

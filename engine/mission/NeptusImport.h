@@ -24,7 +24,14 @@ struct NeptusImport
 {
     Mission mission;
     Errors warnings;
+    // The images and models its maps name, carried out of the .nmisz (or the
+    // folder of a .nmis): by path from the mission, as its features name them.
+    QMap<QString, QByteArray> files;
 };
+
+// Writes an import's carried files beside the mission written at `missionPath`
+// (a file there already is kept as its previous version); an error names the file.
+std::expected<void, QString> writeCarriedFiles(const NeptusImport &imported, const QString &missionPath);
 
 // By extension: .nmisz, .nmis or .nmap (.nvcl: importNeptusVehicle).
 std::expected<NeptusImport, Errors> importNeptus(const QString &path);

@@ -361,11 +361,44 @@ TEST(NeptusImport, GeometryShapesBecomeBoxesCylindersAndEllipsoidsWithTheirTurnR
     EXPECT_EQ(image.attributes.value(u"transparency"_s), u"100"_s);
 
     const QString warnings = errorsText(imported->warnings);
-    EXPECT_EQ(imported->warnings.size(), 1) << warnings.toStdString();
+    EXPECT_EQ(imported->warnings.size(), 2) << warnings.toStdString();
+    EXPECT_TRUE(warnings.contains(u"file '../images/pista-ota.png' not carried out"_s)) << "a map read from bytes has no folder";
     EXPECT_TRUE(warnings.contains(u"shapes.nmap:21: Element 'phi': only a model can be tilted here, not ellipsoid 'balloon': phi = 10° left out"_s))
         << warnings.toStdString();
     // What it became is a valid file of ours.
     const auto back = readMission(writeMission(imported->mission), u"back.xml"_s);
     ASSERT_TRUE(back) << errorsText(back.error()).toStdString();
     EXPECT_EQ(back->maps[0].features, features);
+}
+
+// The images a .nmisz's maps name (../images/x.png from maps/a.nmap, as MissionType.asZipFile
+// writes them) come out of the archive beside the imported mission, under the same path, so
+// that it validates and opens on another machine; one the archive lacks is a warning naming it.
+TEST(NeptusImport, AnImageInsideTheArchiveIsCarriedOutBesideTheMission)
+{
+    const QByteArray png = QByteArray::fromHex("89504e470d0a1a0a") + QByteArray(100, 'x');
+    QByteArray map = geometryMap;
+    map.replace("</features>", R"(<image obstacle="false"><id>missing</id><name>m</name>
+  <coordinate><latitude>41.18</latitude><longitude>-8.70</longitude><height>0.0</height></coordinate>
+  <href>../images/gone.png</href><scale>1.0</scale></image></features>)");
+    const QByteArray mission = QByteArray(tinyMission).replace("../../../etc/passwd", "maps/a.nmap");
+    const auto imported = importNeptus(zip({{"mission.nmis", mission}, {"maps/a.nmap", map}, {"images/pista-ota.png", png}}),
+                                       u"with-image.nmisz"_s);
+    ASSERT_TRUE(imported) << errorsText(imported.error()).toStdString();
+    ASSERT_EQ(imported->files.size(), 1);
+    EXPECT_EQ(imported->files.value(u"images/pista-ota.png"_s), png);
+    const QList<Feature> &features = imported->mission.maps[0].features;
+    const auto chart = std::find_if(features.begin(), features.end(), [](const Feature &f) { return f.id == u"chart"_s; });
+    ASSERT_NE(chart, features.end());
+    EXPECT_EQ(chart->attributes.value(u"file"_s), u"images/pista-ota.png"_s);
+    EXPECT_TRUE(errorsText(imported->warnings).contains(u"file '../images/gone.png' not carried out: not in the archive"_s))
+        << errorsText(imported->warnings).toStdString();
+
+    QTemporaryDir dir;
+    const QString out = dir.filePath(u"sub/imported.xml"_s);
+    ASSERT_TRUE(QDir().mkpath(dir.filePath(u"sub"_s)));
+    ASSERT_TRUE(writeCarriedFiles(*imported, out).has_value());
+    QFile carried(dir.filePath(u"sub/images/pista-ota.png"_s));
+    ASSERT_TRUE(carried.open(QIODevice::ReadOnly));
+    EXPECT_EQ(carried.readAll(), png);
 }
