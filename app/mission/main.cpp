@@ -3,6 +3,7 @@
 // format with the stylesheets its definition names, lists the targets a
 // vehicle offers, and prints what each plan implies. docs/missions.md.
 #include "core/SafeFile.h"
+#include "mission/NeptusExport.h"
 #include "mission/NeptusImport.h"
 #include "mission/PlanCheck.h"
 #include "mission/PlanGeometry.h"
@@ -174,10 +175,61 @@ int import(const QString &path, const QString &output)
                       .arg(imported->files.size()).arg(imported->warnings.size());
         if (auto carried = writeCarriedFiles(*imported, output); !carried)
             return fail(carried.error());
+        // The report, per kind: what came in, and how many things were left out (each a warning above).
+        QMap<QString, int> kinds;
+        for (const Plan &p : imported->mission.plans)
+            for (const Maneuver &m : p.maneuvers)
+                ++kinds[u"maneuver "_s + m.type];
+        for (const Map &m : imported->mission.maps)
+            for (const Feature &f : m.features)
+                ++kinds[u"feature "_s + f.kind];
+        int transitions = 0, items = 0;
+        for (const Plan &p : imported->mission.plans)
+            transitions += int(p.transitions.size());
+        for (const Checklist &c : imported->mission.checklists)
+            for (const Checklist::Group &g : c.groups)
+                items += int(g.items.size());
+        kinds[u"transition"_s] = transitions;
+        kinds[u"checklist item"_s] = items;
+        int leftOut = 0;
+        for (const auto &w : imported->warnings)
+            leftOut += w.message.contains(u"left out"_s) || w.message.contains(u"not carried"_s) || w.message.contains(u"not read"_s);
+        std::printf("imported:\n");
+        for (auto it = kinds.cbegin(); it != kinds.cend(); ++it)
+            std::printf("  %-28s %d\n", qPrintable(it.key()), it.value());
+        std::printf("  %-28s %lld\n", "file carried beside it", static_cast<long long>(imported->files.size()));
+        std::printf("left out, each said above: %d\n", leftOut);
     }
     if (auto saved = saveFileKeepingPrevious(output, bytes); !saved)
         return fail(saved.error());
     std::printf("%s → %s: %s\n", qPrintable(path), qPrintable(output), qPrintable(summary));
+    return 0;
+}
+
+int exportMission(const QString &path, const QString &target, const QString &output)
+{
+    if (target != u"nmisz")
+        return fail(u"export: --to nmisz is the one format (LSTS Neptus's); not '%1'"_s.arg(target));
+    if (output.isEmpty())
+        return fail(u"export: say where to write with -o FILE.nmisz"_s);
+    const auto m = loadMission(path);
+    if (!m)
+        return failAll(m.error());
+    const auto exported = exportNeptus(*m, path);
+    if (!exported)
+        return failAll(exported.error());
+    warnAll(exported->warnings);
+    if (auto saved = saveFileKeepingPrevious(output, exported->nmisz); !saved)
+        return fail(saved.error());
+    qsizetype maneuvers = 0, features = 0;
+    for (const Plan &p : m->plans)
+        maneuvers += p.maneuvers.size();
+    for (const Map &map : m->maps)
+        features += map.features.size();
+    std::printf("%s → %s: mission %s: %lld plans, %lld maneuvers, %lld map features, %lld checklists, %lld warnings\n",
+                qPrintable(path), qPrintable(output), qPrintable(m->id), static_cast<long long>(m->plans.size()),
+                static_cast<long long>(maneuvers), static_cast<long long>(features), static_cast<long long>(m->checklists.size()),
+                static_cast<long long>(exported->warnings.size()));
     return 0;
 }
 
@@ -287,6 +339,7 @@ int main(int argc, char **argv)
   validate FILE...                     check missions and vehicle definitions (schema, each plan against its vehicle,
                                        the images and 3D models its maps name)
   import FILE -o OUT                   LSTS Neptus .nmisz/.nmis/.nmap → our mission, .nvcl → our vehicle definition
+  export MISSION --to nmisz -o OUT     our mission → an LSTS Neptus .nmisz (with its maps, checklists, images, models)
   translate MISSION --plan ID --to TARGET -o FILE [--vehicle NAME]
                                        a plan in a vehicle's own format
   input MISSION --plan ID -o FILE [--vehicle NAME] [--to TARGET]
@@ -300,7 +353,7 @@ int main(int argc, char **argv)
     const QCommandLineOption to(u"to"_s, u"Target format (see targets)."_s, u"target"_s);
     const QCommandLineOption vehiclesDir(u"vehicles"_s, u"Also read vehicle definitions from this folder (repeatable; after the shipped and the user's)."_s, u"folder"_s);
     parser.addOptions({output, plan, vehicle, to, vehiclesDir});
-    parser.addPositionalArgument(u"command"_s, u"validate, import, translate, targets or stats"_s);
+    parser.addPositionalArgument(u"command"_s, u"validate, import, export, translate, targets or stats"_s);
     parser.process(app);
 
     const QStringList args = parser.positionalArguments();
@@ -312,6 +365,8 @@ int main(int argc, char **argv)
     const QStringList rest = args.mid(1);
     if (command == u"import" && rest.size() == 1) // needs no vehicle definitions
         return import(rest.first(), parser.value(output));
+    if (command == u"export" && rest.size() == 1)
+        return exportMission(rest.first(), parser.value(to), parser.value(output));
     const VehicleCatalog vehicles = loadVehicles(vehicleFolders() + parser.values(vehiclesDir));
     for (const auto &e : vehicles.errors)
         std::fprintf(stderr, "warning: vehicle definition not loaded: %s\n", qPrintable(e.toString()));

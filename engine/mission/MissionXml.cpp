@@ -309,20 +309,7 @@ Mission Reader::mission(const xmlNode *root)
 
 // --- Writing ---
 
-void writeElement(QXmlStreamWriter &out, const XmlElement &element)
-{
-    out.writeStartElement(element.name);
-    for (const auto &[name, value] : element.attributes)
-        out.writeAttribute(name, value);
-    if (element.children.empty()) {
-        if (!element.text.isEmpty())
-            out.writeCharacters(element.text);
-    } else {
-        for (const XmlElement &child : element.children)
-            writeElement(out, child);
-    }
-    out.writeEndElement();
-}
+using xml::writeElement;
 
 void writeMessages(QXmlStreamWriter &out, const QString &name, const QList<XmlElement> &messages)
 {

@@ -110,6 +110,8 @@ private:
     std::optional<Maneuver> maneuver(const XmlDocument &doc, const xmlNode *node, const QString &id,
                                      bool positionOptional = false);
     std::optional<Plan> plan(const XmlDocument &doc, const xmlNode *node);
+    void actions(const XmlDocument &doc, const xmlNode *node, QList<XmlElement> &start, QList<XmlElement> &end);
+    std::optional<Checklist> checklist(const XmlDocument &doc, const QString &id);
     std::optional<Feature> feature(const XmlDocument &doc, const xmlNode *node, const QString &mapHref);
     // An image's or model's file, carried out beside the mission: the path it has there, or empty (said why).
     QString carry(const XmlDocument &doc, const xmlNode *node, const QString &mapHref, const QString &href);
@@ -358,7 +360,18 @@ std::optional<Maneuver> Importer::maneuver(const XmlDocument &doc, const xmlNode
             for (const xmlNode *t : childElements(c)) {
                 const QString tn = elementName(t);
                 const QString tt = textContent(t).trimmed();
-                if (tn == u"radius" || tn == u"length" || tn == u"bearing") {
+                if (tn == u"nedOffsets" && m.type == u"FollowTrajectory") {
+                    // FollowTrajectory.java: offsets with the time each is reached.
+                    PathPoint pp;
+                    pp.x = attribute(t, "northOffset").toDouble();
+                    pp.y = attribute(t, "eastOffset").toDouble();
+                    pp.z = attribute(t, "depthOffset").toDouble();
+                    bool timed = false;
+                    const double time = attribute(t, "timeOffset").toDouble(&timed);
+                    if (timed)
+                        pp.t = time;
+                    m.points.append(pp);
+                } else if (tn == u"radius" || tn == u"length" || tn == u"bearing") {
                     if (const auto v = number(doc, t); v && (m.type == u"Loiter" || tn == u"radius"))
                         m.set(tn, *v);
                 } else if (tn == u"type" && m.type == u"Loiter") {
@@ -378,7 +391,7 @@ std::optional<Maneuver> Importer::maneuver(const XmlDocument &doc, const xmlNode
         } else if (name == u"crossAngle") {
             if (const auto v = number(doc, c))
                 m.set(u"cross_angle"_s, *v);
-        } else if (name == u"alternationPercent" || name == u"alternation") {
+        } else if (name == u"alternationPercentage" || name == u"alternationPercent" || name == u"alternation") {
             if (const auto v = number(doc, c))
                 m.set(u"alternation"_s, *v);
         } else if (name == u"curveOffset") {
@@ -428,6 +441,20 @@ std::optional<Maneuver> Importer::maneuver(const XmlDocument &doc, const xmlNode
     return m;
 }
 
+// <actions><start-actions><messages>IMC messages as XML…</messages></start-actions><end-actions>…
+void Importer::actions(const XmlDocument &doc, const xmlNode *node, QList<XmlElement> &start, QList<XmlElement> &end)
+{
+    for (const xmlNode *list : childElements(node)) {
+        const QString kind = elementName(list);
+        if (kind != u"start-actions" && kind != u"end-actions") {
+            notUnderstood(doc, list);
+            continue;
+        }
+        for (const xmlNode *message : childElements(firstChildElement(list, "messages")))
+            (kind == u"start-actions" ? start : end).append(readElement(message));
+    }
+}
+
 std::optional<Plan> Importer::plan(const XmlDocument &doc, const xmlNode *node)
 {
     Plan p;
@@ -436,10 +463,13 @@ std::optional<Plan> Importer::plan(const XmlDocument &doc, const xmlNode *node)
     p.line.value = static_cast<int>(xmlGetLineNo(node));
     const xmlNode *graph = nullptr;
     for (const xmlNode *c : childElements(node)) {
-        if (elementName(c) == u"graph")
+        if (elementName(c) == u"graph") {
             graph = c;
-        else
+        } else if (elementName(c) == u"actions") {
+            actions(doc, c, p.startActions, p.endActions); // the plan's own (PlanType.java)
+        } else {
             notUnderstood(doc, c);
+        }
     }
     QSet<QString> kept;
     QString firstNode;
@@ -451,17 +481,8 @@ std::optional<Plan> Importer::plan(const XmlDocument &doc, const xmlNode *node)
                 return std::nullopt;
             continue;
         }
-        if (const xmlNode *actions = firstChildElement(n, "actions")) {
-            for (const xmlNode *list : childElements(actions)) {
-                const QString kind = elementName(list);
-                if (kind != u"start-actions" && kind != u"end-actions") {
-                    notUnderstood(doc, list);
-                    continue;
-                }
-                for (const xmlNode *message : childElements(firstChildElement(list, "messages")))
-                    (kind == u"start-actions" ? m->startActions : m->endActions).append(readElement(message));
-            }
-        }
+        if (const xmlNode *list = firstChildElement(n, "actions"))
+            actions(doc, list, m->startActions, m->endActions);
         if (firstNode.isEmpty())
             firstNode = m->id;
         if (isTrue(attribute(n, "start")))
@@ -519,7 +540,7 @@ std::optional<Feature> Importer::feature(const XmlDocument &doc, const xmlNode *
     f.id = validId(id);
     f.name = id; // what Neptus shows; its <name> is an internal tag
     Position origin;
-    bool closed = false;
+    bool closed = false, shapeSaid = false;
     std::optional<double> zExtent; // a geometry's height, centred on its position
     QList<Eigen::Vector3d> offsets;
     for (const xmlNode *c : childElements(node)) {
@@ -579,6 +600,7 @@ std::optional<Feature> Importer::feature(const XmlDocument &doc, const xmlNode *
                                            textContent(firstChildElement(c, "d")).toDouble()));
         } else if (name == u"shape") {
             closed = isTrue(text);
+            shapeSaid = true;
         } else if (name == u"file" && f.kind == u"transponder") {
             f.attributes.insert(u"config"_s, textContent(firstChildElement(c, "href")).trimmed());
         } else if (name == u"radius" && f.kind == u"circle") {
@@ -605,6 +627,8 @@ std::optional<Feature> Importer::feature(const XmlDocument &doc, const xmlNode *
     if (f.kind == u"circle")
         f.attributes.insert(u"role"_s, u"no-go"_s);
     if (f.kind == u"path") {
+        if (!shapeSaid)
+            closed = true; // PathElement.java: a path is a closed shape unless it says <shape>false</shape>
         const geo::Geodetic o{geo::radians(origin.lat), geo::radians(origin.lon), 0};
         for (const Eigen::Vector3d &n : offsets) {
             const geo::Geodetic at = geo::fromNed(Eigen::Vector3d(n.x(), n.y(), 0), o);
@@ -617,8 +641,11 @@ std::optional<Feature> Importer::feature(const XmlDocument &doc, const xmlNode *
         }
         if (closed && f.points.size() > 1 && f.points.first() == f.points.last())
             f.points.removeLast();
-        if (closed && f.points.size() >= 3)
+        if (closed && f.points.size() >= 3) {
             f.kind = u"polygon"_s;
+            if (isTrue(attribute(node, "obstacle")))
+                f.attributes.insert(u"role"_s, u"no-go"_s); // an obstacle is where no vehicle may go
+        }
         if (f.points.size() < 2) {
             warn(doc, node, u"a path of fewer than two points; left out"_s);
             return std::nullopt;
@@ -850,6 +877,55 @@ std::optional<Map> Importer::map(const XmlDocument &doc, const QString &href)
     return map;
 }
 
+// A .nchk (ChecklistType.java): items, flat or in groups, each with a note and
+// sub-items; a variableTestRange makes it an item checked while the variable is in range.
+std::optional<Checklist> Importer::checklist(const XmlDocument &doc, const QString &id)
+{
+    if (!expectRoot(doc, "checklist", u"a Neptus checklist (.nchk)"_s))
+        return std::nullopt;
+    Checklist c;
+    c.name = attribute(doc.root(), "name");
+    c.id = validId(id.isEmpty() ? c.name : id);
+    const auto item = [&](const xmlNode *node) {
+        ChecklistItem i;
+        i.text = attribute(node, "name");
+        i.checked = isTrue(attribute(node, "checked"));
+        i.note = textContent(firstChildElement(node, "note")).trimmed();
+        for (const xmlNode *sub : childElements(firstChildElement(node, "subItems"))) {
+            if (elementName(sub) != u"variableTestRange" || !i.variable.isEmpty()) {
+                warn(doc, sub, u"only one variable range per item is kept; left out"_s);
+                continue;
+            }
+            i.variable = textContent(firstChildElement(sub, "variableName")).trimmed();
+            const xmlNode *interval = firstChildElement(sub, "interval");
+            bool ok = false;
+            if (const double v = attribute(interval, "start").toDouble(&ok); ok && std::isfinite(v))
+                i.min = v;
+            if (const double v = attribute(interval, "end").toDouble(&ok); ok && std::isfinite(v))
+                i.max = v;
+        }
+        return i;
+    };
+    Checklist::Group loose;
+    for (const xmlNode *n : childElements(doc.root())) {
+        const QString name = elementName(n);
+        if (name == u"item") {
+            loose.items.append(item(n));
+        } else if (name == u"group") {
+            Checklist::Group g;
+            g.name = attribute(n, "name");
+            for (const xmlNode *i : childElements(n, "item"))
+                g.items.append(item(i));
+            c.groups.append(g);
+        } else if (name != u"description" && name != u"runInfo") {
+            notUnderstood(doc, n);
+        }
+    }
+    if (!loose.items.isEmpty())
+        c.groups.prepend(loose);
+    return c;
+}
+
 std::optional<Mission> Importer::mission(const XmlDocument &doc, const FileSource &files)
 {
     const xmlNode *root = doc.root();
@@ -893,8 +969,21 @@ std::optional<Mission> Importer::mission(const XmlDocument &doc, const FileSourc
                         m.maps.append(*read);
                     }
                 } else if (dn == u"checklists") {
-                    for (const xmlNode *c : childElements(d))
-                        warn(doc, c, u"Neptus checklists (.nchk) are not imported; left out"_s);
+                    for (const xmlNode *ref : childElements(d, "checklist")) {
+                        const QString href = textContent(firstChildElement(ref, "href")).trimmed();
+                        const auto bytes = files(href);
+                        if (!bytes) {
+                            warn(doc, ref, u"checklist '%1' not read: %2"_s.arg(href, bytes.error()));
+                            continue;
+                        }
+                        auto checklistDoc = XmlDocument::parse(*bytes, QFileInfo(doc.fileName()).dir().filePath(href));
+                        if (!checklistDoc) {
+                            errors.append(checklistDoc.error());
+                            return std::nullopt;
+                        }
+                        if (auto read = checklist(*checklistDoc, textContent(firstChildElement(ref, "id")).trimmed()))
+                            m.checklists.append(*read);
+                    }
                 } else {
                     notUnderstood(doc, d);
                 }

@@ -2,6 +2,7 @@
 
 #include "core/SafeFile.h"
 #include "mission/MissionXml.h"
+#include "mission/NeptusExport.h"
 #include "mission/Patterns.h"
 #include "qmlmodels/MissionFeatures.h"
 #include "plans/Supervisor.h"
@@ -1216,6 +1217,26 @@ QStringList PlanEditorModel::knownVehicles() const
         ids << v.id;
     std::sort(ids.begin(), ids.end());
     return ids;
+}
+
+QVariantMap PlanEditorModel::exportNeptus(const QString &path)
+{
+    const auto exported = neptus::mission::exportNeptus(m_mission, m_path);
+    QString message;
+    if (exported) {
+        if (auto saved = neptus::saveFileKeepingPrevious(path, exported->nmisz); !saved)
+            return {{u"ok"_s, false}, {u"message"_s, saved.error()}};
+        QStringList lost;
+        for (const auto &w : exported->warnings)
+            lost << w.toString();
+        message = lost.isEmpty() ? u"Written for Neptus: %1"_s.arg(QFileInfo(path).fileName())
+                                 : u"Written for Neptus: %1; %2 thing(s) Neptus has no words for: %3"_s
+                                       .arg(QFileInfo(path).fileName()).arg(lost.size()).arg(lost.mid(0, 3).join(u"; "_s));
+        return {{u"ok"_s, true}, {u"message"_s, message}};
+    }
+    for (const auto &e : exported.error())
+        message += (message.isEmpty() ? QString() : u"; "_s) + e.toString();
+    return {{u"ok"_s, false}, {u"message"_s, message}};
 }
 
 bool PlanEditorModel::save()

@@ -174,6 +174,10 @@ public:
     Q_INVOKABLE bool save();
     // Writes the mission to another file and edits that one from now on.
     Q_INVOKABLE bool saveAs(const QString &path);
+    // Writes the mission as LSTS Neptus writes its own (.nmisz), for operators
+    // who keep Neptus; the mission edited stays this one. {ok, message}: the
+    // message says what Neptus had no words for, or why nothing was written.
+    Q_INVOKABLE QVariantMap exportNeptus(const QString &path);
     // The vehicles with a definition (what a new mission's plan may be for).
     Q_INVOKABLE QStringList knownVehicles() const;
 

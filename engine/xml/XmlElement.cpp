@@ -1,5 +1,7 @@
 #include "xml/XmlElement.h"
 
+#include <QXmlStreamWriter>
+
 #include "xml/XmlDocument.h"
 
 namespace neptus::xml {
@@ -33,6 +35,21 @@ Element readElement(const xmlNode *node)
     if (element.children.empty())
         element.text = textContent(node).trimmed();
     return element;
+}
+
+void writeElement(QXmlStreamWriter &out, const Element &element)
+{
+    out.writeStartElement(element.name);
+    for (const auto &[name, value] : element.attributes)
+        out.writeAttribute(name, value);
+    if (element.children.empty()) {
+        if (!element.text.isEmpty())
+            out.writeCharacters(element.text);
+    } else {
+        for (const Element &child : element.children)
+            writeElement(out, child);
+    }
+    out.writeEndElement();
 }
 
 } // namespace neptus::xml

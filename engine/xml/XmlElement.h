@@ -8,6 +8,8 @@
 #include <utility>
 #include <vector>
 
+class QXmlStreamWriter;
+
 namespace neptus::xml {
 
 // A small XML element tree kept as a value: name, attributes in document
@@ -28,5 +30,7 @@ struct Element
 
 // The element and everything under it; text trimmed.
 Element readElement(const xmlNode *node);
+// And written back, as read.
+void writeElement(QXmlStreamWriter &out, const Element &element);
 
 } // namespace neptus::xml

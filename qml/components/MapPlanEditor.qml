@@ -364,7 +364,7 @@ Item {
                         id: saveAsName
                         objectName: "saveAsName"
                         width: column.width - saveAsButton.width - Theme.spacing / 2
-                        placeholderText: qsTr("A new name, beside the mission")
+                        placeholderText: qsTr("A new name, beside the mission (name.nmisz: for LSTS Neptus)")
                     }
                     TouchButton {
                         id: saveAsButton
@@ -374,6 +374,13 @@ Item {
                         onClicked: {
                             const folder = planModel.missionPath.substring(0, planModel.missionPath.lastIndexOf("/"))
                             const name = saveAsName.text.trim().replace(/[\/\\]/g, "-")
+                            if (name.toLowerCase().endsWith(".nmisz")) { // Neptus's format; this mission stays the one edited
+                                const result = planModel.exportNeptus(folder + "/" + name)
+                                editor.fileMessage = result.message
+                                if (result.ok)
+                                    editor.fileTask = ""
+                                return
+                            }
                             const path = folder + "/" + (name.endsWith(".xml") ? name : name + ".xml")
                             if (planModel.saveAs(path)) {
                                 editor.fileMessage = editor.desk ? editor.desk.openMission(path) : ""

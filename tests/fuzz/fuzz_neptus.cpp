@@ -1,6 +1,8 @@
 // libFuzzer target: importing LSTS Neptus files. The first byte picks the
 // format (.nmisz zip through libarchive, .nmis, .nmap, .nvcl), the rest is
-// the file. Whatever imports must be a valid file of ours that reads back the same.
+// the file. Whatever imports must be a valid file of ours that reads back the same,
+// and export to a .nmisz that imports again with as many plans, maneuvers and maps.
+#include "mission/NeptusExport.h"
 #include "mission/NeptusImport.h"
 
 #include <cstdio>
@@ -35,6 +37,24 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     if (!again || !(*again == imported->mission)) {
         std::fprintf(stderr, "fuzz_neptus: the imported mission does not read back%s%s\n%s\n", again ? "" : ": ",
                      again ? "" : qPrintable(again.error().first().toString()), written.constData());
+        std::abort();
+    }
+    const auto exported = exportNeptus(imported->mission, {});
+    if (!exported) {
+        std::fprintf(stderr, "fuzz_neptus: an imported mission does not export: %s\n", qPrintable(exported.error().first().toString()));
+        std::abort();
+    }
+    const auto back = importNeptus(exported->nmisz, QStringLiteral("exported.nmisz"));
+    qsizetype maneuvers = 0, backManeuvers = 0;
+    for (const Plan &p : imported->mission.plans)
+        maneuvers += p.maneuvers.size();
+    if (back)
+        for (const Plan &p : back->mission.plans)
+            backManeuvers += p.maneuvers.size();
+    if (!back || back->mission.plans.size() != imported->mission.plans.size() || backManeuvers != maneuvers
+        || back->mission.maps.size() != imported->mission.maps.size()) {
+        std::fprintf(stderr, "fuzz_neptus: the exported mission does not import back the same%s%s\n", back ? "" : ": ",
+                     back ? "" : qPrintable(back.error().first().toString()));
         std::abort();
     }
     return 0;

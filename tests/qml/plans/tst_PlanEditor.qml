@@ -495,6 +495,17 @@ TestCase {
         compare(Fixtures.session.plans.missionPath, model().missionPath)
         verify(!model().modified)
         verify(Fixtures.readFile(model().missionPath).indexOf('id="' + id + '"') > 0)
+        // A name ending .nmisz writes it for LSTS Neptus beside it; the mission edited stays this one.
+        const edited = model().missionPath
+        mouseClick(reveal(findChild(map2d, "fileSaveAs")))
+        saveAsField.forceActiveFocus()
+        saveAsField.text = "for-neptus.nmisz"
+        mouseClick(findChild(map2d, "saveAsButton"))
+        const neptusFile = edited.substring(0, edited.lastIndexOf("/")) + "/for-neptus.nmisz"
+        tryVerify(() => Fixtures.fileExists(neptusFile), 2000, findChild(map2d, "fileMessage").text)
+        verify(findChild(map2d, "fileMessage").text.indexOf("Written for Neptus: for-neptus.nmisz") === 0,
+               findChild(map2d, "fileMessage").text)
+        compare(model().missionPath, edited)
         // Back to the first by its recent button.
         mouseClick(reveal(findChild(map2d, "fileOpen")))
         mouseClick(reveal(findChild(map2d, "recent:editor.xml")))

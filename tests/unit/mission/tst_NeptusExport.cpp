@@ -1,0 +1,275 @@
+// Missions written in LSTS Neptus's format (.nmisz): every fixture mission
+// Neptus wrote, imported, exported and imported again, keeps every count and
+// coordinate; the exported files, validated with Neptus's own XSDs, raise no
+// kind of complaint the originals do not already raise (Neptus's schemas lag
+// its writer, so the originals are the yardstick); what has no Neptus words
+// is said, not dropped.
+#include "mission/MissionXml.h"
+#include "mission/NeptusExport.h"
+#include "mission/NeptusImport.h"
+
+#include "Fixtures.h"
+#include "Missions.h"
+#include "QtPrinters.h"
+
+#include <QFileInfo>
+#include <QHash>
+#include <QRegularExpression>
+#include <QSet>
+#include <QTemporaryDir>
+
+#include <archive.h>
+#include <archive_entry.h>
+#include <libxml/xmlschemas.h>
+
+#include <gtest/gtest.h>
+
+using namespace neptus::mission;
+using namespace neptus::test;
+using namespace Qt::StringLiterals;
+
+namespace {
+
+const char *const fixtureMissions[] = {"phase3.nmisz", "missao-cavado.nmisz", "Split.nmisz", "Horta.nmisz"};
+
+bool haveFixtures()
+{
+    return QFileInfo::exists(fixturePath("neptus/missions"));
+}
+
+QHash<QString, QByteArray> unzipAll(const QByteArray &data)
+{
+    QHash<QString, QByteArray> files;
+    archive *a = archive_read_new();
+    archive_read_support_format_zip(a);
+    EXPECT_EQ(archive_read_open_memory(a, data.constData(), size_t(data.size())), ARCHIVE_OK);
+    archive_entry *entry = nullptr;
+    while (archive_read_next_header(a, &entry) == ARCHIVE_OK) {
+        QByteArray bytes;
+        char buffer[65536];
+        for (la_ssize_t n; (n = archive_read_data(a, buffer, sizeof buffer)) > 0;)
+            bytes.append(buffer, n);
+        files.insert(QString::fromUtf8(archive_entry_pathname(entry)), bytes);
+    }
+    archive_read_free(a);
+    return files;
+}
+
+QByteArray readAll(const QString &path)
+{
+    QFile f(path);
+    EXPECT_TRUE(f.open(QIODevice::ReadOnly)) << path.toStdString();
+    return f.readAll();
+}
+
+// Neptus's XSD (with the schemas it includes, beside it) and libxml2's validator:
+// each complaint without its line and the value it quotes, the kind of complaint it is.
+QSet<QString> complaints(const QString &schemaFile, const QByteArray &document)
+{
+    QSet<QString> kinds;
+    xmlSchemaParserCtxtPtr parser = xmlSchemaNewParserCtxt(fixturePath(("neptus/schemas/" + schemaFile.toStdString()).c_str()).toUtf8().constData());
+    xmlSchemaPtr schema = xmlSchemaParse(parser);
+    xmlSchemaFreeParserCtxt(parser);
+    EXPECT_NE(schema, nullptr) << schemaFile.toStdString();
+    if (!schema)
+        return kinds;
+    xmlDocPtr doc = xmlReadMemory(document.constData(), int(document.size()), "doc.xml", nullptr, XML_PARSE_NONET);
+    EXPECT_NE(doc, nullptr);
+    xmlSchemaValidCtxtPtr validator = xmlSchemaNewValidCtxt(schema);
+    xmlSchemaSetValidStructuredErrors(
+        validator,
+        [](void *into, xmlErrorPtr error) {
+            static const QRegularExpression value(uR"(The value '[^']*(''[^']*)*')"_s);
+            static_cast<QSet<QString> *>(into)->insert(QString::fromUtf8(error->message).trimmed().replace(value, u"The value '…'"_s));
+        },
+        &kinds);
+    if (doc)
+        xmlSchemaValidateDoc(validator, doc);
+    xmlSchemaFreeValidCtxt(validator);
+    xmlFreeDoc(doc);
+    xmlSchemaFree(schema);
+    return kinds;
+}
+
+double metresBetween(double lat1, double lon1, double lat2, double lon2)
+{
+    const double north = (lat1 - lat2) * 111'320.0, east = (lon1 - lon2) * 111'320.0 * std::cos(lat1 * M_PI / 180);
+    return std::hypot(north, east);
+}
+
+void expectSamePoints(const Feature::Point &a, const Feature::Point &b, const std::string &where)
+{
+    ASSERT_EQ(a.lat.has_value(), b.lat.has_value()) << where;
+    if (a.lat) {
+        EXPECT_LT(metresBetween(*a.lat, *a.lon, *b.lat, *b.lon), 0.001) << where;
+    }
+    EXPECT_EQ(a.height, b.height) << where;
+    EXPECT_EQ(a.depth, b.depth) << where;
+    EXPECT_EQ(a.north, b.north) << where;
+    EXPECT_EQ(a.east, b.east) << where;
+}
+
+// Two missions are the same but for coordinates within 1 mm.
+void expectSameMission(const Mission &a, const Mission &b, const std::string &name)
+{
+    EXPECT_EQ(a.id, b.id) << name;
+    EXPECT_EQ(a.name, b.name) << name;
+    EXPECT_EQ(a.description, b.description) << name;
+    EXPECT_LT(metresBetween(a.home.lat, a.home.lon, b.home.lat, b.home.lon), 0.001) << name;
+    EXPECT_EQ(a.home.height, b.home.height) << name;
+    EXPECT_EQ(a.vehicles, b.vehicles) << name;
+    // Plans: the same in every way but the maneuvers' positions, each within 1 mm.
+    ASSERT_EQ(a.plans.size(), b.plans.size()) << name;
+    for (qsizetype p = 0; p < a.plans.size(); ++p) {
+        Plan x = a.plans[p], y = b.plans[p];
+        ASSERT_EQ(x.maneuvers.size(), y.maneuvers.size()) << name;
+        for (qsizetype i = 0; i < x.maneuvers.size(); ++i) {
+            Maneuver &mx = x.maneuvers[i], &my = y.maneuvers[i];
+            EXPECT_LT(metresBetween(mx.number(u"lat"_s), mx.number(u"lon"_s), my.number(u"lat"_s), my.number(u"lon"_s)), 0.001)
+                << name << " " << mx.id.toStdString();
+            for (Maneuver *m : {&mx, &my}) {
+                m->parameters.remove(u"lat"_s);
+                m->parameters.remove(u"lon"_s);
+            }
+        }
+        EXPECT_EQ(x, y) << name << " plan " << x.id.toStdString() << ": maneuvers, parameters, transitions and actions";
+    }
+    EXPECT_EQ(a.checklists, b.checklists) << name;
+    ASSERT_EQ(a.maps.size(), b.maps.size()) << name;
+    for (qsizetype m = 0; m < a.maps.size(); ++m) {
+        ASSERT_EQ(a.maps[m].features.size(), b.maps[m].features.size()) << name;
+        for (qsizetype i = 0; i < a.maps[m].features.size(); ++i) {
+            const Feature &x = a.maps[m].features[i], &y = b.maps[m].features[i];
+            const std::string where = name + " feature " + x.id.toStdString();
+            EXPECT_EQ(x.kind, y.kind) << where;
+            EXPECT_EQ(x.id, y.id) << where;
+            EXPECT_EQ(x.name, y.name) << where;
+            EXPECT_EQ(x.color, y.color) << where;
+            EXPECT_EQ(x.attributes, y.attributes) << where;
+            expectSamePoints(x.position, y.position, where);
+            ASSERT_EQ(x.points.size(), y.points.size()) << where;
+            for (qsizetype p = 0; p < x.points.size(); ++p)
+                expectSamePoints(x.points[p], y.points[p], where + " point " + std::to_string(p));
+        }
+    }
+}
+
+} // namespace
+
+TEST(NeptusExport, EveryFixtureMissionRoundTripsKeepingEveryCountAndCoordinate)
+{
+    if (!haveFixtures())
+        GTEST_SKIP() << "../shared/fixtures/neptus is absent (a user's clone); CI and developer machines have it";
+    for (const char *file : fixtureMissions) {
+        const auto first = importNeptus(fixturePath((std::string("neptus/missions/") + file).c_str()));
+        ASSERT_TRUE(first) << file << ": " << errorsText(first.error()).toStdString();
+        const auto exported = exportNeptus(first->mission, {});
+        ASSERT_TRUE(exported) << file << ": " << errorsText(exported.error()).toStdString();
+        EXPECT_TRUE(exported->warnings.isEmpty()) << file << ": a Neptus mission has words for all of itself:\n"
+                                                  << errorsText(exported->warnings).toStdString();
+        const auto again = importNeptus(exported->nmisz, u"exported-"_s + QString::fromLatin1(file));
+        ASSERT_TRUE(again) << file << ": " << errorsText(again.error()).toStdString();
+        EXPECT_TRUE(again->warnings.isEmpty()) << file << ":\n" << errorsText(again->warnings).toStdString();
+        expectSameMission(first->mission, again->mission, file);
+        // As Neptus lays a .nmisz out: mission.nmis, maps/, no folder entries.
+        const QHash<QString, QByteArray> entries = unzipAll(exported->nmisz);
+        EXPECT_TRUE(entries.contains(u"mission.nmis"_s)) << file;
+        for (const Map &map : first->mission.maps)
+            EXPECT_TRUE(entries.contains(u"maps/%1.nmap"_s.arg(map.id))) << file;
+    }
+}
+
+// The yardstick is the original: every mission Neptus wrote fails its own XSDs
+// (it writes <z> in points, CompassCalibration, the obstacle attribute, …). The
+// exported files may raise those complaints, never another kind.
+TEST(NeptusExport, ExportedFilesRaiseNoKindOfSchemaComplaintTheOriginalsDoNot)
+{
+    if (!haveFixtures())
+        GTEST_SKIP() << "../shared/fixtures/neptus is absent (a user's clone); CI and developer machines have it";
+    for (const char *file : fixtureMissions) {
+        const QByteArray original = readAll(fixturePath((std::string("neptus/missions/") + file).c_str()));
+        const auto imported = importNeptus(original, QString::fromLatin1(file));
+        ASSERT_TRUE(imported) << file;
+        const auto exported = exportNeptus(imported->mission, {});
+        ASSERT_TRUE(exported) << file;
+        const QHash<QString, QByteArray> before = unzipAll(original), after = unzipAll(exported->nmisz);
+        QSet<QString> theirs, ours;
+        for (auto it = before.cbegin(); it != before.cend(); ++it)
+            theirs += complaints(it.key().endsWith(u".nmap"_s) ? u"neptus-map.xsd"_s : u"neptus-mission.xsd"_s, it.value());
+        for (auto it = after.cbegin(); it != after.cend(); ++it)
+            ours += complaints(it.key().endsWith(u".nmap"_s) ? u"neptus-map.xsd"_s : u"neptus-mission.xsd"_s, it.value());
+        EXPECT_FALSE(theirs.isEmpty()) << file << ": Neptus's own file follows its XSDs after all?";
+        const QSet<QString> extra = ours - theirs;
+        EXPECT_TRUE(extra.isEmpty()) << file << ": complaints the original does not raise:\n  "
+                                     << QStringList(extra.begin(), extra.end()).join(u"\n  "_s).toStdString();
+        std::cout << file << ": " << theirs.size() << " kinds of complaint in the original, " << ours.size() << " in the export\n";
+    }
+}
+
+// A mission of ours with every maneuver kind, every feature kind and a checklist:
+// what Neptus has words for goes and comes back (images and models carried in
+// the archive under images/ and models/, as Neptus lays them out); what it has
+// none for is a warning naming the element, never dropped in silence.
+TEST(NeptusExport, OurOwnMissionGoesToNeptusSayingWhatItHasNoWordsFor)
+{
+    QTemporaryDir dir;
+    const QString path = dir.filePath(u"everything.xml"_s);
+    for (const auto &[name, bytes] : {std::pair{u"everything.xml"_s, QByteArray(neptus::test::everything)},
+                                      std::pair{u"photo.jpg"_s, QByteArray("\xff\xd8\xff photo")},
+                                      std::pair{u"ship.obj"_s, QByteArray("v 0 0 0\n")}}) {
+        QFile f(dir.filePath(name));
+        ASSERT_TRUE(f.open(QIODevice::WriteOnly) && f.write(bytes) == bytes.size());
+    }
+    const auto mission = loadMission(path);
+    ASSERT_TRUE(mission) << errorsText(mission.error()).toStdString();
+    const auto exported = exportNeptus(*mission, path);
+    ASSERT_TRUE(exported) << errorsText(exported.error()).toStdString();
+    const QString warnings = errorsText(exported->warnings);
+    for (const QString &said : {u"maneuver 'sched' (ScheduledGoto): arrival_time has no place in Neptus's ScheduledGoto"_s,
+                                u"polygon 'ops': role 'operating-area' has no Neptus counterpart"_s,
+                                u"mark 'buoy': layer 'marks' has no place"_s,
+                                u"image 'chart': an image placed by its corners has no Neptus counterpart"_s})
+        EXPECT_TRUE(warnings.contains(said)) << said.toStdString() << "\nin:\n" << warnings.toStdString();
+    const QHash<QString, QByteArray> entries = unzipAll(exported->nmisz);
+    EXPECT_EQ(entries.value(u"images/photo.jpg"_s), QByteArray("\xff\xd8\xff photo"));
+    EXPECT_EQ(entries.value(u"models/ship.obj"_s), QByteArray("v 0 0 0\n"));
+    EXPECT_TRUE(entries.contains(u"checklists/before-launch.nchk"_s));
+
+    const auto back = importNeptus(exported->nmisz, u"everything.nmisz"_s);
+    ASSERT_TRUE(back) << errorsText(back.error()).toStdString();
+    EXPECT_TRUE(back->warnings.isEmpty()) << errorsText(back->warnings).toStdString();
+    EXPECT_EQ(back->files.value(u"images/photo.jpg"_s), QByteArray("\xff\xd8\xff photo"));
+    EXPECT_EQ(back->mission.checklists, mission->checklists);
+    const Plan &before = mission->plans[0], &after = back->mission.plans[0];
+    ASSERT_EQ(after.maneuvers.size(), before.maneuvers.size());
+    for (qsizetype i = 0; i < before.maneuvers.size(); ++i) {
+        Maneuver a = before.maneuvers[i], b = after.maneuvers[i];
+        EXPECT_EQ(a.type, b.type);
+        EXPECT_LT(metresBetween(a.number(u"lat"_s), a.number(u"lon"_s), b.number(u"lat"_s), b.number(u"lon"_s)), 0.001) << a.id.toStdString();
+        for (Maneuver *m : {&a, &b}) {
+            m->parameters.remove(u"lat"_s);
+            m->parameters.remove(u"lon"_s);
+        }
+        if (a.type == u"ScheduledGoto")
+            a.parameters.remove(u"arrival_time"_s); // said above
+        // An absent parameter is the field's zero (METERS_PS, z 0, NONE); flags in any order.
+        const auto text = [](const QMap<QString, QString> &parameters) {
+            QStringList pairs;
+            for (auto it = parameters.cbegin(); it != parameters.cend(); ++it) {
+                if ((it.key() == u"speed_units" && it.value() == u"METERS_PS") || (it.key().endsWith(u"z") && it.value() == u"0")
+                    || (it.key().endsWith(u"z_units") && it.value() == u"NONE"))
+                    continue;
+                QStringList flags = it.value().split(u'|');
+                flags.sort();
+                pairs << it.key() + u'=' + (it.key() == u"flags" ? flags.join(u'|') : it.value());
+            }
+            return pairs.join(u' ').toStdString();
+        };
+        EXPECT_EQ(text(a.parameters), text(b.parameters)) << a.id.toStdString();
+        EXPECT_EQ(a.points, b.points) << a.id.toStdString();
+    }
+    EXPECT_EQ(after.transitions, before.transitions);
+    EXPECT_EQ(after.start, before.start);
+    // Every feature but the image placed by its corners.
+    EXPECT_EQ(back->mission.maps[0].features.size(), mission->maps[0].features.size() - 1);
+}
