@@ -58,6 +58,8 @@ struct Maneuver
     QList<PathPoint> points;
     QList<XmlElement> startActions;
     QList<XmlElement> endActions;
+    // An "Unsupported" maneuver's element as another console's file had it (kept, written back on export).
+    QList<XmlElement> verbatim;
     SourceLine line;
 
     bool has(const QString &name) const { return parameters.contains(name); }

@@ -180,6 +180,8 @@ Maneuver Reader::maneuver(const xmlNode *node)
     }
     m.startActions = messages(node, "start-actions");
     m.endActions = messages(node, "end-actions");
+    for (const xmlNode *kept : childElements(firstChildElement(node, "neptus")))
+        m.verbatim.append(xml::readElement(kept));
     return m;
 }
 
@@ -356,6 +358,7 @@ void writeManeuver(QXmlStreamWriter &out, const Maneuver &m)
         out.writeAttribute(u"z"_s, formatNumber(p.z));
         writeOptional(out, u"t"_s, p.t);
     }
+    writeMessages(out, u"neptus"_s, m.verbatim);
     writeMessages(out, u"start-actions"_s, m.startActions);
     writeMessages(out, u"end-actions"_s, m.endActions);
     out.writeEndElement();

@@ -358,6 +358,15 @@ void Exporter::maneuver(QXmlStreamWriter &out, const Plan &plan, const Maneuver 
         out.writeEndElement();
     };
 
+    if (m.type == u"Unsupported") {
+        // Kept from a Neptus file as it was: written back as it was.
+        if (m.verbatim.isEmpty())
+            warn(u"plan '%1', maneuver '%2' (%3)"_s.arg(plan.id, m.id, m.text(u"kind"_s)),
+                 u"no Neptus element was kept for it; an empty node written"_s);
+        for (const XmlElement &kept : m.verbatim)
+            xml::writeElement(out, kept);
+        return;
+    }
     out.writeStartElement(u"maneuver"_s);
     text(out, u"minTime"_s, u"0"_s);
     if (has(u"timeout"_s))
@@ -461,6 +470,19 @@ void Exporter::maneuver(QXmlStreamWriter &out, const Plan &plan, const Maneuver 
         }
     }
     out.writeEndElement(); // the maneuver's element
+    // IMC's custom tuple list, as Neptus keeps it (Maneuver.java): key=value;…
+    used.insert(u"custom"_s);
+    if (const QString custom = m.text(u"custom"_s); !custom.isEmpty()) {
+        out.writeStartElement(u"custom-settings"_s);
+        for (const QString &pair : custom.split(u';', Qt::SkipEmptyParts)) {
+            out.writeStartElement(u"setting"_s);
+            out.writeAttribute(u"name"_s, pair.section(u'=', 0, 0));
+            out.writeAttribute(u"type-hint"_s, u"String"_s);
+            out.writeCharacters(pair.section(u'=', 1));
+            out.writeEndElement();
+        }
+        out.writeEndElement();
+    }
     out.writeEndElement(); // <maneuver>
     QStringList left;
     for (auto it = m.parameters.cbegin(); it != m.parameters.cend(); ++it)

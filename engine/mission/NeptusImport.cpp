@@ -297,12 +297,17 @@ std::optional<Maneuver> Importer::maneuver(const XmlDocument &doc, const xmlNode
 {
     const xmlNode *body = nullptr;
     std::optional<double> maxTime;
+    QStringList custom; // custom-settings (Maneuver.java): IMC's "custom" tuple list
     for (const xmlNode *c : childElements(node)) {
         const QString name = elementName(c);
-        if (name == u"maxTime")
+        if (name == u"maxTime") {
             maxTime = number(doc, c);
-        else if (name != u"minTime")
+        } else if (name == u"custom-settings") {
+            for (const xmlNode *setting : childElements(c, "setting"))
+                custom << attribute(setting, "name").trimmed() + u'=' + textContent(setting).trimmed();
+        } else if (name != u"minTime") {
             body = c;
+        }
     }
     if (!body) {
         errors.append(doc.errorAt(node, u"Element 'maneuver': holds no maneuver"_s));
@@ -320,8 +325,31 @@ std::optional<Maneuver> Importer::maneuver(const XmlDocument &doc, const xmlNode
     else if (m.type == u"ExpandingSquarePattern")
         m.type = u"ExpandingSquare"_s;
     if (!known.contains(m.type)) {
-        warn(doc, body, u"maneuver type '%1' has no counterpart here; maneuver '%2' left out"_s.arg(m.type, id));
-        return std::nullopt;
+        if (positionOptional) { // a vehicle's feasible maneuver: nothing to keep it for
+            warn(doc, body, u"maneuver type '%1' has no counterpart here; maneuver '%2' left out"_s.arg(m.type, id));
+            return std::nullopt;
+        }
+        // Kept as it was, and its plan with it: shown, refused at Send, written back on export.
+        Maneuver kept;
+        kept.id = m.id;
+        kept.line = m.line;
+        kept.type = u"Unsupported"_s;
+        kept.parameters.insert(u"kind"_s, m.type);
+        kept.parameters.insert(u"reason"_s, m.type == u"Unconstrained"
+                                                ? u"hand control (Neptus sends IMC Teleoperation), which no plan here runs"_s
+                                                : u"a Neptus %1, which no vehicle here executes"_s.arg(m.type));
+        for (const char *where : {"finalPoint", "basePoint", "initialPoint"}) {
+            if (const xmlNode *p = firstChildElement(body, where)) {
+                Maneuver at;
+                if (point(doc, p, at, false))
+                    kept.parameters.insert(at.parameters);
+                break;
+            }
+        }
+        kept.verbatim.append(readElement(node));
+        warn(doc, body, u"maneuver '%1' (%2) kept as it was, but no vehicle here executes it: its plan is kept and "
+                        "cannot be sent"_s.arg(id, m.type));
+        return kept;
     }
     const bool elevator = m.type == u"Elevator";
     QStringList flags;
@@ -436,6 +464,10 @@ std::optional<Maneuver> Importer::maneuver(const XmlDocument &doc, const xmlNode
     }
     if (!flags.isEmpty())
         m.parameters.insert(u"flags"_s, flags.join(u'|'));
+    if (!custom.isEmpty() && m.type == u"ScheduledGoto")
+        warn(doc, node, u"IMC's ScheduledGoto has no custom settings; %1 left out"_s.arg(custom.join(u", "_s)));
+    else if (!custom.isEmpty())
+        m.parameters.insert(u"custom"_s, custom.join(u';'));
     if (maxTime && timedTypes().contains(m.type) && *maxTime > 0)
         m.set(u"timeout"_s, std::min(*maxTime, 65535.0));
     return m;

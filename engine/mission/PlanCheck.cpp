@@ -315,6 +315,12 @@ QList<PlanProblem> checkPlan(const Plan &plan, const Mission &mission, const Pla
         }
     }
 
+    // Kept from another console's mission, run by no vehicle here.
+    for (const Maneuver &m : plan.maneuvers)
+        if (m.type == u"Unsupported")
+            add(Severity::Error, Kind::Vehicle, m.id, u"'%1' (%2): %3"_s.arg(m.id, m.text(u"kind"_s),
+                                                                         m.text(u"reason"_s, u"no vehicle here executes it"_s)));
+
     // The vehicle: maneuvers and parameters, and how long it can go.
     if (vehicle) {
         for (const Maneuver &m : plan.maneuvers) {

@@ -122,6 +122,8 @@ ManeuverGeometry maneuverGeometry(const Maneuver &m, const Waypoint *previous, c
     ManeuverGeometry g;
     g.id = m.id;
     g.type = m.type;
+    if (m.type == u"Unsupported" && !m.has(u"lat"_s))
+        return g; // no place and no duration known: it stays where the vehicle is, for as long as it takes
     g.speed = speedOf(m, speeds);
     const bool elevator = m.type == u"Elevator";
     const double z = m.number(elevator ? u"end_z"_s : u"z"_s);
@@ -216,7 +218,8 @@ PlanGeometry planGeometry(const Plan &plan, const SpeedModel &speeds)
     for (const Maneuver *m : plan.executionOrder()) {
         result.maneuvers.append(maneuverGeometry(*m, previous, speeds));
         const ManeuverGeometry &g = result.maneuvers.last();
-        previous = &g.points.last();
+        if (!g.points.isEmpty())
+            previous = &g.points.last();
         result.length += g.length + g.transit;
         if (result.duration && g.duration)
             *result.duration += *g.duration;

@@ -7,6 +7,8 @@
 #include "mission/MissionXml.h"
 #include "mission/NeptusExport.h"
 #include "mission/NeptusImport.h"
+#include "mission/PlanCheck.h"
+#include "mission/PlanGeometry.h"
 
 #include "Fixtures.h"
 #include "Missions.h"
@@ -272,4 +274,83 @@ TEST(NeptusExport, OurOwnMissionGoesToNeptusSayingWhatItHasNoWordsFor)
     EXPECT_EQ(after.start, before.start);
     // Every feature but the image placed by its corners.
     EXPECT_EQ(back->mission.maps[0].features.size(), mission->maps[0].features.size() - 1);
+}
+
+// Maneuvers no vehicle here executes (Neptus's CrossHatchPattern, with its custom settings,
+// as LSTS's REP15/UAV/Phase2.nmisz has it; Unconstrained, hand control) keep their plan: it
+// is imported whole, each such maneuver kept as it was, the plan refused at Send saying
+// why, and the export writes them back as they were. A known maneuver's custom settings
+// become IMC's "custom" tuple list, and go back as custom settings.
+TEST(NeptusExport, ManeuversNoVehicleHereExecutesKeepTheirPlanAndGoBackAsTheyWere)
+{
+    const QByteArray mission = R"(<mission-def><header><id>uav</id><name>UAV</name></header><definitions>
+<home-reference><origin><latitude>38N19'50.955''</latitude><longitude>28W27'46.535''</longitude><depth>0</depth></origin></home-reference>
+</definitions><body><plan id="survey" vehicle="x8-02"><graph>
+<node start="true"><id>go</id><maneuver><minTime>0</minTime><maxTime>300</maxTime><Goto kind="automatic">
+  <finalPoint type="pointType"><point><coordinate><latitude>38.33</latitude><longitude>-28.46</longitude><height>0.0</height></coordinate>
+  <z>125.0</z><zunits>HEIGHT</zunits></point><radiusTolerance>0</radiusTolerance></finalPoint><speed unit="m/s">17.0</speed></Goto>
+  <custom-settings><setting name="Formation" type-hint="String">line</setting></custom-settings></maneuver></node>
+<node><id>cross</id><maneuver>
+  <minTime>0</minTime><maxTime>10000</maxTime>
+  <CrossHatchPattern kind="automatic">
+    <basePoint type="pointType"><point><id>id_j67kt</id><name>id_j67kt</name>
+      <coordinate><latitude>38N19'50.955''</latitude><longitude>28W27'46.535''</longitude><height>0.0</height></coordinate>
+      <z>125.0</z><zunits>HEIGHT</zunits></point><radiusTolerance>0.0</radiusTolerance></basePoint>
+    <width>800.0</width><hstep>150.0</hstep><bearing>180.0</bearing><curveOffset>75.0</curveOffset>
+    <speed unit="m/s">17.0</speed>
+  </CrossHatchPattern>
+  <custom-settings>
+    <setting name="Pattern" type-hint="String">CrossHatchPattern</setting>
+    <setting name="width" type-hint="String">800.0</setting>
+  </custom-settings>
+</maneuver></node>
+<node><id>external_control</id><maneuver><minTime>0</minTime><maxTime>10000</maxTime><Unconstrained kind="manual" /></maneuver></node>
+<edge><id>a</id><source>go</source><target>cross</target><guard>ManeuverIsDone</guard></edge>
+<edge><id>b</id><source>cross</source><target>external_control</target><guard>ManeuverIsDone</guard></edge>
+</graph></plan></body></mission-def>)";
+    const auto imported = importNeptus(mission, u"Phase2.nmis"_s);
+    ASSERT_TRUE(imported) << errorsText(imported.error()).toStdString();
+    ASSERT_EQ(imported->mission.plans.size(), 1);
+    const Plan &plan = imported->mission.plans[0];
+    ASSERT_EQ(plan.maneuvers.size(), 3) << "the plan is whole";
+    EXPECT_EQ(plan.transitions.size(), 2);
+    EXPECT_EQ(plan.maneuvers[0].text(u"custom"_s), u"Formation=line"_s);
+    const Maneuver &cross = plan.maneuvers[1], &hand = plan.maneuvers[2];
+    EXPECT_EQ(cross.type, u"Unsupported"_s);
+    EXPECT_EQ(cross.text(u"kind"_s), u"CrossHatchPattern"_s);
+    EXPECT_NEAR(cross.number(u"lat"_s), 38 + 19 / 60.0 + 50.955 / 3600, 1e-9);
+    EXPECT_EQ(cross.text(u"z_units"_s), u"HEIGHT"_s);
+    ASSERT_EQ(cross.verbatim.size(), 1);
+    EXPECT_EQ(cross.verbatim[0].name, u"maneuver"_s);
+    EXPECT_TRUE(cross.verbatim[0].child(u"custom-settings"_s)) << "kept whole";
+    EXPECT_EQ(hand.text(u"kind"_s), u"Unconstrained"_s);
+    EXPECT_FALSE(hand.has(u"lat"_s));
+    const QString warnings = errorsText(imported->warnings);
+    EXPECT_TRUE(warnings.contains(u"maneuver 'cross' (CrossHatchPattern) kept as it was"_s)) << warnings.toStdString();
+
+    // Shown, with a geometry that does not invent a place, and refused at Send saying why.
+    const PlanGeometry geometry = planGeometry(plan);
+    EXPECT_FALSE(geometry.duration.has_value()) << "how long hand control lasts is not known";
+    const QList<PlanProblem> problems = checkPlan(plan, imported->mission, geometry, nullptr);
+    QStringList errors;
+    for (const PlanProblem &p : problems)
+        if (p.severity == PlanProblem::Severity::Error)
+            errors << p.message + u" ("_s + p.verdict() + u')';
+    EXPECT_TRUE(errors.contains(u"'cross' (CrossHatchPattern): a Neptus CrossHatchPattern, which no vehicle here executes (impossible)"_s))
+        << errors.join(u"\n"_s).toStdString();
+    EXPECT_EQ(errors.size(), 2) << errors.join(u"\n"_s).toStdString();
+
+    // Back to Neptus as they were.
+    const auto exported = exportNeptus(imported->mission, {});
+    ASSERT_TRUE(exported) << errorsText(exported.error()).toStdString();
+    EXPECT_TRUE(exported->warnings.isEmpty()) << errorsText(exported->warnings).toStdString();
+    const QByteArray nmis = unzipAll(exported->nmisz).value(u"mission.nmis"_s);
+    EXPECT_TRUE(nmis.contains("<CrossHatchPattern kind=\"automatic\">")) << nmis.constData();
+    EXPECT_TRUE(nmis.contains("<setting name=\"Formation\" type-hint=\"String\">line</setting>")) << nmis.constData();
+    const auto again = importNeptus(exported->nmisz, u"again.nmisz"_s);
+    ASSERT_TRUE(again) << errorsText(again.error()).toStdString();
+    ASSERT_EQ(again->mission.plans[0].maneuvers.size(), 3);
+    EXPECT_EQ(again->mission.plans[0].maneuvers[1].verbatim, cross.verbatim);
+    EXPECT_EQ(again->mission.plans[0].maneuvers[2].verbatim, hand.verbatim);
+    EXPECT_EQ(again->mission.plans[0].maneuvers[0].text(u"custom"_s), u"Formation=line"_s);
 }
