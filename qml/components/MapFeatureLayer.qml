@@ -28,7 +28,7 @@ Item {
             return Theme.levelColor(4)
         if (f.role === "survey-area")
             return Theme.levelColor(3)
-        return f.color !== "" ? f.color : f.role === "operating-area" ? Theme.textDim : Theme.accent
+        return f.color !== "" ? Theme.userColor(f.color) : f.role === "operating-area" ? Theme.textDim : Theme.accent
     }
     // The middle of a feature: its position, else the mean of its points.
     function middleOf(f: var): var {

@@ -171,7 +171,7 @@ Rectangle {
                     lighting: PrincipledMaterial.NoLighting
                     baseColor: outline.modelData.role === "no-go" ? Theme.levelColor(4)
                                : outline.modelData.role === "survey-area" ? Theme.levelColor(3)
-                               : outline.modelData.color !== "" ? outline.modelData.color : Theme.accent
+                               : outline.modelData.color !== "" ? Theme.userColor(outline.modelData.color) : Theme.accent
                     lineWidth: 2
                 }
             }
@@ -186,7 +186,7 @@ Rectangle {
                 source: modelData.kind === "mark" ? "#Sphere" : "#Cone"
                 position: root.scenePosition(ned.north, ned.east, isNaN(modelData.depth) ? 0 : modelData.depth)
                 scale: Qt.vector3d(0.012, 0.012, 0.012)
-                materials: PrincipledMaterial { baseColor: buoy.modelData.color !== "" ? buoy.modelData.color : Theme.accent; roughness: 0.5 }
+                materials: PrincipledMaterial { baseColor: buoy.modelData.color !== "" ? Theme.userColor(buoy.modelData.color) : Theme.accent; roughness: 0.5 }
             }
         }
         Repeater3D {

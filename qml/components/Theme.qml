@@ -90,5 +90,14 @@ QtObject {
     readonly property var levelGlyphs: ["?", "", "i", "!", "✕", "✕"]
     function levelGlyph(level: int): string { return levelGlyphs[Math.max(0, Math.min(level, levelGlyphs.length - 1))] }
 
+    // A colour a file chose (a map feature's): as it is by day and dusk; at night a
+    // red as bright as it was, so that no blue or green spoils the watch's night vision.
+    function userColor(c: color): color {
+        if (palette !== Theme.Night)
+            return c
+        const brightness = Math.max(c.r, 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b)
+        return Qt.rgba(0.25 + 0.55 * brightness, 0, 0, c.a)
+    }
+
     function nextPalette() { palette = (palette + 1) % palettes.length }
 }

@@ -50,6 +50,19 @@ TestCase {
         }
     }
 
+    // A colour a file chose (a Neptus shape's blue) is itself by day, and red only at night.
+    function test_aFilesColourIsRedOnlyAtNight() {
+        Theme.palette = Theme.Day
+        compare(Theme.userColor("#0000ff"), Qt.color("#0000ff"))
+        Theme.palette = Theme.Night
+        for (const c of ["#0000ff", "#00ff00", "#ffffff", "#660066"]) {
+            const night = Theme.userColor(c)
+            verify(night.r > 0 && night.g === 0 && night.b === 0, c + " at night: " + night)
+        }
+        verify(Theme.userColor("#ffffff").r > Theme.userColor("#000080").r, "as bright as it was")
+        Theme.palette = Theme.Day
+    }
+
     function test_nextPaletteCycles() {
         Theme.palette = Theme.Day
         Theme.nextPalette(); compare(Theme.palette, Theme.Dusk)
