@@ -4,6 +4,7 @@
 #include "Fixtures.h"
 
 #include <QFile>
+#include <QXmlStreamReader>
 #include <QTemporaryDir>
 
 #include <archive.h>
@@ -401,4 +402,92 @@ TEST(NeptusImport, AnImageInsideTheArchiveIsCarriedOutBesideTheMission)
     QFile carried(dir.filePath(u"sub/images/pista-ota.png"_s));
     ASSERT_TRUE(carried.open(QIODevice::ReadOnly));
     EXPECT_EQ(carried.readAll(), png);
+}
+
+namespace {
+
+// A plain count of what Neptus wrote, straight from the XML (no importer): per plan the
+// maneuver elements under body/plan/graph/node/maneuver and the edges; per map the
+// children of <features>, by element name.
+struct PlainCount
+{
+    int plans = 0, transitions = 0;
+    QMap<QString, int> maneuvers, features;
+};
+
+PlainCount plainCount(const QByteArray &nmisz)
+{
+    PlainCount c;
+    archive *a = archive_read_new();
+    archive_read_support_format_zip(a);
+    archive_read_open_memory(a, nmisz.constData(), size_t(nmisz.size()));
+    archive_entry *entry = nullptr;
+    while (archive_read_next_header(a, &entry) == ARCHIVE_OK) {
+        QByteArray bytes;
+        char buffer[65536];
+        for (la_ssize_t n; (n = archive_read_data(a, buffer, sizeof buffer)) > 0;)
+            bytes.append(buffer, n);
+        QXmlStreamReader xml(bytes);
+        QStringList path;
+        while (!xml.atEnd()) {
+            xml.readNext();
+            if (xml.isStartElement()) {
+                const QString name = xml.name().toString();
+                const QString parent = path.isEmpty() ? QString() : path.last();
+                if (name == u"plan" && parent == u"body")
+                    ++c.plans;
+                else if (name == u"edge" && parent == u"graph")
+                    ++c.transitions;
+                else if (parent == u"maneuver" && path.size() >= 2 && path[path.size() - 2] == u"node" && name != u"minTime"
+                         && name != u"maxTime" && name != u"custom-settings")
+                    ++c.maneuvers[name];
+                else if (parent == u"features")
+                    ++c.features[name];
+                path.append(name);
+            } else if (xml.isEndElement()) {
+                path.removeLast();
+            }
+        }
+    }
+    archive_read_free(a);
+    return c;
+}
+
+} // namespace
+
+// Every fixture mission against a plain XML count of its own files: every plan, maneuver,
+// transition and feature Neptus wrote is in the import, as its counterpart, none left out.
+TEST(NeptusImport, EveryFixtureMissionHasWhatAPlainXmlCountOfItFinds)
+{
+    if (!QFileInfo::exists(fixturePath("neptus/missions")))
+        GTEST_SKIP() << "../shared/fixtures/neptus is absent (a user's clone); CI and developer machines have it";
+    static const QHash<QString, QString> maneuverNames{{u"RowsManeuver"_s, u"Rows"_s}, {u"ExpandingSquarePattern"_s, u"ExpandingSquare"_s}};
+    static const QHash<QString, QString> featureNames{{u"MineDangerAreaElement"_s, u"circle"_s}, {u"model3d"_s, u"model"_s}};
+    for (const char *file : {"phase3.nmisz", "missao-cavado.nmisz", "Split.nmisz", "Horta.nmisz"}) {
+        QFile f(fixturePath((std::string("neptus/missions/") + file).c_str()));
+        ASSERT_TRUE(f.open(QIODevice::ReadOnly));
+        const QByteArray bytes = f.readAll();
+        const PlainCount plain = plainCount(bytes);
+        const auto imported = importNeptus(bytes, QString::fromLatin1(file));
+        ASSERT_TRUE(imported) << file;
+        Counts c = count(imported->mission);
+        EXPECT_EQ(c.plans, plain.plans) << file;
+        EXPECT_EQ(c.transitions, plain.transitions) << file;
+        QMap<QString, int> maneuvers, features;
+        for (auto it = plain.maneuvers.cbegin(); it != plain.maneuvers.cend(); ++it)
+            maneuvers[maneuverNames.value(it.key(), it.key())] += it.value();
+        for (auto it = plain.features.cbegin(); it != plain.features.cend(); ++it)
+            features[featureNames.value(it.key(), it.key())] += it.value();
+        c.features[u"path"_s] += c.features.take(u"polygon"_s); // a Neptus path is our path or polygon
+        if (c.features.value(u"path"_s) == 0)
+            c.features.remove(u"path"_s);
+        EXPECT_EQ(c.maneuvers, maneuvers) << file;
+        EXPECT_EQ(c.features, features) << file;
+        int total = 0;
+        for (int n : std::as_const(plain.maneuvers))
+            total += n;
+        EXPECT_GT(total, 0) << file;
+        for (const auto &w : imported->warnings)
+            EXPECT_FALSE(w.message.contains(u"left out"_s)) << file << ": " << w.toString().toStdString();
+    }
 }
