@@ -131,6 +131,7 @@ struct Feature
     Point position;
     QList<Point> points;  // path, polygon vertices; image corners
     QMap<QString, QString> attributes; // the rest, by name: role, radius, width, file, …
+    QList<XmlElement> verbatim; // an "unsupported" feature's element as another console's file had it
     SourceLine line;
     friend bool operator==(const Feature &, const Feature &) = default;
 };

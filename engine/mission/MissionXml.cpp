@@ -233,8 +233,14 @@ Map Reader::map(const xmlNode *node)
             if (!common.contains(name) && !positionAttributes().contains(name))
                 feature.attributes.insert(name, attributeValue(a));
         }
-        for (const xmlNode *p : childElements(f))
+        for (const xmlNode *p : childElements(f)) {
+            if (elementName(p) == u"neptus") {
+                for (const xmlNode *kept : childElements(p))
+                    feature.verbatim.append(xml::readElement(kept));
+                continue;
+            }
             feature.points.append(point(p, false));
+        }
         if (feature.kind == u"image" && feature.points.size() == 1)
             error(f, QStringLiteral("Element 'image': give two corners (north-west, south-east) or none"));
         if (feature.kind == u"image" && feature.points.isEmpty() && !(feature.position.lat || feature.position.north))
@@ -426,6 +432,12 @@ void writeMap(QXmlStreamWriter &out, const Map &map)
         for (const Feature::Point &p : f.points) {
             out.writeEmptyElement(pointName);
             writePoint(out, p);
+        }
+        if (f.kind == u"unsupported") {
+            out.writeStartElement(u"neptus"_s);
+            for (const XmlElement &kept : f.verbatim)
+                xml::writeElement(out, kept);
+            out.writeEndElement();
         }
         out.writeEndElement();
     }

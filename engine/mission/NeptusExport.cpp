@@ -529,6 +529,12 @@ QString Exporter::carry(const QString &where, const QString &file, const QString
 void Exporter::feature(QXmlStreamWriter &out, const Map &map, const Feature &f)
 {
     const QString where = u"map '%1', %2 '%3'"_s.arg(map.id, f.kind, f.id);
+    if (f.kind == u"unsupported") {
+        // Kept from a Neptus map as it was: written back as it was.
+        for (const XmlElement &kept : f.verbatim)
+            xml::writeElement(out, kept);
+        return;
+    }
     const QString role = f.attributes.value(u"role"_s);
     const auto at = m_mission.position(f.position);
     const auto position = [&](const Feature::Point &p) -> std::optional<GeoPosition> { return m_mission.position(p); };

@@ -561,9 +561,24 @@ std::optional<Feature> Importer::feature(const XmlDocument &doc, const xmlNode *
     const QString shape = textContent(firstChildElement(node, "type")).trimmed();
     const QString kind = neptusKind == u"geometry" ? shapes.value(shape) : kinds.value(neptusKind);
     if (kind.isEmpty()) {
-        warn(doc, node, neptusKind == u"geometry" ? u"geometry type '%1' not understood; left out"_s.arg(shape)
-                                                   : u"map feature type not understood; left out"_s);
-        return std::nullopt;
+        // Kept as it was (written back on export), shown as a mark where it says it is.
+        Feature kept;
+        kept.kind = u"unsupported"_s;
+        kept.line.value = static_cast<int>(xmlGetLineNo(node));
+        const QString id = textContent(firstChildElement(node, "id")).trimmed();
+        kept.id = validId(id.isEmpty() ? neptusKind : id);
+        kept.name = id.isEmpty() ? neptusKind : id;
+        kept.attributes.insert(u"kind"_s, neptusKind == u"geometry" ? u"geometry "_s + shape : neptusKind);
+        if (const xmlNode *c = firstChildElement(node, "coordinate")) {
+            if (const auto at = coordinate(doc, c)) {
+                kept.position.lat = at->lat;
+                kept.position.lon = at->lon;
+            }
+        }
+        kept.verbatim.append(readElement(node));
+        warn(doc, node, u"map feature '%1' (%2) kept as it was; this console does not draw it (a mark shows where it is)"_s
+                            .arg(kept.name, kept.attributes.value(u"kind"_s)));
+        return kept;
     }
     Feature f;
     f.kind = kind;

@@ -222,15 +222,15 @@ struct CheckFixture
             return p;
         };
         Feature ops{u"polygon"_s, u"ops"_s, {}, {}, {}, {}, {point(41.17, -8.71), point(41.29, -8.71), point(41.29, -8.68), point(41.17, -8.68)},
-                    {{u"role"_s, u"operating-area"_s}}, {}};
+                    {{u"role"_s, u"operating-area"_s}}, {}, {}};
         map.features.append(ops);
         for (int i = 0; i < 5; ++i) {
             Feature rock{u"circle"_s, u"rock%1"_s.arg(i), {}, {}, {}, point(41.20 + i * 0.01, -8.705), {},
-                         {{u"role"_s, u"no-go"_s}, {u"radius"_s, u"20"_s}}, {}};
+                         {{u"role"_s, u"no-go"_s}, {u"radius"_s, u"20"_s}}, {}, {}};
             map.features.append(rock);
         }
         Feature wreck{u"polygon"_s, u"wreck"_s, {}, {}, {}, {}, {point(41.2195, -8.6965), point(41.2205, -8.6965), point(41.2205, -8.6955), point(41.2195, -8.6955)},
-                      {{u"role"_s, u"no-go"_s}}, {}};
+                      {{u"role"_s, u"no-go"_s}}, {}, {}};
         map.features.append(wreck);
         mission.maps.append(map);
         geometry = planGeometry(plan, fixture().vehicle.speeds());

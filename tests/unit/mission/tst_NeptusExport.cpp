@@ -354,3 +354,51 @@ TEST(NeptusExport, ManeuversNoVehicleHereExecutesKeepTheirPlanAndGoBackAsTheyWer
     EXPECT_EQ(again->mission.plans[0].maneuvers[2].verbatim, hand.verbatim);
     EXPECT_EQ(again->mission.plans[0].maneuvers[0].text(u"custom"_s), u"Formation=line"_s);
 }
+
+// Map features this console does not draw (Neptus's LineSegmentElement and QRouteElement, as
+// SimpleMapElement writes their properties) are kept as they were, shown as a mark where they
+// say they are, and written back to Neptus as they were.
+TEST(NeptusExport, MapFeaturesThisConsoleDoesNotDrawAreKeptAndGoBackAsTheyWere)
+{
+    const QByteArray map = R"(<map><header><id>drip</id></header><features>
+<LineSegmentElement obstacle="false"><id>line1</id><name>id_q</name>
+  <coordinate><latitude>41.14</latitude><longitude>-8.61</longitude><height>0.0</height></coordinate>
+  <attitude><psi>45.0</psi></attitude><filled>true</filled>
+  <length>120.0</length><color>java.awt.Color[r=255,g=200,b=0]</color><centerLocation>N41.14°, W8.61°</centerLocation><obstacle>false</obstacle>
+</LineSegmentElement>
+<QRouteElement obstacle="false"><id>route</id><name>id_r</name>
+  <coordinate><latitude>41.15</latitude><longitude>-8.62</longitude><height>0.0</height></coordinate><filled>true</filled>
+  <path>41.15,-8.62;41.16,-8.63</path><color>java.awt.Color[r=0,g=0,b=255]</color><width>50.0</width>
+</QRouteElement>
+<mark obstacle="false"><id>pier</id><name>pier</name>
+  <coordinate><latitude>41.1398</latitude><longitude>-8.6125</longitude><height>0.0</height></coordinate><filled>true</filled></mark>
+</features></map>)";
+    const auto imported = importNeptus(map, u"drip.nmap"_s);
+    ASSERT_TRUE(imported) << errorsText(imported.error()).toStdString();
+    const QList<Feature> &features = imported->mission.maps[0].features;
+    ASSERT_EQ(features.size(), 3) << errorsText(imported->warnings).toStdString();
+    EXPECT_EQ(features[0].kind, u"unsupported"_s);
+    EXPECT_EQ(features[0].attributes.value(u"kind"_s), u"LineSegmentElement"_s);
+    EXPECT_EQ(features[0].position.lat, 41.14);
+    ASSERT_EQ(features[0].verbatim.size(), 1);
+    EXPECT_EQ(features[0].verbatim[0].name, u"LineSegmentElement"_s);
+    EXPECT_EQ(features[1].attributes.value(u"kind"_s), u"QRouteElement"_s);
+    EXPECT_TRUE(errorsText(imported->warnings).contains(u"map feature 'line1' (LineSegmentElement) kept as it was"_s))
+        << errorsText(imported->warnings).toStdString();
+    // A valid file of ours, read back the same.
+    const auto ours = readMission(writeMission(imported->mission), u"ours.xml"_s);
+    ASSERT_TRUE(ours) << errorsText(ours.error()).toStdString();
+    EXPECT_EQ(ours->maps[0].features, features);
+
+    const auto exported = exportNeptus(imported->mission, {});
+    ASSERT_TRUE(exported) << errorsText(exported.error()).toStdString();
+    EXPECT_TRUE(exported->warnings.isEmpty()) << errorsText(exported->warnings).toStdString();
+    const QByteArray nmap = unzipAll(exported->nmisz).value(u"maps/drip.nmap"_s);
+    EXPECT_TRUE(nmap.contains("<length>120.0</length>")) << nmap.constData();
+    EXPECT_TRUE(nmap.contains("<path>41.15,-8.62;41.16,-8.63</path>")) << nmap.constData();
+    const auto again = importNeptus(exported->nmisz, u"again.nmisz"_s);
+    ASSERT_TRUE(again) << errorsText(again.error()).toStdString();
+    ASSERT_EQ(again->mission.maps[0].features.size(), 3);
+    EXPECT_EQ(again->mission.maps[0].features[0].verbatim, features[0].verbatim);
+    EXPECT_EQ(again->mission.maps[0].features[1].verbatim, features[1].verbatim);
+}
