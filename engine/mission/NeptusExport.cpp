@@ -5,6 +5,7 @@
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
+#include <QHash>
 #include <QSet>
 #include <QXmlStreamWriter>
 
@@ -70,6 +71,8 @@ QString boolText(bool value)
 // ("41N11.0813333333"; 10 decimals of a minute are 0.2 µm).
 QString angleText(double degrees, bool latitude)
 {
+    if (!std::isfinite(degrees))
+        degrees = 0; // our files refuse them; an edited mission in memory is not read from one
     const QChar hemisphere = latitude ? (degrees < 0 ? u'S' : u'N') : (degrees < 0 ? u'W' : u'E');
     const double a = std::abs(degrees);
     int whole = int(std::floor(a));
@@ -144,7 +147,8 @@ private:
     const Mission &m_mission;
     QDir m_folder;
     bool m_haveFolder;
-    QSet<QString> m_carried;
+    QSet<QString> m_carried;               // zip entries made for files
+    QHash<QString, QString> m_carriedFrom; // a file's path → its entry
 };
 
 void Exporter::run()
@@ -250,9 +254,13 @@ void Exporter::plan(QXmlStreamWriter &out, const Plan &p)
         writeActions(out, m.startActions, m.endActions);
         out.writeEndElement();
     }
+    int edge = 0;
     for (const Transition &t : p.transitions) {
         out.writeStartElement(u"edge"_s);
-        text(out, u"id"_s, t.from + t.to);
+        text(out, u"id"_s, u"edge%1"_s.arg(++edge)); // unique: Neptus keeps transitions by id (GraphType.java)
+        if (!t.actions.isEmpty())
+            warn(u"plan '%1', transition %2 → %3"_s.arg(p.id, t.from, t.to),
+                 u"Neptus reads a transition's actions as text, not IMC messages: written, but Neptus will not send them"_s);
         text(out, u"source"_s, t.from);
         text(out, u"target"_s, t.to);
         text(out, u"guard"_s, t.condition);
@@ -276,21 +284,22 @@ QString speedUnit(const QString &ours)
     return ours == u"RPM" ? u"RPM"_s : ours == u"PERCENTAGE" ? u"%"_s : u"m/s"_s;
 }
 
+// Absent: IMC's zero (DEFAULT, VDEP).
 QString loiterTypeText(const QString &ours)
 {
     if (ours == u"RACETRACK") return u"Racetrack"_s;
     if (ours == u"EIGHT") return u"Figure 8"_s;
     if (ours == u"HOVER") return u"Hover"_s;
-    if (ours == u"DEFAULT") return u"Default"_s;
-    return u"Circular"_s;
+    if (ours == u"CIRCULAR") return u"Circular"_s;
+    return u"Default"_s;
 }
 
 QString directionText(const QString &ours)
 {
     if (ours == u"CCLOCKW") return u"Counter-Clockwise"_s;
-    if (ours == u"VDEP") return u"Vehicle Dependent"_s;
+    if (ours == u"CLOCKW") return u"Clockwise"_s;
     if (ours == u"IWINDCURR") return u"Into the wind"_s;
-    return u"Clockwise"_s;
+    return u"Vehicle Dependent"_s;
 }
 
 // A maneuver node's <maneuver> (Maneuver.java): minTime, maxTime, the maneuver
@@ -299,20 +308,27 @@ void Exporter::maneuver(QXmlStreamWriter &out, const Plan &plan, const Maneuver 
 {
     QSet<QString> used{u"lat"_s, u"lon"_s, u"z"_s, u"z_units"_s, u"speed"_s, u"speed_units"_s, u"timeout"_s};
     const auto has = [&](const QString &name) { return m.has(name); };
+    // Always written, IMC's zero when absent: Neptus's loaders stop at the first element missing.
     const auto num = [&](const QString &element, const QString &parameter) {
+        used.insert(parameter);
+        number(out, element, m.number(parameter));
+    };
+    const auto typed = [&](const QString &element, const QString &parameter) {
+        used.insert(parameter);
+        typedNumber(out, element, m.number(parameter));
+    };
+    // Written only when held: elements Neptus reads when present and defaults otherwise (RowsManeuver.java).
+    const auto optional = [&](const QString &element, const QString &parameter) {
         used.insert(parameter);
         if (m.has(parameter))
             number(out, element, m.number(parameter));
     };
-    const auto typed = [&](const QString &element, const QString &parameter) {
-        used.insert(parameter);
-        if (m.has(parameter))
-            typedNumber(out, element, m.number(parameter));
-    };
     const QStringList flags = m.text(u"flags"_s).split(u'|', Qt::SkipEmptyParts);
     const bool elevator = m.type == u"Elevator";
+    // Which point each Neptus maneuver reads (Takeoff and Land read basePoint, ManeuversXMLUtil.java;
+    // Elevator finalPoint, Elevator.java).
     static const QStringList finalPointTypes{u"Goto"_s, u"PopUp"_s, u"YoYo"_s, u"CompassCalibration"_s, u"Launch"_s,
-                                             u"ScheduledGoto"_s, u"Takeoff"_s, u"Land"_s};
+                                             u"ScheduledGoto"_s, u"Elevator"_s};
     const auto point = [&] {
         out.writeStartElement(finalPointTypes.contains(m.type) ? u"finalPoint"_s : u"basePoint"_s);
         out.writeAttribute(u"type"_s, u"pointType"_s);
@@ -332,8 +348,6 @@ void Exporter::maneuver(QXmlStreamWriter &out, const Plan &plan, const Maneuver 
         out.writeEndElement();
     };
     const auto speed = [&] {
-        if (!has(u"speed"_s))
-            return;
         out.writeStartElement(u"speed"_s);
         out.writeAttribute(u"type"_s, u"float"_s);
         out.writeAttribute(u"unit"_s, speedUnit(m.text(u"speed_units"_s)));
@@ -351,8 +365,8 @@ void Exporter::maneuver(QXmlStreamWriter &out, const Plan &plan, const Maneuver 
             out.writeAttribute(u"northOffset"_s, formatNumber(p.x));
             out.writeAttribute(u"eastOffset"_s, formatNumber(p.y));
             out.writeAttribute(u"depthOffset"_s, formatNumber(p.z));
-            if (timed && p.t)
-                out.writeAttribute(u"timeOffset"_s, formatNumber(*p.t));
+            if (timed) // required by FollowTrajectory.java once it has times
+                out.writeAttribute(u"timeOffset"_s, formatNumber(p.t.value_or(0)));
             out.writeEndElement();
         }
         out.writeEndElement();
@@ -384,7 +398,8 @@ void Exporter::maneuver(QXmlStreamWriter &out, const Plan &plan, const Maneuver 
         used.insert(u"type"_s);
         text(out, u"type"_s, loiterTypeText(m.text(u"type"_s)));
         typed(u"length"_s, u"length"_s);
-        typed(u"bearing"_s, u"bearing"_s);
+        used.insert(u"bearing"_s);
+        typedNumber(out, u"bearing"_s, geo::radians(m.number(u"bearing"_s))); // radians in Neptus's Loiter (Loiter.java)
         used.insert(u"direction"_s);
         text(out, u"direction"_s, directionText(m.text(u"direction"_s)));
         out.writeEndElement();
@@ -417,9 +432,9 @@ void Exporter::maneuver(QXmlStreamWriter &out, const Plan &plan, const Maneuver 
         num(u"hstep"_s, u"hstep"_s);
         num(u"bearing"_s, u"bearing"_s);
         if (m.type == u"Rows") {
-            num(u"crossAngle"_s, u"cross_angle"_s);
-            num(u"alternationPercentage"_s, u"alternation"_s);
-            num(u"curveOffset"_s, u"coff"_s);
+            optional(u"crossAngle"_s, u"cross_angle"_s);
+            optional(u"alternationPercentage"_s, u"alternation"_s);
+            optional(u"curveOffset"_s, u"coff"_s);
             boolean(u"squareCurve"_s, u"SQUARE_CURVE"_s);
         }
         boolean(u"firstCurveRight"_s, u"CURVE_RIGHT"_s);
@@ -437,11 +452,11 @@ void Exporter::maneuver(QXmlStreamWriter &out, const Plan &plan, const Maneuver 
         // By number, as CompassCalibration.java writes it (IMC's enumeration).
         static const QHash<QString, QString> directions{{u"VDEP"_s, u"0"_s}, {u"CLOCKW"_s, u"1"_s}, {u"CCLOCKW"_s, u"2"_s},
                                                         {u"IWINDCURR"_s, u"3"_s}};
-        text(out, u"direction"_s, directions.value(m.text(u"direction"_s), u"1"_s));
+        text(out, u"direction"_s, directions.value(m.text(u"direction"_s), u"0"_s));
     } else if (elevator) {
         num(u"startZ"_s, u"start_z"_s);
         used.insert(u"start_z_units"_s);
-        text(out, u"startZUnits"_s, m.text(u"start_z_units"_s, u"DEPTH"_s));
+        text(out, u"startZUnits"_s, m.text(u"start_z_units"_s, u"NONE"_s));
         num(u"radius"_s, u"radius"_s);
         speed();
     } else if (m.type == u"Takeoff") {
@@ -511,18 +526,29 @@ QByteArray Exporter::mapDocument(const Map &map)
 
 QString Exporter::carry(const QString &where, const QString &file, const QString &folder)
 {
-    const QString name = QFileInfo(file).fileName(); // Neptus keeps base names only (MissionType.asZipFile)
-    const QString entry = folder + u'/' + name;
-    if (!m_carried.contains(entry)) {
-        QFile source(m_folder.filePath(file));
-        if (!m_haveFolder || !source.open(QIODevice::ReadOnly)) {
-            warn(where, u"file '%1' not carried into the archive: %2"_s.arg(file, m_haveFolder ? source.errorString()
-                                                                                            : u"the mission has no folder"_s));
-            return {};
-        }
-        entries.append({entry, source.readAll()});
-        m_carried.insert(entry);
+    // Only files inside the mission's folder: a mission file cannot pull others into an archive meant to be shared.
+    const QString clean = QDir::cleanPath(file);
+    if (clean.isEmpty() || QDir::isAbsolutePath(clean) || clean.startsWith(u".."_s)) {
+        warn(where, u"file '%1' not carried into the archive: outside the mission's folder"_s.arg(file));
+        return {};
     }
+    // Neptus keeps base names only (MissionType.asZipFile): two files of one name get their own entries.
+    const QString source = m_folder.filePath(clean);
+    if (const auto known = m_carriedFrom.constFind(source); known != m_carriedFrom.cend())
+        return u"../"_s + *known;
+    const QFileInfo info(clean);
+    QString entry = folder + u'/' + info.fileName();
+    for (int n = 2; m_carried.contains(entry); ++n)
+        entry = u"%1/%2-%3%4"_s.arg(folder, info.completeBaseName()).arg(n).arg(info.suffix().isEmpty() ? QString() : u'.' + info.suffix());
+    QFile in(source);
+    if (!m_haveFolder || !in.open(QIODevice::ReadOnly)) {
+        warn(where, u"file '%1' not carried into the archive: %2"_s.arg(file, m_haveFolder ? in.errorString()
+                                                                                        : u"the mission has no folder"_s));
+        return {};
+    }
+    entries.append({entry, in.readAll()});
+    m_carried.insert(entry);
+    m_carriedFrom.insert(source, entry);
     return u"../"_s + entry;
 }
 
@@ -629,7 +655,7 @@ void Exporter::feature(QXmlStreamWriter &out, const Map &map, const Feature &f)
         colorElement(out, f.color);
     } else if (f.kind == u"circle") {
         // MineDangerAreaElement's properties, as SimpleMapElement writes them.
-        text(out, u"centerLocation"_s, u"%1, %2"_s.arg(formatNumber(at ? at->lat : 0), formatNumber(at ? at->lon : 0)));
+        // (No <centerLocation>: Neptus would re-read it with a parser our text does not fit; <coordinate> says it.)
         number(out, u"radius"_s, value(u"radius"_s));
         text(out, u"obstacle"_s, boolText(role == u"no-go"));
         const Rgb c = rgb(f.color.isEmpty() ? u"#ff0000"_s : f.color);
@@ -659,6 +685,7 @@ QByteArray Exporter::checklistDocument(const Checklist &checklist)
                     out.writeStartElement(u"item"_s);
                     out.writeAttribute(u"name"_s, item.text);
                     out.writeAttribute(u"checked"_s, boolText(item.checked));
+                    out.writeAttribute(u"skiped"_s, u"false"_s); // else CheckItem.java unticks it
                     text(out, u"note"_s, item.note);
                     if (!item.variable.isEmpty()) {
                         out.writeStartElement(u"subItems"_s);
@@ -667,8 +694,11 @@ QByteArray Exporter::checklistDocument(const Checklist &checklist)
                         text(out, u"variableName"_s, item.variable);
                         text(out, u"variablePath"_s, item.variable);
                         out.writeEmptyElement(u"interval"_s);
-                        out.writeAttribute(u"start"_s, formatNumber(item.min.value_or(-std::numeric_limits<double>::infinity())));
-                        out.writeAttribute(u"end"_s, formatNumber(item.max.value_or(std::numeric_limits<double>::infinity())));
+                        // An open end is left out, as Neptus does (Java reads no "inf").
+                        if (item.min)
+                            out.writeAttribute(u"start"_s, formatNumber(*item.min));
+                        if (item.max)
+                            out.writeAttribute(u"end"_s, formatNumber(*item.max));
                         out.writeAttribute(u"startInclusion"_s, u"true"_s);
                         out.writeAttribute(u"endInclusion"_s, u"true"_s);
                         out.writeAttribute(u"complement"_s, u"false"_s);
@@ -690,6 +720,7 @@ std::expected<QByteArray, QString> zip(const QList<std::pair<QString, QByteArray
     std::unique_ptr<archive, Free> a(archive_write_new());
     QByteArray bytes;
     archive_write_set_format_zip(a.get());
+    archive_write_set_bytes_in_last_block(a.get(), 1); // no padding after the zip's end
     const auto append = [](archive *, void *client, const void *buffer, size_t length) -> la_ssize_t {
         static_cast<QByteArray *>(client)->append(static_cast<const char *>(buffer), qsizetype(length));
         return la_ssize_t(length);

@@ -303,8 +303,13 @@ std::optional<Maneuver> Importer::maneuver(const XmlDocument &doc, const xmlNode
         if (name == u"maxTime") {
             maxTime = number(doc, c);
         } else if (name == u"custom-settings") {
-            for (const xmlNode *setting : childElements(c, "setting"))
-                custom << attribute(setting, "name").trimmed() + u'=' + textContent(setting).trimmed();
+            for (const xmlNode *setting : childElements(c, "setting")) {
+                const QString key = attribute(setting, "name").trimmed(), value = textContent(setting).trimmed();
+                if (key.isEmpty() || key.contains(u'=') || key.contains(u';') || value.contains(u';'))
+                    warn(doc, setting, u"custom setting '%1' cannot be said in IMC's key=value; list; left out"_s.arg(key));
+                else
+                    custom << key + u'=' + value;
+            }
         } else if (name != u"minTime") {
             body = c;
         }
@@ -400,7 +405,10 @@ std::optional<Maneuver> Importer::maneuver(const XmlDocument &doc, const xmlNode
                         pp.t = time;
                     m.points.append(pp);
                 } else if (tn == u"radius" || tn == u"length" || tn == u"bearing") {
-                    if (const auto v = number(doc, t); v && (m.type == u"Loiter" || tn == u"radius"))
+                    // A loiter's bearing is in radians in Neptus (Loiter.java), degrees here.
+                    if (const auto v = number(doc, t); v && tn == u"bearing" && m.type == u"Loiter")
+                        m.set(tn, std::round(geo::degrees(*v) * 1e9) / 1e9);
+                    else if (v && (m.type == u"Loiter" || tn == u"radius"))
                         m.set(tn, *v);
                 } else if (tn == u"type" && m.type == u"Loiter") {
                     if (const QString lt = loiterType(tt); !lt.isEmpty())
@@ -603,12 +611,15 @@ std::optional<Feature> Importer::feature(const XmlDocument &doc, const xmlNode *
                 const auto v = number(doc, a);
                 if (!v)
                     continue;
-                if (angle == u"psi")
+                const bool turns = f.kind == u"image" || f.kind == u"model" || f.kind == u"box" || f.kind == u"cylinder"
+                                   || f.kind == u"ellipsoid";
+                if (angle == u"psi" && turns)
                     f.attributes.insert(f.kind == u"image" ? u"rotation"_s : f.kind == u"model" ? u"yaw"_s : u"bearing"_s, formatNumber(*v));
                 else if ((angle == u"phi" || angle == u"theta") && f.kind == u"model")
                     f.attributes.insert(angle == u"phi" ? u"roll"_s : u"pitch"_s, formatNumber(*v));
                 else if (*v != 0)
-                    warn(doc, a, u"only a model can be tilted here, not %1 '%2': %3 = %4° left out"_s.arg(f.kind, f.id, angle, formatNumber(*v)));
+                    warn(doc, a, angle == u"psi" ? u"a %1 is not turned here: %2 = %3° left out"_s.arg(f.kind, angle, formatNumber(*v))
+                                                 : u"only a model can be tilted here, not %1 '%2': %3 = %4° left out"_s.arg(f.kind, f.id, angle, formatNumber(*v)));
             }
         } else if (name == u"transparency") {
             if (const auto v = number(doc, c))
@@ -1025,8 +1036,8 @@ std::optional<Mission> Importer::mission(const XmlDocument &doc, const FileSourc
                         }
                         auto checklistDoc = XmlDocument::parse(*bytes, QFileInfo(doc.fileName()).dir().filePath(href));
                         if (!checklistDoc) {
-                            errors.append(checklistDoc.error());
-                            return std::nullopt;
+                            warn(doc, ref, u"checklist '%1' not read: %2"_s.arg(href, checklistDoc.error().toString()));
+                            continue;
                         }
                         if (auto read = checklist(*checklistDoc, textContent(firstChildElement(ref, "id")).trimmed()))
                             m.checklists.append(*read);
