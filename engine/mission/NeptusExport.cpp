@@ -237,6 +237,11 @@ void writeActions(QXmlStreamWriter &out, const QList<XmlElement> &start, const Q
 // A plan (PlanType.java): its graph, nodes then edges, then its actions.
 void Exporter::plan(QXmlStreamWriter &out, const Plan &p)
 {
+    const QString where = u"plan '%1'"_s.arg(p.id);
+    if (!p.description.isEmpty())
+        warn(where, u"its description has no place in Neptus's plan; left out"_s);
+    if (!p.variables.isEmpty())
+        warn(where, u"its %1 variable(s) have no place in Neptus's plan; left out"_s.arg(p.variables.size()));
     out.writeStartElement(u"plan"_s);
     out.writeAttribute(u"id"_s, p.id);
     out.writeAttribute(u"vehicle"_s, p.vehicle);
@@ -335,6 +340,8 @@ void Exporter::maneuver(QXmlStreamWriter &out, const Plan &plan, const Maneuver 
         out.writeStartElement(u"point"_s);
         text(out, u"id"_s, m.id);
         text(out, u"name"_s, m.id);
+        if (!m.has(u"lat"_s) && m.type != u"Unsupported")
+            warn(u"plan '%1', maneuver '%2' (%3)"_s.arg(plan.id, m.id, m.type), u"no position: written at 0°N 0°E"_s);
         coordinate(out, m.number(u"lat"_s), m.number(u"lon"_s), 0);
         const QString z = elevator ? u"end_z"_s : u"z"_s, units = elevator ? u"end_z_units"_s : u"z_units"_s;
         used.insert(z);
@@ -562,6 +569,16 @@ void Exporter::feature(QXmlStreamWriter &out, const Map &map, const Feature &f)
         return;
     }
     const QString role = f.attributes.value(u"role"_s);
+    if (!m_mission.position(f.position) && f.kind != u"path" && f.kind != u"polygon")
+        warn(u"map '%1', %2 '%3'"_s.arg(map.id, f.kind, f.id), u"no position: written at 0°N 0°E"_s);
+    if ((f.kind == u"polygon" || f.kind == u"circle") && (f.attributes.contains(u"z-min"_s) || f.attributes.contains(u"z-max"_s)))
+        warn(u"map '%1', %2 '%3'"_s.arg(map.id, f.kind, f.id),
+             u"its depth range has no place in Neptus's %1; left out (it bars every depth there)"_s.arg(f.kind == u"polygon" ? u"path"_s : u"circle"_s));
+    for (const Feature::Point &p : f.points)
+        if (p.height && *p.height != 0) {
+            warn(u"map '%1', %2 '%3'"_s.arg(map.id, f.kind, f.id), u"its points' heights have no place in Neptus's path; left out"_s);
+            break;
+        }
     const auto at = m_mission.position(f.position);
     const auto position = [&](const Feature::Point &p) -> std::optional<GeoPosition> { return m_mission.position(p); };
     const double height = f.position.height.value_or(0) - f.position.depth.value_or(0);

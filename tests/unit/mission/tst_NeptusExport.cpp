@@ -237,6 +237,9 @@ TEST(NeptusExport, OurOwnMissionGoesToNeptusSayingWhatItHasNoWordsFor)
     const QString warnings = errorsText(exported->warnings);
     for (const QString &said : {u"maneuver 'sched' (ScheduledGoto): arrival_time has no place in Neptus's ScheduledGoto"_s,
                                 u"polygon 'ops': role 'operating-area' has no Neptus counterpart"_s,
+                                u"polygon 'ops': its depth range has no place in Neptus's path"_s,
+                                u"plan 'survey': its description has no place in Neptus's plan"_s,
+                                u"plan 'survey': its 1 variable(s) have no place in Neptus's plan"_s,
                                 u"mark 'buoy': layer 'marks' has no place"_s,
                                 u"image 'chart': an image placed by its corners has no Neptus counterpart"_s})
         EXPECT_TRUE(warnings.contains(said)) << said.toStdString() << "\nin:\n" << warnings.toStdString();
