@@ -318,16 +318,7 @@ Mission Reader::mission(const xmlNode *root)
 // --- Writing ---
 
 using xml::writeElement;
-
-void writeMessages(QXmlStreamWriter &out, const QString &name, const QList<XmlElement> &messages)
-{
-    if (messages.isEmpty())
-        return;
-    out.writeStartElement(name);
-    for (const XmlElement &message : messages)
-        writeElement(out, message);
-    out.writeEndElement();
-}
+using xml::writeElements;
 
 void writeOptional(QXmlStreamWriter &out, const QString &name, const std::optional<double> &value)
 {
@@ -364,9 +355,9 @@ void writeManeuver(QXmlStreamWriter &out, const Maneuver &m)
         out.writeAttribute(u"z"_s, formatNumber(p.z));
         writeOptional(out, u"t"_s, p.t);
     }
-    writeMessages(out, u"neptus"_s, m.verbatim);
-    writeMessages(out, u"start-actions"_s, m.startActions);
-    writeMessages(out, u"end-actions"_s, m.endActions);
+    writeElements(out, u"neptus"_s, m.verbatim);
+    writeElements(out, u"start-actions"_s, m.startActions);
+    writeElements(out, u"end-actions"_s, m.endActions);
     out.writeEndElement();
 }
 
@@ -387,8 +378,8 @@ void writePlan(QXmlStreamWriter &out, const Plan &p)
         if (!v.access.isEmpty())
             out.writeAttribute(u"access"_s, v.access);
     }
-    writeMessages(out, u"start-actions"_s, p.startActions);
-    writeMessages(out, u"end-actions"_s, p.endActions);
+    writeElements(out, u"start-actions"_s, p.startActions);
+    writeElements(out, u"end-actions"_s, p.endActions);
     out.writeStartElement(u"maneuvers"_s);
     for (const Maneuver &m : p.maneuvers)
         writeManeuver(out, m);
@@ -398,7 +389,7 @@ void writePlan(QXmlStreamWriter &out, const Plan &p)
         out.writeAttribute(u"from"_s, t.from);
         out.writeAttribute(u"to"_s, t.to);
         out.writeAttribute(u"condition"_s, t.condition);
-        writeMessages(out, u"actions"_s, t.actions);
+        writeElements(out, u"actions"_s, t.actions);
         out.writeEndElement();
     }
     out.writeEndElement();
@@ -433,12 +424,7 @@ void writeMap(QXmlStreamWriter &out, const Map &map)
             out.writeEmptyElement(pointName);
             writePoint(out, p);
         }
-        if (f.kind == u"unsupported") {
-            out.writeStartElement(u"neptus"_s);
-            for (const XmlElement &kept : f.verbatim)
-                xml::writeElement(out, kept);
-            out.writeEndElement();
-        }
+        writeElements(out, u"neptus"_s, f.verbatim);
         out.writeEndElement();
     }
     out.writeEndElement();

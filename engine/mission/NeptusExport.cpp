@@ -225,10 +225,7 @@ void writeActions(QXmlStreamWriter &out, const QList<XmlElement> &start, const Q
         if (list->isEmpty())
             continue;
         out.writeStartElement(name);
-        out.writeStartElement(u"messages"_s);
-        for (const XmlElement &message : *list)
-            xml::writeElement(out, message);
-        out.writeEndElement();
+        xml::writeElements(out, u"messages"_s, *list);
         out.writeEndElement();
     }
     out.writeEndElement();
@@ -271,10 +268,7 @@ void Exporter::plan(QXmlStreamWriter &out, const Plan &p)
         text(out, u"guard"_s, t.condition);
         if (!t.actions.isEmpty()) {
             out.writeStartElement(u"actions"_s);
-            out.writeStartElement(u"messages"_s);
-            for (const XmlElement &message : t.actions)
-                xml::writeElement(out, message);
-            out.writeEndElement();
+            xml::writeElements(out, u"messages"_s, t.actions);
             out.writeEndElement();
         }
         out.writeEndElement();

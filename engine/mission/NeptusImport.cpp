@@ -1007,40 +1007,27 @@ std::optional<Mission> Importer::mission(const XmlDocument &doc, const FileSourc
                         m.home = GeoPosition{at->lat, at->lon, at->height};
                     else
                         return std::nullopt;
-                } else if (dn == u"maps") {
-                    for (const xmlNode *ref : childElements(d, "map")) {
+                } else if (dn == u"maps" || dn == u"checklists") {
+                    // Files the mission names by href: a map or checklist that cannot be read is said, and skipped.
+                    const bool maps = dn == u"maps";
+                    for (const xmlNode *ref : childElements(d, maps ? "map" : "checklist")) {
                         const QString href = textContent(firstChildElement(ref, "href")).trimmed();
                         const auto bytes = files(href);
-                        if (!bytes) {
-                            warn(doc, ref, u"map '%1' not read: %2"_s.arg(href, bytes.error()));
+                        auto referenced = bytes ? XmlDocument::parse(*bytes, QFileInfo(doc.fileName()).dir().filePath(href))
+                                                : std::unexpected(XmlError{{}, 0, 0, bytes.error()});
+                        if (!referenced) {
+                            warn(doc, ref, u"%1 '%2' not read: %3"_s.arg(maps ? u"map"_s : u"checklist"_s, href,
+                                                                          bytes ? referenced.error().toString() : bytes.error()));
                             continue;
                         }
-                        const QString mapName = QFileInfo(doc.fileName()).dir().filePath(href);
-                        auto mapDoc = XmlDocument::parse(*bytes, mapName);
-                        if (!mapDoc) {
-                            errors.append(mapDoc.error());
-                            return std::nullopt;
-                        }
-                        auto read = map(*mapDoc, href);
-                        if (!read)
-                            return std::nullopt;
-                        m.maps.append(*read);
-                    }
-                } else if (dn == u"checklists") {
-                    for (const xmlNode *ref : childElements(d, "checklist")) {
-                        const QString href = textContent(firstChildElement(ref, "href")).trimmed();
-                        const auto bytes = files(href);
-                        if (!bytes) {
-                            warn(doc, ref, u"checklist '%1' not read: %2"_s.arg(href, bytes.error()));
-                            continue;
-                        }
-                        auto checklistDoc = XmlDocument::parse(*bytes, QFileInfo(doc.fileName()).dir().filePath(href));
-                        if (!checklistDoc) {
-                            warn(doc, ref, u"checklist '%1' not read: %2"_s.arg(href, checklistDoc.error().toString()));
-                            continue;
-                        }
-                        if (auto read = checklist(*checklistDoc, textContent(firstChildElement(ref, "id")).trimmed()))
+                        if (maps) {
+                            auto read = map(*referenced, href);
+                            if (!read)
+                                return std::nullopt;
+                            m.maps.append(*read);
+                        } else if (auto read = checklist(*referenced, textContent(firstChildElement(ref, "id")).trimmed())) {
                             m.checklists.append(*read);
+                        }
                     }
                 } else {
                     notUnderstood(doc, d);
@@ -1079,7 +1066,8 @@ std::optional<Mission> Importer::mission(const XmlDocument &doc, const FileSourc
     return m;
 }
 
-// The regular files of a zip, by normalised path, within the limits above.
+} // namespace
+
 std::expected<QHash<QString, QByteArray>, QString> unzip(QByteArrayView data)
 {
     struct Free { void operator()(archive *a) const { archive_read_free(a); } };
@@ -1119,6 +1107,8 @@ std::expected<QHash<QString, QByteArray>, QString> unzip(QByteArrayView data)
     }
     return files;
 }
+
+namespace {
 
 std::expected<NeptusImport, Errors> finish(Importer &importer, std::optional<Mission> mission, const QString &fileName)
 {

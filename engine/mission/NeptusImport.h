@@ -3,6 +3,7 @@
 #include "mission/MissionXml.h"
 #include "mission/Vehicle.h"
 
+#include <QHash>
 #include <QString>
 
 #include <optional>
@@ -54,6 +55,10 @@ std::expected<NeptusVehicleImport, Errors> importNeptusVehicle(const QString &pa
 // Neptus's latitude or longitude text, in decimal degrees (south and west
 // negative); empty when it is neither form.
 std::optional<double> parseNeptusAngle(const QString &text);
+
+// The regular files of a zip (a .nmisz), by normalised path, within the
+// limits below; an error says why not (damaged, too many files, too big).
+std::expected<QHash<QString, QByteArray>, QString> unzip(QByteArrayView data);
 
 // Limits on what a .nmisz may unpack to (a zip bomb stops here).
 constexpr qsizetype maxArchiveEntries = 1000;

@@ -122,8 +122,8 @@ ManeuverGeometry maneuverGeometry(const Maneuver &m, const Waypoint *previous, c
     ManeuverGeometry g;
     g.id = m.id;
     g.type = m.type;
-    if (m.type == u"Unsupported" && !m.has(u"lat"_s))
-        return g; // no place and no duration known: it stays where the vehicle is, for as long as it takes
+    if (!m.has(u"lat"_s))
+        return g; // no place (a kept Unsupported one) and no duration known: it stays where the vehicle is
     g.speed = speedOf(m, speeds);
     const bool elevator = m.type == u"Elevator";
     const double z = m.number(elevator ? u"end_z"_s : u"z"_s);

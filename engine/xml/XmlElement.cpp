@@ -52,4 +52,14 @@ void writeElement(QXmlStreamWriter &out, const Element &element)
     out.writeEndElement();
 }
 
+void writeElements(QXmlStreamWriter &out, const QString &wrapper, const QList<Element> &elements)
+{
+    if (elements.isEmpty())
+        return;
+    out.writeStartElement(wrapper);
+    for (const Element &element : elements)
+        writeElement(out, element);
+    out.writeEndElement();
+}
+
 } // namespace neptus::xml

@@ -32,5 +32,7 @@ struct Element
 Element readElement(const xmlNode *node);
 // And written back, as read.
 void writeElement(QXmlStreamWriter &out, const Element &element);
+// Elements inside a wrapper element (<messages>…</messages>); nothing at all when there are none.
+void writeElements(QXmlStreamWriter &out, const QString &wrapper, const QList<Element> &elements);
 
 } // namespace neptus::xml

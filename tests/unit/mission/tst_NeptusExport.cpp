@@ -20,8 +20,6 @@
 #include <QSet>
 #include <QTemporaryDir>
 
-#include <archive.h>
-#include <archive_entry.h>
 #include <libxml/xmlschemas.h>
 
 #include <gtest/gtest.h>
@@ -41,20 +39,9 @@ bool haveFixtures()
 
 QHash<QString, QByteArray> unzipAll(const QByteArray &data)
 {
-    QHash<QString, QByteArray> files;
-    archive *a = archive_read_new();
-    archive_read_support_format_zip(a);
-    EXPECT_EQ(archive_read_open_memory(a, data.constData(), size_t(data.size())), ARCHIVE_OK);
-    archive_entry *entry = nullptr;
-    while (archive_read_next_header(a, &entry) == ARCHIVE_OK) {
-        QByteArray bytes;
-        char buffer[65536];
-        for (la_ssize_t n; (n = archive_read_data(a, buffer, sizeof buffer)) > 0;)
-            bytes.append(buffer, n);
-        files.insert(QString::fromUtf8(archive_entry_pathname(entry)), bytes);
-    }
-    archive_read_free(a);
-    return files;
+    auto files = unzip(data);
+    EXPECT_TRUE(files.has_value()) << (files ? std::string() : files.error().toStdString());
+    return files.value_or(QHash<QString, QByteArray>{});
 }
 
 QByteArray readAll(const QString &path)

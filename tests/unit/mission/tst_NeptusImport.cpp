@@ -418,15 +418,9 @@ struct PlainCount
 PlainCount plainCount(const QByteArray &nmisz)
 {
     PlainCount c;
-    archive *a = archive_read_new();
-    archive_read_support_format_zip(a);
-    archive_read_open_memory(a, nmisz.constData(), size_t(nmisz.size()));
-    archive_entry *entry = nullptr;
-    while (archive_read_next_header(a, &entry) == ARCHIVE_OK) {
-        QByteArray bytes;
-        char buffer[65536];
-        for (la_ssize_t n; (n = archive_read_data(a, buffer, sizeof buffer)) > 0;)
-            bytes.append(buffer, n);
+    const auto files = unzip(nmisz);
+    EXPECT_TRUE(files.has_value());
+    for (const QByteArray &bytes : files.value_or(QHash<QString, QByteArray>{})) {
         QXmlStreamReader xml(bytes);
         QStringList path;
         while (!xml.atEnd()) {
@@ -449,7 +443,6 @@ PlainCount plainCount(const QByteArray &nmisz)
             }
         }
     }
-    archive_read_free(a);
     return c;
 }
 
