@@ -5,8 +5,9 @@
   encodes it). Each maneuver becomes the IMC message of its type with its
   attributes as fields; angles are copied in degrees and marked unit="deg"
   (the encoder turns them into radians, the one conversion the direct C++
-  encoder uses too, so both give the same bytes); ExpandingSquare, which IMC
-  lacks, becomes a FollowPath through the corners the engine worked out.
+  encoder uses too, so both give the same bytes); ExpandingSquare and
+  CrossHatch, which IMC lacks, become a FollowPath through the points the
+  engine worked out, with the custom settings it gives.
   Empty lists are left out (an absent field is empty).
 -->
 <xsl:stylesheet version="1.0" xmlns:xsl="http://www.w3.org/1999/XSL/Transform">
@@ -173,10 +174,14 @@
     </xsl:copy>
   </xsl:template>
 
-  <xsl:template match="ExpandingSquare" mode="maneuver">
+  <xsl:template match="ExpandingSquare | CrossHatch" mode="maneuver">
     <xsl:variable name="id" select="@id"/>
     <FollowPath>
-      <xsl:apply-templates select="@*[name() != 'id' and name() != 'width' and name() != 'hstep' and name() != 'bearing']" mode="field"/>
+      <!-- The pattern's own parameters make its points (engine/mission/PlanGeometry.h, patternShapeParameters). -->
+      <xsl:apply-templates select="@*[not(contains(' id width hstep bearing coff flags custom ', concat(' ', name(), ' ')))]" mode="field"/>
+      <xsl:if test="key('geometry', $id)/@custom">
+        <custom><xsl:value-of select="key('geometry', $id)/@custom"/></custom>
+      </xsl:if>
       <points>
         <xsl:for-each select="key('geometry', $id)/offset">
           <PathPoint><x><xsl:value-of select="@x"/></x><y><xsl:value-of select="@y"/></y><z>0</z></PathPoint>

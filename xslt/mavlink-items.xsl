@@ -18,7 +18,7 @@
     <!-- A maneuver whose meaning mission items cannot carry is refused, naming it, before anything is made:
          never turned into waypoints that do something else. -->
     <xsl:variable name="refused" select="/translation/geometry/maneuver[not(contains(
-        ' Goto Rows FollowPath ExpandingSquare Loiter StationKeeping PopUp Elevator Takeoff Land ', concat(' ', @type, ' ')))]"/>
+        ' Goto Rows FollowPath ExpandingSquare CrossHatch Loiter StationKeeping PopUp Elevator Takeoff Land ', concat(' ', @type, ' ')))]"/>
     <xsl:if test="$refused">
       <xsl:message terminate="yes">
         <xsl:text>not expressible as MAVLink mission items: </xsl:text>

@@ -65,19 +65,23 @@ public:
 
     std::expected<msg::Message, QString> maneuver(const Maneuver &m)
     {
-        const bool square = m.type == u"ExpandingSquare";
-        auto message = make(square ? u"FollowPath"_s : m.type);
+        const bool pattern = isWorkedPattern(m.type);
+        auto message = make(pattern ? u"FollowPath"_s : m.type);
         if (!message)
             return message;
         for (auto it = m.parameters.cbegin(); it != m.parameters.cend(); ++it) {
-            // The square's own parameters make its corners; the rest are FollowPath's.
-            if (square && (it.key() == u"width" || it.key() == u"hstep" || it.key() == u"bearing"))
+            // A pattern's own parameters make its points; the rest are FollowPath's.
+            if (pattern && (patternShapeParameters(m.type).contains(it.key()) || it.key() == u"custom"))
                 continue;
             if (auto ok = set(*message, it.key(), it.value()); !ok)
                 return std::unexpected(u"maneuver '%1': %2"_s.arg(m.id, ok.error()));
         }
-        const QList<PathPoint> points = square ? expandingSquareOffsets(m) : m.points;
-        if (!points.isEmpty() || square) {
+        if (const QString custom = patternCustom(m); pattern && !custom.isEmpty()) {
+            if (auto ok = set(*message, u"custom"_s, custom); !ok)
+                return std::unexpected(u"maneuver '%1': %2"_s.arg(m.id, ok.error()));
+        }
+        const QList<PathPoint> points = pattern ? patternOffsets(m) : m.points;
+        if (!points.isEmpty() || pattern) {
             std::vector<msg::Message> list;
             for (const PathPoint &p : points) {
                 auto point = make(m.type == u"FollowTrajectory" ? u"TrajectoryPoint"_s : u"PathPoint"_s);

@@ -10,8 +10,8 @@ namespace neptus::mission {
 // A plan as IMC's PlanSpecification, built directly (no stylesheet): what the
 // console sends a vehicle through PlanDB. Each maneuver becomes the IMC
 // message of its type with its parameters as fields (degrees to radians with
-// msg::radiansFromDegrees); ExpandingSquare, which IMC lacks, a FollowPath
-// through its corners; plan variables PlanVariables (by default NUMBER when
+// msg::radiansFromDegrees); ExpandingSquare and CrossHatch, which IMC lacks,
+// a FollowPath through their points (patternOffsets, with patternCustom); plan variables PlanVariables (by default NUMBER when
 // the value is a plain decimal, TEXT otherwise; INPUT). xslt/imc-plan.xsl
 // does the same through the mission processor, byte for byte.
 std::expected<msg::Message, QString> planSpecification(const Plan &plan, const msg::Schema &imc);

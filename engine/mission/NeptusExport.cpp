@@ -386,7 +386,9 @@ void Exporter::maneuver(QXmlStreamWriter &out, const Plan &plan, const Maneuver 
     text(out, u"minTime"_s, u"0"_s);
     if (has(u"timeout"_s))
         text(out, u"maxTime"_s, QString::number(qRound64(m.number(u"timeout"_s))));
-    const QString element = m.type == u"ExpandingSquare" ? u"ExpandingSquarePattern"_s : m.type;
+    const QString element = m.type == u"ExpandingSquare" ? u"ExpandingSquarePattern"_s
+                            : m.type == u"CrossHatch"    ? u"CrossHatchPattern"_s
+                                                         : m.type;
     out.writeStartElement(element);
     if (m.type != u"CompassCalibration")
         out.writeAttribute(u"kind"_s, u"automatic"_s);
@@ -426,7 +428,8 @@ void Exporter::maneuver(QXmlStreamWriter &out, const Plan &plan, const Maneuver 
         num(u"amplitude"_s, u"amplitude"_s);
         used.insert(u"pitch"_s);
         number(out, u"pitch"_s, geo::radians(m.number(u"pitch"_s))); // radians in Neptus's YoYo
-    } else if (m.type == u"Rows" || m.type == u"ExpandingSquare") {
+    } else if (m.type == u"Rows" || m.type == u"ExpandingSquare" || m.type == u"CrossHatch") {
+        // As RowsManeuver.java, RowsPattern.java (CrossHatch) and ExpandingSquarePattern.java write them.
         num(u"width"_s, u"width"_s);
         if (m.type == u"Rows")
             num(u"length"_s, u"length"_s);
@@ -435,10 +438,13 @@ void Exporter::maneuver(QXmlStreamWriter &out, const Plan &plan, const Maneuver 
         if (m.type == u"Rows") {
             optional(u"crossAngle"_s, u"cross_angle"_s);
             optional(u"alternationPercentage"_s, u"alternation"_s);
-            optional(u"curveOffset"_s, u"coff"_s);
+        }
+        if (m.type != u"ExpandingSquare") {
+            num(u"curveOffset"_s, u"coff"_s); // always: Neptus reads none as 15 m
             boolean(u"squareCurve"_s, u"SQUARE_CURVE"_s);
         }
-        boolean(u"firstCurveRight"_s, u"CURVE_RIGHT"_s);
+        if (m.type == u"Rows")
+            boolean(u"firstCurveRight"_s, u"CURVE_RIGHT"_s);
         speed();
     } else if (m.type == u"FollowPath" || m.type == u"FollowTrajectory") {
         offsets(m.type == u"FollowPath" ? u"path"_s : u"trajectory"_s, m.type == u"FollowTrajectory");

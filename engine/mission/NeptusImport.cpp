@@ -7,10 +7,12 @@
 #include <QDir>
 #include <QFileInfo>
 #include <QRegularExpression>
+#include <QSet>
 
 #include <archive.h>
 #include <archive_entry.h>
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 
@@ -320,7 +322,8 @@ std::optional<Maneuver> Importer::maneuver(const XmlDocument &doc, const xmlNode
     }
     static const QStringList known{u"Goto"_s, u"PopUp"_s, u"Loiter"_s, u"StationKeeping"_s, u"YoYo"_s, u"Rows"_s,
                                    u"FollowPath"_s, u"FollowTrajectory"_s, u"Elevator"_s, u"CompassCalibration"_s,
-                                   u"ScheduledGoto"_s, u"Launch"_s, u"Takeoff"_s, u"Land"_s, u"ExpandingSquare"_s};
+                                   u"ScheduledGoto"_s, u"Launch"_s, u"Takeoff"_s, u"Land"_s, u"ExpandingSquare"_s,
+                                   u"CrossHatch"_s};
     Maneuver m;
     m.id = validId(id);
     m.line.value = static_cast<int>(xmlGetLineNo(body));
@@ -329,6 +332,8 @@ std::optional<Maneuver> Importer::maneuver(const XmlDocument &doc, const xmlNode
         m.type = u"Rows"_s;
     else if (m.type == u"ExpandingSquarePattern")
         m.type = u"ExpandingSquare"_s;
+    else if (m.type == u"CrossHatchPattern")
+        m.type = u"CrossHatch"_s;
     if (!known.contains(m.type)) {
         if (positionOptional) { // a vehicle's feasible maneuver: nothing to keep it for
             warn(doc, body, u"maneuver type '%1' has no counterpart here; maneuver '%2' left out"_s.arg(m.type, id));
@@ -345,9 +350,17 @@ std::optional<Maneuver> Importer::maneuver(const XmlDocument &doc, const xmlNode
                                                 : u"a Neptus %1, which no vehicle here executes"_s.arg(m.type));
         for (const char *where : {"finalPoint", "basePoint", "initialPoint"}) {
             if (const xmlNode *p = firstChildElement(body, where)) {
+                // Only to show it on the map: a position that cannot be read leaves it unplaced, not the import failed.
+                const qsizetype errorsBefore = errors.size();
                 Maneuver at;
-                if (point(doc, p, at, false))
+                if (point(doc, p, at, false)) {
                     kept.parameters.insert(at.parameters);
+                } else {
+                    for (qsizetype i = errorsBefore; i < errors.size(); ++i)
+                        warn(doc, p, u"maneuver '%1' (%2) kept without a place on the map: %3"_s
+                                         .arg(id, m.type, errors[i].message));
+                    errors.resize(errorsBefore);
+                }
                 break;
             }
         }
@@ -356,11 +369,17 @@ std::optional<Maneuver> Importer::maneuver(const XmlDocument &doc, const xmlNode
                         "cannot be sent"_s.arg(id, m.type));
         return kept;
     }
-    const bool elevator = m.type == u"Elevator";
+    const bool elevator = m.type == u"Elevator", crossHatch = m.type == u"CrossHatch";
     QStringList flags;
+    QSet<QString> given; // which of a pattern's optional elements the file has
     for (const xmlNode *c : childElements(body)) {
         const QString name = elementName(c);
         const QString text = textContent(c).trimmed();
+        given.insert(name);
+        if (crossHatch && (name == u"length" || name == u"crossAngle" || name == u"firstCurveRight"
+                           || name == u"alternationPercentage")) {
+            continue; // Neptus's CrossHatchPattern ignores these too (CrossHatchPattern.java)
+        }
         if (name == u"finalPoint" || name == u"basePoint") {
             if (positionOptional) {
                 // Only the z units matter as a default.
@@ -469,6 +488,33 @@ std::optional<Maneuver> Importer::maneuver(const XmlDocument &doc, const xmlNode
         } else if (!ignoredManeuverElements().contains(name)) {
             notUnderstood(doc, c);
         }
+    }
+    // Neptus leaves out what is at its default (RowsManeuver.java, RowsPattern.java, ExpandingSquarePattern.java):
+    // no length is the width, no curve offset 15 m, no squareCurve or firstCurveRight true.
+    if (m.type == u"Rows" || crossHatch) {
+        if (!given.contains(u"curveOffset"_s))
+            m.set(u"coff"_s, 15);
+        if (!given.contains(u"squareCurve"_s))
+            flags << u"SQUARE_CURVE"_s;
+    }
+    if (m.type == u"Rows") {
+        if (!given.contains(u"length"_s) && m.has(u"width"_s))
+            m.parameters.insert(u"length"_s, m.text(u"width"_s));
+        if (!given.contains(u"firstCurveRight"_s))
+            flags << u"CURVE_RIGHT"_s;
+        // IMC's Rows carries its curve offset as whole metres, 0-255 (Neptus casts it so).
+        if (const double coff = m.number(u"coff"_s); coff != std::clamp(std::trunc(coff), 0.0, 255.0)) {
+            m.set(u"coff"_s, std::clamp(std::trunc(coff), 0.0, 255.0));
+            warn(doc, body, u"maneuver '%1': curve offset %2 m sent as %3 m (IMC Rows takes whole metres, 0-255)"_s
+                                .arg(id, formatNumber(coff), m.text(u"coff"_s)));
+        }
+    }
+    if (m.type == u"ExpandingSquare") {
+        // Ours turns right, as Neptus's does unless told otherwise.
+        if (flags.removeAll(u"CURVE_RIGHT"_s) == 0 && given.contains(u"firstCurveRight"_s))
+            warn(doc, body, u"maneuver '%1': an expanding square turning left first is not supported here; it turns "
+                            "right (its mirror image)"_s.arg(id));
+        flags.removeAll(u"SQUARE_CURVE"_s);
     }
     if (!flags.isEmpty())
         m.parameters.insert(u"flags"_s, flags.join(u'|'));

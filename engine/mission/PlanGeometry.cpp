@@ -2,6 +2,7 @@
 
 #include "geo/Geodesy.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -102,6 +103,96 @@ QList<PathPoint> expandingSquareOffsets(const Maneuver &m)
     return points;
 }
 
+namespace {
+
+// Neptus's rows (ManeuversUtil.calcRowsPoints without alternation, cross
+// angle or mirroring): from `curvOff` before the first row, rows of `length`
+// run on `curvOff` at each end, `hstep` apart to the right, as long as a row
+// fits in `width`; turned to `bearing` (radians).
+QList<PathPoint> neptusRows(double width, double length, double hstep, double curvOff, bool squareCurve, double bearing)
+{
+    width = std::abs(width);
+    length = std::abs(length);
+    hstep = std::abs(hstep) > 0 ? std::abs(hstep) : 0.1; // as Neptus does
+    QList<PathPoint> points{PathPoint{-curvOff, 0, 0, {}}};
+    bool forward = true;
+    int rows = 0;
+    for (double y = 0; y <= width && rows < 10000; y += hstep, ++rows) {
+        const double x = forward ? length + curvOff : -curvOff;
+        forward = !forward;
+        points.append(PathPoint{x, y, 0, {}});
+        if (y + hstep <= width)
+            points.append(PathPoint{x + (squareCurve ? 0 : (forward ? curvOff : -curvOff)), y + hstep, 0, {}});
+    }
+    const double c = std::cos(bearing), s = std::sin(bearing);
+    for (PathPoint &p : points)
+        p = PathPoint{p.x * c - p.y * s, p.x * s + p.y * c, 0, {}};
+    return points;
+}
+
+} // namespace
+
+QList<PathPoint> crossHatchOffsets(const Maneuver &m)
+{
+    const double bearing = geo::radians(m.number(u"bearing"_s));
+    const double width = std::abs(m.number(u"width"_s));
+    const double hstep = m.number(u"hstep"_s), curvOff = m.number(u"coff"_s);
+    const bool square = m.text(u"flags"_s).contains(u"SQUARE_CURVE"_s);
+    const double c = std::cos(bearing), s = std::sin(bearing), half = width / 2;
+    QList<PathPoint> points;
+    // From the square's corner behind and left of the centre along the bearing, then from the one behind and right across it.
+    for (const auto &[side, turn] : {std::pair{-half, 0.0}, std::pair{half, -std::numbers::pi / 2}}) {
+        const double baseX = -half * c - side * s, baseY = -half * s + side * c;
+        for (PathPoint p : neptusRows(width, width, hstep, curvOff, square, bearing + turn)) {
+            p.x += baseX;
+            p.y += baseY;
+            points.append(p);
+        }
+    }
+    return points;
+}
+
+bool isWorkedPattern(const QString &type)
+{
+    return type == u"ExpandingSquare" || type == u"CrossHatch";
+}
+
+QList<PathPoint> patternOffsets(const Maneuver &m)
+{
+    if (m.type == u"ExpandingSquare")
+        return expandingSquareOffsets(m);
+    if (m.type == u"CrossHatch")
+        return crossHatchOffsets(m);
+    return {};
+}
+
+const QStringList &patternShapeParameters(const QString &type)
+{
+    static const QStringList square{u"width"_s, u"hstep"_s, u"bearing"_s},
+        crossHatch{u"width"_s, u"hstep"_s, u"bearing"_s, u"coff"_s, u"flags"_s}, none;
+    return type == u"ExpandingSquare" ? square : type == u"CrossHatch" ? crossHatch : none;
+}
+
+QString patternCustom(const Maneuver &m)
+{
+    const QString own = m.text(u"custom"_s);
+    if (m.type != u"CrossHatch")
+        return own;
+    QStringList pattern{u"Pattern=CrossHatchPattern"_s,
+                        u"bearingRad="_s + formatNumber(geo::radians(m.number(u"bearing"_s))),
+                        u"width="_s + formatNumber(m.number(u"width"_s)),
+                        u"hstep="_s + formatNumber(m.number(u"hstep"_s)),
+                        u"curvOff="_s + formatNumber(m.number(u"coff"_s)),
+                        u"squareCurve="_s + (m.text(u"flags"_s).contains(u"SQUARE_CURVE"_s) ? u"true"_s : u"false"_s)};
+    // The maneuver's own settings follow, less any that would name the pattern again.
+    for (const QString &entry : own.split(u';', Qt::SkipEmptyParts)) {
+        const QString key = entry.section(u'=', 0, 0);
+        if (!std::ranges::any_of(pattern, [&](const QString &p) { return p.section(u'=', 0, 0) == key; }))
+            pattern << entry;
+    }
+    return pattern.join(u';');
+}
+
 double distance(const Waypoint &a, const Waypoint &b)
 {
     return arriving(a, b).leg;
@@ -140,8 +231,8 @@ ManeuverGeometry maneuverGeometry(const Maneuver &m, const Waypoint *previous, c
 
     if (m.type == u"Rows") {
         offsets = rows(m);
-    } else if (m.type == u"FollowPath" || m.type == u"FollowTrajectory" || m.type == u"ExpandingSquare") {
-        offsets = m.type == u"ExpandingSquare" ? expandingSquareOffsets(m) : m.points;
+    } else if (m.type == u"FollowPath" || m.type == u"FollowTrajectory" || isWorkedPattern(m.type)) {
+        offsets = isWorkedPattern(m.type) ? patternOffsets(m) : m.points;
         for (const PathPoint &p : std::as_const(offsets)) {
             g.minZ = std::min(g.minZ, z + p.z);
             g.maxZ = std::max(g.maxZ, z + p.z);

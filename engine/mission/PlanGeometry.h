@@ -69,11 +69,31 @@ ManeuverGeometry maneuverGeometry(const Maneuver &maneuver, const Waypoint *prev
                                   const SpeedModel &speeds = {});
 PlanGeometry planGeometry(const Plan &plan, const SpeedModel &speeds = {});
 
-// ExpandingSquare's corners, metres north (x) and east (y) of its position:
-// legs of hstep, hstep, 2·hstep, 2·hstep, … turning right from `bearing`,
-// until a leg would pass `width`. The IMC translation sends them as a
-// FollowPath.
+// Patterns IMC has no maneuver for: their points are worked out here, metres
+// north (x) and east (y) of the maneuver's position, and the IMC translation
+// sends them as a FollowPath.
+//
+// ExpandingSquare's corners: legs of hstep, hstep, 2·hstep, 2·hstep, …
+// turning right from `bearing`, until a leg would pass `width`.
 QList<PathPoint> expandingSquareOffsets(const Maneuver &maneuver);
+// CrossHatch, as LSTS Neptus makes its CrossHatchPattern
+// (ManeuversUtil.calcCrossHatchPatternPoints): a square of `width` centred on
+// the position, covered by rows `hstep` apart along `bearing` (first turn to
+// the right) and then by rows across them, each row run on `coff` metres past
+// the square; the turns square with SQUARE_CURVE in `flags`, else cut
+// diagonally. At most 10,000 rows each way.
+QList<PathPoint> crossHatchOffsets(const Maneuver &maneuver);
+
+// Whether `type` is such a pattern; its points (empty for any other
+// maneuver); the parameters that only shape them (the FollowPath leaves
+// them out); and the FollowPath's `custom` tuple list: the maneuver's own,
+// after what names the pattern for a Neptus console that reads the plan back
+// (CrossHatch: Pattern=CrossHatchPattern and its figures, as
+// RowsPattern.serializeToIMC writes them).
+bool isWorkedPattern(const QString &type);
+QList<PathPoint> patternOffsets(const Maneuver &maneuver);
+const QStringList &patternShapeParameters(const QString &type);
+QString patternCustom(const Maneuver &maneuver);
 
 // Great-circle distance in metres (WGS84 geodesic).
 double distance(const Waypoint &a, const Waypoint &b);

@@ -53,8 +53,9 @@ QByteArray geometryElement(const Plan &plan, const VehicleDefinition &vehicle, T
         out += value;
         out += '"';
     };
-    const auto squareCorners = [&](const Maneuver &m) {
-        for (const PathPoint &p : expandingSquareOffsets(m)) {
+    // A pattern IMC lacks: its points, and the FollowPath's custom settings that name it.
+    const auto patternPoints = [&](const Maneuver &m) {
+        for (const PathPoint &p : patternOffsets(m)) {
             out += "<offset";
             attribute("x", formatNumber(p.x).toLatin1());
             attribute("y", formatNumber(p.y).toLatin1());
@@ -62,18 +63,20 @@ QByteArray geometryElement(const Plan &plan, const VehicleDefinition &vehicle, T
         }
     };
     if (detail == Translation::Geometry::None) {
-        // Only what a stylesheet cannot work out exactly: the corners of squares.
+        // Only what a stylesheet cannot work out exactly: the points of patterns.
         out += "<geometry";
         attribute("plan", plan.id.toHtmlEscaped().toUtf8());
         out += ">\n";
         for (const Maneuver &m : plan.maneuvers) {
-            if (m.type != u"ExpandingSquare")
+            if (!isWorkedPattern(m.type))
                 continue;
             out += "<maneuver";
             attribute("id", m.id.toHtmlEscaped().toUtf8());
             attribute("type", m.type.toUtf8());
+            if (const QString custom = patternCustom(m); !custom.isEmpty())
+                attribute("custom", custom.toHtmlEscaped().toUtf8());
             out += ">\n";
-            squareCorners(m);
+            patternPoints(m);
             out += "</maneuver>\n";
         }
         out += "</geometry>\n";
@@ -110,6 +113,8 @@ QByteArray geometryElement(const Plan &plan, const VehicleDefinition &vehicle, T
         attribute("min-z", formatNumber(g.minZ).toLatin1());
         attribute("max-z", formatNumber(g.maxZ).toLatin1());
         attribute("z-units", g.zUnits.toLatin1());
+        if (const QString custom = patternCustom(m); isWorkedPattern(g.type) && !custom.isEmpty())
+            attribute("custom", custom.toHtmlEscaped().toUtf8());
         out += ">\n";
         // A loiter's circle is its centre and radius: no target needs the polygon.
         const bool circling = g.type == u"Loiter" || g.type == u"CompassCalibration";
@@ -134,8 +139,8 @@ QByteArray geometryElement(const Plan &plan, const VehicleDefinition &vehicle, T
             out += "/>\n";
         }
         previous = points.last();
-        if (g.type == u"ExpandingSquare")
-            squareCorners(m);
+        if (isWorkedPattern(g.type))
+            patternPoints(m);
         out += "</maneuver>\n";
     }
     out += "</geometry>\n";

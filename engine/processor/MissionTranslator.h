@@ -22,9 +22,10 @@ namespace neptus::processor {
 //     <vehicle format="1" …>  the vehicle definition
 //     <geometry …>            what the plan implies, worked out by the engine, as
 //                             much as the translation asks (Translation::Geometry):
-//       <maneuver step id type speed transit length duration min-z max-z z-units>   (maneuvers, points)
+//       <maneuver step id type speed transit length duration min-z max-z z-units custom>   (maneuvers, points)
 //         <point lat lon z z-units leg heading/>   (points; leg: metres from the previous point)
-//         <offset x y/>                            (always: ExpandingSquare corners, metres N/E)
+//         <offset x y/>                            (always: the points of ExpandingSquare and CrossHatch,
+//                                                   metres N/E, sent as a FollowPath with `custom`)
 //
 // and gets as parameters the translation's own, plus plan_id, vehicle_id,
 // target, home_lat, home_lon, home_height.

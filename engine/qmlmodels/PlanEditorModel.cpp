@@ -25,7 +25,7 @@ namespace {
 
 // What an editor may add to a plan of a vehicle with no definition.
 const QStringList knownTypes{u"Goto"_s, u"Loiter"_s, u"StationKeeping"_s, u"Rows"_s, u"YoYo"_s, u"FollowPath"_s,
-                             u"ExpandingSquare"_s, u"PopUp"_s, u"Elevator"_s};
+                             u"ExpandingSquare"_s, u"CrossHatch"_s, u"PopUp"_s, u"Elevator"_s};
 
 QList<LatLon> latLons(const QVariantList &points)
 {
@@ -709,6 +709,11 @@ QString PlanEditorModel::addManeuver(const QString &type, double lat, double lon
     if (type == u"Loiter"_s || type == u"StationKeeping"_s || type == u"PopUp"_s) {
         m.parameters.insert(u"duration"_s, m.parameters.value(u"duration"_s, u"60"_s));
         m.parameters.insert(u"radius"_s, m.parameters.value(u"radius"_s, u"20"_s));
+    }
+    if (type == u"CrossHatch"_s) { // Neptus's defaults (RowsPattern.java)
+        for (const auto &[name, value] : {std::pair{u"width"_s, u"100"_s}, std::pair{u"hstep"_s, u"27"_s},
+                                          std::pair{u"coff"_s, u"15"_s}, std::pair{u"flags"_s, u"SQUARE_CURVE"_s}})
+            m.parameters.insert(name, m.parameters.value(name, value));
     }
     m.parameters.insert(u"lat"_s, QString::number(lat, 'f', 8));
     m.parameters.insert(u"lon"_s, QString::number(lon, 'f', 8));

@@ -119,6 +119,19 @@ Recorded vehiclePackets(const QString &log, quint16 vehicle)
     return out;
 }
 
+// Resident memory by kind (/proc/PID/smaps_rollup), kB: anonymous (the heap,
+// thread stacks, GL buffers) and file-backed (libraries, mapped files).
+std::pair<qint64, qint64> anonAndFileKb(qint64 pid)
+{
+    QFile rollup(u"/proc/%1/smaps_rollup"_s.arg(pid));
+    if (!rollup.open(QIODevice::ReadOnly))
+        return {-1, -1};
+    const QString text = QString::fromLatin1(rollup.readAll());
+    static const QRegularExpression anon(u"Pss_Anon:\\s+(\\d+) kB"_s), file(u"Pss_File:\\s+(\\d+) kB"_s);
+    const auto a = anon.match(text), f = file.match(text);
+    return {a.hasMatch() ? a.captured(1).toLongLong() : -1, f.hasMatch() ? f.captured(1).toLongLong() : -1};
+}
+
 double cpuSeconds(qint64 pid)
 {
     QFile stat(u"/proc/%1/stat"_s.arg(pid));
@@ -227,7 +240,7 @@ int main(int argc, char **argv)
                                      : qPrintable(u" and a DUNE vehicle (%1 packets in %2 s, again and again)"_s
                                                       .arg(dune.packets.size()).arg(dune.span, 0, 'f', 1)),
                 minutes);
-    std::printf("%8s %10s %10s %8s %s\n", "minute", "RSS MB", "growth", "CPU %", "plans started");
+    std::printf("%8s %10s %10s %8s %8s %8s %s\n", "minute", "RSS MB", "growth", "anon MB", "file MB", "CPU %", "plans started");
     std::fflush(stdout);
     QElapsedTimer clock;
     clock.start();
@@ -262,8 +275,9 @@ int main(int argc, char **argv)
         last = rss;
         if (rssAt10 < 0 && now >= 10 * 60000)
             rssAt10 = rss;
-        std::printf("%8.1f %10.1f %+10.1f %8.1f %d + %d\n", now / 60000.0, rss / 1024.0, (rss - first) / 1024.0,
-                    100.0 * (cpu - cpuBefore) / (smoke ? 10.0 : 60.0), runs[u"lauv-soak"_s], runs[u"caravela-soak"_s]);
+        const auto [anonKb, fileKb] = anonAndFileKb(console.processId());
+        std::printf("%8.1f %10.1f %+10.1f %8.1f %8.1f %8.1f %d + %d\n", now / 60000.0, rss / 1024.0, (rss - first) / 1024.0,
+                    anonKb / 1024.0, fileKb / 1024.0, 100.0 * (cpu - cpuBefore) / (smoke ? 10.0 : 60.0), runs[u"lauv-soak"_s], runs[u"caravela-soak"_s]);
         std::fflush(stdout);
         cpuBefore = cpu;
     }

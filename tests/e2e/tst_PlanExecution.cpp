@@ -3,8 +3,11 @@
 // vehicle holds exactly that plan, starts it and follows it in its variable
 // tree to the vehicle's word that it ended; over IMC/UDP and over DDS.
 // Vehicles run 30 simulated seconds per second (--time-factor).
+#include "geo/Geodesy.h"
 #include "mission/ImcPlan.h"
 #include "mission/MissionXml.h"
+#include "mission/NeptusImport.h"
+#include "mission/PlanGeometry.h"
 #include "plans/PlanClient.h"
 #include "plans/PlanDatabase.h"
 #include "plans/PlanDesk.h"
@@ -20,6 +23,8 @@
 #include <QTest>
 
 #include <gtest/gtest.h>
+
+#include <limits>
 
 using namespace neptus;
 using namespace Qt::StringLiterals;
@@ -213,4 +218,60 @@ TEST(PlanExecution, StopAndAbortEndAPlanOnAVehicleProcess)
     ASSERT_NE(node, alarms::AlarmGraph::noNode);
     EXPECT_EQ(console.alarmGraph().ownLevel(node), alarms::Warning);
     EXPECT_TRUE(vehicle.output.contains("received Abort")) << vehicle.output.constData();
+}
+
+// A Neptus CrossHatchPattern, imported, runs on a vehicle as Neptus sends it
+// (a FollowPath through the pattern's points): the simulated AUV passes every
+// corner of the cross hatch, in order, and the plan completes.
+TEST(PlanExecution, AnImportedNeptusCrossHatchIsDrivenThroughEveryCorner)
+{
+    test::SimProcess vehicle;
+    vehicle.start({u"--id"_s, u"0x1f"_s, u"--name"_s, u"lauv-sim-1"_s, u"--port"_s, u"16126"_s, u"--time-factor"_s, u"20"_s});
+    session::Console console(test::shippedSchema());
+    ASSERT_TRUE(console.startImc(imcTo({16126})));
+    ASSERT_TRUE(QTest::qWaitFor([&] { return heard(console.tree(), u"lauv-sim-1"_s); }, 15000));
+    // 41°08'26.4" N, 8°36'37.2" W: 25 m north-east of the simulator's reference point.
+    const auto imported = mission::importNeptus(R"(<mission-def><header><id>e2e</id><name>e2e</name></header><definitions>
+<vehicles><vehicle><id>lauv-sim-1</id><name>lauv-sim-1</name></vehicle></vehicles>
+<home-reference><origin><latitude>41.1405</latitude><longitude>-8.6110</longitude><depth>0</depth></origin></home-reference>
+</definitions><body><plan id="survey" vehicle="lauv-sim-1"><graph><node start="true"><id>cross</id><maneuver>
+<CrossHatchPattern kind="automatic"><basePoint type="pointType"><point>
+  <coordinate><latitude>41N08'26.4''</latitude><longitude>8W36'37.2''</longitude><height>0</height></coordinate>
+  <z>2.0</z><zunits>DEPTH</zunits></point><radiusTolerance>0.0</radiusTolerance></basePoint>
+  <width>40</width><hstep>20</hstep><bearing>30</bearing><curveOffset>5</curveOffset><speed unit="m/s">1.5</speed>
+</CrossHatchPattern></maneuver></node></graph></plan></body></mission-def>)",
+                                                  u"e2e.nmis"_s);
+    ASSERT_TRUE(imported) << test::errorsText(imported.error()).toStdString();
+    plans::PlanDesk desk(test::shippedSchema(), console.tree(), console.alarmGraph(),
+                         [&](quint16 id, const msg::Message &m) { return console.send(id, m); });
+    QObject::connect(&console, &session::Console::planMessageReceived, &desk, &plans::PlanDesk::receive);
+    desk.setMission(imported->mission);
+    const QString name = u"lauv-sim-1"_s;
+    const auto log = [&] { return desk.log(name).join(u'\n'); };
+    ASSERT_TRUE(desk.refresh(name));
+    ASSERT_TRUE(QTest::qWaitFor([&] { return desk.fetched(name); }, 10000));
+    ASSERT_TRUE(desk.send(name, u"survey"_s));
+    ASSERT_TRUE(QTest::qWaitFor([&] { return desk.sync(name, u"survey"_s) == plans::Sync::Same; }, 10000)) << log().toStdString();
+    ASSERT_TRUE(desk.start(name, u"survey"_s));
+
+    // Where the vehicle is, as it says (EstimatedState: a reference and metres north/east of it).
+    const auto number = [&](const char *field) {
+        return console.tree().snapshot(console.tree().find(name + u"/EstimatedState/"_s + QLatin1StringView(field))).value.toDouble();
+    };
+    const mission::PlanGeometry planned = mission::planGeometry(imported->mission.plans[0]);
+    ASSERT_EQ(planned.maneuvers.size(), 1);
+    const QList<mission::Waypoint> corners = planned.maneuvers[0].points;
+    ASSERT_EQ(corners.size(), 2 * (1 + 3 + 2));
+    std::vector<double> closest(corners.size(), std::numeric_limits<double>::infinity());
+    ASSERT_TRUE(QTest::qWaitFor([&] {
+        const geo::Geodetic at = geo::fromNed(Eigen::Vector3d(number("x"), number("y"), 0), {number("lat"), number("lon"), 0});
+        const mission::Waypoint here{geo::degrees(at.lat), geo::degrees(at.lon), 0, {}, 0, 0};
+        for (qsizetype i = 0; i < corners.size(); ++i)
+            closest[i] = std::min(closest[i], mission::distance(here, corners[i]));
+        return log().contains(u"survey completed"_s);
+    }, 60000)) << log().toStdString();
+    // A point counts as reached within the simulator's arrival radius (sim::Limits::arrivalRadius:
+    // 1.2 × 1.5 m/s ÷ 0.35 rad/s = 5.1 m here); a metre more for where a sample fell.
+    for (qsizetype i = 0; i < corners.size(); ++i)
+        EXPECT_LT(closest[i], 6.2) << "corner " << i << " of the cross hatch was missed by " << closest[i] << " m";
 }

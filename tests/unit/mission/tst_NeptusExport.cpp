@@ -282,8 +282,8 @@ TEST(NeptusExport, OurOwnMissionGoesToNeptusSayingWhatItHasNoWordsFor)
     EXPECT_EQ(back->mission.maps[0].features.size(), mission->maps[0].features.size() - 1);
 }
 
-// Maneuvers no vehicle here executes (Neptus's CrossHatchPattern, with its custom settings,
-// as LSTS's REP15/UAV/Phase2.nmisz has it; Unconstrained, hand control) keep their plan: it
+// Maneuvers no vehicle here executes (Neptus's RIPattern, with custom settings as
+// LSTS's REP15/UAV/Phase2.nmisz has them; Unconstrained, hand control) keep their plan: it
 // is imported whole, each such maneuver kept as it was, the plan refused at Send saying
 // why, and the export writes them back as they were. A known maneuver's custom settings
 // become IMC's "custom" tuple list, and go back as custom settings.
@@ -298,15 +298,15 @@ TEST(NeptusExport, ManeuversNoVehicleHereExecutesKeepTheirPlanAndGoBackAsTheyWer
   <custom-settings><setting name="Formation" type-hint="String">line</setting></custom-settings></maneuver></node>
 <node><id>cross</id><maneuver>
   <minTime>0</minTime><maxTime>10000</maxTime>
-  <CrossHatchPattern kind="automatic">
+  <RIPattern kind="automatic">
     <basePoint type="pointType"><point><id>id_j67kt</id><name>id_j67kt</name>
       <coordinate><latitude>38N19'50.955''</latitude><longitude>28W27'46.535''</longitude><height>0.0</height></coordinate>
       <z>125.0</z><zunits>HEIGHT</zunits></point><radiusTolerance>0.0</radiusTolerance></basePoint>
     <width>800.0</width><hstep>150.0</hstep><bearing>180.0</bearing><curveOffset>75.0</curveOffset>
     <speed unit="m/s">17.0</speed>
-  </CrossHatchPattern>
+  </RIPattern>
   <custom-settings>
-    <setting name="Pattern" type-hint="String">CrossHatchPattern</setting>
+    <setting name="Pattern" type-hint="String">RIPattern</setting>
     <setting name="width" type-hint="String">800.0</setting>
   </custom-settings>
 </maneuver></node>
@@ -323,7 +323,7 @@ TEST(NeptusExport, ManeuversNoVehicleHereExecutesKeepTheirPlanAndGoBackAsTheyWer
     EXPECT_EQ(plan.maneuvers[0].text(u"custom"_s), u"Formation=line"_s);
     const Maneuver &cross = plan.maneuvers[1], &hand = plan.maneuvers[2];
     EXPECT_EQ(cross.type, u"Unsupported"_s);
-    EXPECT_EQ(cross.text(u"kind"_s), u"CrossHatchPattern"_s);
+    EXPECT_EQ(cross.text(u"kind"_s), u"RIPattern"_s);
     EXPECT_NEAR(cross.number(u"lat"_s), 38 + 19 / 60.0 + 50.955 / 3600, 1e-9);
     EXPECT_EQ(cross.text(u"z_units"_s), u"HEIGHT"_s);
     ASSERT_EQ(cross.verbatim.size(), 1);
@@ -332,7 +332,7 @@ TEST(NeptusExport, ManeuversNoVehicleHereExecutesKeepTheirPlanAndGoBackAsTheyWer
     EXPECT_EQ(hand.text(u"kind"_s), u"Unconstrained"_s);
     EXPECT_FALSE(hand.has(u"lat"_s));
     const QString warnings = errorsText(imported->warnings);
-    EXPECT_TRUE(warnings.contains(u"maneuver 'cross' (CrossHatchPattern) kept as it was"_s)) << warnings.toStdString();
+    EXPECT_TRUE(warnings.contains(u"maneuver 'cross' (RIPattern) kept as it was"_s)) << warnings.toStdString();
 
     // Shown, with a geometry that does not invent a place, and refused at Send saying why.
     const PlanGeometry geometry = planGeometry(plan);
@@ -342,7 +342,7 @@ TEST(NeptusExport, ManeuversNoVehicleHereExecutesKeepTheirPlanAndGoBackAsTheyWer
     for (const PlanProblem &p : problems)
         if (p.severity == PlanProblem::Severity::Error)
             errors << p.message + u" ("_s + p.verdict() + u')';
-    EXPECT_TRUE(errors.contains(u"'cross' (CrossHatchPattern): a Neptus CrossHatchPattern, which no vehicle here executes (impossible)"_s))
+    EXPECT_TRUE(errors.contains(u"'cross' (RIPattern): a Neptus RIPattern, which no vehicle here executes (impossible)"_s))
         << errors.join(u"\n"_s).toStdString();
     EXPECT_EQ(errors.size(), 2) << errors.join(u"\n"_s).toStdString();
 
@@ -351,7 +351,7 @@ TEST(NeptusExport, ManeuversNoVehicleHereExecutesKeepTheirPlanAndGoBackAsTheyWer
     ASSERT_TRUE(exported) << errorsText(exported.error()).toStdString();
     EXPECT_TRUE(exported->warnings.isEmpty()) << errorsText(exported->warnings).toStdString();
     const QByteArray nmis = unzipAll(exported->nmisz).value(u"mission.nmis"_s);
-    EXPECT_TRUE(nmis.contains("<CrossHatchPattern kind=\"automatic\">")) << nmis.constData();
+    EXPECT_TRUE(nmis.contains("<RIPattern kind=\"automatic\">")) << nmis.constData();
     EXPECT_TRUE(nmis.contains("<setting name=\"Formation\" type-hint=\"String\">line</setting>")) << nmis.constData();
     const auto again = importNeptus(exported->nmisz, u"again.nmisz"_s);
     ASSERT_TRUE(again) << errorsText(again.error()).toStdString();
@@ -359,6 +359,127 @@ TEST(NeptusExport, ManeuversNoVehicleHereExecutesKeepTheirPlanAndGoBackAsTheyWer
     EXPECT_EQ(again->mission.plans[0].maneuvers[1].verbatim, cross.verbatim);
     EXPECT_EQ(again->mission.plans[0].maneuvers[2].verbatim, hand.verbatim);
     EXPECT_EQ(again->mission.plans[0].maneuvers[0].text(u"custom"_s), u"Formation=line"_s);
+}
+
+// A maneuver kept as it was needs its position only to be shown: one that cannot be
+// read leaves it off the map, with a warning naming why, and the import goes on.
+TEST(NeptusExport, AKeptManeuverWhosePlaceCannotBeReadIsKeptUnplaced)
+{
+    const QByteArray mission = R"(<mission-def><header><id>m</id><name>M</name></header><definitions>
+<home-reference><origin><latitude>41.5</latitude><longitude>-8.7</longitude><depth>0</depth></origin></home-reference>
+</definitions><body><plan id="p" vehicle="x"><graph>
+<node start="true"><id>ri</id><maneuver><RIPattern kind="automatic"><basePoint type="pointType"><point>
+  <coordinate><latitude>north of here</latitude><longitude>-8.7</longitude></coordinate></point></basePoint>
+  <width>100</width></RIPattern></maneuver></node>
+</graph></plan></body></mission-def>)";
+    const auto imported = importNeptus(mission, u"m.nmis"_s);
+    ASSERT_TRUE(imported) << errorsText(imported.error()).toStdString();
+    const Maneuver &ri = imported->mission.plans[0].maneuvers[0];
+    EXPECT_EQ(ri.type, u"Unsupported"_s);
+    EXPECT_FALSE(ri.has(u"lat"_s));
+    EXPECT_EQ(ri.verbatim.size(), 1);
+    EXPECT_TRUE(errorsText(imported->warnings).contains(u"maneuver 'ri' (RIPattern) kept without a place on the map"_s))
+        << errorsText(imported->warnings).toStdString();
+}
+
+// Neptus's CrossHatchPattern (as REP15/UAV/Phase2.nmisz has it, custom settings and all)
+// is our CrossHatch: drawn, checked and sent as Neptus sends it, and written back as a
+// CrossHatchPattern with the same figures.
+TEST(NeptusExport, CrossHatchPatternIsOurCrossHatchBothWays)
+{
+    const QByteArray mission = R"(<mission-def><header><id>uav</id><name>UAV</name></header><definitions>
+<home-reference><origin><latitude>38N19'50.955''</latitude><longitude>28W27'46.535''</longitude><depth>0</depth></origin></home-reference>
+</definitions><body><plan id="survey" vehicle="x8-02"><graph>
+<node start="true"><id>cross</id><maneuver>
+  <minTime>0</minTime><maxTime>10000</maxTime>
+  <CrossHatchPattern kind="automatic">
+    <basePoint type="pointType"><point><id>id_j67kt</id><name>id_j67kt</name>
+      <coordinate><latitude>38N19'50.955''</latitude><longitude>28W27'46.535''</longitude><height>0.0</height></coordinate>
+      <z>125.0</z><zunits>HEIGHT</zunits></point><radiusTolerance>0.0</radiusTolerance></basePoint>
+    <width>800.0</width><hstep>150.0</hstep><bearing>180.0</bearing><curveOffset>75.0</curveOffset>
+    <speed unit="m/s">17.0</speed>
+  </CrossHatchPattern>
+  <custom-settings>
+    <setting name="Pattern" type-hint="String">CrossHatchPattern</setting>
+    <setting name="bearingRad" type-hint="String">3.141592653589793</setting>
+    <setting name="sRange" type-hint="String">30.0</setting>
+  </custom-settings>
+</maneuver></node>
+</graph></plan></body></mission-def>)";
+    const auto imported = importNeptus(mission, u"Phase2.nmis"_s);
+    ASSERT_TRUE(imported) << errorsText(imported.error()).toStdString();
+    EXPECT_TRUE(imported->warnings.isEmpty()) << errorsText(imported->warnings).toStdString();
+    const Maneuver &cross = imported->mission.plans[0].maneuvers[0];
+    EXPECT_EQ(cross.type, u"CrossHatch"_s);
+    EXPECT_EQ(cross.number(u"width"_s), 800);
+    EXPECT_EQ(cross.number(u"hstep"_s), 150);
+    EXPECT_EQ(cross.number(u"bearing"_s), 180);
+    EXPECT_EQ(cross.number(u"coff"_s), 75);
+    EXPECT_EQ(cross.text(u"flags"_s), u"SQUARE_CURVE"_s) << "Neptus writes squareCurve only when false";
+    EXPECT_EQ(cross.text(u"z_units"_s), u"HEIGHT"_s);
+    // Valid in our own format, and drawn over the whole square (six 950 m rows each way).
+    const auto written = readMission(writeMission(imported->mission), u"again.xml"_s);
+    ASSERT_TRUE(written) << errorsText(written.error()).toStdString();
+    const PlanGeometry geometry = planGeometry(written->plans[0]);
+    ASSERT_EQ(geometry.maneuvers.size(), 1);
+    EXPECT_EQ(geometry.maneuvers[0].points.size(), 2 * (1 + 6 + 5));
+    EXPECT_NEAR(geometry.maneuvers[0].length, 2 * (6 * 950 + 5 * 150) + std::hypot(75, 125), 0.5);
+
+    // Back as Neptus writes it (RowsPattern.getManeuverAsDocument), and in again the same.
+    const auto exported = exportNeptus(imported->mission, {});
+    ASSERT_TRUE(exported) << errorsText(exported.error()).toStdString();
+    EXPECT_TRUE(exported->warnings.isEmpty()) << errorsText(exported->warnings).toStdString();
+    const QByteArray nmis = unzipAll(exported->nmisz).value(u"mission.nmis"_s);
+    EXPECT_TRUE(nmis.contains("<CrossHatchPattern kind=\"automatic\">")) << nmis.constData();
+    EXPECT_TRUE(nmis.contains("<curveOffset>75</curveOffset>")) << nmis.constData();
+    EXPECT_FALSE(nmis.contains("<length>")) << "CrossHatchPattern has no length";
+    const auto again = importNeptus(exported->nmisz, u"again.nmisz"_s);
+    ASSERT_TRUE(again) << errorsText(again.error()).toStdString();
+    Maneuver back = again->mission.plans[0].maneuvers[0];
+    EXPECT_NEAR(back.number(u"lat"_s), cross.number(u"lat"_s), 1e-8); // Neptus's text degrees, to a millimetre
+    EXPECT_NEAR(back.number(u"lon"_s), cross.number(u"lon"_s), 1e-8);
+    back.parameters.insert(u"lat"_s, cross.text(u"lat"_s));
+    back.parameters.insert(u"lon"_s, cross.text(u"lon"_s));
+    EXPECT_EQ(back.parameters, cross.parameters);
+}
+
+// Neptus writes a Rows' curve offset, square curve, first curve right and length
+// only when they differ from its defaults (RowsManeuver.java: 15 m, true, true,
+// the width): none of them is read as its default, and each goes back written out.
+TEST(NeptusExport, RowsLeftAtNeptusDefaultsAreReadAsNeptusReadsThem)
+{
+    const QByteArray mission = R"(<mission-def><header><id>r</id><name>R</name></header><definitions>
+<home-reference><origin><latitude>41.5</latitude><longitude>-8.7</longitude><depth>0</depth></origin></home-reference>
+</definitions><body><plan id="survey" vehicle="lauv-xplore-1"><graph>
+<node start="true"><id>rows</id><maneuver><minTime>0</minTime><maxTime>10000</maxTime><Rows kind="automatic">
+  <basePoint type="pointType"><point><coordinate><latitude>41.515</latitude><longitude>-8.746</longitude><height>0</height></coordinate>
+  <z>0.0</z><zunits>DEPTH</zunits></point><radiusTolerance>0</radiusTolerance></basePoint>
+  <width>57.3</width><hstep>27.0</hstep><bearing>48.0</bearing><speed unit="RPM">1000.0</speed></Rows></maneuver></node>
+<node><id>left</id><maneuver><minTime>0</minTime><maxTime>10000</maxTime><Rows kind="automatic">
+  <basePoint type="pointType"><point><coordinate><latitude>41.515</latitude><longitude>-8.746</longitude><height>0</height></coordinate>
+  <z>0.0</z><zunits>DEPTH</zunits></point><radiusTolerance>0</radiusTolerance></basePoint>
+  <width>50</width><length>100</length><hstep>10</hstep><bearing>0</bearing><curveOffset>20.7</curveOffset>
+  <squareCurve>false</squareCurve><firstCurveRight>false</firstCurveRight><speed unit="RPM">1000.0</speed></Rows></maneuver></node>
+<edge><id>e</id><source>rows</source><target>left</target><guard>ManeuverIsDone</guard></edge>
+</graph></plan></body></mission-def>)";
+    const auto imported = importNeptus(mission, u"rows.nmis"_s);
+    ASSERT_TRUE(imported) << errorsText(imported.error()).toStdString();
+    const Maneuver &rows = imported->mission.plans[0].maneuvers[0], &left = imported->mission.plans[0].maneuvers[1];
+    EXPECT_EQ(rows.number(u"coff"_s), 15);
+    EXPECT_EQ(rows.text(u"flags"_s), u"SQUARE_CURVE|CURVE_RIGHT"_s);
+    EXPECT_EQ(rows.number(u"length"_s), 57.3);
+    EXPECT_FALSE(left.has(u"flags"_s));
+    EXPECT_EQ(left.number(u"length"_s), 100);
+    EXPECT_EQ(left.number(u"coff"_s), 20) << "IMC's Rows takes whole metres";
+    EXPECT_TRUE(errorsText(imported->warnings).contains(u"curve offset 20.7 m sent as 20 m"_s)) << errorsText(imported->warnings).toStdString();
+    ASSERT_TRUE(readMission(writeMission(imported->mission), u"again.xml"_s));
+
+    const auto exported = exportNeptus(imported->mission, {});
+    ASSERT_TRUE(exported) << errorsText(exported.error()).toStdString();
+    const auto again = importNeptus(exported->nmisz, u"again.nmisz"_s);
+    ASSERT_TRUE(again) << errorsText(again.error()).toStdString();
+    EXPECT_EQ(again->mission.plans[0].maneuvers[0].parameters, rows.parameters);
+    EXPECT_EQ(again->mission.plans[0].maneuvers[1].parameters, left.parameters);
 }
 
 // Map features this console does not draw (Neptus's LineSegmentElement and QRouteElement, as

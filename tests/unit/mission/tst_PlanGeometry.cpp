@@ -92,6 +92,11 @@ TEST(PlanGeometry, PathsSquaresAndProfiles)
     EXPECT_EQ(square.points.size(), 7);
     EXPECT_NEAR(square.length, 120, 0.01);
 
+    const auto cross = maneuverGeometry(maneuver(u"CrossHatch"_s, {{"width", 100}, {"hstep", 50}, {"coff", 10}, {"speed", 1}},
+                                                 {{"flags", "SQUARE_CURVE"}}));
+    EXPECT_EQ(cross.points.size(), 12);
+    EXPECT_NEAR(cross.length, 2 * (3 * 120 + 2 * 50) + std::hypot(110, 10), 0.01);
+
     const auto yoyo = maneuverGeometry(maneuver(u"YoYo"_s, {{"z", 10}, {"amplitude", 4}}, {{"z_units", "DEPTH"}}));
     EXPECT_EQ(yoyo.minZ, 6);
     EXPECT_EQ(yoyo.maxZ, 14);
@@ -210,4 +215,43 @@ TEST(PlanGeometry, EveryManeuverTypeHasItsGeometry)
         }
         EXPECT_NEAR(g.points.first().leg, g.transit, 1e-9) << type;
     }
+}
+
+// Neptus's CrossHatchPattern (ManeuversUtil.calcCrossHatchPatternPoints, worked
+// by hand for a 100 m square, rows 50 m apart, run on 10 m): rows north and
+// south from the square's south-west corner, stepping east, then rows west and
+// east from its south-east corner, stepping north; each row 10 m past the square.
+TEST(PlanGeometry, CrossHatchIsNeptusCrossHatchPattern)
+{
+    const auto offsets = [](const Maneuver &m) {
+        QList<std::pair<double, double>> out;
+        for (const PathPoint &p : crossHatchOffsets(m))
+            out.append({std::round(p.x * 1e6) / 1e6 + 0.0, std::round(p.y * 1e6) / 1e6 + 0.0});
+        return out;
+    };
+    using Points = QList<std::pair<double, double>>;
+    const Maneuver square = maneuver(u"CrossHatch"_s, {{"width", 100}, {"hstep", 50}, {"coff", 10}}, {{"flags", "SQUARE_CURVE"}});
+    EXPECT_EQ(offsets(square), (Points{{-60, -50}, {60, -50}, {60, 0}, {-60, 0}, {-60, 50}, {60, 50},
+                                       {-50, 60}, {-50, -60}, {0, -60}, {0, 60}, {50, 60}, {50, -60}}));
+    EXPECT_TRUE(isWorkedPattern(u"CrossHatch"_s));
+    EXPECT_EQ(patternOffsets(square), crossHatchOffsets(square));
+
+    // Without square turns the step is cut diagonally, ending the run-on at the next row.
+    const Maneuver cut = maneuver(u"CrossHatch"_s, {{"width", 100}, {"hstep", 50}, {"coff", 10}});
+    EXPECT_EQ(offsets(cut).mid(0, 6), (Points{{-60, -50}, {60, -50}, {50, 0}, {-60, 0}, {-50, 50}, {60, 50}}));
+
+    // Turned with its bearing, about its centre.
+    const Maneuver east = maneuver(u"CrossHatch"_s, {{"width", 100}, {"hstep", 50}, {"coff", 10}, {"bearing", 90}},
+                                   {{"flags", "SQUARE_CURVE"}});
+    EXPECT_EQ(offsets(east).mid(0, 2), (Points{{50, -60}, {50, 60}}));
+
+    // A hostile step does not hang: at most 10,000 rows each way.
+    const Maneuver dense = maneuver(u"CrossHatch"_s, {{"width", 1e9}, {"hstep", 0}});
+    EXPECT_LE(crossHatchOffsets(dense).size(), 2 * (1 + 2 * 10000));
+
+    // What the IMC FollowPath carries so that Neptus recognises its pattern (RowsPattern.serializeToIMC).
+    Maneuver named = square;
+    named.parameters.insert(u"custom"_s, u"Pattern=CrossHatchPattern;width=1;sRange=30"_s);
+    EXPECT_EQ(patternCustom(named), u"Pattern=CrossHatchPattern;bearingRad=0;width=100;hstep=50;curvOff=10;squareCurve=true;sRange=30"_s);
+    EXPECT_EQ(patternShapeParameters(u"CrossHatch"_s), (QStringList{u"width"_s, u"hstep"_s, u"bearing"_s, u"coff"_s, u"flags"_s}));
 }

@@ -161,14 +161,15 @@ TEST(Vehicle, EveryNeptusFixtureVehicleImports)
         quint16 imcId;
         int maneuvers;
     };
+    // (Every one lists a CrossHatchPattern, our CrossHatch.)
     const QList<Expected> fixtures{
-        {"99-lauv-simulator-1.nvcl", "lauv-simulator-1", "UUV", 0x00D1, 7},
-        {"22-lauv-xplore-1.nvcl", "lauv-xplore-1", "UUV", 0x001E, 11},
-        {"21-lauv-noptilus-1.nvcl", "lauv-noptilus-1", "UUV", 0x001A, 13},
-        {"21-lauv-noptilus-3.nvcl", "lauv-noptilus-3", "UUV", 0x001C, 13},
-        {"09-caravela.nvcl", "caravela", "USV", 0x0802, 8},
-        {"82-x8-02.nvcl", "x8-02", "UAV", 0x0C0C, 6},
-        {"82-x8-03.nvcl", "x8-03", "UAV", 0x0C0D, 6},
+        {"99-lauv-simulator-1.nvcl", "lauv-simulator-1", "UUV", 0x00D1, 8},
+        {"22-lauv-xplore-1.nvcl", "lauv-xplore-1", "UUV", 0x001E, 12},
+        {"21-lauv-noptilus-1.nvcl", "lauv-noptilus-1", "UUV", 0x001A, 14},
+        {"21-lauv-noptilus-3.nvcl", "lauv-noptilus-3", "UUV", 0x001C, 14},
+        {"09-caravela.nvcl", "caravela", "USV", 0x0802, 9},
+        {"82-x8-02.nvcl", "x8-02", "UAV", 0x0C0C, 7},
+        {"82-x8-03.nvcl", "x8-03", "UAV", 0x0C0D, 7},
     };
     for (const Expected &e : fixtures) {
         const auto imported = importNeptusVehicle(fixturePath((std::string("neptus/vehicles/") + e.file).c_str()));

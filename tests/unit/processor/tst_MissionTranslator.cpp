@@ -127,6 +127,37 @@ TEST(MissionTranslator, ImcGivesTheSameBytesThroughTheStylesheetAsDirectly)
     EXPECT_EQ(variables[0].enumText(variables[0].def()->indexOf(u"type")), u"NUMBER"_s);
 }
 
+// Neptus's CrossHatchPattern, which IMC lacks, goes as Neptus sends it: a
+// FollowPath through its points with the custom settings that name the
+// pattern (RowsPattern.serializeToIMC), the maneuver's own after them; the
+// same bytes through the stylesheet as directly.
+TEST(MissionTranslator, CrossHatchGoesAsNeptusSendsItThroughBothPaths)
+{
+    const auto read = readMission(R"(<mission format="1" id="x"><home lat="38.33" lon="-28.46" height="0"/><vehicle id="lauv-xplore-1"/>
+<plan id="cross" vehicle="lauv-xplore-1" start="c"><maneuvers>
+  <CrossHatch id="c" lat="38.33" lon="-28.46" z="5" z_units="DEPTH" speed="1.5" speed_units="METERS_PS"
+              bearing="180" width="100" hstep="50" coff="10" flags="SQUARE_CURVE" custom="sRange=30"/>
+</maneuvers></plan></mission>)",
+                                  u"cross.xml"_s);
+    ASSERT_TRUE(read) << errorsText(read.error()).toStdString();
+    expectSameImcBytes(*read, read->plans[0], everyTarget(u"lauv-xplore-1"_s));
+    const auto schema = test::shippedSchema();
+    const auto direct = planSpecification(read->plans[0], *schema);
+    ASSERT_TRUE(direct) << direct.error().toStdString();
+    const auto maneuvers = direct->messages(direct->def()->indexOf(u"maneuvers"));
+    ASSERT_EQ(maneuvers.size(), 1u);
+    const msg::Message *path = maneuvers[0].inlineMessage(maneuvers[0].def()->indexOf(u"data"));
+    ASSERT_TRUE(path);
+    EXPECT_EQ(path->abbrev(), u"FollowPath"_s);
+    EXPECT_EQ(path->text(u"custom"),
+              u"Pattern=CrossHatchPattern;bearingRad=3.141592653589793;width=100;hstep=50;curvOff=10;squareCurve=true;sRange=30"_s);
+    const auto points = path->messages(path->def()->indexOf(u"points"));
+    ASSERT_EQ(points.size(), 12u);
+    EXPECT_NEAR(points[0].number(u"x"), 60, 1e-9); // the south-west corner's row, turned about the centre
+    EXPECT_NEAR(points[0].number(u"y"), 50, 1e-9);
+    EXPECT_DOUBLE_EQ(path->number(u"z"), 5);
+}
+
 // The stylesheet names IMC's maneuver fields one by one (a literal element each,
 // angles marked as degrees): every field of every maneuver IMC has, set, gives
 // the direct encoder's bytes; so would a field it does not name (the fallback).
