@@ -191,17 +191,14 @@ int import(const QString &path, const QString &output)
                 items += int(g.items.size());
         kinds[u"transition"_s] = transitions;
         kinds[u"checklist item"_s] = items;
-        int leftOut = 0, kept = 0;
-        for (const auto &w : imported->warnings) {
-            leftOut += w.message.contains(u"left out"_s) || w.message.contains(u"not carried"_s) || w.message.contains(u"not read"_s);
-            kept += w.message.contains(u"kept as it was"_s);
-        }
+        // Kept as it was: what came in as Unsupported (maneuvers) and unsupported (features).
+        const int kept = kinds.value(u"maneuver Unsupported"_s) + kinds.value(u"feature unsupported"_s);
         std::printf("imported:\n");
         for (auto it = kinds.cbegin(); it != kinds.cend(); ++it)
             std::printf("  %-28s %d\n", qPrintable(it.key()), it.value());
         std::printf("  %-28s %lld\n", "file carried beside it", static_cast<long long>(imported->files.size()));
         std::printf("kept as it was (written back on export; its plan cannot be sent): %d\n", kept);
-        std::printf("left out, each said above: %d\n", leftOut);
+        std::printf("left out, each said above: %d\n", imported->leftOut);
     }
     if (auto saved = saveFileKeepingPrevious(output, bytes); !saved)
         return fail(saved.error());

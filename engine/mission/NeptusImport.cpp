@@ -73,6 +73,7 @@ class Importer
 public:
     Errors warnings;
     Errors errors;
+    int leftOut = 0; // of the warnings, those about something not imported
     // The mission's files (maps, and the images and models they name) and those carried out.
     FileSource files;
     QMap<QString, QByteArray> carried;
@@ -90,6 +91,12 @@ private:
             node = doc.root();
         warnings.append(doc.errorAt(node, u"Element '%1': %2"_s.arg(elementName(node), what)));
     }
+    // A warning about something not imported, counted for the report.
+    void leaveOut(const XmlDocument &doc, const xmlNode *node, const QString &what)
+    {
+        warn(doc, node, what);
+        ++leftOut;
+    }
     // The document starts with `name`, else an error saying what the file should be.
     bool expectRoot(const XmlDocument &doc, const char *name, const QString &what)
     {
@@ -101,7 +108,7 @@ private:
     }
     void notUnderstood(const XmlDocument &doc, const xmlNode *node)
     {
-        warn(doc, node, u"not understood; left out"_s);
+        leaveOut(doc, node, u"not understood; left out"_s);
     }
     std::optional<double> number(const XmlDocument &doc, const xmlNode *node);
     std::optional<Position> coordinate(const XmlDocument &doc, const xmlNode *node);
@@ -125,7 +132,7 @@ QString Importer::carry(const XmlDocument &doc, const xmlNode *node, const QStri
     const QString path = QDir::cleanPath(QFileInfo(mapHref).path() + u'/' + href);
     const auto bytes = isInside(path) && files ? files(path) : std::unexpected(u"outside the mission's folder"_s);
     if (!bytes) {
-        warn(doc, node, u"file '%1' not carried out: %2"_s.arg(href, bytes.error()));
+        leaveOut(doc, node, u"file '%1' not carried out: %2"_s.arg(href, bytes.error()));
         return {};
     }
     carried.insert(path, *bytes);
@@ -138,7 +145,7 @@ std::optional<double> Importer::number(const XmlDocument &doc, const xmlNode *no
     const QString text = textContent(node).trimmed();
     const double value = text.toDouble(&ok);
     if (!ok || !std::isfinite(value)) {
-        warn(doc, node, u"'%1' is not a number; left out"_s.arg(text));
+        leaveOut(doc, node, u"'%1' is not a number; left out"_s.arg(text));
         return std::nullopt;
     }
     return value;
@@ -244,7 +251,7 @@ void Importer::speed(const XmlDocument &doc, const xmlNode *node, Maneuver &m)
     else if (unit == u"%" || unit == u"percentage")
         units = u"PERCENTAGE"_s;
     else {
-        warn(doc, node, u"unknown speed unit '%1'; left out"_s.arg(unit));
+        leaveOut(doc, node, u"unknown speed unit '%1'; left out"_s.arg(unit));
         return;
     }
     m.set(u"speed"_s, *value);
@@ -308,7 +315,7 @@ std::optional<Maneuver> Importer::maneuver(const XmlDocument &doc, const xmlNode
             for (const xmlNode *setting : childElements(c, "setting")) {
                 const QString key = attribute(setting, "name").trimmed(), value = textContent(setting).trimmed();
                 if (key.isEmpty() || key.contains(u'=') || key.contains(u';') || value.contains(u';'))
-                    warn(doc, setting, u"custom setting '%1' cannot be said in IMC's key=value; list; left out"_s.arg(key));
+                    leaveOut(doc, setting, u"custom setting '%1' cannot be said in IMC's key=value; list; left out"_s.arg(key));
                 else
                     custom << key + u'=' + value;
             }
@@ -328,15 +335,22 @@ std::optional<Maneuver> Importer::maneuver(const XmlDocument &doc, const xmlNode
     m.id = validId(id);
     m.line.value = static_cast<int>(xmlGetLineNo(body));
     m.type = elementName(body);
-    if (m.type == u"RowsManeuver")
+    if (m.type == u"RowsManeuver") {
         m.type = u"Rows"_s;
-    else if (m.type == u"ExpandingSquarePattern")
+    } else if (m.type == u"RowsPattern" && !positionOptional) {
+        // The same rows (RowsPattern.recalcPoints and RowsManeuver share ManeuversUtil.calcRowsPoints),
+        // which Neptus sends as a FollowPath through them and we as IMC's Rows.
+        m.type = u"Rows"_s;
+        warn(doc, body, u"maneuver '%1' (RowsPattern) imported as a Rows: the same rows, sent as IMC Rows instead of "
+                        "a FollowPath, and written back to Neptus as a Rows"_s.arg(id));
+    } else if (m.type == u"ExpandingSquarePattern") {
         m.type = u"ExpandingSquare"_s;
-    else if (m.type == u"CrossHatchPattern")
+    } else if (m.type == u"CrossHatchPattern") {
         m.type = u"CrossHatch"_s;
+    }
     if (!known.contains(m.type)) {
         if (positionOptional) { // a vehicle's feasible maneuver: nothing to keep it for
-            warn(doc, body, u"maneuver type '%1' has no counterpart here; maneuver '%2' left out"_s.arg(m.type, id));
+            leaveOut(doc, body, u"maneuver type '%1' has no counterpart here; maneuver '%2' left out"_s.arg(m.type, id));
             return std::nullopt;
         }
         // Kept as it was, and its plan with it: shown, refused at Send, written back on export.
@@ -407,7 +421,7 @@ std::optional<Maneuver> Importer::maneuver(const XmlDocument &doc, const xmlNode
             if (const QString d = direction(text); !d.isEmpty())
                 m.parameters.insert(u"direction"_s, d);
             else
-                warn(doc, c, u"unknown direction '%1'; left out"_s.arg(text));
+                leaveOut(doc, c, u"unknown direction '%1'; left out"_s.arg(text));
         } else if (name == u"trajectory") {
             for (const xmlNode *t : childElements(c)) {
                 const QString tn = elementName(t);
@@ -433,12 +447,12 @@ std::optional<Maneuver> Importer::maneuver(const XmlDocument &doc, const xmlNode
                     if (const QString lt = loiterType(tt); !lt.isEmpty())
                         m.parameters.insert(u"type"_s, lt);
                     else
-                        warn(doc, t, u"unknown loiter type '%1'; left out"_s.arg(tt));
+                        leaveOut(doc, t, u"unknown loiter type '%1'; left out"_s.arg(tt));
                 } else if (tn == u"direction" && m.type == u"Loiter") {
                     if (const QString d = direction(tt); !d.isEmpty())
                         m.parameters.insert(u"direction"_s, d);
                     else
-                        warn(doc, t, u"unknown direction '%1'; left out"_s.arg(tt));
+                        leaveOut(doc, t, u"unknown direction '%1'; left out"_s.arg(tt));
                 } else if (tn != u"radiusTolerance") {
                     notUnderstood(doc, t);
                 }
@@ -519,7 +533,7 @@ std::optional<Maneuver> Importer::maneuver(const XmlDocument &doc, const xmlNode
     if (!flags.isEmpty())
         m.parameters.insert(u"flags"_s, flags.join(u'|'));
     if (!custom.isEmpty() && m.type == u"ScheduledGoto")
-        warn(doc, node, u"IMC's ScheduledGoto has no custom settings; %1 left out"_s.arg(custom.join(u", "_s)));
+        leaveOut(doc, node, u"IMC's ScheduledGoto has no custom settings; %1 left out"_s.arg(custom.join(u", "_s)));
     else if (!custom.isEmpty())
         m.parameters.insert(u"custom"_s, custom.join(u';'));
     if (maxTime && timedTypes().contains(m.type) && *maxTime > 0)
@@ -577,7 +591,7 @@ std::optional<Plan> Importer::plan(const XmlDocument &doc, const xmlNode *node)
         p.maneuvers.append(*m);
     }
     if (p.maneuvers.isEmpty()) {
-        warn(doc, node, u"plan '%1' has no maneuver we can read; left out"_s.arg(p.id));
+        leaveOut(doc, node, u"plan '%1' has no maneuver we can read; left out"_s.arg(p.id));
         return std::nullopt;
     }
     if (p.start.isEmpty()) {
@@ -593,7 +607,7 @@ std::optional<Plan> Importer::plan(const XmlDocument &doc, const xmlNode *node)
         if (!guard.isEmpty())
             t.condition = guard;
         if (!kept.contains(t.from) || !kept.contains(t.to)) {
-            warn(doc, e, u"transition %1 → %2 joins a maneuver left out; left out too"_s.arg(t.from, t.to));
+            leaveOut(doc, e, u"transition %1 → %2 joins a maneuver left out; left out too"_s.arg(t.from, t.to));
             continue;
         }
         for (const xmlNode *message : childElements(firstChildElement(firstChildElement(e, "actions"), "messages")))
@@ -664,7 +678,7 @@ std::optional<Feature> Importer::feature(const XmlDocument &doc, const xmlNode *
                 else if ((angle == u"phi" || angle == u"theta") && f.kind == u"model")
                     f.attributes.insert(angle == u"phi" ? u"roll"_s : u"pitch"_s, formatNumber(*v));
                 else if (*v != 0)
-                    warn(doc, a, angle == u"psi" ? u"a %1 is not turned here: %2 = %3° left out"_s.arg(f.kind, angle, formatNumber(*v))
+                    leaveOut(doc, a, angle == u"psi" ? u"a %1 is not turned here: %2 = %3° left out"_s.arg(f.kind, angle, formatNumber(*v))
                                                  : u"only a model can be tilted here, not %1 '%2': %3 = %4° left out"_s.arg(f.kind, f.id, angle, formatNumber(*v)));
             }
         } else if (name == u"transparency") {
@@ -751,7 +765,7 @@ std::optional<Feature> Importer::feature(const XmlDocument &doc, const xmlNode *
                 f.attributes.insert(u"role"_s, u"no-go"_s); // an obstacle is where no vehicle may go
         }
         if (f.points.size() < 2) {
-            warn(doc, node, u"a path of fewer than two points; left out"_s);
+            leaveOut(doc, node, u"a path of fewer than two points; left out"_s);
             return std::nullopt;
         }
         return f;
@@ -774,16 +788,16 @@ std::optional<Feature> Importer::feature(const XmlDocument &doc, const xmlNode *
     if ((f.kind == u"box" || f.kind == u"ellipsoid" || f.kind == u"cylinder") && !f.attributes.contains(u"role"_s))
         f.attributes.insert(u"role"_s, isTrue(attribute(node, "obstacle")) ? u"no-go"_s : u"area"_s);
     if ((f.kind == u"image" || f.kind == u"model") && !f.attributes.contains(u"file"_s)) {
-        warn(doc, node, u"no file named; left out"_s);
+        leaveOut(doc, node, u"no file named; left out"_s);
         return std::nullopt;
     }
     if ((f.kind == u"box" || f.kind == u"ellipsoid" || f.kind == u"cylinder")
         && !(f.attributes.contains(u"width"_s) && f.attributes.contains(u"length"_s))) {
-        warn(doc, node, u"no width and length; left out"_s);
+        leaveOut(doc, node, u"no width and length; left out"_s);
         return std::nullopt;
     }
     if (f.kind == u"circle" && !f.attributes.contains(u"radius"_s)) {
-        warn(doc, node, u"no radius; left out"_s);
+        leaveOut(doc, node, u"no radius; left out"_s);
         return std::nullopt;
     }
     return f;
@@ -920,7 +934,7 @@ std::optional<VehicleDefinition> Importer::vehicle(const XmlDocument &doc)
             for (const xmlNode *mean : childElements(c, "comm-mean")) {
                 const xmlNode *imc = firstChildElement(firstChildElement(mean, "protocols-args"), "imc");
                 if (!imc) {
-                    warn(doc, mean, u"only IMC links are imported; left out"_s);
+                    leaveOut(doc, mean, u"only IMC links are imported; left out"_s);
                     continue;
                 }
                 const QString idText = textContent(firstChildElement(imc, "imc-id")).trimmed().remove(u':');
@@ -929,7 +943,7 @@ std::optional<VehicleDefinition> Importer::vehicle(const XmlDocument &doc)
                 if (ok && id <= 0xFFFF)
                     v.imcId = static_cast<quint16>(id);
                 else
-                    warn(doc, imc, u"imc-id '%1' is not an IMC id; left out"_s.arg(idText));
+                    leaveOut(doc, imc, u"imc-id '%1' is not an IMC id; left out"_s.arg(idText));
                 VehicleLink link;
                 link.protocol = u"imc-udp"_s;
                 link.host = textContent(firstChildElement(mean, "host-address")).trimmed();
@@ -938,10 +952,10 @@ std::optional<VehicleDefinition> Importer::vehicle(const XmlDocument &doc)
             }
         } else if (name == u"consoles") {
             for (const xmlNode *console : childElements(c))
-                warn(doc, console, u"Neptus consoles (.ncon) are not ours; left out"_s);
+                leaveOut(doc, console, u"Neptus consoles (.ncon) are not ours; left out"_s);
         } else if (name == u"protocols-supported") {
             if (!textContent(firstChildElement(c, "protocols")).trimmed().isEmpty())
-                warn(doc, c, u"GSM and Iridium links are not imported; left out"_s);
+                leaveOut(doc, c, u"GSM and Iridium links are not imported; left out"_s);
         } else if (name != u"properties") {
             notUnderstood(doc, c);
         }
@@ -997,7 +1011,7 @@ std::optional<Checklist> Importer::checklist(const XmlDocument &doc, const QStri
         i.note = textContent(firstChildElement(node, "note")).trimmed();
         for (const xmlNode *sub : childElements(firstChildElement(node, "subItems"))) {
             if (elementName(sub) != u"variableTestRange" || !i.variable.isEmpty()) {
-                warn(doc, sub, u"only one variable range per item is kept; left out"_s);
+                leaveOut(doc, sub, u"only one variable range per item is kept; left out"_s);
                 continue;
             }
             i.variable = textContent(firstChildElement(sub, "variableName")).trimmed();
@@ -1062,7 +1076,7 @@ std::optional<Mission> Importer::mission(const XmlDocument &doc, const FileSourc
                         auto referenced = bytes ? XmlDocument::parse(*bytes, QFileInfo(doc.fileName()).dir().filePath(href))
                                                 : std::unexpected(XmlError{{}, 0, 0, bytes.error()});
                         if (!referenced) {
-                            warn(doc, ref, u"%1 '%2' not read: %3"_s.arg(maps ? u"map"_s : u"checklist"_s, href,
+                            leaveOut(doc, ref, u"%1 '%2' not read: %3"_s.arg(maps ? u"map"_s : u"checklist"_s, href,
                                                                           bytes ? referenced.error().toString() : bytes.error()));
                             continue;
                         }
@@ -1168,7 +1182,7 @@ std::expected<NeptusImport, Errors> finish(Importer &importer, std::optional<Mis
     const auto check = readMission(written, fileName + u" (imported)"_s);
     if (!check)
         return std::unexpected(check.error());
-    return NeptusImport{*check, importer.warnings, importer.carried};
+    return NeptusImport{*check, importer.warnings, importer.carried, importer.leftOut};
 }
 
 std::expected<NeptusImport, Errors> importDocument(QByteArrayView data, const QString &fileName, const FileSource &files)
@@ -1239,7 +1253,7 @@ std::expected<NeptusVehicleImport, Errors> importNeptusVehicle(QByteArrayView da
         return std::unexpected(check.error());
     VehicleDefinition result = *check;
     result.fileName.clear();
-    return NeptusVehicleImport{result, importer.warnings};
+    return NeptusVehicleImport{result, importer.warnings, importer.leftOut};
 }
 
 std::expected<NeptusVehicleImport, Errors> importNeptusVehicle(const QString &path)

@@ -28,6 +28,9 @@ struct NeptusImport
     // The images and models its maps name, carried out of the .nmisz (or the
     // folder of a .nmis): by path from the mission, as its features name them.
     QMap<QString, QByteArray> files;
+    // How many of the warnings are about something not imported (left out,
+    // not understood, a file not carried or not read).
+    int leftOut = 0;
 };
 
 // Writes an import's carried files beside the mission written at `missionPath`
@@ -48,6 +51,7 @@ struct NeptusVehicleImport
 {
     VehicleDefinition vehicle;
     Errors warnings;
+    int leftOut = 0; // as NeptusImport::leftOut
 };
 std::expected<NeptusVehicleImport, Errors> importNeptusVehicle(QByteArrayView data, const QString &fileName);
 std::expected<NeptusVehicleImport, Errors> importNeptusVehicle(const QString &path);

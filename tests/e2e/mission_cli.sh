@@ -22,6 +22,8 @@ translated=0
 for name in phase3 missao-cavado Split Horta; do
   out=$("$tool" import "$fixtures/missions/$name.nmisz" -o "$work/$name.xml" 2>"$work/$name.warnings")
   grep -q ": ${plans[$name]} plans," <<<"$out"; check "import $name.nmisz: ${plans[$name]} plans ($out)" $?
+  grep -q "^left out, each said above: 0$" <<<"$out"; check "import $name.nmisz: nothing left out" $?
+  printf '%s\n' "$out" >"$work/$name.report"
   "$tool" validate "$work/$name.xml" >/dev/null 2>"$work/$name.validate"
   status=$? # before the description's $(…) runs, which sets $? again
   check "validate $name.xml against the shipped vehicles$(sed 's/^/\n    /' "$work/$name.validate")" $status
@@ -60,6 +62,24 @@ out=$("$tool" stats "$work/Split.xml")
 printf '<mission format="1" id="m">\n<home lat="91" lon="0"/></mission>\n' >"$work/bad.xml"
 "$tool" validate "$work/bad.xml" 2>"$work/err"
 [ $? = 1 ] && grep -q "bad.xml:2: Element 'home', attribute 'lat'" "$work/err"; check "a bad file is reported with file, line and element" $?
+# The report counts per kind, what was kept as it was, and what was left out.
+grep -qE "^  maneuver Rows +7$" "$work/phase3.report"; check "the import report counts phase3's 7 Rows" $?
+cat >"$work/odd.nmis" <<'NMIS'
+<mission-def><header><id>odd</id><name>odd</name></header><definitions>
+<home-reference><origin><latitude>41.5</latitude><longitude>-8.7</longitude><depth>0</depth></origin></home-reference>
+</definitions><body><plan id="p" vehicle="lauv-xplore-1"><graph>
+<node start="true"><id>ri</id><maneuver><RIPattern kind="automatic"><width>100</width></RIPattern></maneuver></node>
+<node><id>go</id><maneuver><Goto kind="automatic"><finalPoint type="pointType"><point><coordinate><latitude>41.5</latitude>
+<longitude>-8.7</longitude></coordinate><z>0</z><zunits>DEPTH</zunits></point></finalPoint><speed unit="m/s">1</speed>
+<wobble>3</wobble></Goto></maneuver></node>
+<edge><id>e</id><source>ri</source><target>go</target><guard>ManeuverIsDone</guard></edge>
+</graph></plan></body></mission-def>
+NMIS
+out=$("$tool" import "$work/odd.nmis" -o "$work/odd.xml" 2>"$work/odd.warnings")
+grep -q "^kept as it was (written back on export; its plan cannot be sent): 1$" <<<"$out" \
+  && grep -q "^left out, each said above: 1$" <<<"$out" && grep -q "wobble" "$work/odd.warnings"
+check "the import report counts a kept RIPattern and a left-out <wobble> ($out)" $?
+
 "$tool" import "$work/bad.xml.nmisz" -o "$work/x" 2>"$work/err"
 [ $? = 1 ]; check "importing a file that is not there fails" $?
 "$tool" frobnicate 2>/dev/null

@@ -480,6 +480,15 @@ TEST(NeptusExport, RowsLeftAtNeptusDefaultsAreReadAsNeptusReadsThem)
     ASSERT_TRUE(again) << errorsText(again.error()).toStdString();
     EXPECT_EQ(again->mission.plans[0].maneuvers[0].parameters, rows.parameters);
     EXPECT_EQ(again->mission.plans[0].maneuvers[1].parameters, left.parameters);
+
+    // Neptus's RowsPattern makes the same rows (ManeuversUtil.calcRowsPoints): a Rows, said so.
+    QByteArray pattern = mission;
+    pattern.replace("<Rows kind=\"automatic\">", "<RowsPattern kind=\"automatic\">").replace("</Rows>", "</RowsPattern>");
+    const auto asPattern = importNeptus(pattern, u"pattern.nmis"_s);
+    ASSERT_TRUE(asPattern) << errorsText(asPattern.error()).toStdString();
+    EXPECT_EQ(asPattern->mission.plans[0].maneuvers[0], rows);
+    EXPECT_TRUE(errorsText(asPattern->warnings).contains(u"maneuver 'rows' (RowsPattern) imported as a Rows"_s))
+        << errorsText(asPattern->warnings).toStdString();
 }
 
 // Map features this console does not draw (Neptus's LineSegmentElement and QRouteElement, as
