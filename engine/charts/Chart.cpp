@@ -1,0 +1,361 @@
+#include "charts/Chart.h"
+
+#include "geo/Polygon.h"
+
+#include <QtEndian>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <numbers>
+
+namespace neptus::charts {
+
+using namespace Qt::StringLiterals;
+
+namespace {
+
+constexpr char magic[] = "NQCHART2\n";
+constexpr qsizetype magicSize = sizeof magic - 1;
+
+bool isArea(const Feature &f) { return f.geometry == Feature::Geometry::Area; }
+
+bool inside(const Feature &area, double lon, double lat)
+{
+    bool in = false; // even-odd over all rings: holes and several outer rings alike
+    for (const auto &ring : area.parts)
+        in ^= geo::insideRing(ring, lon, lat, [](const Vertex &v) { return std::pair{v.lon, v.lat}; });
+    return in;
+}
+
+// Square degrees inside its outer rings less its holes (shoelace; only to compare sizes).
+double areaOf(const Feature &area)
+{
+    double sum = 0;
+    for (const auto &ring : area.parts)
+        for (std::size_t i = 0, j = ring.size() - 1; i < ring.size(); j = i++)
+            sum += ring[j].lon * ring[i].lat - ring[i].lon * ring[j].lat;
+    return std::abs(sum) / 2;
+}
+
+// Metres between two nearby points (a local plane: well under 1 % off within a few km).
+struct Plane
+{
+    double lon0, lat0, kx, ky;
+    explicit Plane(double lon, double lat)
+        : lon0(lon), lat0(lat), kx(111320.0 * std::cos(lat * std::numbers::pi / 180)), ky(110574.0)
+    {
+    }
+    std::pair<double, double> xy(const Vertex &v) const { return {(v.lon - lon0) * kx, (v.lat - lat0) * ky}; }
+};
+
+double distanceTo(const Plane &plane, const Feature &f)
+{
+    double best = std::numeric_limits<double>::infinity();
+    for (const auto &part : f.parts) {
+        for (std::size_t i = 0; i < part.size(); ++i) {
+            const auto [x, y] = plane.xy(part[i]);
+            if (f.geometry == Feature::Geometry::Point || part.size() == 1) {
+                best = std::min(best, std::hypot(x, y));
+                continue;
+            }
+            if (i == 0)
+                continue;
+            const auto [ax, ay] = plane.xy(part[i - 1]);
+            const double dx = x - ax, dy = y - ay, length2 = dx * dx + dy * dy;
+            const double t = length2 > 0 ? std::clamp((-ax * dx - ay * dy) / length2, 0.0, 1.0) : 0;
+            best = std::min(best, std::hypot(ax + t * dx, ay + t * dy));
+        }
+    }
+    return best;
+}
+
+// Bytes with every count checked against what is left.
+class Reader
+{
+public:
+    explicit Reader(QByteArrayView bytes) : m_bytes(bytes) {}
+    bool failed() const { return !m_error.isEmpty(); }
+    const QString &error() const { return m_error; }
+    qsizetype left() const { return m_bytes.size() - m_at; }
+
+    quint32 u32(const char *what)
+    {
+        if (!take(4, what))
+            return 0;
+        const quint32 v = qFromLittleEndian<quint32>(m_bytes.data() + m_at - 4);
+        return v;
+    }
+    qint32 i32(const char *what) { return static_cast<qint32>(u32(what)); }
+    quint8 u8(const char *what)
+    {
+        if (!take(1, what))
+            return 0;
+        return static_cast<quint8>(m_bytes[m_at - 1]);
+    }
+    QString string(const char *what)
+    {
+        const quint32 size = u32(what);
+        if (failed() || !take(size, what))
+            return {};
+        return QString::fromUtf8(m_bytes.data() + m_at - size, size);
+    }
+    // A count of items each at least `minimum` bytes long.
+    quint32 count(const char *what, qsizetype minimum)
+    {
+        const quint32 n = u32(what);
+        if (!failed() && qsizetype(n) > left() / minimum)
+            fail(u"%1: %2 claimed, more than the %3 bytes left hold"_s.arg(QLatin1StringView(what)).arg(n).arg(left()));
+        return failed() ? 0 : n;
+    }
+    void fail(const QString &why)
+    {
+        if (m_error.isEmpty())
+            m_error = why;
+    }
+
+private:
+    bool take(qsizetype n, const char *what)
+    {
+        if (failed())
+            return false;
+        if (n > left()) {
+            fail(u"cut short in %1 (at byte %2)"_s.arg(QLatin1StringView(what)).arg(m_at));
+            return false;
+        }
+        m_at += n;
+        return true;
+    }
+    QByteArrayView m_bytes;
+    qsizetype m_at = 0;
+    QString m_error;
+};
+
+void putU32(QByteArray &out, quint32 v)
+{
+    char b[4];
+    qToLittleEndian(v, b);
+    out.append(b, 4);
+}
+void putString(QByteArray &out, const QString &s)
+{
+    const QByteArray utf8 = s.toUtf8();
+    putU32(out, quint32(utf8.size()));
+    out.append(utf8);
+}
+
+} // namespace
+
+std::optional<double> Feature::number(const QString &attribute) const
+{
+    bool ok = false;
+    const double v = attributes.value(attribute).toDouble(&ok);
+    return ok && std::isfinite(v) ? std::optional(v) : std::nullopt;
+}
+
+QMap<QString, int> Cell::counts() const
+{
+    QMap<QString, int> out;
+    for (const Feature &f : features)
+        ++out[f.objectClass];
+    return out;
+}
+
+std::vector<const Feature *> Cell::coverage() const
+{
+    std::vector<const Feature *> out;
+    for (const Feature &f : features)
+        if (f.objectClass == u"M_COVR" && isArea(f) && f.attributes.value(u"CATCOV"_s, u"1"_s) == u"1")
+            out.push_back(&f);
+    return out;
+}
+
+Cell::Bounds Cell::bounds() const
+{
+    Bounds b;
+    for (const Feature *f : coverage())
+        for (const auto &ring : f->parts)
+            for (const Vertex &v : ring) {
+                if (!b.valid) {
+                    b = {v.lon, v.lat, v.lon, v.lat, true};
+                    continue;
+                }
+                b.west = std::min(b.west, v.lon);
+                b.east = std::max(b.east, v.lon);
+                b.south = std::min(b.south, v.lat);
+                b.north = std::max(b.north, v.lat);
+            }
+    return b;
+}
+
+const QStringList &keptClasses()
+{
+    static const QStringList classes{
+        u"M_COVR"_s, u"LNDARE"_s, u"COALNE"_s, u"SLCONS"_s, u"DEPARE"_s, u"DRGARE"_s, u"DEPCNT"_s, u"SOUNDG"_s,
+        u"OBSTRN"_s, u"WRECKS"_s, u"UWTROC"_s, u"RESARE"_s, u"CTNARE"_s, u"MIPARE"_s, u"FAIRWY"_s,
+        u"BOYLAT"_s, u"BOYSPP"_s, u"BOYSAW"_s, u"BOYCAR"_s, u"BOYISD"_s, u"BCNLAT"_s, u"BCNSPP"_s, u"BCNCAR"_s,
+        u"BCNISD"_s, u"LIGHTS"_s, u"SEAARE"_s};
+    return classes;
+}
+
+QString className(const QString &objectClass)
+{
+    static const QMap<QString, QString> names{
+        {u"M_COVR"_s, u"data coverage"_s}, {u"LNDARE"_s, u"land"_s}, {u"COALNE"_s, u"coastline"_s},
+        {u"SLCONS"_s, u"shoreline construction"_s}, {u"DEPARE"_s, u"depth area"_s}, {u"DRGARE"_s, u"dredged area"_s},
+        {u"DEPCNT"_s, u"depth contour"_s}, {u"SOUNDG"_s, u"sounding"_s}, {u"OBSTRN"_s, u"obstruction"_s},
+        {u"WRECKS"_s, u"wreck"_s}, {u"UWTROC"_s, u"underwater rock"_s}, {u"RESARE"_s, u"restricted area"_s},
+        {u"CTNARE"_s, u"caution area"_s}, {u"MIPARE"_s, u"military practice area"_s}, {u"FAIRWY"_s, u"fairway"_s},
+        {u"BOYLAT"_s, u"lateral buoy"_s}, {u"BOYSPP"_s, u"special purpose buoy"_s}, {u"BOYSAW"_s, u"safe water buoy"_s},
+        {u"BOYCAR"_s, u"cardinal buoy"_s}, {u"BOYISD"_s, u"isolated danger buoy"_s}, {u"BCNLAT"_s, u"lateral beacon"_s},
+        {u"BCNSPP"_s, u"special purpose beacon"_s}, {u"BCNCAR"_s, u"cardinal beacon"_s},
+        {u"BCNISD"_s, u"isolated danger beacon"_s}, {u"LIGHTS"_s, u"light"_s}, {u"SEAARE"_s, u"sea area"_s}};
+    return names.value(objectClass, objectClass);
+}
+
+QByteArray encodeCell(const Cell &cell)
+{
+    QByteArray out(magic, magicSize);
+    putString(out, cell.name);
+    putU32(out, quint32(cell.edition));
+    putU32(out, quint32(cell.update));
+    putString(out, cell.issued);
+    putU32(out, quint32(cell.usageBand));
+    putU32(out, quint32(cell.scale));
+    putString(out, cell.comment);
+    putU32(out, quint32(cell.features.size()));
+    for (const Feature &f : cell.features) {
+        putString(out, f.objectClass);
+        out.append(char(f.geometry));
+        putU32(out, quint32(f.attributes.size()));
+        for (auto it = f.attributes.cbegin(); it != f.attributes.cend(); ++it) {
+            putString(out, it.key());
+            putString(out, it.value());
+        }
+        putU32(out, quint32(f.parts.size()));
+        for (const auto &part : f.parts) {
+            putU32(out, quint32(part.size()));
+            const bool depths = std::any_of(part.begin(), part.end(), [](const Vertex &v) { return v.z != 0; });
+            out.append(char(depths));
+            for (const Vertex &v : part) {
+                putU32(out, quint32(qint32(std::lround(v.lon * 1e7))));
+                putU32(out, quint32(qint32(std::lround(v.lat * 1e7))));
+                if (depths)
+                    putU32(out, quint32(qint32(std::lround(v.z * 1000))));
+            }
+        }
+    }
+    return out;
+}
+
+std::expected<Cell, QString> decodeCell(QByteArrayView bytes)
+{
+    if (bytes.size() < magicSize || std::memcmp(bytes.data(), magic, magicSize) != 0)
+        return std::unexpected(u"not a chart cell (it does not start with NQCHART2)"_s);
+    Reader r(bytes.sliced(magicSize));
+    Cell cell;
+    cell.name = r.string("the cell's name");
+    cell.edition = r.i32("the edition");
+    cell.update = r.i32("the update");
+    cell.issued = r.string("the issue date");
+    cell.usageBand = r.i32("the usage band");
+    cell.scale = r.i32("the scale");
+    cell.comment = r.string("the comment");
+    // Each feature at least: a class (4), a geometry (1), two counts (8).
+    const quint32 features = r.count("features", 13);
+    cell.features.reserve(features);
+    for (quint32 i = 0; i < features && !r.failed(); ++i) {
+        Feature f;
+        f.objectClass = r.string("an object class");
+        const quint8 geometry = r.u8("a geometry");
+        if (geometry < 1 || geometry > 3)
+            r.fail(u"feature %1 (%2): geometry %3 is none of point, line, area"_s.arg(i).arg(f.objectClass).arg(geometry));
+        f.geometry = Feature::Geometry(geometry);
+        const quint32 attributes = r.count("attributes", 8);
+        for (quint32 a = 0; a < attributes && !r.failed(); ++a) {
+            const QString key = r.string("an attribute's name");
+            f.attributes.insert(key, r.string("an attribute's value"));
+        }
+        const quint32 parts = r.count("parts", 5);
+        f.parts.reserve(parts);
+        for (quint32 p = 0; p < parts && !r.failed(); ++p) {
+            const quint32 vertices = r.u32("a part's size");
+            const bool depths = r.u8("a part's kind") != 0;
+            if (!r.failed() && qsizetype(vertices) > r.left() / (depths ? 12 : 8))
+                r.fail(u"feature %1 (%2): %3 vertices claimed, more than the bytes left hold"_s.arg(i).arg(f.objectClass).arg(vertices));
+            std::vector<Vertex> part;
+            part.reserve(r.failed() ? 0 : vertices);
+            for (quint32 v = 0; v < vertices && !r.failed(); ++v) {
+                Vertex x{r.i32("a longitude") / 1e7, r.i32("a latitude") / 1e7, depths ? r.i32("a depth") / 1000.0 : 0};
+                if (!r.failed() && (std::abs(x.lon) > 180 || std::abs(x.lat) > 90))
+                    r.fail(u"feature %1 (%2): a vertex is not a position (%3, %4)"_s.arg(i).arg(f.objectClass).arg(x.lon).arg(x.lat));
+                part.push_back(x);
+            }
+            f.parts.push_back(std::move(part));
+        }
+        cell.features.push_back(std::move(f));
+    }
+    if (r.failed())
+        return std::unexpected(r.error());
+    if (r.left() != 0)
+        return std::unexpected(u"%1 bytes after the last feature"_s.arg(r.left()));
+    return cell;
+}
+
+PointReport reportAt(const std::vector<Cell> &cells, double lon, double lat, double radius)
+{
+    PointReport report;
+    // The cell with the best usage band (the largest scale) whose coverage holds the point.
+    const Cell *best = nullptr;
+    for (const Cell &c : cells) {
+        const auto covers = c.coverage();
+        if (std::any_of(covers.begin(), covers.end(), [&](const Feature *f) { return inside(*f, lon, lat); })
+            && (!best || c.usageBand > best->usageBand))
+            best = &c;
+    }
+    if (!best)
+        return report;
+    report.covered = true;
+    report.cell = best->name;
+    const Plane plane(lon, lat);
+    double placeSize = 0;
+    static const QStringList hazards{u"OBSTRN"_s, u"WRECKS"_s, u"UWTROC"_s};
+    static const QStringList restrictions{u"RESARE"_s, u"CTNARE"_s, u"MIPARE"_s};
+    for (const Feature &f : best->features) {
+        const QString &c = f.objectClass;
+        if (c == u"LNDARE") {
+            report.land = report.land || (isArea(f) && inside(f, lon, lat));
+        } else if ((c == u"DEPARE" || c == u"DRGARE") && isArea(f) && inside(f, lon, lat)) {
+            const auto lo = f.number(u"DRVAL1"_s), hi = f.number(u"DRVAL2"_s);
+            if (lo && (!report.depthMin || *lo < *report.depthMin)) {
+                report.depthMin = lo;
+                report.depthMax = hi;
+                report.depthArea = f.name();
+            }
+        } else if (hazards.contains(c) || restrictions.contains(c)) {
+            const double d = isArea(f) ? (inside(f, lon, lat) ? 0 : distanceTo(plane, f)) : distanceTo(plane, f);
+            if (d <= (isArea(f) && restrictions.contains(c) ? 0 : radius))
+                (hazards.contains(c) ? report.hazards : report.restrictions).push_back({c, f.name(), f.number(u"VALSOU"_s), d});
+        } else if (c == u"SEAARE" && isArea(f) && !f.name().isEmpty() && inside(f, lon, lat)) {
+            const double size = areaOf(f);
+            if (report.place.isEmpty() || size < placeSize) {
+                report.place = f.name();
+                placeSize = size;
+            }
+        } else if (c == u"SOUNDG") {
+            for (const auto &part : f.parts)
+                for (const Vertex &v : part) {
+                    const auto [x, y] = plane.xy(v);
+                    const double d = std::hypot(x, y);
+                    if (d <= 500 && (!report.sounding || d < report.soundingDistance)) {
+                        report.sounding = v.z;
+                        report.soundingDistance = d;
+                    }
+                }
+        }
+    }
+    return report;
+}
+
+} // namespace neptus::charts

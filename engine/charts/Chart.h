@@ -1,0 +1,107 @@
+#pragma once
+
+#include <QByteArray>
+#include <QByteArrayView>
+#include <QMap>
+#include <QString>
+#include <QStringList>
+
+#include <expected>
+#include <optional>
+#include <vector>
+
+// Nautical charts (IHO S-57 ENC cells) as the console keeps them: the
+// features that matter for drawing a chart under the vehicles and checking a
+// plan against it, read from a cell by the neptus-chart-import helper (GDAL's
+// S-57 driver, updates applied) and handed over, and cached, as bytes.
+// Coordinates are WGS84 degrees; depths metres (positive down, as S-57).
+namespace neptus::charts {
+
+struct Vertex
+{
+    double lon = 0, lat = 0;
+    double z = 0; // a sounding's depth; 0 elsewhere
+};
+
+struct Feature
+{
+    enum class Geometry : quint8 { Point = 1, Line = 2, Area = 3 };
+
+    QString objectClass; // S-57 acronym: DEPARE, LNDARE, WRECKS, ...
+    Geometry geometry = Geometry::Point;
+    // Points: one each (many for a sounding group); lines: polylines; areas:
+    // rings (outer and holes alike: inside is decided by the even-odd rule).
+    std::vector<std::vector<Vertex>> parts;
+    // Its S-57 attributes by acronym, as text (DRVAL1 "1.8", OBJNAM "Eastern Bay").
+    QMap<QString, QString> attributes;
+
+    std::optional<double> number(const QString &attribute) const;
+    QString name() const { return attributes.value(QStringLiteral("OBJNAM")); }
+};
+
+struct Cell
+{
+    QString name;         // DSNM: US4MD81M.000
+    int edition = 0;      // EDTN
+    int update = 0;       // UPDN: the last update applied
+    QString issued;       // ISDT of the last update (YYYYMMDD)
+    int usageBand = 0;    // INTU: 1 overview … 6 berthing
+    int scale = 0;        // DSPM CSCL: compilation scale, 1:scale
+    QString comment;      // DSID COMT
+    std::vector<Feature> features;
+
+    // How many features of each object class.
+    QMap<QString, int> counts() const;
+    // The data coverage (M_COVR with CATCOV 1): its rings; the bounds of them.
+    std::vector<const Feature *> coverage() const;
+    struct Bounds
+    {
+        double west = 0, south = 0, east = 0, north = 0;
+        bool valid = false;
+    };
+    Bounds bounds() const;
+};
+
+// The object classes the helper keeps (everything else in a cell is left there).
+const QStringList &keptClasses();
+// An object class in words ("depth area", "wreck"); the acronym when unknown.
+QString className(const QString &objectClass);
+
+// A cell as bytes, as the helper writes it and the cache keeps it:
+//   "NQCHART2\n", then counted strings and numbers (little-endian; positions
+//   in 1e-7 degrees, about a centimetre; depths in millimetres, only for parts
+//   that have them); reading checks every count against the bytes left, so
+//   damaged bytes are an error naming what was wrong, never a crash or an
+//   allocation of what they claim.
+QByteArray encodeCell(const Cell &cell);
+std::expected<Cell, QString> decodeCell(QByteArrayView bytes);
+
+// What the charts say at a point.
+struct PointReport
+{
+    bool covered = false;   // some cell's data coverage holds it
+    QString cell;           // the cell answering (the best usage band covering it)
+    bool land = false;      // inside a land area
+    // Depth area (DEPARE, DRGARE) there: its range, shallowest first.
+    std::optional<double> depthMin, depthMax;
+    QString depthArea;      // its name, if it has one
+    QString place;          // the named sea area (SEAARE) there, the smallest holding it
+    // Hazards (obstructions, wrecks, rocks) and restricted areas (restricted,
+    // caution, military practice) at the point: within `radius` of a point
+    // hazard, inside an area one.
+    struct Found
+    {
+        QString objectClass;
+        QString name;
+        std::optional<double> depth; // VALSOU, where charted
+        double distance = 0;         // metres from the point (0 inside an area)
+    };
+    std::vector<Found> hazards, restrictions;
+    // The nearest sounding within 500 m.
+    std::optional<double> sounding;
+    double soundingDistance = 0;
+};
+
+PointReport reportAt(const std::vector<Cell> &cells, double lon, double lat, double radius = 25);
+
+} // namespace neptus::charts

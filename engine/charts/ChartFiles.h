@@ -1,0 +1,45 @@
+#pragma once
+
+#include "charts/Chart.h"
+
+#include <QString>
+#include <QStringList>
+
+#include <chrono>
+#include <expected>
+#include <functional>
+
+// ENC cells on disk, read through the neptus-chart-import helper (GDAL, in
+// its own process: a cell that crashes or hangs GDAL costs an error naming
+// it, never the console) and cached: a cell is read once per edition and
+// update, then loaded from the cache on every later start.
+namespace neptus::charts {
+
+// The base cells (*.000) of a cell file, an exchange set (its CATALOG.031
+// folder) or any folder holding them (searched down to 4 levels), sorted.
+// An error names the path when there is none.
+std::expected<QStringList, QString> findCells(const QString &path);
+
+// The cache folder: $XDG_CACHE_HOME/neptus-qt/charts (~/.cache/…) unless given.
+QString defaultCacheDir();
+// neptus-chart-import beside the running program.
+QString defaultHelper();
+
+struct LoadOptions
+{
+    QString cacheDir;     // defaultCacheDir() when empty
+    QString helper;       // defaultHelper() when empty
+    std::chrono::milliseconds timeout{120'000};
+};
+
+// A cell (its .000; its updates .001… beside it are applied): from the cache
+// when it holds this cell's files as they are now, else read by the helper
+// and cached. `fromCache` says which.
+std::expected<Cell, QString> loadCell(const QString &cellPath, const LoadOptions &options = {}, bool *fromCache = nullptr);
+
+// Every cell of `path` (findCells), `progress(done, total, cell)` before
+// each; the first failure ends it, naming the cell.
+std::expected<std::vector<Cell>, QString> loadCells(const QString &path, const LoadOptions &options = {},
+                                                    const std::function<void(int, int, const QString &)> &progress = {});
+
+} // namespace neptus::charts

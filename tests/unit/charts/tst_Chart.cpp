@@ -1,0 +1,170 @@
+// Charts as the console keeps them: the cell format handed over by the helper
+// and cached (every kind of damage refused), and what the charts say at a
+// point, on cells made here.
+#include "charts/Chart.h"
+
+#include <gtest/gtest.h>
+
+using namespace neptus::charts;
+using namespace Qt::StringLiterals;
+
+namespace {
+
+Feature area(const QString &objectClass, std::vector<std::vector<Vertex>> rings, QMap<QString, QString> attributes = {})
+{
+    Feature f;
+    f.objectClass = objectClass;
+    f.geometry = Feature::Geometry::Area;
+    f.parts = std::move(rings);
+    f.attributes = std::move(attributes);
+    return f;
+}
+
+std::vector<Vertex> box(double west, double south, double east, double north)
+{
+    return {{west, south, 0}, {east, south, 0}, {east, north, 0}, {west, north, 0}, {west, south, 0}};
+}
+
+Feature point(const QString &objectClass, double lon, double lat, QMap<QString, QString> attributes = {})
+{
+    Feature f;
+    f.objectClass = objectClass;
+    f.geometry = Feature::Geometry::Point;
+    f.parts = {{{lon, lat, 0}}};
+    f.attributes = std::move(attributes);
+    return f;
+}
+
+// A 0.1° cell: land in the west, a 5-10 m depth area with a 2-5 m shoal (a hole in it, an area of its
+// own), a wreck, a restricted area, soundings; coverage the whole cell.
+Cell cell(const QString &name = u"XX4TEST.000"_s, int band = 4)
+{
+    Cell c;
+    c.name = name;
+    c.edition = 3;
+    c.update = 2;
+    c.issued = u"20260101"_s;
+    c.usageBand = band;
+    c.scale = 50000;
+    c.features.push_back(area(u"M_COVR"_s, {box(-8.8, 41.1, -8.7, 41.2)}, {{u"CATCOV"_s, u"1"_s}}));
+    c.features.push_back(area(u"LNDARE"_s, {box(-8.8, 41.1, -8.78, 41.2)}, {{u"OBJNAM"_s, u"West Shore"_s}}));
+    c.features.push_back(area(u"DEPARE"_s, {box(-8.78, 41.1, -8.7, 41.2), box(-8.75, 41.14, -8.74, 41.15)},
+                              {{u"DRVAL1"_s, u"5"_s}, {u"DRVAL2"_s, u"10"_s}}));
+    c.features.push_back(area(u"DEPARE"_s, {box(-8.75, 41.14, -8.74, 41.15)}, {{u"DRVAL1"_s, u"2"_s}, {u"DRVAL2"_s, u"5"_s}}));
+    c.features.push_back(area(u"SEAARE"_s, {box(-8.78, 41.1, -8.7, 41.2)}, {{u"OBJNAM"_s, u"The Bay"_s}}));
+    c.features.push_back(area(u"SEAARE"_s, {box(-8.76, 41.13, -8.73, 41.16)}, {{u"OBJNAM"_s, u"The Cove"_s}}));
+    c.features.push_back(point(u"WRECKS"_s, -8.72, 41.18, {{u"VALSOU"_s, u"3.5"_s}, {u"OBJNAM"_s, u"Old Hulk"_s}}));
+    c.features.push_back(area(u"RESARE"_s, {box(-8.71, 41.1, -8.7, 41.11)}, {{u"OBJNAM"_s, u"Range"_s}}));
+    Feature soundings;
+    soundings.objectClass = u"SOUNDG"_s;
+    soundings.parts = {{{-8.72, 41.17, 7.4}}, {{-8.755, 41.135, 6.1}}};
+    c.features.push_back(soundings);
+    return c;
+}
+
+} // namespace
+
+TEST(Chart, ACellGoesOverAsBytesAndComesBackTheSame)
+{
+    const Cell before = cell();
+    const QByteArray bytes = encodeCell(before);
+    const auto after = decodeCell(bytes);
+    ASSERT_TRUE(after) << after.error().toStdString();
+    EXPECT_EQ(after->name, before.name);
+    EXPECT_EQ(after->edition, 3);
+    EXPECT_EQ(after->update, 2);
+    EXPECT_EQ(after->usageBand, 4);
+    EXPECT_EQ(after->scale, 50000);
+    ASSERT_EQ(after->features.size(), before.features.size());
+    for (std::size_t i = 0; i < before.features.size(); ++i) {
+        EXPECT_EQ(after->features[i].objectClass, before.features[i].objectClass);
+        EXPECT_EQ(after->features[i].attributes, before.features[i].attributes);
+        ASSERT_EQ(after->features[i].parts.size(), before.features[i].parts.size());
+        for (std::size_t p = 0; p < before.features[i].parts.size(); ++p)
+            for (std::size_t v = 0; v < before.features[i].parts[p].size(); ++v) {
+                const Vertex &a = after->features[i].parts[p][v], &b = before.features[i].parts[p][v];
+                EXPECT_NEAR(a.lon, b.lon, 1e-7); // a centimetre
+                EXPECT_NEAR(a.lat, b.lat, 1e-7);
+                EXPECT_NEAR(a.z, b.z, 1e-3);
+            }
+    }
+    EXPECT_EQ(after->counts().value(u"DEPARE"_s), 2);
+    const auto bounds = after->bounds();
+    ASSERT_TRUE(bounds.valid);
+    EXPECT_NEAR(bounds.west, -8.8, 1e-7);
+    EXPECT_NEAR(bounds.north, 41.2, 1e-7);
+}
+
+TEST(Chart, DamagedBytesAreRefusedSayingWhatIsWrong)
+{
+    const QByteArray good = encodeCell(cell());
+    EXPECT_EQ(decodeCell("NQMESH1\n").error(), u"not a chart cell (it does not start with NQCHART2)"_s);
+    // Cut anywhere: an error, never a crash.
+    for (qsizetype size = 9; size < good.size(); size += 37)
+        EXPECT_FALSE(decodeCell(QByteArrayView(good).first(size))) << size;
+    EXPECT_TRUE(decodeCell(good + "x").error().contains(u"1 bytes after the last feature"_s));
+    // A count claiming more than there is is refused before anything is made of it.
+    QByteArray huge = good;
+    const qsizetype featuresAt = 9 + 4 + cell().name.size() + 4 + 4 + 4 + 8 + 4 + 4 + 4;
+    huge[featuresAt] = char(0xff);
+    huge[featuresAt + 1] = char(0xff);
+    huge[featuresAt + 2] = char(0xff);
+    huge[featuresAt + 3] = char(0x7f);
+    const auto refused = decodeCell(huge);
+    ASSERT_FALSE(refused);
+    EXPECT_TRUE(refused.error().contains(u"features: 2147483647 claimed"_s)) << refused.error().toStdString();
+}
+
+TEST(Chart, WhatTheChartSaysAtAPoint)
+{
+    const std::vector<Cell> cells{cell()};
+    const auto land = reportAt(cells, -8.79, 41.15);
+    EXPECT_TRUE(land.covered);
+    EXPECT_EQ(land.cell, u"XX4TEST.000"_s);
+    EXPECT_TRUE(land.land);
+
+    const auto deep = reportAt(cells, -8.755, 41.135);
+    EXPECT_FALSE(deep.land);
+    EXPECT_EQ(deep.depthMin, 5);
+    EXPECT_EQ(deep.depthMax, 10);
+    EXPECT_EQ(deep.place, u"The Cove"_s) << "the smallest named sea area holding it";
+    ASSERT_TRUE(deep.sounding);
+    EXPECT_NEAR(*deep.sounding, 6.1, 1e-9);
+    EXPECT_NEAR(deep.soundingDistance, 0, 1e-6);
+
+    // Inside the shoal: the depth area around it has a hole there.
+    const auto shoal = reportAt(cells, -8.745, 41.145);
+    EXPECT_EQ(shoal.depthMin, 2);
+    EXPECT_EQ(shoal.depthMax, 5);
+
+    // Within 25 m of the wreck (about 17 m east of it), and not at 100 m.
+    const auto nearWreck = reportAt(cells, -8.7198, 41.18);
+    ASSERT_EQ(nearWreck.hazards.size(), 1u);
+    EXPECT_EQ(nearWreck.hazards[0].objectClass, u"WRECKS"_s);
+    EXPECT_EQ(nearWreck.hazards[0].name, u"Old Hulk"_s);
+    EXPECT_EQ(nearWreck.hazards[0].depth, 3.5);
+    EXPECT_NEAR(nearWreck.hazards[0].distance, 16.8, 0.5);
+    EXPECT_TRUE(reportAt(cells, -8.7188, 41.18).hazards.empty());
+    EXPECT_EQ(reportAt(cells, -8.7188, 41.18, 200).hazards.size(), 1u);
+
+    const auto range = reportAt(cells, -8.705, 41.105);
+    ASSERT_EQ(range.restrictions.size(), 1u);
+    EXPECT_EQ(range.restrictions[0].name, u"Range"_s);
+    EXPECT_TRUE(reportAt(cells, -8.705, 41.115).restrictions.empty());
+
+    EXPECT_FALSE(reportAt(cells, -8.5, 41.15).covered);
+}
+
+TEST(Chart, TheBestUsageBandCoveringThePointAnswers)
+{
+    Cell harbour;
+    harbour.name = u"XX5HARB.000"_s;
+    harbour.usageBand = 5;
+    harbour.features.push_back(area(u"M_COVR"_s, {box(-8.75, 41.14, -8.74, 41.15)}, {{u"CATCOV"_s, u"1"_s}}));
+    harbour.features.push_back(area(u"DEPARE"_s, {box(-8.75, 41.14, -8.74, 41.15)}, {{u"DRVAL1"_s, u"3"_s}, {u"DRVAL2"_s, u"4"_s}}));
+    const std::vector<Cell> cells{cell(), harbour};
+    EXPECT_EQ(reportAt(cells, -8.745, 41.145).cell, u"XX5HARB.000"_s);
+    EXPECT_EQ(reportAt(cells, -8.745, 41.145).depthMin, 3);
+    EXPECT_EQ(reportAt(cells, -8.76, 41.12).cell, u"XX4TEST.000"_s) << "outside the harbour cell";
+    EXPECT_EQ(reportAt(cells, -8.76, 41.12).place, u"The Bay"_s);
+}
