@@ -20,7 +20,7 @@ set(NEPTUS_LAYERS
   "neptus-mission-model mission    neptus-messages neptus-geo"
   "neptus-processor    processor   neptus-mission-model"
   "neptus-plans        plans       neptus-mission-model neptus-scripting"
-  "neptus-charts       charts      neptus-geo"
+  "neptus-charts       charts      neptus-mission-model"
   "neptus-chart-reader charts      neptus-charts"
   "neptus-models       models      neptus-core"
   "neptus-model-reader models      neptus-models"
@@ -38,7 +38,7 @@ set(NEPTUS_LAYERS
   "neptus-chart        -           neptus-charts"
   "neptus-script-host  -           neptus-scripting"
   "neptus-xslt         -           neptus-processor"
-  "neptus-mission      -           neptus-processor neptus-models"
+  "neptus-mission      -           neptus-processor neptus-models neptus-charts"
   "neptus-log          -           neptus-logs neptus-database"
   "neptus-logd         -           neptus-session neptus-web"
 )

@@ -2,6 +2,8 @@
 // vehicle files, imports LSTS Neptus's, translates a plan into a vehicle's own
 // format with the stylesheets its definition names, lists the targets a
 // vehicle offers, and prints what each plan implies. docs/missions.md.
+#include "charts/ChartCheck.h"
+#include "charts/ChartFiles.h"
 #include "core/SafeFile.h"
 #include "mission/NeptusExport.h"
 #include "mission/NeptusImport.h"
@@ -89,7 +91,7 @@ Errors checkMapFiles(const Mission &mission, const QString &path)
     return problems;
 }
 
-int validate(const QStringList &files, const VehicleCatalog &vehicles)
+int validate(const QStringList &files, const VehicleCatalog &vehicles, const std::vector<charts::Cell> &cells)
 {
     int failures = 0;
     for (const QString &path : files) {
@@ -126,7 +128,9 @@ int validate(const QStringList &files, const VehicleCatalog &vehicles)
                 std::fprintf(stderr, "%s: note: no definition of vehicle '%s'; plan '%s' is checked without one\n",
                              qPrintable(path), qPrintable(plan.vehicle), qPrintable(plan.id));
             Errors warnings;
-            for (const PlanProblem &p : checkPlan(plan, *m, planGeometry(plan, v ? v->speeds() : SpeedModel{}), v)) {
+            const PlanGeometry geometry = planGeometry(plan, v ? v->speeds() : SpeedModel{});
+            // And, given charts, every leg against them (docs/charts.md).
+            for (const PlanProblem &p : checkPlan(plan, *m, geometry, v) + charts::checkAgainstCharts(geometry, v, cells)) {
                 QString message = p.maneuver.isEmpty() ? p.message : u"plan '%1', %2"_s.arg(plan.id, p.message);
                 if (!p.verdict().isEmpty())
                     message += u" (%1)"_s.arg(p.verdict());
@@ -336,8 +340,8 @@ int main(int argc, char **argv)
     QCoreApplication::setApplicationName(u"neptus-mission"_s);
     QCommandLineParser parser;
     parser.setApplicationDescription(uR"(Missions from the command line:
-  validate FILE...                     check missions and vehicle definitions (schema, each plan against its vehicle,
-                                       the images and 3D models its maps name)
+  validate FILE... [--charts PATH]     check missions and vehicle definitions (schema, each plan against its vehicle,
+                                       the images and 3D models its maps name; with --charts, every leg against the charts)
   import FILE -o OUT                   LSTS Neptus .nmisz/.nmis/.nmap → our mission, .nvcl → our vehicle definition
   export MISSION --to nmisz -o OUT     our mission → an LSTS Neptus .nmisz (with its maps, checklists, images, models)
   translate MISSION --plan ID --to TARGET -o FILE [--vehicle NAME]
@@ -352,7 +356,8 @@ int main(int argc, char **argv)
     const QCommandLineOption vehicle(u"vehicle"_s, u"Vehicle id (default: the plan's)."_s, u"name"_s);
     const QCommandLineOption to(u"to"_s, u"Target format (see targets)."_s, u"target"_s);
     const QCommandLineOption vehiclesDir(u"vehicles"_s, u"Also read vehicle definitions from this folder (repeatable; after the shipped and the user's)."_s, u"folder"_s);
-    parser.addOptions({output, plan, vehicle, to, vehiclesDir});
+    const QCommandLineOption chartsDir(u"charts"_s, u"validate: also check every plan against these S-57 charts (a cell, an exchange set or a folder)."_s, u"path"_s);
+    parser.addOptions({output, plan, vehicle, to, vehiclesDir, chartsDir});
     parser.addPositionalArgument(u"command"_s, u"validate, import, export, translate, targets or stats"_s);
     parser.process(app);
 
@@ -371,8 +376,20 @@ int main(int argc, char **argv)
     for (const auto &e : vehicles.errors)
         std::fprintf(stderr, "warning: vehicle definition not loaded: %s\n", qPrintable(e.toString()));
 
-    if (command == u"validate" && !rest.isEmpty())
-        return validate(rest, vehicles);
+    if (command == u"validate" && !rest.isEmpty()) {
+        std::vector<charts::Cell> cells;
+        if (parser.isSet(chartsDir)) {
+            auto loaded = charts::loadCells(parser.value(chartsDir), {}, [](int done, int total, const QString &cell) {
+                std::fprintf(stderr, "reading chart %s (%d of %d)\n", qPrintable(cell), done + 1, total);
+            });
+            if (!loaded) {
+                std::fprintf(stderr, "neptus-mission: %s\n", qPrintable(loaded.error()));
+                return 1;
+            }
+            cells = std::move(*loaded);
+        }
+        return validate(rest, vehicles, cells);
+    }
     if (command == u"translate" && rest.size() == 1)
         return translate(rest.first(), parser.value(plan), parser.value(vehicle), parser.value(to), parser.value(output), vehicles);
     if (command == u"input" && rest.size() == 1)

@@ -23,11 +23,30 @@ bool isArea(const Feature &f) { return f.geometry == Feature::Geometry::Area; }
 
 bool inside(const Feature &area, double lon, double lat)
 {
+    if (area.west <= area.east && (lon < area.west || lon > area.east || lat < area.south || lat > area.north))
+        return false;
+    if (area.edges) { // only the edges at this latitude
+        const auto &e = *area.edges;
+        const auto band = std::floor((lat - e.south) / e.step);
+        if (band < 0 || band >= double(e.bands.size()))
+            return false;
+        bool in = false;
+        for (const auto &[r, i] : e.bands[std::size_t(band)]) {
+            const auto &ring = area.parts[r];
+            const Vertex &a = ring[i], &b = ring[i == 0 ? ring.size() - 1 : i - 1];
+            if ((a.lat > lat) != (b.lat > lat) && lon < a.lon + (lat - a.lat) * (b.lon - a.lon) / (b.lat - a.lat))
+                in = !in;
+        }
+        return in;
+    }
     bool in = false; // even-odd over all rings: holes and several outer rings alike
     for (const auto &ring : area.parts)
         in ^= geo::insideRing(ring, lon, lat, [](const Vertex &v) { return std::pair{v.lon, v.lat}; });
     return in;
 }
+
+// Metres of reach a feature is indexed with: what reportAt looks for around a point at most.
+constexpr double indexReach = 500;
 
 // Square degrees inside its outer rings less its holes (shoelace; only to compare sizes).
 double areaOf(const Feature &area)
@@ -189,6 +208,77 @@ Cell::Bounds Cell::bounds() const
     return b;
 }
 
+void Cell::index()
+{
+    double west = std::numeric_limits<double>::infinity(), south = west, east = -west, north = -west;
+    for (Feature &f : features) {
+        f.west = f.south = std::numeric_limits<double>::infinity();
+        f.east = f.north = -std::numeric_limits<double>::infinity();
+        std::size_t vertices = 0;
+        for (const auto &part : f.parts) {
+            vertices += part.size();
+            for (const Vertex &v : part) {
+                f.west = std::min(f.west, v.lon);
+                f.east = std::max(f.east, v.lon);
+                f.south = std::min(f.south, v.lat);
+                f.north = std::max(f.north, v.lat);
+            }
+        }
+        f.edges.reset();
+        if (isArea(f) && vertices > 32 && f.north > f.south) {
+            // About 8 edges a band; each edge in every band its latitudes span.
+            auto edges = std::make_shared<Feature::Edges>();
+            const std::size_t bands = std::clamp<std::size_t>(vertices / 8, 1, 4096);
+            edges->south = f.south;
+            edges->step = (f.north - f.south) / double(bands) * (1 + 1e-12);
+            edges->bands.resize(bands);
+            for (std::size_t r = 0; r < f.parts.size(); ++r) {
+                const auto &ring = f.parts[r];
+                for (std::size_t i = 0, j = ring.size() - 1; i < ring.size(); j = i++) {
+                    const Vertex &a = ring[i], &b = ring[j];
+                    const auto first = std::size_t(std::max(0.0, std::floor((std::min(a.lat, b.lat) - edges->south) / edges->step)));
+                    const auto last = std::min(bands - 1, std::size_t(std::floor((std::max(a.lat, b.lat) - edges->south) / edges->step)));
+                    for (std::size_t band = first; band <= last; ++band)
+                        edges->bands[band].emplace_back(quint32(r), quint32(i));
+                }
+            }
+            f.edges = std::move(edges);
+        }
+        if (f.west <= f.east) {
+            west = std::min(west, f.west);
+            east = std::max(east, f.east);
+            south = std::min(south, f.south);
+            north = std::max(north, f.north);
+        }
+    }
+    grid.reset();
+    if (!(west < east && south < north))
+        return;
+    // A grid of about 64 × 64 places over the cell; a feature is listed in every place within reach of its bounds.
+    auto g = std::make_shared<Grid>();
+    const double midLat = (south + north) / 2;
+    const double reachLat = indexReach / 110574.0, reachLon = indexReach / (111320.0 * std::max(0.01, std::cos(midLat * std::numbers::pi / 180)));
+    g->west = west - reachLon;
+    g->south = south - reachLat;
+    g->nx = g->ny = 64;
+    g->dx = (east + reachLon - g->west) / g->nx;
+    g->dy = (north + reachLat - g->south) / g->ny;
+    g->buckets.resize(std::size_t(g->nx * g->ny));
+    for (std::size_t i = 0; i < features.size(); ++i) {
+        const Feature &f = features[i];
+        if (f.west > f.east)
+            continue;
+        const int x0 = std::clamp(int((f.west - reachLon - g->west) / g->dx), 0, g->nx - 1);
+        const int x1 = std::clamp(int((f.east + reachLon - g->west) / g->dx), 0, g->nx - 1);
+        const int y0 = std::clamp(int((f.south - reachLat - g->south) / g->dy), 0, g->ny - 1);
+        const int y1 = std::clamp(int((f.north + reachLat - g->south) / g->dy), 0, g->ny - 1);
+        for (int y = y0; y <= y1; ++y)
+            for (int x = x0; x <= x1; ++x)
+                g->buckets[std::size_t(y * g->nx + x)].push_back(quint32(i));
+    }
+    grid = std::move(g);
+}
+
 const QStringList &keptClasses()
 {
     static const QStringList classes{
@@ -300,18 +390,52 @@ std::expected<Cell, QString> decodeCell(QByteArrayView bytes)
         return std::unexpected(r.error());
     if (r.left() != 0)
         return std::unexpected(u"%1 bytes after the last feature"_s.arg(r.left()));
+    cell.index();
     return cell;
 }
 
-PointReport reportAt(const std::vector<Cell> &cells, double lon, double lat, double radius)
+PointReport reportAt(const std::vector<Cell> &cells, double lon, double lat, double radius, bool soundings)
 {
+    // Features whose bounds, grown by the radius (or the 500 m a sounding is looked for), miss the point are skipped.
+    const double reach = std::max(radius, soundings ? 500.0 : 0.0);
+    const double dLat = reach / 110574.0, dLon = reach / (111320.0 * std::max(0.01, std::cos(lat * std::numbers::pi / 180)));
+    const auto near = [&](const Feature &f) {
+        return f.west > f.east || (lon >= f.west - dLon && lon <= f.east + dLon && lat >= f.south - dLat && lat <= f.north + dLat);
+    };
     PointReport report;
+    // The features of a cell that may matter here: those its grid lists at the point (all, unindexed).
+    static const std::vector<quint32> none;
+    const auto candidates = [&](const Cell &c) -> std::pair<const std::vector<quint32> *, bool> {
+        if (!c.grid || radius > indexReach)
+            return {nullptr, true};
+        const Cell::Grid &g = *c.grid;
+        const int x = int(std::floor((lon - g.west) / g.dx)), y = int(std::floor((lat - g.south) / g.dy));
+        if (x < 0 || y < 0 || x >= g.nx || y >= g.ny)
+            return {&none, false};
+        return {&g.buckets[std::size_t(y * g.nx + x)], false};
+    };
+    const auto forEach = [&](const Cell &c, const auto &visit) {
+        const auto [list, all] = candidates(c);
+        if (all) {
+            for (const Feature &f : c.features)
+                visit(f);
+        } else {
+            for (const quint32 i : *list)
+                visit(c.features[i]);
+        }
+    };
     // The cell with the best usage band (the largest scale) whose coverage holds the point.
     const Cell *best = nullptr;
     for (const Cell &c : cells) {
-        const auto covers = c.coverage();
-        if (std::any_of(covers.begin(), covers.end(), [&](const Feature *f) { return inside(*f, lon, lat); })
-            && (!best || c.usageBand > best->usageBand))
+        if (best && c.usageBand <= best->usageBand)
+            continue;
+        bool covers = false;
+        forEach(c, [&](const Feature &f) {
+            covers = covers
+                     || (f.objectClass == u"M_COVR" && isArea(f) && f.attributes.value(u"CATCOV"_s, u"1"_s) == u"1"
+                         && inside(f, lon, lat));
+        });
+        if (covers)
             best = &c;
     }
     if (!best)
@@ -322,7 +446,9 @@ PointReport reportAt(const std::vector<Cell> &cells, double lon, double lat, dou
     double placeSize = 0;
     static const QStringList hazards{u"OBSTRN"_s, u"WRECKS"_s, u"UWTROC"_s};
     static const QStringList restrictions{u"RESARE"_s, u"CTNARE"_s, u"MIPARE"_s};
-    for (const Feature &f : best->features) {
+    forEach(*best, [&](const Feature &f) {
+        if (!near(f))
+            return;
         const QString &c = f.objectClass;
         if (c == u"LNDARE") {
             report.land = report.land || (isArea(f) && inside(f, lon, lat));
@@ -343,7 +469,7 @@ PointReport reportAt(const std::vector<Cell> &cells, double lon, double lat, dou
                 report.place = f.name();
                 placeSize = size;
             }
-        } else if (c == u"SOUNDG") {
+        } else if (c == u"SOUNDG" && soundings) {
             for (const auto &part : f.parts)
                 for (const Vertex &v : part) {
                     const auto [x, y] = plane.xy(v);
@@ -354,7 +480,7 @@ PointReport reportAt(const std::vector<Cell> &cells, double lon, double lat, dou
                     }
                 }
         }
-    }
+    });
     return report;
 }
 

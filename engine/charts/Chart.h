@@ -7,6 +7,7 @@
 #include <QStringList>
 
 #include <expected>
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -37,6 +38,18 @@ struct Feature
 
     std::optional<double> number(const QString &attribute) const;
     QString name() const { return attributes.value(QStringLiteral("OBJNAM")); }
+
+    // Its bounds, once Cell::index() has run (west > east until then: every point is tested).
+    double west = 1, south = 0, east = 0, north = 0;
+    // An area's edges by band of latitude (Cell::index()), so that a point is
+    // tested against the few edges at its latitude, not all of a coastline's.
+    struct Edges
+    {
+        double south = 0, step = 1;
+        // Each edge as (ring, i): from the ring's vertex i to the one before it.
+        std::vector<std::vector<std::pair<quint32, quint32>>> bands;
+    };
+    std::shared_ptr<const Edges> edges;
 };
 
 struct Cell
@@ -60,6 +73,17 @@ struct Cell
         bool valid = false;
     };
     Bounds bounds() const;
+    // Works out each feature's bounds and a grid of which features are near
+    // each place (within 500 m), so that reportAt() tests a point only against
+    // those (decodeCell does it; a cell changed after must be indexed again).
+    void index();
+    struct Grid
+    {
+        double west = 0, south = 0, dx = 1, dy = 1;
+        int nx = 0, ny = 0;
+        std::vector<std::vector<quint32>> buckets; // feature indices, nx × ny
+    };
+    std::shared_ptr<const Grid> grid;
 };
 
 // The object classes the helper keeps (everything else in a cell is left there).
@@ -102,6 +126,7 @@ struct PointReport
     double soundingDistance = 0;
 };
 
-PointReport reportAt(const std::vector<Cell> &cells, double lon, double lat, double radius = 25);
+// `soundings`: look for the nearest sounding (a plan check does not).
+PointReport reportAt(const std::vector<Cell> &cells, double lon, double lat, double radius = 25, bool soundings = true);
 
 } // namespace neptus::charts

@@ -181,7 +181,9 @@ QString PlanProblem::verdict() const
 {
     if (severity != Severity::Error)
         return {};
-    return kind == Kind::NoGo || kind == Kind::OutsideOperatingArea || kind == Kind::BelowBottom ? u"unsafe"_s : u"impossible"_s;
+    static const QList<Kind> unsafe{Kind::NoGo, Kind::OutsideOperatingArea, Kind::BelowBottom, Kind::ChartLand,
+                                    Kind::ChartShallow, Kind::ChartHazard};
+    return unsafe.contains(kind) ? u"unsafe"_s : u"impossible"_s;
 }
 
 QList<PlanProblem> checkPlan(const Plan &plan, const Mission &mission, const PlanGeometry &geometry,

@@ -33,6 +33,11 @@ struct PlanProblem
         Vehicle,          // a maneuver or parameter the vehicle cannot do (VehicleDefinition::check)
         Condition,        // a transition's condition does not compile (found by plans::Supervisor)
         BelowBottom,      // planned deeper than the mission's terrain (found by the plan editor)
+        ChartLand,        // a leg crosses land on the charts (charts::checkAgainstCharts)
+        ChartShallow,     // a leg enters water shallower than the vehicle needs
+        ChartHazard,      // a leg passes an obstruction, wreck or rock not deep enough
+        ChartRestricted,  // a leg enters a restricted area (warning)
+        ChartCoverage,    // a leg leaves the charts' coverage (warning)
     };
     Severity severity = Severity::Error;
     Kind kind = Kind::Vehicle;

@@ -198,7 +198,8 @@ std::expected<VehicleDefinition, Errors> readVehicle(QByteArrayView data, const 
     if (const xmlNode *l = firstChildElement(root, "limits")) {
         v.limits = VehicleLimits{numberAttribute(l, "max-depth"), numberAttribute(l, "max-altitude"), numberAttribute(l, "min-speed"),
                                  numberAttribute(l, "max-speed"), numberAttribute(l, "endurance"), numberAttribute(l, "turn-radius"),
-                                 numberAttribute(l, "rpm-per-mps"), attribute(l, "z-units").split(u' ', Qt::SkipEmptyParts)};
+                                 numberAttribute(l, "rpm-per-mps"), attribute(l, "z-units").split(u' ', Qt::SkipEmptyParts),
+                                 numberAttribute(l, "draft"), numberAttribute(l, "min-altitude")};
     }
     for (const xmlNode *m : childElements(root, "maneuver")) {
         ManeuverSpec spec{attribute(m, "type"), {}};
@@ -278,6 +279,8 @@ QByteArray writeVehicle(const VehicleDefinition &v)
         writeNumber(out, u"turn-radius"_s, v.limits.turnRadius);
         writeNumber(out, u"rpm-per-mps"_s, v.limits.rpmPerMps);
         writeText(out, u"z-units"_s, v.limits.zUnits.join(u' '));
+        writeNumber(out, u"draft"_s, v.limits.draft);
+        writeNumber(out, u"min-altitude"_s, v.limits.minAltitude);
     }
     for (const ManeuverSpec &m : v.maneuvers) {
         out.writeStartElement(u"maneuver"_s);

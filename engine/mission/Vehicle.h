@@ -67,6 +67,9 @@ struct VehicleLimits
 {
     std::optional<double> maxDepth, maxAltitude, minSpeed, maxSpeed, endurance, turnRadius, rpmPerMps;
     QStringList zUnits; // those it can be commanded in; empty: any
+    // For the chart check: how deep a surface vehicle's hull goes, and how
+    // close to the bottom an underwater one may go (metres).
+    std::optional<double> draft, minAltitude;
     friend bool operator==(const VehicleLimits &, const VehicleLimits &) = default;
 };
 

@@ -5,6 +5,9 @@
 // Goal (issue "Missions as files"): load + validate and each translation ≤ 100 ms.
 // Run: tools/bench mission --benchmark_repetitions=5 --benchmark_report_aggregates_only=true (figures in BENCHMARKS.md)
 #include "BenchMain.h"
+#include "Paths.h"
+#include "charts/ChartCheck.h"
+#include "charts/S57Reader.h"
 #include "mission/MissionXml.h"
 #include "mission/PlanCheck.h"
 #include "mission/PlanGeometry.h"
@@ -257,6 +260,54 @@ void PlanGeometryAndCheck(benchmark::State &state)
     state.counters["maneuvers"] = static_cast<double>(f.plan.maneuvers.size());
 }
 BENCHMARK(PlanGeometryAndCheck)->Unit(benchmark::kMillisecond);
+
+// The same kind of check against a chart (issue "Nautical charts": at the
+// speed of the plan check): 1,000 Gotos zigzagging 100 m apart across
+// Eastern Bay (Chesapeake; the NOAA cell of ../shared/fixtures/charts, 4,600
+// features), every leg walked in 10 m steps (about 10,000 points asked).
+void ChartCheck(benchmark::State &state)
+{
+    static const auto cell = [] {
+        auto c = charts::readS57(test::sharedPath(u"fixtures/charts/US4MD81M/US4MD81M.000"_s));
+        if (c)
+            c->index();
+        return c;
+    }();
+    if (!cell) {
+        state.SkipWithError("no chart: ../shared/fixtures/charts is absent");
+        return;
+    }
+    static const Plan plan = [] {
+        Plan p;
+        p.id = u"zigzag"_s;
+        for (int i = 0; i < 1000; ++i) {
+            Maneuver g;
+            g.id = u"g%1"_s.arg(i);
+            g.type = u"Goto"_s;
+            g.set(u"lat"_s, 38.84 + (i % 2) * 0.0009);
+            g.set(u"lon"_s, -76.33 + (i / 2) * 0.00023); // 1,000 legs of about 100 m, east along the bay
+            g.set(u"speed"_s, 2);
+            if (i > 0)
+                p.transitions.append({u"g%1"_s.arg(i - 1), g.id, u"ManeuverIsDone"_s, {}, {}});
+            p.maneuvers.append(g);
+        }
+        p.start = u"g0"_s;
+        return p;
+    }();
+    static const PlanGeometry geometry = planGeometry(plan);
+    mission::VehicleDefinition boat;
+    boat.id = u"boat"_s;
+    boat.kind = u"USV"_s;
+    boat.limits.draft = 0.3;
+    const std::vector<charts::Cell> cells{*cell};
+    qsizetype problems = 0;
+    for (auto _ : state)
+        problems = charts::checkAgainstCharts(geometry, &boat, cells).size();
+    state.counters["maneuvers"] = 1000;
+    state.counters["km"] = geometry.length / 1000;
+    state.counters["problems"] = static_cast<double>(problems);
+}
+BENCHMARK(ChartCheck)->Unit(benchmark::kMillisecond);
 
 void TranslationInput(benchmark::State &state)
 {

@@ -44,5 +44,26 @@ head -c 2000 /dev/urandom >"$work/XX4BAD.000"
 chart info "$work/XX4BAD.000" >/dev/null 2>"$work/err"; [ $? = 1 ] && grep -q "XX4BAD.000: not an S-57 cell" "$work/err"
 check "a damaged cell is refused, naming it ($(cat "$work/err"))" $?
 
+# neptus-mission validate --charts: a boat's plan across Eastern Bay onto Kent Island fails, saying where.
+mission_tool=$(dirname "$tool")/neptus-mission
+cat >"$work/bay.xml" <<'XML'
+<mission format="1" id="bay" name="Eastern Bay">
+  <home lat="38.8503" lon="-76.312942" height="0"/>
+  <vehicle id="caravela-sim"/>
+  <plan id="ashore" vehicle="caravela-sim" start="a">
+    <maneuvers>
+      <Goto id="a" lat="38.8503" lon="-76.33" z="0" z_units="DEPTH" speed="2"/>
+      <Goto id="b" lat="38.8503" lon="-76.39" z="0" z_units="DEPTH" speed="2"/>
+    </maneuvers>
+    <transition from="a" to="b"/>
+  </plan>
+</mission>
+XML
+"$mission_tool" validate "$work/bay.xml" >"$work/out" 2>"$work/err"; status=$?
+[ $status = 0 ]; check "without charts the plan passes" $?
+HOME=$work "$mission_tool" validate "$work/bay.xml" --charts "$cell" >"$work/out" 2>"$work/err"; status=$?
+[ $status = 1 ] && grep -q "plan 'ashore', 'b' (Goto): a leg crosses land (chart US4MD81M.000) (unsafe)" "$work/err"
+check "validate --charts refuses a leg across land, naming the maneuver ($(cat "$work/err"))" $?
+
 [ "$failures" = 0 ] || { echo "$failures failed"; exit 1; }
 echo "all passed"
