@@ -98,6 +98,11 @@ std::expected<CommandLine, QString> CommandLine::parse(const QStringList &argume
     const QCommandLineOption uiScale(QStringLiteral("ui-scale"),
         QStringLiteral("Size of text and controls, 0.75 to 2 (touch targets never under 9 mm); default as last time."),
         QStringLiteral("factor"));
+    const QCommandLineOption charts(QStringLiteral("charts"),
+        QStringLiteral("Nautical charts (S-57 ENC) for the maps: a cell (.000), an exchange set or a folder of cells (docs/charts.md)."),
+        QStringLiteral("path"));
+    const QCommandLineOption safetyDepth(QStringLiteral("safety-depth"),
+        QStringLiteral("Charted water shallower than this stands out on the maps, in metres (default 5)."), QStringLiteral("metres"));
     const QCommandLineOption size(QStringLiteral("size"),
         QStringLiteral("Window size, e.g. 1280x800."), QStringLiteral("WxH"));
     const QCommandLineOption selfTest(QStringLiteral("self-test"),
@@ -202,6 +207,7 @@ std::expected<CommandLine, QString> CommandLine::parse(const QStringList &argume
         QStringLiteral("Map tiles for the web page: a URL with {z}/{x}/{y} (default: the offline coastline only)."), QStringLiteral("url"));
     parser.addOptions({mavlink, mavlinkPeer, mavlinkKey, mavlinkRequireSigning, mavlinkDialect});
     parser.addOptions({logDir, noRecord, database, replay, replaySession, replayFrom, replayPlay, webPort, webBind, webToken, webCert, webKey, webTiles});
+    parser.addOptions({charts, safetyDepth});
     parser.addOptions({console, screenshot, screenshotDelay, components, edit, select, system, palette, uiScale, gps, size, selfTest,
                        imcPort, imcBind, imcPeer, ddsDomain, ddsConfig, ddsKeys, ddsIdentity, defs, defsFor, imcDiscovery, dumpTree, quitAfter, forgetAfter, mission, share, name});
     // "--defs-for SYSTEM FILE" (two words, as the documentation writes it) is
@@ -238,6 +244,17 @@ std::expected<CommandLine, QString> CommandLine::parse(const QStringList &argume
                                        .arg(parser.value(screenshotDelay)));
     }
     result.selfTest = parser.isSet(selfTest);
+    if (parser.isSet(charts)) {
+        result.charts = QFileInfo(parser.value(charts)).absoluteFilePath();
+        if (!QFileInfo::exists(result.charts))
+            return std::unexpected(QStringLiteral("--charts: '%1' does not exist").arg(parser.value(charts)));
+    }
+    if (parser.isSet(safetyDepth)) {
+        bool ok = false;
+        result.safetyDepth = parser.value(safetyDepth).toDouble(&ok);
+        if (!ok || !(result.safetyDepth >= 0 && result.safetyDepth <= 1000))
+            return std::unexpected(QStringLiteral("--safety-depth must be metres (0 to 1000), not '%1'").arg(parser.value(safetyDepth)));
+    }
     result.logDirectory = parser.isSet(logDir) ? QFileInfo(parser.value(logDir)).absoluteFilePath() : QString();
     result.record = !parser.isSet(noRecord);
     if (parser.isSet(webPort)) {

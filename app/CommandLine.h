@@ -26,6 +26,8 @@ struct CommandLine
     bool edit = false;                  // start in edit mode
     QString select;                     // with edit: the component selected
     QString system;                     // the console's main system ($main)
+    QString charts;                     // S-57 charts for the maps (absolute path)
+    double safetyDepth = 5;             // metres
     QSize windowSize{1280, 800};
     QStringList definitionFiles;        // --defs: instead of msgdefs/
     QList<std::pair<QString, QString>> definitionsFor; // --defs-for SYSTEM=FILE

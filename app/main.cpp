@@ -334,6 +334,8 @@ int main(int argc, char *argv[])
         {QStringLiteral("editing"), commandLine->edit},
         {QStringLiteral("initialSelection"), commandLine->select},
         {QStringLiteral("mainSystem"), mainSystem},
+        {QStringLiteral("charts"), commandLine->charts},
+        {QStringLiteral("safetyDepth"), commandLine->safetyDepth},
         {QStringLiteral("width"), commandLine->windowSize.width()},
         {QStringLiteral("height"), commandLine->windowSize.height()},
     });

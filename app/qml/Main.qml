@@ -26,6 +26,8 @@ ApplicationWindow {
     // From the command line: the component selected in edit mode, the system followed.
     property string initialSelection: ""
     property string mainSystem: ""
+    property string charts: ""
+    property real safetyDepth: 5
     readonly property alias designer: designer
     readonly property alias consoleLoader: consoleLoader
 
@@ -66,6 +68,8 @@ ApplicationWindow {
     Component.onCompleted: {
         if (mainSystem !== "")
             Session.mainSystem = mainSystem
+        Session.charts = charts
+        Session.safetyDepth = safetyDepth
         designer.selected = initialSelection
         const requested = Theme.paletteNames.map(name => name.toLowerCase()).indexOf(initialPalette)
         Theme.palette = requested >= 0 ? requested : settings.palette

@@ -35,6 +35,14 @@ Rectangle {
     property bool showGrid: true
     // The world coastline (GSHHG, installed with Neptus-Qt) where no tiles are.
     property bool showCoastline: true
+    // Nautical charts (S-57 cells: a cell, an exchange set or a folder; docs/charts.md) under the
+    // vehicles, by default the ones the console was started with (--charts); depth areas
+    // shallower than the safety contour stand out.
+    property string charts: Session.charts
+    property real safetyDepth: Session.safetyDepth
+    readonly property ChartItem chartLayer: chart
+    // What the charts say where the operator last tapped ({} when nothing).
+    property var chartTapped: ({})
     // Drawing a plan of the console's mission on the map (the ✎ button).
     property bool editingPlan: false
     // (var: MapPlanEditor refers to Map2D, and types may not refer round in a circle)
@@ -194,8 +202,16 @@ Rectangle {
                 root.planEditor.tapped(at)
                 return
             }
-            if (!root.measuring)
+            if (!root.measuring) {
+                // A tap on a chart says what is there; the next tap, anywhere, closes it.
+                if (root.chartTapped.depth !== undefined) {
+                    root.chartTapped = ({})
+                    return
+                }
+                const c = root.toCoordinate(at.x, at.y)
+                root.chartTapped = root.charts !== "" ? chart.featureAt(c.lat, c.lon, Math.max(10, Theme.mm(5) * root.metresPerPixel)) : ({})
                 return
+            }
             const p = root.toCoordinate(at.x, at.y)
             root.measurePoints = root.measurePoints.length >= 2 ? [p] : root.measurePoints.concat([p])
         }
@@ -250,6 +266,52 @@ Rectangle {
         bearing: root.bearing
         shoreColor: Theme.shore
         shoreWidth: Math.max(1, Theme.mm(0.25))
+    }
+
+    // Nautical charts: depth areas by band, then land (Shapes placed by the chart item's transform,
+    // so moving the view moves them without new geometry), under the contours, the coastline and
+    // the hazards the item draws itself.
+    Item {
+        objectName: "chartAreas"
+        visible: chart.visible
+        transform: Matrix4x4 { matrix: chart.areaTransform }
+        Repeater {
+            model: [
+                { paths: chart.deep, fill: Theme.chart.deep },
+                { paths: chart.medium, fill: Theme.chart.medium },
+                { paths: chart.shallow, fill: Theme.chart.shallow },
+                { paths: chart.drying, fill: Theme.chart.drying },
+                { paths: chart.land, fill: Theme.land }
+            ]
+            Shape {
+                id: band
+                required property var modelData
+                asynchronous: true
+                ShapePath {
+                    fillColor: band.modelData.fill
+                    fillRule: ShapePath.OddEvenFill
+                    strokeWidth: -1
+                    PathMultiline { paths: band.modelData.paths }
+                }
+            }
+        }
+    }
+    ChartItem {
+        id: chart
+        objectName: "chart"
+        anchors.fill: parent
+        visible: root.charts !== ""
+        path: root.charts
+        safetyDepth: root.safetyDepth
+        centerLatitude: root.centerLatitude
+        centerLongitude: root.centerLongitude
+        zoomLevel: root.zoomLevel
+        bearing: root.bearing
+        contourColor: Theme.chart.contour
+        safetyContourColor: Theme.chart.safety
+        coastColor: Theme.shore
+        hazardColor: Theme.chart.hazard
+        lineWidth: Math.max(1, Theme.mm(0.2))
     }
 
     // Lat/lon grid: the map itself when there are no tiles (and no
@@ -582,7 +644,7 @@ Rectangle {
         objectName: "noTiles"
         visible: !root.tilesShown
         anchors { right: parent.right; bottom: parent.bottom; margins: Theme.spacing }
-        width: Math.min(implicitWidth, parent.width - Theme.spacing * 2)
+        width: Math.min(implicitWidth, parent.width - scaleBar.width - Theme.spacing * 6)
         wrapMode: Text.Wrap
         horizontalAlignment: Text.AlignRight
         text: (mbtilesFolder.busy ? qsTr("preparing the tiles of %1: %2 %: ").arg(mbtilesFolder.name).arg(Math.floor(mbtilesFolder.progress * 100))
@@ -592,7 +654,34 @@ Rectangle {
                  : coastline.error !== "" ? coastline.error
                  : coastline.resolution !== "" ? qsTr("coastline (GSHHG, %1 resolution)").arg(coastline.resolution)
                  : qsTr("coastline loading…"))
+              + (root.charts === "" ? ""
+                 : chart.loading ? qsTr(" · reading the charts…")
+                 : chart.error !== "" ? " · " + chart.error
+                 : qsTr(" · chart %1 · safety contour %2 m · not for navigation").arg(chart.cells.join(", ")).arg(chart.safetyContour))
         color: Theme.textDim
         font.pixelSize: Theme.smallFontPixelSize
+    }
+
+    // What the chart says where the operator tapped; a tap on it, or anywhere on the map, closes it.
+    Rectangle {
+        objectName: "chartTapped"
+        visible: root.chartTapped.depth !== undefined
+        anchors { left: parent.left; top: parent.top; margins: Theme.spacing * 2 }
+        width: Math.min(parent.width * 0.6, tappedText.implicitWidth + Theme.spacing * 4)
+        height: tappedText.implicitHeight + Theme.spacing * 2
+        radius: Theme.spacing
+        color: Theme.surface
+        border.color: Theme.border
+        Text {
+            id: tappedText
+            anchors { fill: parent; margins: Theme.spacing }
+            wrapMode: Text.Wrap
+            color: Theme.text
+            font.pixelSize: Theme.fontPixelSize
+            text: root.chartTapped.depth === undefined ? ""
+                  : [root.chartTapped.depth].concat((root.chartTapped.features || []).map(f => f.text)).join("\n")
+        }
+        // Takes the touch on press: the map under it does not see the tap.
+        TapHandler { gesturePolicy: TapHandler.WithinBounds; onTapped: root.chartTapped = ({}) }
     }
 }

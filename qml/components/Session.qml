@@ -34,6 +34,10 @@ QtObject {
     // means this system's. Chosen in the systems list, by opening a console
     // for a vehicle, or the first vehicle heard when none was (the shell).
     property string mainSystem: ""
+    // Nautical charts the maps draw (--charts: a cell, an exchange set or a folder) and the
+    // depth shallower than which the chart's water stands out (--safety-depth, metres).
+    property string charts: ""
+    property real safetyDepth: 5
     // A path or system name with "$main" made the followed system's; "" while
     // none is followed (no component shows or sends to "$main" itself).
     function resolve(path) {

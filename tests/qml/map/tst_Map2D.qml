@@ -145,6 +145,44 @@ TestCase {
     // gmt-gshhg packages): at Porto, full resolution, the city on land and
     // the sea off the Douro mouth as sea, the shore between; zoomed out a
     // coarser resolution, Madrid on land; switched off, all sea again.
+    // A nautical chart (the NOAA cell of ../shared/fixtures/charts) under the systems:
+    // Kent Island as land, Eastern Bay's 10.9-18.2 m as deep water, the 0-1.8 m shoal
+    // east of it standing out as shallow; the safety contour follows the safety
+    // depth; a tap says what the chart says there.
+    function test_3c_aNauticalChartIsDrawnAndSaysWhatIsWhere() {
+        const path = Fixtures.sharedDir() + "/fixtures/charts/US4MD81M"
+        const m = createTemporaryObject(tiledMap, test, { x: 0, y: 0, width: 800, height: 600, initialZoomLevel: 12.3,
+                                                          showCoastline: false, charts: path })
+        m.centreAt(38.8503, -76.312942)
+        const chart = findChild(m, "chart")
+        tryVerify(() => !chart.loading, 30000)
+        if (chart.error.indexOf("no such file") >= 0)
+            skip("no chart fixture at " + path + ": ../shared is absent")
+        compare(chart.error, "")
+        compare(chart.cells.length, 1)
+        compare(chart.cells[0], "US4MD81M.000 (edition 31, update 3)")
+        compare(chart.safetyContour, 5.4, "the first contour at or past 5 m")
+        verify(findChild(m, "noTiles").text.indexOf("chart US4MD81M.000 (edition 31, update 3) · safety contour 5.4 m · not for navigation") >= 0,
+               findChild(m, "noTiles").text)
+        const colourAt = (lat, lon) => { const p = m.screenPoint(lat, lon); return grabImage(m).pixel(p.x, p.y) }
+        tryVerify(() => Qt.colorEqual(colourAt(38.8503, -76.37), Theme.land), 10000, "Kent Island is land")
+        tryVerify(() => Qt.colorEqual(colourAt(38.8503, -76.312942), Theme.chart.deep), 10000, "Eastern Bay, 10.9-18.2 m: deep")
+        tryVerify(() => Qt.colorEqual(colourAt(38.8503, -76.28), Theme.chart.shallow), 10000, "the 0-1.8 m shoal stands out")
+        // A deeper safety depth: Eastern Bay's 10.9 m is now shallower than the safety contour (18.2 m).
+        m.safetyDepth = 12
+        compare(chart.safetyContour, 18.2)
+        tryVerify(() => Qt.colorEqual(colourAt(38.8503, -76.312942), Theme.chart.shallow), 10000, "now shallow")
+        // A tap says what is there.
+        const p = m.screenPoint(38.8503, -76.312942)
+        mouseClick(m, p.x, p.y)
+        tryVerify(() => m.chartTapped.depth !== undefined, 2000)
+        compare(m.chartTapped.depth, "charted depth 10.9–18.2 m, Eastern Bay")
+        verify(findChild(m, "chartTapped").visible)
+        mouseClick(findChild(m, "chartTapped"))
+        tryVerify(() => !findChild(m, "chartTapped").visible, 2000, "a tap on it closes it")
+        compare(m.chartTapped.depth, undefined, "and asks nothing of the map under it")
+    }
+
     function test_3b_withoutTilesTheCoastlineShowsLand() {
         const m = createTemporaryObject(tiledMap, test, { x: 0, y: 0, width: 800, height: 600, initialZoomLevel: 13 })
         m.centreAt(41.15, -8.66)

@@ -1,0 +1,104 @@
+#pragma once
+
+#include "MapOverlayItem.h"
+#include "charts/Chart.h"
+
+#include <QColor>
+#include <QFutureWatcher>
+#include <QMatrix4x4>
+#include <QPolygonF>
+#include <QtQml/qqmlregistration.h>
+
+#include <memory>
+
+// Nautical charts (S-57 cells, engine/charts) under Map2D's vehicles: the
+// cells of `path` read once on a worker thread (through the
+// neptus-chart-import helper and its cache), their areas handed to QML
+// Shapes as rings in a local frame placed by `areaTransform` (land; depth areas
+// in four bands by their shallowest depth against the safety depth: drying,
+// shallower than it, up to twice it, deeper), and drawn here: depth contours
+// (the safety contour, the first at or past the safety depth, thicker), the
+// coastline, and hazards (obstructions, wrecks, rocks) as crosses the same
+// size at every zoom. `featureAt` says what is at a tapped point.
+class ChartItem : public MapOverlayItem
+{
+    Q_OBJECT
+    QML_ELEMENT
+    Q_PROPERTY(QString path READ path WRITE setPath NOTIFY pathChanged)
+    Q_PROPERTY(double safetyDepth READ safetyDepth WRITE setSafetyDepth NOTIFY styleChanged)
+    Q_PROPERTY(QColor contourColor MEMBER m_contourColor NOTIFY styleChanged)
+    Q_PROPERTY(QColor safetyContourColor MEMBER m_safetyColor NOTIFY styleChanged)
+    Q_PROPERTY(QColor coastColor MEMBER m_coastColor NOTIFY styleChanged)
+    Q_PROPERTY(QColor hazardColor MEMBER m_hazardColor NOTIFY styleChanged)
+    Q_PROPERTY(double lineWidth MEMBER m_lineWidth NOTIFY styleChanged)
+    // Closed rings in local units, even-odd, per band; placed by `areaTransform`.
+    Q_PROPERTY(QVariant land READ land NOTIFY loaded)
+    Q_PROPERTY(QVariant drying READ drying NOTIFY banded)
+    Q_PROPERTY(QVariant shallow READ shallow NOTIFY banded)
+    Q_PROPERTY(QVariant medium READ medium NOTIFY banded)
+    Q_PROPERTY(QVariant deep READ deep NOTIFY banded)
+    Q_PROPERTY(QMatrix4x4 areaTransform READ areaTransform NOTIFY placed)
+    Q_PROPERTY(bool loading READ loading NOTIFY loadingChanged)
+    Q_PROPERTY(QString error READ error NOTIFY loaded)
+    Q_PROPERTY(QStringList cells READ cells NOTIFY loaded)
+    Q_PROPERTY(double safetyContour READ safetyContour NOTIFY banded)
+
+public:
+    explicit ChartItem(QQuickItem *parent = nullptr);
+    ~ChartItem() override;
+
+    QString path() const { return m_path; }
+    void setPath(const QString &path);
+    double safetyDepth() const { return m_safetyDepth; }
+    void setSafetyDepth(double metres);
+    QVariant land() const { return QVariant::fromValue(m_land); }
+    QVariant drying() const { return QVariant::fromValue(m_bands[0]); }
+    QVariant shallow() const { return QVariant::fromValue(m_bands[1]); }
+    QVariant medium() const { return QVariant::fromValue(m_bands[2]); }
+    QVariant deep() const { return QVariant::fromValue(m_bands[3]); }
+    QMatrix4x4 areaTransform() const { return m_transform; }
+    bool loading() const { return m_loading; }
+    QString error() const { return m_error; }
+    QStringList cells() const;
+    double safetyContour() const { return m_safetyContour; }
+
+    // What the charts say at a position (degrees), in words, for a tap: the
+    // features there (within `radius` metres of a point one), each as
+    // {what, name, depth, text}; and the charted depth {land, min, max, place}.
+    Q_INVOKABLE QVariantMap featureAt(double lat, double lon, double radius = 30) const;
+
+signals:
+    void pathChanged();
+    void styleChanged();
+    void loaded();
+    void banded();
+    void placed();
+    void loadingChanged();
+
+protected:
+    void viewUpdated() override;
+    QSGNode *updatePaintNode(QSGNode *old, UpdatePaintNodeData *) override;
+
+private:
+    struct Loaded;
+    void finished();
+    void band();
+
+    QString m_path;
+    double m_safetyDepth = 5;
+    double m_safetyContour = 0;
+    QColor m_contourColor = Qt::gray, m_safetyColor = Qt::black, m_coastColor = Qt::darkGray, m_hazardColor = Qt::black;
+    double m_lineWidth = 1;
+    std::shared_ptr<const std::vector<neptus::charts::Cell>> m_charts;
+    Eigen::Vector2d m_origin{0, 0};
+    double m_unitsPerWorld = 1;
+    QList<QPolygonF> m_land;
+    QList<QPolygonF> m_bands[4];
+    std::vector<QPointF> m_contours, m_safety, m_coast; // pairs of end points, local units
+    std::vector<Eigen::Vector2d> m_hazards;             // Mercator
+    bool m_linesChanged = false;
+    QString m_error;
+    QMatrix4x4 m_transform;
+    QFutureWatcher<std::shared_ptr<Loaded>> m_watcher;
+    bool m_loading = false; // from asking the worker until its answer is taken (isRunning() is false while queued)
+};
