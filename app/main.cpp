@@ -322,6 +322,8 @@ int main(int argc, char *argv[])
         QDir().mkpath(standard.first());
     const QStringList componentDirectories = commandLine->componentDirectories + standard;
 
+    // The charted water under each vehicle, with its alarm (the maps draw the same charts).
+    session.chartWatch()->setCharts(commandLine->charts);
     QQmlApplicationEngine engine;
     engine.setInitialProperties({
         {QStringLiteral("session"), QVariant::fromValue(&session)},

@@ -29,7 +29,7 @@ set(NEPTUS_LAYERS
   "neptus-database     database    neptus-core"
   "neptus-web          web         neptus-session neptus-database neptus-coastline"
   "neptus-session      session     neptus-scripting neptus-transport neptus-logs neptus-database"
-  "neptus-engine       qmlmodels   neptus-session neptus-geo neptus-plans neptus-processor neptus-models"
+  "neptus-engine       qmlmodels   neptus-session neptus-geo neptus-plans neptus-processor neptus-models neptus-charts"
   # Programs: the command-line tools link no QML.
   "neptus-msg          -           neptus-messages"
   "neptus-sim          -           neptus-simulation neptus-transport"

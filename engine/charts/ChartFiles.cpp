@@ -6,6 +6,8 @@
 #include <QDirIterator>
 #include <QFile>
 #include <QFileInfo>
+#include <QHash>
+#include <QMutex>
 #include <QProcess>
 #include <QSaveFile>
 #include <QStandardPaths>
@@ -151,6 +153,23 @@ std::expected<std::vector<Cell>, QString> loadCells(const QString &path, const L
         out.push_back(std::move(*cell));
     }
     return out;
+}
+
+std::expected<std::shared_ptr<const std::vector<Cell>>, QString> sharedCells(const QString &path)
+{
+    static QMutex mutex;
+    static QHash<QString, std::weak_ptr<const std::vector<Cell>>> open;
+    // One reader at a time: a second asker of the same path waits and gets the same cells.
+    const QMutexLocker lock(&mutex);
+    const QString key = QFileInfo(path).absoluteFilePath();
+    if (auto cells = open.value(key).lock())
+        return cells;
+    auto loaded = loadCells(key);
+    if (!loaded)
+        return std::unexpected(loaded.error());
+    auto cells = std::make_shared<const std::vector<Cell>>(std::move(*loaded));
+    open.insert(key, cells);
+    return cells;
 }
 
 } // namespace neptus::charts

@@ -8,6 +8,7 @@
 #include <chrono>
 #include <expected>
 #include <functional>
+#include <memory>
 
 // ENC cells on disk, read through the neptus-chart-import helper (GDAL, in
 // its own process: a cell that crashes or hangs GDAL costs an error naming
@@ -41,5 +42,11 @@ std::expected<Cell, QString> loadCell(const QString &cellPath, const LoadOptions
 // each; the first failure ends it, naming the cell.
 std::expected<std::vector<Cell>, QString> loadCells(const QString &path, const LoadOptions &options = {},
                                                     const std::function<void(int, int, const QString &)> &progress = {});
+
+// The cells of `path` for everyone in this process who asks (the maps, the
+// vehicles' depth watch, the plan editor): read once (loadCells, with the
+// default options) and shared while anyone holds them. Blocking: call it on a
+// worker thread. Thread-safe.
+std::expected<std::shared_ptr<const std::vector<Cell>>, QString> sharedCells(const QString &path);
 
 } // namespace neptus::charts

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "qmlmodels/AlarmListModel.h"
+#include "qmlmodels/ChartWatch.h"
 #include "qmlmodels/LinkStatisticsModel.h"
 #include "qmlmodels/PlanDeskModel.h"
 #include "qmlmodels/ReplayModel.h"
@@ -26,6 +27,8 @@ class ConsoleSession : public QObject
     Q_PROPERTY(neptus::geo::Tracks *tracks READ tracks CONSTANT)
     Q_PROPERTY(neptus::transport::LinkStatisticsModel *links READ linksModel CONSTANT)
     Q_PROPERTY(PlanDeskModel *plans READ plansModel CONSTANT)
+    // The charted water under each vehicle, with its alarm (--charts).
+    Q_PROPERTY(ChartWatch *charts READ chartWatch CONSTANT)
     // The replay when this console is fed from a log (--replay), else null: nothing is sent then.
     Q_PROPERTY(ReplayModel *replay READ replay CONSTANT)
 
@@ -43,6 +46,7 @@ public:
     neptus::plans::PlanDesk &planDesk() { return m_planDesk; }
     neptus::plans::MissionShare &missionShare() { return m_share; }
     PlanDeskModel *plansModel() { return &m_plansModel; }
+    ChartWatch *chartWatch() { return &m_chartWatch; }
     ReplayModel *replay() const { return m_replay; }
     // Before QML sees the session: this console replays `replay` (kept by the caller).
     void setReplay(ReplayModel *replay);
@@ -79,5 +83,6 @@ private:
     neptus::plans::PlanDesk m_planDesk;
     neptus::plans::MissionShare m_share;
     PlanDeskModel m_plansModel{&m_planDesk, &m_share};
+    ChartWatch m_chartWatch{&m_tracks, &m_console.alarmGraph()};
     ReplayModel *m_replay = nullptr;
 };

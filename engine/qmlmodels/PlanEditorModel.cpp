@@ -1,5 +1,6 @@
 #include "PlanEditorModel.h"
 
+#include "charts/ChartCheck.h"
 #include "core/SafeFile.h"
 #include "mission/MissionXml.h"
 #include "mission/NeptusExport.h"
@@ -169,6 +170,19 @@ void PlanEditorModel::adoptShared()
     missionReplaced();
 }
 
+void PlanEditorModel::setCharts(ChartWatch *charts)
+{
+    if (charts == m_charts)
+        return;
+    if (m_charts)
+        m_charts->disconnect(this);
+    m_charts = charts;
+    if (charts) // checked again once its cells are read
+        connect(charts, &ChartWatch::chartsChanged, this, &PlanEditorModel::changed);
+    emit chartsChanged();
+    changed();
+}
+
 void PlanEditorModel::changed()
 {
     m_pathPoints.clear();
@@ -178,6 +192,11 @@ void PlanEditorModel::changed()
         const VehicleDefinition *v = m_vehicles.find(p->vehicle);
         m_geometry = planGeometry(*p, v ? v->speeds() : SpeedModel{});
         m_problems = checkPlan(*p, m_mission, m_geometry, v);
+        if (m_charts && m_charts->cells()) {
+            m_problems += neptus::charts::checkAgainstCharts(m_geometry, v, *m_charts->cells());
+            std::stable_sort(m_problems.begin(), m_problems.end(),
+                             [](const PlanProblem &a, const PlanProblem &b) { return a.severity > b.severity; });
+        }
         checkBottom();
         for (const Transition &t : p->transitions) {
             if (neptus::plans::Supervisor::plain(t))

@@ -4,6 +4,7 @@
 #include "mission/PlanCheck.h"
 #include "mission/PlanGeometry.h"
 #include "mission/Vehicle.h"
+#include "qmlmodels/ChartWatch.h"
 #include "qmlmodels/PlanDeskModel.h"
 #include "models/ModelImport.h"
 #include "models/Seabed.h"
@@ -81,6 +82,9 @@ class PlanEditorModel : public QObject
     // The console's plan desk: with the mission shared, every edit goes to
     // the other consoles and theirs come here (the last change wins).
     Q_PROPERTY(PlanDeskModel *desk READ desk WRITE setDesk NOTIFY deskChanged)
+    // The console's charts (ConsoleSession.charts): with cells loaded, every edit is also checked
+    // against them (charts::checkAgainstCharts: land, shallows, hazards, restricted areas).
+    Q_PROPERTY(ChartWatch *charts READ charts WRITE setCharts NOTIFY chartsChanged)
     // Why the last open, save or edit did not happen ("" when it did).
     Q_PROPERTY(QString error READ error NOTIFY errorChanged)
 
@@ -110,6 +114,8 @@ public:
     bool canRedo() const { return !m_redo.isEmpty(); }
     QString error() const { return m_error; }
     PlanDeskModel *desk() const { return m_desk; }
+    ChartWatch *charts() const { return m_charts; }
+    void setCharts(ChartWatch *charts);
     QString terrain() const { return m_terrainState; }
     QVariantList exportTargets() const;
     QVariantMap exporting() const { return m_export; }
@@ -191,6 +197,7 @@ signals:
     void checklistsChanged();
     void otherPlansChanged();
     void deskChanged();
+    void chartsChanged();
     void exportChanged();
     void terrainChanged();
     void edited();
@@ -226,6 +233,7 @@ private:
     QVariantList m_pathPoints, m_maneuverList, m_problemList, m_featureList; // made once per edit, read by every view
     QVariantList m_otherPlans; // when the mission or the plan being edited changes
     QPointer<PlanDeskModel> m_desk;
+    QPointer<ChartWatch> m_charts;
     QVariantMap m_export;
     // The terrain: read by the model import helper, asked at every planned point.
     std::unique_ptr<neptus::models::ModelImport> m_terrainImport;

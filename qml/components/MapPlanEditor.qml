@@ -54,6 +54,7 @@ Item {
         objectName: "planEditorModel"
         missionPath: Session.session ? Session.session.plans.missionPath : ""
         desk: Session.session ? Session.session.plans : null
+        charts: Session.session ? Session.session.charts : null
     }
 
     // A tap on the map: select the maneuver under it, else add one there or

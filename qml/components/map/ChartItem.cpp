@@ -27,7 +27,7 @@ constexpr double localZoom = 16;
 struct ChartItem::Loaded
 {
     QString path;
-    std::shared_ptr<std::vector<Cell>> cells;
+    std::shared_ptr<const std::vector<Cell>> cells;
     QString error;
 };
 
@@ -55,9 +55,9 @@ void ChartItem::setPath(const QString &path)
     auto job = std::make_shared<Loaded>();
     job->path = path;
     m_watcher.setFuture(QtConcurrent::run([job] {
-        auto cells = loadCells(job->path);
+        auto cells = sharedCells(job->path); // the same cells as the vehicles' depth watch and the plan editor
         if (cells)
-            job->cells = std::make_shared<std::vector<Cell>>(std::move(*cells));
+            job->cells = *cells;
         else
             job->error = cells.error();
         return job;

@@ -4,7 +4,11 @@
 #include "Schemas.h"
 #include "plans/MissionShare.h"
 #include "plans/PlanDesk.h"
+#include "alarms/AlarmGraph.h"
+#include "qmlmodels/ChartWatch.h"
 #include "qmlmodels/PlanEditorModel.h"
+#include "qmlmodels/Tracks.h"
+#include "qmlmodels/VariableTreeModel.h"
 
 #include <QFile>
 #include <QJsonArray>
@@ -451,4 +455,56 @@ TEST(PlanEditor, TheSeabedIsInterpolatedUnderAPoint)
     EXPECT_NEAR(*seabed.heightAt(59, 45), 2, 1e-4) << "the deck over the slope";
     EXPECT_FALSE(seabed.heightAt(150, 50).has_value());
     EXPECT_FALSE(seabed.heightAt(std::nan(""), 50).has_value());
+}
+
+// With the console's charts read, every edit is also checked against them: the
+// Douro survey passes a charted 0-1 m shoal 150 m west of it; its last maneuver
+// dragged onto the shoal is unsafe, saying where; undone, it is not.
+TEST(PlanEditor, ChecksEveryEditAgainstTheConsolesCharts)
+{
+    QTemporaryDir dir;
+    PlanEditorModel editor;
+    editor.setMissionPath(douroCopy(dir));
+    ASSERT_EQ(editor.errorCount(), 0);
+    neptus::tree::VariableTree tree;
+    neptus::tree::VariableTreeModel model{&tree};
+    neptus::geo::Tracks tracks{&model};
+    neptus::alarms::AlarmGraph graph;
+    ChartWatch watch(&tracks, &graph);
+    editor.setCharts(&watch);
+    EXPECT_EQ(editor.errorCount(), 0) << "no cells read yet";
+    const auto area = [](const QString &cls, double west, double east, double south, double north, QMap<QString, QString> attributes) {
+        neptus::charts::Feature f;
+        f.objectClass = cls;
+        f.geometry = neptus::charts::Feature::Geometry::Area;
+        f.parts = {{{west, south, 0}, {east, south, 0}, {east, north, 0}, {west, north, 0}}};
+        f.attributes = std::move(attributes);
+        return f;
+    };
+    neptus::charts::Cell cell;
+    cell.name = u"XX5DOURO.000"_s;
+    cell.usageBand = 5;
+    cell.features = {area(u"M_COVR"_s, -8.65, -8.55, 41.10, 41.20, {{u"CATCOV"_s, u"1"_s}}),
+                     area(u"DEPARE"_s, -8.65, -8.55, 41.10, 41.20, {{u"DRVAL1"_s, u"10"_s}, {u"DRVAL2"_s, u"20"_s}}),
+                     area(u"DEPARE"_s, -8.6145, -8.6135, 41.1400, 41.1410, {{u"DRVAL1"_s, u"0"_s}, {u"DRVAL2"_s, u"1"_s}})};
+    cell.index();
+    watch.setCells(std::make_shared<const std::vector<neptus::charts::Cell>>(std::vector<neptus::charts::Cell>{cell}));
+    QStringList said;
+    for (const QVariant &p : editor.problems())
+        said << p.toMap().value(u"message"_s).toString();
+    EXPECT_EQ(editor.errorCount(), 0) << said.join(u'\n').toStdString();
+    ASSERT_TRUE(editor.moveManeuver(u"surface"_s, 41.1405, -8.6140));
+    ASSERT_GE(editor.errorCount(), 1) << "the drag is checked against the chart";
+    QVariantMap shoal;
+    said.clear();
+    for (const QVariant &p : editor.problems()) {
+        said << p.toMap().value(u"message"_s).toString();
+        if (said.last().startsWith(u"'surface' (PopUp): a leg enters water charted 0.0–1.0 m, shallower than the"_s))
+            shoal = p.toMap();
+    }
+    ASSERT_FALSE(shoal.isEmpty()) << said.join(u'\n').toStdString();
+    EXPECT_EQ(shoal.value(u"severity"_s), u"error"_s);
+    EXPECT_TRUE(shoal.contains(u"lat"_s));
+    editor.undo();
+    EXPECT_EQ(editor.errorCount(), 0);
 }

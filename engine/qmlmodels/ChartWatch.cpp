@@ -1,0 +1,130 @@
+#include "qmlmodels/ChartWatch.h"
+
+#include "alarms/AlarmGraph.h"
+#include "charts/ChartFiles.h"
+#include "geo/Geodesy.h"
+#include "qmlmodels/Tracks.h"
+
+#include <QDateTime>
+#include <QtConcurrent/QtConcurrentRun>
+
+using namespace neptus;
+using namespace Qt::StringLiterals;
+
+ChartWatch::ChartWatch(geo::Tracks *tracks, alarms::AlarmGraph *alarms, QObject *parent)
+    : QObject(parent)
+    , m_tracks(tracks)
+    , m_alarms(alarms)
+{
+    connect(m_tracks, &geo::Tracks::updated, this, &ChartWatch::check);
+}
+
+ChartWatch::~ChartWatch()
+{
+    m_load.waitForFinished();
+}
+
+void ChartWatch::setCharts(const QString &path)
+{
+    if (path == m_path)
+        return;
+    m_path = path;
+    m_cells.reset();
+    m_error.clear();
+    if (m_vehicles.vehicles.isEmpty())
+        m_vehicles = mission::loadVehicles(mission::vehicleFolders());
+    if (path.isEmpty()) {
+        m_loading = false;
+        emit chartsChanged();
+        return;
+    }
+    m_loading = true;
+    emit chartsChanged();
+    auto result = std::make_shared<std::expected<std::shared_ptr<const std::vector<charts::Cell>>, QString>>();
+    m_load.disconnect(this);
+    connect(&m_load, &QFutureWatcherBase::finished, this, [this, path, result] {
+        if (path != m_path)
+            return;
+        m_loading = false;
+        if (*result)
+            m_cells = **result;
+        else
+            m_error = result->error();
+        emit chartsChanged();
+        check();
+    });
+    m_load.setFuture(QtConcurrent::run([path, result] { *result = charts::sharedCells(path); }));
+}
+
+void ChartWatch::setCells(std::shared_ptr<const std::vector<charts::Cell>> cells)
+{
+    m_cells = std::move(cells);
+    m_loading = false;
+    emit chartsChanged();
+    check();
+}
+
+ChartWatch::Verdict ChartWatch::judge(const QString &system) const
+{
+    Verdict v;
+    const geo::Tracks::Track *track = m_tracks->track(system);
+    const mission::VehicleDefinition *vehicle = m_vehicles.find(system);
+    if (!m_cells || !track || track->fixes.empty() || !vehicle)
+        return v;
+    const bool underwater = vehicle->kind == u"UUV" || vehicle->kind == u"ROV";
+    if (!underwater && vehicle->kind != u"USV")
+        return v; // aircraft and the rest do not float
+    const geo::Tracks::Fix &at = track->latest;
+    const double lat = geo::degrees(at.lat), lon = geo::degrees(at.lon);
+    v.report = charts::reportAt(*m_cells, lon, lat, 0, false);
+    const double draft = vehicle->limits.draft.value_or(0.5);
+    v.need = underwater && at.depth > draft ? at.depth + vehicle->limits.minAltitude.value_or(1) : draft + m_margin;
+    if (!v.report.covered) {
+        v.level = alarms::Info;
+        v.text = u"%1 is off the charts: the water there is not known"_s.arg(system);
+    } else if (v.report.land) {
+        v.level = alarms::Error;
+        v.text = u"%1 is on land on the chart (%2)"_s.arg(system, v.report.cell);
+    } else if (v.report.depthMin && *v.report.depthMin < v.need) {
+        v.level = alarms::Error;
+        v.text = u"%1 is in water charted %2–%3 m%4, shallower than the %5 m it needs"_s.arg(
+            system, QString::number(*v.report.depthMin, 'f', 1), QString::number(v.report.depthMax.value_or(*v.report.depthMin), 'f', 1),
+            v.report.place.isEmpty() ? QString() : u" in "_s + v.report.place, QString::number(v.need, 'f', 1));
+    } else {
+        v.level = alarms::Normal;
+        v.text = v.report.depthMin ? u"charted %1–%2 m"_s.arg(QString::number(*v.report.depthMin, 'f', 1),
+                                                              QString::number(v.report.depthMax.value_or(*v.report.depthMin), 'f', 1))
+                                   : u"no depth charted"_s;
+    }
+    return v;
+}
+
+void ChartWatch::check()
+{
+    if (!m_cells)
+        return;
+    const qint64 now = QDateTime::currentMSecsSinceEpoch();
+    for (const QString &system : m_tracks->systems()) {
+        if (m_intervalMs > 0 && now - m_lastCheck.value(system, 0) < m_intervalMs)
+            continue;
+        m_lastCheck.insert(system, now);
+        const Verdict v = judge(system);
+        const QString message = v.level == alarms::Normal ? QString() : v.text;
+        if (v.level == alarms::Unknown || m_raised.value(system) == std::pair{v.level, message})
+            continue;
+        // (Raised again at the same level only the message changes: the alarm is not announced twice.)
+        m_raised.insert(system, {v.level, message});
+        m_alarms->raise(m_alarms->ensure(u"systems/%1/chart"_s.arg(system)), alarms::Level(v.level), message);
+    }
+}
+
+QVariantMap ChartWatch::under(const QString &system) const
+{
+    const Verdict v = judge(system);
+    if (v.level == alarms::Unknown)
+        return {};
+    return {{u"covered"_s, v.report.covered}, {u"land"_s, v.report.land},
+            {u"min"_s, v.report.depthMin ? QVariant(*v.report.depthMin) : QVariant()},
+            {u"max"_s, v.report.depthMax ? QVariant(*v.report.depthMax) : QVariant()}, {u"place"_s, v.report.place},
+            {u"need"_s, v.need}, {u"text"_s, v.text}, {u"safe"_s, v.level == alarms::Normal}};
+}
