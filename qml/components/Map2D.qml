@@ -311,6 +311,8 @@ Rectangle {
         safetyContourColor: Theme.chart.safety
         coastColor: Theme.shore
         hazardColor: Theme.chart.hazard
+        aidColor: Theme.chart.aid
+        restrictedColor: Theme.chart.restricted
         lineWidth: Math.max(1, Theme.mm(0.2))
     }
 

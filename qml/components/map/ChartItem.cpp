@@ -7,6 +7,7 @@
 #include <QtConcurrent/QtConcurrentRun>
 
 #include <cmath>
+#include <numbers>
 
 using namespace neptus::charts;
 using namespace Qt::StringLiterals;
@@ -100,7 +101,8 @@ void ChartItem::finished()
     m_loading = false;
     m_land.clear();
     m_coast.clear();
-    m_hazards.clear();
+    m_points.clear();
+    m_restricted.clear();
     if (m_charts && !m_charts->empty()) {
         Cell::Bounds all;
         for (const Cell &c : *m_charts) {
@@ -133,10 +135,30 @@ void ChartItem::finished()
                             m_coast.push_back(local(line[i - 1]));
                             m_coast.push_back(local(line[i]));
                         }
-                } else if (f.objectClass == u"OBSTRN" || f.objectClass == u"WRECKS" || f.objectClass == u"UWTROC") {
+                } else if ((f.objectClass == u"RESARE" || f.objectClass == u"CTNARE" || f.objectClass == u"MIPARE")
+                           && f.geometry == Feature::Geometry::Area) {
+                    for (const auto &ring : f.parts)
+                        for (std::size_t i = 1; i < ring.size(); ++i) {
+                            m_restricted.push_back(local(ring[i - 1]));
+                            m_restricted.push_back(local(ring[i]));
+                        }
+                } else if (f.geometry == Feature::Geometry::Point) {
+                    const QString &c = f.objectClass;
+                    const Mark mark = c == u"OBSTRN" || c == u"WRECKS" || c == u"UWTROC" ? Mark::Hazard
+                                      : c.startsWith(u"BOY"_s)                           ? Mark::Buoy
+                                      : c.startsWith(u"BCN"_s)                           ? Mark::Beacon
+                                      : c == u"LIGHTS"                                   ? Mark::Light
+                                                                                         : Mark(-1);
+                    if (int(mark) < 0)
+                        continue;
                     for (const auto &part : f.parts)
                         if (!part.empty())
-                            m_hazards.push_back(mercatorOf(part.front().lat, part.front().lon));
+                            m_points.push_back({mercatorOf(part.front().lat, part.front().lon), mark, f.number(u"SCAMIN"_s).value_or(0)});
+                } else if (f.objectClass == u"OBSTRN" || f.objectClass == u"WRECKS" || f.objectClass == u"UWTROC") {
+                    // An area or line hazard: marked at its first point.
+                    if (!f.parts.empty() && !f.parts.front().empty())
+                        m_points.push_back({mercatorOf(f.parts.front().front().lat, f.parts.front().front().lon), Mark::Hazard,
+                                            f.number(u"SCAMIN"_s).value_or(0)});
                 }
             }
         }
@@ -226,34 +248,62 @@ QSGNode *ChartItem::updatePaintNode(QSGNode *old, UpdatePaintNodeData *)
     QSGGeometryNode *contours = flatNode(placed, 0, QSGGeometry::DrawLines);
     QSGGeometryNode *coast = flatNode(placed, 1, QSGGeometry::DrawLines);
     QSGGeometryNode *safety = flatNode(placed, 2, QSGGeometry::DrawLines);
+    QSGGeometryNode *restricted = flatNode(placed, 3, QSGGeometry::DrawLines);
     if (m_linesChanged) {
         setNodePoints(contours, m_contours, m_lineWidth);
         setNodePoints(coast, m_coast, m_lineWidth);
         setNodePoints(safety, m_safety, m_lineWidth * 2.5);
+        setNodePoints(restricted, m_restricted, m_lineWidth * 1.5);
         m_linesChanged = false;
     }
     setNodeColor(contours, m_contourColor);
     setNodeColor(coast, m_coastColor);
     setNodeColor(safety, m_safetyColor);
-    // Hazards: a cross each, the same size at every zoom, only those in view.
+    setNodeColor(restricted, m_restrictedColor);
+    // Symbols, the same size at every zoom, only those in view and at scales their SCAMIN allows
+    // (the scale of a 0.28 mm pixel, as S-52 counts it).
     const MapProjection view = projection();
-    std::vector<QPointF> crosses;
     const double r = std::max(3.0, m_lineWidth * 3);
     const double worldSize = view.worldSize();
+    const double scale = view.metresPerPixel() / 0.00028;
     const Eigen::Vector2d centre = view.centerMercator();
     const double c = std::cos(neptus::geo::radians(-view.bearing)), s = std::sin(neptus::geo::radians(-view.bearing));
-    if (view.zoom >= 11) { // below, they would only clutter the view
-        for (const Eigen::Vector2d &h : m_hazards) {
-            const Eigen::Vector2d d = (h - centre) * worldSize;
-            const QPointF p(width() / 2 + d.x() * c - d.y() * s, height() / 2 + d.x() * s + d.y() * c);
-            if (p.x() < -r || p.y() < -r || p.x() > width() + r || p.y() > height() + r)
-                continue;
-            crosses.insert(crosses.end(), {p + QPointF(-r, -r), p + QPointF(r, r), p + QPointF(-r, r), p + QPointF(r, -r)});
+    std::vector<QPointF> hazards, aids;
+    for (const Point &point : m_points) {
+        if (point.scamin > 0 ? scale > point.scamin : view.zoom < 11)
+            continue;
+        const Eigen::Vector2d d = (point.mercator - centre) * worldSize;
+        const QPointF p(width() / 2 + d.x() * c - d.y() * s, height() / 2 + d.x() * s + d.y() * c);
+        if (p.x() < -r || p.y() < -r || p.x() > width() + r || p.y() > height() + r)
+            continue;
+        switch (point.mark) {
+        case Mark::Hazard:
+            hazards.insert(hazards.end(), {p + QPointF(-r, -r), p + QPointF(r, r), p + QPointF(-r, r), p + QPointF(r, -r)});
+            break;
+        case Mark::Buoy: // a ring of 8 sides
+            for (int i = 0; i < 8; ++i) {
+                const double a0 = i * std::numbers::pi / 4, a1 = (i + 1) * std::numbers::pi / 4;
+                aids.insert(aids.end(), {p + QPointF(r * std::cos(a0), r * std::sin(a0)), p + QPointF(r * std::cos(a1), r * std::sin(a1))});
+            }
+            break;
+        case Mark::Beacon: // a triangle standing on the point
+            aids.insert(aids.end(), {p + QPointF(-r, 0), p + QPointF(r, 0), p + QPointF(r, 0), p + QPointF(0, -2 * r),
+                                     p + QPointF(0, -2 * r), p + QPointF(-r, 0)});
+            break;
+        case Mark::Light: // a star of three strokes
+            for (int i = 0; i < 3; ++i) {
+                const double a = i * std::numbers::pi / 3;
+                aids.insert(aids.end(), {p + QPointF(r * std::cos(a), r * std::sin(a)), p - QPointF(r * std::cos(a), r * std::sin(a))});
+            }
+            break;
         }
     }
-    QSGGeometryNode *hazards = flatNode(root, 1, QSGGeometry::DrawLines);
-    setNodePoints(hazards, crosses, m_lineWidth * 1.5);
-    setNodeColor(hazards, m_hazardColor);
+    QSGGeometryNode *hazardNode = flatNode(root, 1, QSGGeometry::DrawLines);
+    setNodePoints(hazardNode, hazards, m_lineWidth * 1.5);
+    setNodeColor(hazardNode, m_hazardColor);
+    QSGGeometryNode *aidNode = flatNode(root, 2, QSGGeometry::DrawLines);
+    setNodePoints(aidNode, aids, m_lineWidth * 1.5);
+    setNodeColor(aidNode, m_aidColor);
     return root;
 }
 

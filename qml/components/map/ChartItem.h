@@ -18,8 +18,10 @@
 // in four bands by their shallowest depth against the safety depth: drying,
 // shallower than it, up to twice it, deeper), and drawn here: depth contours
 // (the safety contour, the first at or past the safety depth, thicker), the
-// coastline, and hazards (obstructions, wrecks, rocks) as crosses the same
-// size at every zoom. `featureAt` says what is at a tapped point.
+// coastline, restricted, caution and military practice areas' edges, and as
+// symbols of one size at every zoom hazards (obstructions, wrecks, rocks:
+// crosses), buoys (rings), beacons (triangles) and lights (stars), each only
+// at scales its SCAMIN allows. `featureAt` says what is at a tapped point.
 class ChartItem : public MapOverlayItem
 {
     Q_OBJECT
@@ -30,6 +32,8 @@ class ChartItem : public MapOverlayItem
     Q_PROPERTY(QColor safetyContourColor MEMBER m_safetyColor NOTIFY styleChanged)
     Q_PROPERTY(QColor coastColor MEMBER m_coastColor NOTIFY styleChanged)
     Q_PROPERTY(QColor hazardColor MEMBER m_hazardColor NOTIFY styleChanged)
+    Q_PROPERTY(QColor aidColor MEMBER m_aidColor NOTIFY styleChanged)
+    Q_PROPERTY(QColor restrictedColor MEMBER m_restrictedColor NOTIFY styleChanged)
     Q_PROPERTY(double lineWidth MEMBER m_lineWidth NOTIFY styleChanged)
     // Closed rings in local units, even-odd, per band; placed by `areaTransform`.
     Q_PROPERTY(QVariant land READ land NOTIFY loaded)
@@ -87,7 +91,8 @@ private:
     QString m_path;
     double m_safetyDepth = 5;
     double m_safetyContour = 0;
-    QColor m_contourColor = Qt::gray, m_safetyColor = Qt::black, m_coastColor = Qt::darkGray, m_hazardColor = Qt::black;
+    QColor m_contourColor = Qt::gray, m_safetyColor = Qt::black, m_coastColor = Qt::darkGray, m_hazardColor = Qt::black,
+           m_aidColor = Qt::darkMagenta, m_restrictedColor = Qt::magenta;
     double m_lineWidth = 1;
     std::shared_ptr<const std::vector<neptus::charts::Cell>> m_charts;
     Eigen::Vector2d m_origin{0, 0};
@@ -95,7 +100,17 @@ private:
     QList<QPolygonF> m_land;
     QList<QPolygonF> m_bands[4];
     std::vector<QPointF> m_contours, m_safety, m_coast; // pairs of end points, local units
-    std::vector<Eigen::Vector2d> m_hazards;             // Mercator
+    // Point symbols: hazards (a cross), buoys (a ring), beacons (a triangle), lights (a star), with
+    // the largest scale denominator they are shown at (SCAMIN; 0: always).
+    enum class Mark { Hazard, Buoy, Beacon, Light };
+    struct Point
+    {
+        Eigen::Vector2d mercator;
+        Mark mark;
+        double scamin;
+    };
+    std::vector<Point> m_points;
+    std::vector<QPointF> m_restricted; // restricted, caution and military areas' edges, pairs, local units
     bool m_linesChanged = false;
     QString m_error;
     QMatrix4x4 m_transform;
