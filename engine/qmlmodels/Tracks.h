@@ -21,8 +21,8 @@ namespace neptus::geo {
 // console being rebuilt in the designer and are shared by the 2D map and the
 // 3D scene. Updated once per frame from the tree model; a fix is added when
 // the system moved at least `minimumSpacing` metres, or every 10 s when it
-// stands still. Holds up to `capacity` fixes per system, then forgets the
-// oldest tenth.
+// stands still. Holds up to `capacity` fixes per system (5,000), then thins
+// the older half (the whole trail still drawn, its past coarser).
 //
 // Also a list model, a row per system with its latest state, for the map's
 // and the 3D scene's Repeaters: a new system inserts its row, a move changes
@@ -199,7 +199,7 @@ private:
     double m_minimumSpacing = 0.1;
     double m_maximumSpacing = 5;
     double m_tolerance = 0.2;
-    std::size_t m_capacity = 50'000;
+    std::size_t m_capacity = 5'000;
 };
 
 } // namespace neptus::geo
