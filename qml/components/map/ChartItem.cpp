@@ -221,14 +221,7 @@ void ChartItem::viewUpdated()
 {
     if (width() <= 0 || height() <= 0)
         return;
-    const MapProjection view = projection();
-    const Eigen::Vector2d offset = (m_origin - view.centerMercator()) * m_unitsPerWorld;
-    QMatrix4x4 m;
-    m.translate(float(width() / 2), float(height() / 2));
-    m.rotate(float(-view.bearing), 0, 0, 1);
-    m.scale(float(view.worldSize() / m_unitsPerWorld));
-    m.translate(float(offset.x()), float(offset.y()));
-    if (m != m_transform) {
+    if (const QMatrix4x4 m = localToItem(m_origin, m_unitsPerWorld); m != m_transform) {
         m_transform = m;
         emit placed();
     }

@@ -119,13 +119,7 @@ void CoastlineItem::viewUpdated()
     const MapProjection view = projection();
 
     // Place what was read.
-    const Eigen::Vector2d offset = (m_origin - view.centerMercator()) * m_unitsPerWorld;
-    QMatrix4x4 m;
-    m.translate(float(width() / 2), float(height() / 2));
-    m.rotate(float(-view.bearing), 0, 0, 1);
-    m.scale(float(view.worldSize() / m_unitsPerWorld));
-    m.translate(float(offset.x()), float(offset.y()));
-    if (m != m_transform) {
+    if (const QMatrix4x4 m = localToItem(m_origin, m_unitsPerWorld); m != m_transform) {
         m_transform = m;
         emit placed();
         update();

@@ -49,6 +49,18 @@ void MapOverlayItem::setNodeColor(QSGGeometryNode *node, const QColor &color)
     }
 }
 
+QMatrix4x4 MapOverlayItem::localToItem(const Eigen::Vector2d &origin, double unitsPerWorld) const
+{
+    const MapProjection view = projection();
+    const Eigen::Vector2d offset = (origin - view.centerMercator()) * unitsPerWorld;
+    QMatrix4x4 m;
+    m.translate(float(width() / 2), float(height() / 2));
+    m.rotate(float(-view.bearing), 0, 0, 1);
+    m.scale(float(view.worldSize() / unitsPerWorld));
+    m.translate(float(offset.x()), float(offset.y()));
+    return m;
+}
+
 void MapOverlayItem::set(double &member, double value)
 {
     if (member == value || !std::isfinite(value))

@@ -2,6 +2,7 @@
 
 #include "geo/MapProjection.h"
 
+#include <QMatrix4x4>
 #include <QQuickItem>
 #include <QSGGeometry>
 #include <QtQml/qqmlregistration.h>
@@ -57,6 +58,10 @@ protected:
     // A node's points (in whatever units its transform takes) and line width; marks it dirty.
     static void setNodePoints(QSGGeometryNode *node, const std::vector<QPointF> &points, double lineWidth = 1);
     static void setNodeColor(QSGGeometryNode *node, const QColor &color);
+    // What places geometry made once in a local frame (Mercator `origin`,
+    // `unitsPerWorld` local units across the world) on the item for the
+    // current view: moving the view moves it, no new geometry.
+    QMatrix4x4 localToItem(const Eigen::Vector2d &origin, double unitsPerWorld) const;
 
     // The view or the size changed: redraw (the default), or work out more first.
     virtual void viewUpdated() { update(); }
