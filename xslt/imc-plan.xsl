@@ -157,6 +157,9 @@
   <xsl:template match="*" mode="maneuver">
     <xsl:copy>
       <xsl:apply-templates select="@*" mode="field"/>
+      <!-- A Rows with no alternation means even rows: IMC's zero would have DUNE drive each row twice
+           (engine/mission/PlanGeometry.h, rowsAlternation). -->
+      <xsl:if test="self::Rows and not(@alternation)"><alternation>100</alternation></xsl:if>
       <xsl:if test="point">
         <points>
           <xsl:for-each select="point">

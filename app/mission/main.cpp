@@ -162,7 +162,8 @@ int import(const QString &path, const QString &output)
             return failAll(imported.error());
         warnAll(imported->warnings);
         bytes = writeVehicle(imported->vehicle);
-        summary = u"vehicle %1 (%2), %3 maneuvers"_s.arg(imported->vehicle.id, imported->vehicle.kind).arg(imported->vehicle.maneuvers.size());
+        summary = u"vehicle %1 (%2), %3 maneuvers, %4 things left out (each said above)"_s.arg(imported->vehicle.id, imported->vehicle.kind)
+                      .arg(imported->vehicle.maneuvers.size()).arg(imported->leftOut);
     } else {
         const auto imported = importNeptus(path);
         if (!imported)

@@ -76,6 +76,10 @@ public:
             if (auto ok = set(*message, it.key(), it.value()); !ok)
                 return std::unexpected(u"maneuver '%1': %2"_s.arg(m.id, ok.error()));
         }
+        if (m.type == u"Rows" && !m.has(u"alternation"_s)) {
+            if (auto ok = set(*message, u"alternation"_s, u"100"_s); !ok) // rowsAlternation()
+                return std::unexpected(u"maneuver '%1': %2"_s.arg(m.id, ok.error()));
+        }
         if (const QString custom = patternCustom(m); pattern && !custom.isEmpty()) {
             if (auto ok = set(*message, u"custom"_s, custom); !ok)
                 return std::unexpected(u"maneuver '%1': %2"_s.arg(m.id, ok.error()));
@@ -250,7 +254,8 @@ std::expected<Maneuver, QString> maneuverFrom(const QString &id, const msg::Mess
             break;
         }
         default:
-            if (data.integer(i) != 0)
+            // (A Rows' alternation of 0 is not "none": rowsAlternation().)
+            if (data.integer(i) != 0 || (m.type == u"Rows" && field.abbrev == u"alternation"))
                 m.parameters.insert(field.abbrev, field.enumeration ? data.enumText(i) : QString::number(data.integer(i)));
         }
     }

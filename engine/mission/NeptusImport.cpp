@@ -297,7 +297,7 @@ const QStringList &timedTypes()
 {
     static const QStringList names{u"Goto"_s, u"PopUp"_s, u"Loiter"_s, u"YoYo"_s, u"Rows"_s, u"FollowPath"_s,
                                    u"FollowTrajectory"_s, u"Elevator"_s, u"CompassCalibration"_s, u"Launch"_s,
-                                   u"ExpandingSquare"_s};
+                                   u"ExpandingSquare"_s, u"CrossHatch"_s};
     return names;
 }
 
@@ -506,6 +506,12 @@ std::optional<Maneuver> Importer::maneuver(const XmlDocument &doc, const xmlNode
     // Neptus leaves out what is at its default (RowsManeuver.java, RowsPattern.java, ExpandingSquarePattern.java):
     // no length is the width, no curve offset 15 m, no squareCurve or firstCurveRight true.
     if (m.type == u"Rows" || crossHatch) {
+        // Sizes as Neptus's loaders take them: without sign, a step of 0 as 1 m (RowsPattern.java).
+        for (const QString &size : {u"width"_s, u"length"_s, u"hstep"_s})
+            if (m.has(size))
+                m.set(size, std::abs(m.number(size)));
+        if (m.has(u"hstep"_s) && m.number(u"hstep"_s) <= 0)
+            m.set(u"hstep"_s, 1);
         if (!given.contains(u"curveOffset"_s))
             m.set(u"coff"_s, 15);
         if (!given.contains(u"squareCurve"_s))

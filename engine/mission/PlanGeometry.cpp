@@ -45,8 +45,9 @@ QList<PathPoint> circle(double radius)
 // Lawnmower: rows of `length` along `bearing`, `hstep` apart across a
 // `width`, first turn to the left unless CURVE_RIGHT; each row extended by
 // the curve offset at both ends; steps alternate between alternation % and
-// (200 − alternation) % of hstep (0 or 100: even rows); cross_angle slants
-// the step off the perpendicular.
+// (200 − alternation) % of hstep, as DUNE's RowsStages makes them (100: even
+// rows; 0: every row driven twice, the next 2·hstep on); cross_angle slants
+// the step off the perpendicular. No alternation is 100 (rowsAlternation).
 QList<PathPoint> rows(const Maneuver &m)
 {
     QList<PathPoint> points;
@@ -56,9 +57,7 @@ QList<PathPoint> rows(const Maneuver &m)
     const double width = m.number(u"width"_s);
     const double hstep = m.number(u"hstep"_s);
     const double offset = m.number(u"coff"_s);
-    double alternation = m.number(u"alternation"_s);
-    if (alternation <= 0 || alternation > 100)
-        alternation = 100;
+    const double alternation = std::clamp(rowsAlternation(m), 0.0, 100.0);
     const bool right = m.text(u"flags"_s).contains(u"CURVE_RIGHT"_s);
     const Eigen::Vector2d along(std::cos(bearing), std::sin(bearing));
     const double side = bearing + (right ? 1 : -1) * (std::numbers::pi / 2) + cross;
@@ -101,6 +100,11 @@ QList<PathPoint> expandingSquareOffsets(const Maneuver &m)
         points.append(p);
     }
     return points;
+}
+
+double rowsAlternation(const Maneuver &m)
+{
+    return m.number(u"alternation"_s, 100);
 }
 
 namespace {
@@ -178,19 +182,26 @@ QString patternCustom(const Maneuver &m)
     const QString own = m.text(u"custom"_s);
     if (m.type != u"CrossHatch")
         return own;
-    QStringList pattern{u"Pattern=CrossHatchPattern"_s,
-                        u"bearingRad="_s + formatNumber(geo::radians(m.number(u"bearing"_s))),
-                        u"width="_s + formatNumber(m.number(u"width"_s)),
-                        u"hstep="_s + formatNumber(m.number(u"hstep"_s)),
-                        u"curvOff="_s + formatNumber(m.number(u"coff"_s)),
-                        u"squareCurve="_s + (m.text(u"flags"_s).contains(u"SQUARE_CURVE"_s) ? u"true"_s : u"false"_s)};
-    // The maneuver's own settings follow, less any that would name the pattern again.
+    // RowsPattern.serializeToIMC's keys in its order; parseIMCMessage reads every one (sRange too: a
+    // missing one throws in Neptus), so the maneuver's own sRange, else Neptus's 30 m, goes in its place.
+    QStringList rest;
+    QString sRange = u"30"_s;
     for (const QString &entry : own.split(u';', Qt::SkipEmptyParts)) {
         const QString key = entry.section(u'=', 0, 0);
-        if (!std::ranges::any_of(pattern, [&](const QString &p) { return p.section(u'=', 0, 0) == key; }))
-            pattern << entry;
+        if (key == u"sRange")
+            sRange = entry.section(u'=', 1);
+        else if (!QStringList{u"Pattern"_s, u"bearingRad"_s, u"width"_s, u"hstep"_s, u"curvOff"_s, u"squareCurve"_s}.contains(key))
+            rest << entry;
     }
-    return pattern.join(u';');
+    const QStringList pattern{u"Pattern=CrossHatchPattern"_s,
+                              u"bearingRad="_s + formatNumber(geo::radians(m.number(u"bearing"_s))),
+                              u"width="_s + formatNumber(m.number(u"width"_s)),
+                              u"hstep="_s + formatNumber(m.number(u"hstep"_s)),
+                              u"sRange="_s + sRange,
+                              u"curvOff="_s + formatNumber(m.number(u"coff"_s)),
+                              u"squareCurve="_s + (m.text(u"flags"_s).contains(u"SQUARE_CURVE"_s) ? u"true"_s : u"false"_s)};
+    // The maneuver's other settings follow (Neptus itself would send only the pattern's).
+    return (pattern + rest).join(u';');
 }
 
 double distance(const Waypoint &a, const Waypoint &b)

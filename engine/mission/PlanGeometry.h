@@ -84,12 +84,19 @@ QList<PathPoint> expandingSquareOffsets(const Maneuver &maneuver);
 // diagonally. At most 10,000 rows each way.
 QList<PathPoint> crossHatchOffsets(const Maneuver &maneuver);
 
+// A Rows' alternation (percent): 100 when the maneuver says none. IMC's
+// zero is not "none" here: DUNE's RowsStages steps 0 and then 2·hstep (each
+// row driven twice), so an absent alternation is sent as 100, as Neptus
+// always sends it (RowsManeuver.serializeToIMC).
+double rowsAlternation(const Maneuver &maneuver);
+
 // Whether `type` is such a pattern; its points (empty for any other
 // maneuver); the parameters that only shape them (the FollowPath leaves
 // them out); and the FollowPath's `custom` tuple list: the maneuver's own,
 // after what names the pattern for a Neptus console that reads the plan back
-// (CrossHatch: Pattern=CrossHatchPattern and its figures, as
-// RowsPattern.serializeToIMC writes them).
+// (CrossHatch: Pattern=CrossHatchPattern, bearingRad, width, hstep, sRange,
+// curvOff, squareCurve, the keys and order of RowsPattern.serializeToIMC,
+// whose parseIMCMessage needs every one).
 bool isWorkedPattern(const QString &type);
 QList<PathPoint> patternOffsets(const Maneuver &maneuver);
 const QStringList &patternShapeParameters(const QString &type);

@@ -113,8 +113,9 @@ QByteArray geometryElement(const Plan &plan, const VehicleDefinition &vehicle, T
         attribute("min-z", formatNumber(g.minZ).toLatin1());
         attribute("max-z", formatNumber(g.maxZ).toLatin1());
         attribute("z-units", g.zUnits.toLatin1());
-        if (const QString custom = patternCustom(m); isWorkedPattern(g.type) && !custom.isEmpty())
-            attribute("custom", custom.toHtmlEscaped().toUtf8());
+        if (isWorkedPattern(g.type))
+            if (const QString custom = patternCustom(m); !custom.isEmpty())
+                attribute("custom", custom.toHtmlEscaped().toUtf8());
         out += ">\n";
         // A loiter's circle is its centre and radius: no target needs the polygon.
         const bool circling = g.type == u"Loiter" || g.type == u"CompassCalibration";

@@ -4,6 +4,7 @@
 // kind of complaint the originals do not already raise (Neptus's schemas lag
 // its writer, so the originals are the yardstick); what has no Neptus words
 // is said, not dropped.
+#include "mission/ImcPlan.h"
 #include "mission/MissionXml.h"
 #include "mission/NeptusExport.h"
 #include "mission/NeptusImport.h"
@@ -13,6 +14,7 @@
 #include "Fixtures.h"
 #include "Missions.h"
 #include "QtPrinters.h"
+#include "Schemas.h"
 
 #include <QFileInfo>
 #include <QHash>
@@ -416,6 +418,7 @@ TEST(NeptusExport, CrossHatchPatternIsOurCrossHatchBothWays)
     EXPECT_EQ(cross.number(u"bearing"_s), 180);
     EXPECT_EQ(cross.number(u"coff"_s), 75);
     EXPECT_EQ(cross.text(u"flags"_s), u"SQUARE_CURVE"_s) << "Neptus writes squareCurve only when false";
+    EXPECT_EQ(cross.number(u"timeout"_s), 10000) << "its maxTime kept";
     EXPECT_EQ(cross.text(u"z_units"_s), u"HEIGHT"_s);
     // Valid in our own format, and drawn over the whole square (six 950 m rows each way).
     const auto written = readMission(writeMission(imported->mission), u"again.xml"_s);
@@ -471,6 +474,18 @@ TEST(NeptusExport, RowsLeftAtNeptusDefaultsAreReadAsNeptusReadsThem)
     EXPECT_FALSE(left.has(u"flags"_s));
     EXPECT_EQ(left.number(u"length"_s), 100);
     EXPECT_EQ(left.number(u"coff"_s), 20) << "IMC's Rows takes whole metres";
+    EXPECT_EQ(rowsAlternation(rows), 100) << "none in the file: Neptus's 100 %, even rows";
+    // What the vehicle gets, as RowsManeuver.serializeToIMC sends it: 15 m run-on, square turns,
+    // first turn right, even rows (IMC's zero alternation would have DUNE drive each row twice).
+    const auto spec = planSpecification(imported->mission.plans[0], *neptus::test::shippedSchema());
+    ASSERT_TRUE(spec) << spec.error().toStdString();
+    const auto maneuvers = spec->messages(spec->def()->indexOf(u"maneuvers"));
+    const neptus::msg::Message *sent = maneuvers[0].inlineMessage(maneuvers[0].def()->indexOf(u"data"));
+    ASSERT_TRUE(sent);
+    EXPECT_EQ(sent->integer(u"alternation"), 100);
+    EXPECT_EQ(sent->integer(u"coff"), 15);
+    EXPECT_EQ(sent->integer(u"flags"), 0x3) << "SQUARE_CURVE | CURVE_RIGHT";
+    EXPECT_NEAR(sent->number(u"length"), 57.3, 1e-4);
     EXPECT_TRUE(errorsText(imported->warnings).contains(u"curve offset 20.7 m sent as 20 m"_s)) << errorsText(imported->warnings).toStdString();
     ASSERT_TRUE(readMission(writeMission(imported->mission), u"again.xml"_s));
 

@@ -234,7 +234,7 @@ TEST(PlanGeometry, CrossHatchIsNeptusCrossHatchPattern)
     EXPECT_EQ(offsets(square), (Points{{-60, -50}, {60, -50}, {60, 0}, {-60, 0}, {-60, 50}, {60, 50},
                                        {-50, 60}, {-50, -60}, {0, -60}, {0, 60}, {50, 60}, {50, -60}}));
     EXPECT_TRUE(isWorkedPattern(u"CrossHatch"_s));
-    EXPECT_EQ(patternOffsets(square), crossHatchOffsets(square));
+    EXPECT_FALSE(isWorkedPattern(u"Rows"_s));
 
     // Without square turns the step is cut diagonally, ending the run-on at the next row.
     const Maneuver cut = maneuver(u"CrossHatch"_s, {{"width", 100}, {"hstep", 50}, {"coff", 10}});
@@ -249,9 +249,42 @@ TEST(PlanGeometry, CrossHatchIsNeptusCrossHatchPattern)
     const Maneuver dense = maneuver(u"CrossHatch"_s, {{"width", 1e9}, {"hstep", 0}});
     EXPECT_LE(crossHatchOffsets(dense).size(), 2 * (1 + 2 * 10000));
 
-    // What the IMC FollowPath carries so that Neptus recognises its pattern (RowsPattern.serializeToIMC).
+    // What the IMC FollowPath carries so that Neptus recognises its pattern: RowsPattern.serializeToIMC's
+    // keys in its order, sRange included (its parseIMCMessage throws without it), Neptus's 30 m by default...
+    EXPECT_EQ(patternCustom(square), u"Pattern=CrossHatchPattern;bearingRad=0;width=100;hstep=50;sRange=30;curvOff=10;squareCurve=true"_s);
+    // ...the maneuver's own sRange in its place, its other settings after, the pattern's own figures once.
     Maneuver named = square;
-    named.parameters.insert(u"custom"_s, u"Pattern=CrossHatchPattern;width=1;sRange=30"_s);
-    EXPECT_EQ(patternCustom(named), u"Pattern=CrossHatchPattern;bearingRad=0;width=100;hstep=50;curvOff=10;squareCurve=true;sRange=30"_s);
-    EXPECT_EQ(patternShapeParameters(u"CrossHatch"_s), (QStringList{u"width"_s, u"hstep"_s, u"bearing"_s, u"coff"_s, u"flags"_s}));
+    named.parameters.insert(u"custom"_s, u"Pattern=CrossHatchPattern;width=1;sRange=45;Formation=line"_s);
+    EXPECT_EQ(patternCustom(named),
+              u"Pattern=CrossHatchPattern;bearingRad=0;width=100;hstep=50;sRange=45;curvOff=10;squareCurve=true;Formation=line"_s);
+    // Only the pattern's shape parameters stay out of the FollowPath; its speed and depth go in.
+    EXPECT_FALSE(patternShapeParameters(u"CrossHatch"_s).contains(u"speed"_s));
+    EXPECT_FALSE(patternShapeParameters(u"CrossHatch"_s).contains(u"z"_s));
+}
+
+// A Rows' alternation as DUNE's RowsStages steps it (alt_frac_up = alternation %,
+// alt_frac_down = 200 − alternation %): none is 100 (even rows), 0 drives each
+// row twice and steps 2·hstep on, 50 alternates half and one and a half steps.
+TEST(PlanGeometry, RowsAlternationIsDunes)
+{
+    const auto across = [](const Maneuver &m) { // the rows' east offsets, north-going rows at bearing 0
+        QList<double> out;
+        const auto g = maneuverGeometry(m);
+        const auto origin = g.points.first();
+        for (qsizetype i = 0; i < g.points.size(); i += 2)
+            out.append(std::round(distance(Waypoint{origin.lat, origin.lon, 0, {}, 0, 0},
+                                           Waypoint{origin.lat, g.points[i].lon, 0, {}, 0, 0})));
+        return out;
+    };
+    const auto rows = [](std::optional<double> alternation) {
+        Maneuver m = maneuver(u"Rows"_s, {{"width", 40}, {"length", 50}, {"hstep", 10}, {"speed", 1}}, {{"flags", "CURVE_RIGHT"}});
+        if (alternation)
+            m.set(u"alternation"_s, *alternation);
+        return m;
+    };
+    EXPECT_EQ(rowsAlternation(rows({})), 100);
+    EXPECT_EQ(across(rows({})), (QList<double>{0, 10, 20, 30, 40}));
+    EXPECT_EQ(across(rows(100)), (QList<double>{0, 10, 20, 30, 40}));
+    EXPECT_EQ(across(rows(50)), (QList<double>{0, 5, 20, 25, 40}));
+    EXPECT_EQ(across(rows(0)), (QList<double>{0, 0, 20, 20, 40}));
 }

@@ -131,13 +131,14 @@ TEST(MissionTranslator, ImcGivesTheSameBytesThroughTheStylesheetAsDirectly)
 // FollowPath through its points with the custom settings that name the
 // pattern (RowsPattern.serializeToIMC), the maneuver's own after them; the
 // same bytes through the stylesheet as directly.
-TEST(MissionTranslator, CrossHatchGoesAsNeptusSendsItThroughBothPaths)
+TEST(MissionTranslator, CrossHatchGoesAsNeptusSendsItThroughBothPaths) // and a Rows with no alternation
 {
     const auto read = readMission(R"(<mission format="1" id="x"><home lat="38.33" lon="-28.46" height="0"/><vehicle id="lauv-xplore-1"/>
 <plan id="cross" vehicle="lauv-xplore-1" start="c"><maneuvers>
   <CrossHatch id="c" lat="38.33" lon="-28.46" z="5" z_units="DEPTH" speed="1.5" speed_units="METERS_PS"
-              bearing="180" width="100" hstep="50" coff="10" flags="SQUARE_CURVE" custom="sRange=30"/>
-</maneuvers></plan></mission>)",
+              bearing="90" width="100" hstep="50" coff="10" flags="SQUARE_CURVE" custom="sRange=20"/>
+  <Rows id="r" lat="38.33" lon="-28.46" z="5" z_units="DEPTH" speed="1.5" bearing="0" width="40" length="50" hstep="10"/>
+</maneuvers><transition from="c" to="r"/></plan></mission>)",
                                   u"cross.xml"_s);
     ASSERT_TRUE(read) << errorsText(read.error()).toStdString();
     expectSameImcBytes(*read, read->plans[0], everyTarget(u"lauv-xplore-1"_s));
@@ -145,16 +146,18 @@ TEST(MissionTranslator, CrossHatchGoesAsNeptusSendsItThroughBothPaths)
     const auto direct = planSpecification(read->plans[0], *schema);
     ASSERT_TRUE(direct) << direct.error().toStdString();
     const auto maneuvers = direct->messages(direct->def()->indexOf(u"maneuvers"));
-    ASSERT_EQ(maneuvers.size(), 1u);
+    ASSERT_EQ(maneuvers.size(), 2u);
+    // (A Rows with no alternation goes as 100 both ways, not IMC's zero: rowsAlternation().)
+    EXPECT_EQ(maneuvers[1].inlineMessage(maneuvers[1].def()->indexOf(u"data"))->integer(u"alternation"), 100);
     const msg::Message *path = maneuvers[0].inlineMessage(maneuvers[0].def()->indexOf(u"data"));
     ASSERT_TRUE(path);
     EXPECT_EQ(path->abbrev(), u"FollowPath"_s);
     EXPECT_EQ(path->text(u"custom"),
-              u"Pattern=CrossHatchPattern;bearingRad=3.141592653589793;width=100;hstep=50;curvOff=10;squareCurve=true;sRange=30"_s);
+              u"Pattern=CrossHatchPattern;bearingRad=1.5707963267948966;width=100;hstep=50;sRange=20;curvOff=10;squareCurve=true"_s);
     const auto points = path->messages(path->def()->indexOf(u"points"));
     ASSERT_EQ(points.size(), 12u);
-    EXPECT_NEAR(points[0].number(u"x"), 60, 1e-9); // the south-west corner's row, turned about the centre
-    EXPECT_NEAR(points[0].number(u"y"), 50, 1e-9);
+    EXPECT_NEAR(points[0].number(u"x"), 50, 1e-9); // bearing 90: the first row runs east from the north-west corner
+    EXPECT_NEAR(points[0].number(u"y"), -60, 1e-9);
     EXPECT_DOUBLE_EQ(path->number(u"z"), 5);
 }
 
