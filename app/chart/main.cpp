@@ -16,7 +16,6 @@
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
-#include <QRegularExpression>
 
 #include <cstdio>
 
@@ -85,11 +84,15 @@ int main(int argc, char **argv)
     parser.addOptions({json, radius, cache});
     // Western longitudes and southern latitudes are numbers, not options: kept from the parser's eyes.
     const QString marker = u"\u0001"_s;
+    // (A number after an option that takes a value is that value: left as it is, for its own check.)
     QStringList arguments = app.arguments();
-    static const QRegularExpression negative(u"^-[0-9.]+$"_s);
-    for (QString &a : arguments)
-        if (negative.match(a).hasMatch())
-            a.prepend(marker);
+    for (qsizetype i = 1; i < arguments.size(); ++i) {
+        bool number = false;
+        (void)arguments[i].toDouble(&number);
+        const bool optionValue = arguments[i - 1] == u"--radius" || arguments[i - 1] == u"--cache";
+        if (number && arguments[i].startsWith(u'-') && !optionValue)
+            arguments[i].prepend(marker);
+    }
     parser.process(arguments);
     QStringList args = parser.positionalArguments();
     for (QString &a : args)

@@ -181,20 +181,13 @@ QMap<QString, int> Cell::counts() const
     return out;
 }
 
-std::vector<const Feature *> Cell::coverage() const
-{
-    std::vector<const Feature *> out;
-    for (const Feature &f : features)
-        if (f.objectClass == u"M_COVR" && isArea(f) && f.attributes.value(u"CATCOV"_s, u"1"_s) == u"1")
-            out.push_back(&f);
-    return out;
-}
-
 Cell::Bounds Cell::bounds() const
 {
     Bounds b;
-    for (const Feature *f : coverage())
-        for (const auto &ring : f->parts)
+    for (const Feature &f : features) {
+        if (!isCoverage(f))
+            continue;
+        for (const auto &ring : f.parts)
             for (const Vertex &v : ring) {
                 if (!b.valid) {
                     b = {v.lon, v.lat, v.lon, v.lat, true};
@@ -205,6 +198,7 @@ Cell::Bounds Cell::bounds() const
                 b.south = std::min(b.south, v.lat);
                 b.north = std::max(b.north, v.lat);
             }
+    }
     return b;
 }
 
@@ -256,8 +250,9 @@ void Cell::index()
         return;
     // A grid of about 64 × 64 places over the cell; a feature is listed in every place within reach of its bounds.
     auto g = std::make_shared<Grid>();
-    const double midLat = (south + north) / 2;
-    const double reachLat = indexReach / 110574.0, reachLon = indexReach / (111320.0 * std::max(0.01, std::cos(midLat * std::numbers::pi / 180)));
+    // (Longitude's reach at the cell's latitude furthest from the equator: the widest in degrees.)
+    const double poleward = std::max(std::abs(south), std::abs(north));
+    const double reachLat = indexReach / 110574.0, reachLon = indexReach / (111320.0 * std::max(0.01, std::cos(poleward * std::numbers::pi / 180)));
     g->west = west - reachLon;
     g->south = south - reachLat;
     g->nx = g->ny = 64;
@@ -287,6 +282,21 @@ const QStringList &keptClasses()
         u"BOYLAT"_s, u"BOYSPP"_s, u"BOYSAW"_s, u"BOYCAR"_s, u"BOYISD"_s, u"BCNLAT"_s, u"BCNSPP"_s, u"BCNCAR"_s,
         u"BCNISD"_s, u"LIGHTS"_s, u"SEAARE"_s};
     return classes;
+}
+
+bool isHazard(const QString &c)
+{
+    return c == u"OBSTRN" || c == u"WRECKS" || c == u"UWTROC";
+}
+
+bool isRestriction(const QString &c)
+{
+    return c == u"RESARE" || c == u"CTNARE" || c == u"MIPARE";
+}
+
+bool isCoverage(const Feature &f)
+{
+    return f.objectClass == u"M_COVR" && isArea(f) && f.attributes.value(u"CATCOV"_s, u"1"_s) == u"1";
 }
 
 QString className(const QString &objectClass)
@@ -354,7 +364,7 @@ std::expected<Cell, QString> decodeCell(QByteArrayView bytes)
     cell.comment = r.string("the comment");
     // Each feature at least: a class (4), a geometry (1), two counts (8).
     const quint32 features = r.count("features", 13);
-    cell.features.reserve(features);
+    cell.features.reserve(std::min<quint32>(features, quint32(r.left() / 64))); // (a Feature is ~110 bytes in memory)
     for (quint32 i = 0; i < features && !r.failed(); ++i) {
         Feature f;
         f.objectClass = r.string("an object class");
@@ -368,7 +378,7 @@ std::expected<Cell, QString> decodeCell(QByteArrayView bytes)
             f.attributes.insert(key, r.string("an attribute's value"));
         }
         const quint32 parts = r.count("parts", 5);
-        f.parts.reserve(parts);
+        f.parts.reserve(std::min<quint32>(parts, quint32(r.left() / 64)));
         for (quint32 p = 0; p < parts && !r.failed(); ++p) {
             const quint32 vertices = r.u32("a part's size");
             const bool depths = r.u8("a part's kind") != 0;
@@ -414,14 +424,14 @@ PointReport reportAt(const std::vector<Cell> &cells, double lon, double lat, dou
             return {&none, false};
         return {&g.buckets[std::size_t(y * g.nx + x)], false};
     };
-    const auto forEach = [&](const Cell &c, const auto &visit) {
+    const auto forEach = [&](const Cell &c, const auto &visit) { // visit(feature, its index)
         const auto [list, all] = candidates(c);
         if (all) {
-            for (const Feature &f : c.features)
-                visit(f);
+            for (std::size_t i = 0; i < c.features.size(); ++i)
+                visit(c.features[i], i);
         } else {
             for (const quint32 i : *list)
-                visit(c.features[i]);
+                visit(c.features[i], std::size_t(i));
         }
     };
     // The cell with the best usage band (the largest scale) whose coverage holds the point.
@@ -430,11 +440,7 @@ PointReport reportAt(const std::vector<Cell> &cells, double lon, double lat, dou
         if (best && c.usageBand <= best->usageBand)
             continue;
         bool covers = false;
-        forEach(c, [&](const Feature &f) {
-            covers = covers
-                     || (f.objectClass == u"M_COVR" && isArea(f) && f.attributes.value(u"CATCOV"_s, u"1"_s) == u"1"
-                         && inside(f, lon, lat));
-        });
+        forEach(c, [&](const Feature &f, std::size_t) { covers = covers || (isCoverage(f) && inside(f, lon, lat)); });
         if (covers)
             best = &c;
     }
@@ -444,9 +450,7 @@ PointReport reportAt(const std::vector<Cell> &cells, double lon, double lat, dou
     report.cell = best->name;
     const Plane plane(lon, lat);
     double placeSize = 0;
-    static const QStringList hazards{u"OBSTRN"_s, u"WRECKS"_s, u"UWTROC"_s};
-    static const QStringList restrictions{u"RESARE"_s, u"CTNARE"_s, u"MIPARE"_s};
-    forEach(*best, [&](const Feature &f) {
+    forEach(*best, [&](const Feature &f, std::size_t index) {
         if (!near(f))
             return;
         const QString &c = f.objectClass;
@@ -459,10 +463,10 @@ PointReport reportAt(const std::vector<Cell> &cells, double lon, double lat, dou
                 report.depthMax = hi;
                 report.depthArea = f.name();
             }
-        } else if (hazards.contains(c) || restrictions.contains(c)) {
-            const double d = isArea(f) ? (inside(f, lon, lat) ? 0 : distanceTo(plane, f)) : distanceTo(plane, f);
-            if (d <= (isArea(f) && restrictions.contains(c) ? 0 : radius))
-                (hazards.contains(c) ? report.hazards : report.restrictions).push_back({c, f.name(), f.number(u"VALSOU"_s), d});
+        } else if (isHazard(c) || isRestriction(c)) {
+            const double d = isArea(f) && inside(f, lon, lat) ? 0 : distanceTo(plane, f);
+            if (d <= (isArea(f) && isRestriction(c) ? 0 : radius))
+                (isHazard(c) ? report.hazards : report.restrictions).push_back({c, f.name(), f.number(u"VALSOU"_s), d, index});
         } else if (c == u"SEAARE" && isArea(f) && !f.name().isEmpty() && inside(f, lon, lat)) {
             const double size = areaOf(f);
             if (report.place.isEmpty() || size < placeSize) {

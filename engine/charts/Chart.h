@@ -65,8 +65,7 @@ struct Cell
 
     // How many features of each object class.
     QMap<QString, int> counts() const;
-    // The data coverage (M_COVR with CATCOV 1): its rings; the bounds of them.
-    std::vector<const Feature *> coverage() const;
+    // The bounds of its data coverage (M_COVR with CATCOV 1).
     struct Bounds
     {
         double west = 0, south = 0, east = 0, north = 0;
@@ -88,6 +87,11 @@ struct Cell
 
 // The object classes the helper keeps (everything else in a cell is left there).
 const QStringList &keptClasses();
+// Obstructions, wrecks and underwater rocks; restricted, caution and military
+// practice areas; data coverage (M_COVR with CATCOV 1).
+bool isHazard(const QString &objectClass);
+bool isRestriction(const QString &objectClass);
+bool isCoverage(const Feature &feature);
 // An object class in words ("depth area", "wreck"); the acronym when unknown.
 QString className(const QString &objectClass);
 
@@ -119,6 +123,7 @@ struct PointReport
         QString name;
         std::optional<double> depth; // VALSOU, where charted
         double distance = 0;         // metres from the point (0 inside an area)
+        std::size_t feature = 0;     // its index in the cell's features (which one, when several say the same)
     };
     std::vector<Found> hazards, restrictions;
     // The nearest sounding within 500 m.

@@ -16,21 +16,24 @@ QString metres(double value) { return QString::number(value, 'f', 1) + u" m"_s; 
 
 } // namespace
 
+std::optional<Need> requiredDepth(const mission::VehicleDefinition *vehicle, double depth, const ChartCheckOptions &options)
+{
+    if (vehicle && vehicle->kind != u"UUV" && vehicle->kind != u"ROV" && vehicle->kind != u"USV")
+        return std::nullopt; // aircraft, ground vehicles and sensors do not float
+    const double draft = vehicle && vehicle->limits.draft ? *vehicle->limits.draft : options.defaultDraft;
+    const double minAltitude = vehicle && vehicle->limits.minAltitude ? *vehicle->limits.minAltitude : options.defaultMinAltitude;
+    const bool underwater = vehicle && (vehicle->kind == u"UUV" || vehicle->kind == u"ROV");
+    if (underwater && depth > draft)
+        return Need{depth + minAltitude, u"%1 deep and %2 above the bottom"_s.arg(metres(depth), metres(minAltitude))};
+    return Need{draft + options.margin, u"a draft of %1 and %2 under the keel"_s.arg(metres(draft), metres(options.margin))};
+}
+
 QList<PlanProblem> checkAgainstCharts(const mission::PlanGeometry &geometry, const mission::VehicleDefinition *vehicle,
                                       const std::vector<Cell> &cells, const ChartCheckOptions &options)
 {
     QList<PlanProblem> problems;
-    if (cells.empty() || (vehicle && vehicle->kind != u"UUV" && vehicle->kind != u"ROV" && vehicle->kind != u"USV"))
-        return problems; // aircraft, ground vehicles and sensors do not float
-    const double draft = vehicle && vehicle->limits.draft ? *vehicle->limits.draft : options.defaultDraft;
-    const double minAltitude = vehicle && vehicle->limits.minAltitude ? *vehicle->limits.minAltitude : options.defaultMinAltitude;
-    const bool underwater = vehicle && (vehicle->kind == u"UUV" || vehicle->kind == u"ROV");
-    // What the vehicle needs under it at a waypoint, and how that is said.
-    const auto needs = [&](const mission::Waypoint &w) -> std::pair<double, QString> {
-        if (underwater && w.zUnits == u"DEPTH" && w.z > 0)
-            return {w.z + minAltitude, u"%1 deep and %2 above the bottom"_s.arg(metres(w.z), metres(minAltitude))};
-        return {draft + options.margin, u"a draft of %1 and %2 under the keel"_s.arg(metres(draft), metres(options.margin))};
-    };
+    if (cells.empty() || !requiredDepth(vehicle, 0, options))
+        return problems;
 
     QSet<QString> said; // maneuver + kind (+ feature)
     const auto add = [&](PlanProblem::Severity severity, PlanProblem::Kind kind, const QString &key, const mission::ManeuverGeometry &g,
@@ -56,7 +59,9 @@ QList<PlanProblem> checkAgainstCharts(const mission::PlanGeometry &geometry, con
             const double length = previous ? mission::distance(from, w) : 0;
             // Not more than 20,000 points a leg: a leg longer than 200 km is walked in longer steps.
             const int steps = std::clamp(int(std::ceil(length / options.step)), 1, 20000);
-            const auto [need, because] = needs(w);
+            const Need needs = *requiredDepth(vehicle, w.zUnits == u"DEPTH" ? w.z : 0, options);
+            const double need = needs.metres;
+            const QString &because = needs.why;
             for (int i = previous ? 1 : 0; i <= steps; ++i) {
                 const double t = double(i) / steps;
                 const double lat = from.lat + t * (w.lat - from.lat), lon = from.lon + t * (w.lon - from.lon);
@@ -84,7 +89,7 @@ QList<PlanProblem> checkAgainstCharts(const mission::PlanGeometry &geometry, con
                     if (h.depth && *h.depth >= need)
                         continue;
                     add(PlanProblem::Severity::Error, PlanProblem::Kind::ChartHazard,
-                        id + u"hazard\n"_s + h.objectClass + h.name + QString::number(h.depth.value_or(-1)), g,
+                        id + u"hazard\n"_s + r.cell + u'\n' + QString::number(h.feature), g,
                         u"a leg passes %1 m from %2%3 (%4; it needs %5)"_s.arg(QString::number(h.distance, 'f', 0),
                             u"a "_s + className(h.objectClass), h.name.isEmpty() ? QString() : u" \""_s + h.name + u'"',
                             h.depth ? u"charted depth "_s + metres(*h.depth) : u"its depth not charted"_s, metres(need)),
@@ -92,7 +97,7 @@ QList<PlanProblem> checkAgainstCharts(const mission::PlanGeometry &geometry, con
                 }
                 for (const auto &a : r.restrictions)
                     add(PlanProblem::Severity::Warning, PlanProblem::Kind::ChartRestricted,
-                        id + u"restricted\n"_s + a.objectClass + a.name, g,
+                        id + u"restricted\n"_s + r.cell + u'\n' + QString::number(a.feature), g,
                         u"a leg enters a %1%2"_s.arg(className(a.objectClass), a.name.isEmpty() ? QString() : u" \""_s + a.name + u'"'),
                         lon, lat);
             }

@@ -6,6 +6,8 @@
 
 #include <QList>
 
+#include <optional>
+
 // A plan against the charts: every leg (the transits between maneuvers
 // included) walked in steps of a few metres and asked what the charts say
 // there (reportAt), as the plan check does with the mission's own areas.
@@ -33,6 +35,19 @@ struct ChartCheckOptions
     double defaultDraft = 0.5;  // when the vehicle says none
     double defaultMinAltitude = 1;
 };
+
+// What a vehicle needs under it at `depth` metres: a boat (and an underwater
+// vehicle no deeper than its draft: at the surface, or planned at an altitude)
+// its draft plus the margin; an underwater vehicle deeper down that depth plus
+// its minimum altitude; with the reason in words. None for what does not float
+// (aircraft, ground vehicles, sensors). A null vehicle is a boat of the default
+// draft. The plan check and the console's ChartWatch both ask this.
+struct Need
+{
+    double metres = 0;
+    QString why;
+};
+std::optional<Need> requiredDepth(const mission::VehicleDefinition *vehicle, double depth, const ChartCheckOptions &options = {});
 
 QList<mission::PlanProblem> checkAgainstCharts(const mission::PlanGeometry &geometry, const mission::VehicleDefinition *vehicle,
                                                const std::vector<Cell> &cells, const ChartCheckOptions &options = {});

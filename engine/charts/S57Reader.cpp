@@ -23,6 +23,15 @@ void CPL_STDCALL collectError(CPLErr level, CPLErrorNum, const char *message)
     }
 }
 
+// Collects GDAL's last failure into `into` for as long as it lives, whichever way the read ends.
+struct ErrorsInto
+{
+    explicit ErrorsInto(QString *into) { CPLPushErrorHandlerEx(collectError, into); }
+    ~ErrorsInto() { CPLPopErrorHandler(); }
+    ErrorsInto(const ErrorsInto &) = delete;
+    ErrorsInto &operator=(const ErrorsInto &) = delete;
+};
+
 std::vector<Vertex> points(const OGRSimpleCurve &curve)
 {
     std::vector<Vertex> out;
@@ -68,7 +77,7 @@ bool addGeometry(const OGRGeometry &g, Feature &f)
 const QStringList &recordFields()
 {
     static const QStringList fields{u"RCID"_s, u"PRIM"_s, u"GRUP"_s, u"OBJL"_s, u"RVER"_s, u"AGEN"_s,
-                                    u"FIDN"_s, u"FIDS"_s, u"LNAM"_s, u"LNAM_REFS"_s, u"FFPT_RIND"_s};
+                                    u"FIDN"_s, u"FIDS"_s, u"LNAM"_s};
     return fields;
 }
 
@@ -80,17 +89,15 @@ std::expected<Cell, QString> readS57(const QString &path)
         return std::unexpected(u"%1: no such file"_s.arg(path));
     RegisterOGRS57();
     QString gdalError;
-    CPLPushErrorHandlerEx(collectError, &gdalError);
+    const ErrorsInto errors(&gdalError);
     const char *drivers[] = {"S57", nullptr};
     const char *options[] = {"UPDATES=APPLY", "SPLIT_MULTIPOINT=OFF", "RETURN_PRIMITIVES=OFF", "RETURN_LINKAGES=OFF",
                              "LNAM_REFS=OFF", "RECODE_BY_DSSI=ON", nullptr};
     std::unique_ptr<GDALDataset> dataset(
         GDALDataset::Open(path.toUtf8().constData(), GDAL_OF_VECTOR | GDAL_OF_READONLY, drivers, options, nullptr));
-    CPLPopErrorHandler();
     if (!dataset)
         return std::unexpected(u"%1: not an S-57 cell GDAL can read%2"_s.arg(path, gdalError.isEmpty() ? QString() : u": "_s + gdalError));
     Cell cell;
-    CPLPushErrorHandlerEx(collectError, &gdalError);
     for (OGRLayer *layer : dataset->GetLayers()) {
         const QString name = QString::fromUtf8(layer->GetName());
         if (name == u"DSID") {
@@ -132,7 +139,6 @@ std::expected<Cell, QString> readS57(const QString &path)
             cell.features.push_back(std::move(f));
         }
     }
-    CPLPopErrorHandler();
     if (cell.name.isEmpty())
         return std::unexpected(u"%1: has no data set identification (DSID): not an S-57 cell%2"_s.arg(
             path, gdalError.isEmpty() ? QString() : u": "_s + gdalError));

@@ -77,10 +77,23 @@ void PlanDesk::setMission(mission::Mission mission, const QString &path)
         if (const auto spec = mission::planSpecification(p, *m_schema))
             if (const auto md5 = planMd5(m_codec, *spec))
                 m_md5[p.id] = *md5;
+    m_definitions = mission::loadVehicles(mission::vehicleFolders());
+    recheck();
+}
+
+void PlanDesk::setExtraCheck(ExtraCheck check)
+{
+    m_extraCheck = std::move(check);
+    recheck();
+}
+
+void PlanDesk::recheck()
+{
     // What the plan editor would say of each plan: a plan with errors (a
-    // condition that does not compile, a leg through a no-go area, a
-    // parameter past its vehicle's range) is not sent. Conditions are checked
-    // when the mission opens, not first when a vehicle waits on them.
+    // condition that does not compile, a leg through a no-go area or across
+    // land on the charts, a parameter past its vehicle's range) is not sent.
+    // Conditions are checked when the mission opens, not first when a vehicle
+    // waits on them.
     m_problems.clear();
     m_planErrors.clear();
     for (const mission::Plan &p : m_mission.plans) {
@@ -89,11 +102,13 @@ void PlanDesk::setMission(mission::Mission mission, const QString &path)
             m_problems << p.id + u": "_s + error;
         }
     }
-    m_definitions = mission::loadVehicles(mission::vehicleFolders());
     for (const mission::Plan &p : m_mission.plans) {
         const mission::VehicleDefinition *v = m_definitions.find(p.vehicle);
-        for (const mission::PlanProblem &problem :
-             mission::checkPlan(p, m_mission, mission::planGeometry(p, v ? v->speeds() : mission::SpeedModel{}), v)) {
+        const mission::PlanGeometry geometry = mission::planGeometry(p, v ? v->speeds() : mission::SpeedModel{});
+        QList<mission::PlanProblem> problems = mission::checkPlan(p, m_mission, geometry, v);
+        if (m_extraCheck)
+            problems += m_extraCheck(p, geometry, v);
+        for (const mission::PlanProblem &problem : std::as_const(problems)) {
             if (problem.severity != mission::PlanProblem::Severity::Error)
                 continue;
             m_planErrors[p.id] << problem.message;

@@ -4,6 +4,7 @@
 #include "messages/Codec.h"
 #include "plans/MavlinkMission.h"
 #include "mission/Mission.h"
+#include "mission/PlanCheck.h"
 #include "mission/Vehicle.h"
 #include "plans/PlanClient.h"
 #include "plans/PlanDatabase.h"
@@ -97,6 +98,13 @@ public:
     // The mission whose plans are offered; an error names the file and line.
     std::expected<void, QString> openMission(const QString &path);
     void setMission(mission::Mission mission, const QString &path = {});
+    // Checks of a plan beyond mission::checkPlan that the console has (the
+    // charts: charts::checkAgainstCharts); their errors keep a plan from being
+    // sent as checkPlan's do. recheck() asks again (the charts were read).
+    using ExtraCheck = std::function<QList<mission::PlanProblem>(const mission::Plan &, const mission::PlanGeometry &,
+                                                                const mission::VehicleDefinition *)>;
+    void setExtraCheck(ExtraCheck check);
+    void recheck();
     const mission::Mission &mission() const { return m_mission; }
     // What is wrong with the open mission for running it: conditions that do
     // not compile ("meet: out → dive: condition '…' does not compile: …").
@@ -204,7 +212,8 @@ private:
     mission::Mission m_mission;
     QString m_missionPath;
     QStringList m_problems;
-    QHash<QString, QStringList> m_planErrors; // plan id -> its errors (mission::checkPlan)
+    QHash<QString, QStringList> m_planErrors; // plan id -> its errors (mission::checkPlan, m_extraCheck)
+    ExtraCheck m_extraCheck;
     std::map<QString, QByteArray> m_md5; // the mission's plans' MD5s, by plan id
     std::map<quint16, Vehicle> m_vehicles;
     PlanRuns m_runs;

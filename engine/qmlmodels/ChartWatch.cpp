@@ -1,11 +1,11 @@
 #include "qmlmodels/ChartWatch.h"
 
 #include "alarms/AlarmGraph.h"
+#include "charts/ChartCheck.h"
 #include "charts/ChartFiles.h"
 #include "geo/Geodesy.h"
 #include "qmlmodels/Tracks.h"
 
-#include <QDateTime>
 #include <QtConcurrent/QtConcurrentRun>
 
 using namespace neptus;
@@ -16,13 +16,13 @@ ChartWatch::ChartWatch(geo::Tracks *tracks, alarms::AlarmGraph *alarms, QObject 
     , m_tracks(tracks)
     , m_alarms(alarms)
 {
-    connect(m_tracks, &geo::Tracks::updated, this, &ChartWatch::check);
+    // Once a second, not on every model sync: a vehicle moves a few metres in that time.
+    m_timer.setInterval(1000);
+    connect(&m_timer, &QTimer::timeout, this, &ChartWatch::check);
 }
 
-ChartWatch::~ChartWatch()
-{
-    m_load.waitForFinished();
-}
+// (A read still going ends on its own: the job holds only its path and its result.)
+ChartWatch::~ChartWatch() = default;
 
 void ChartWatch::setCharts(const QString &path)
 {
@@ -30,6 +30,7 @@ void ChartWatch::setCharts(const QString &path)
         return;
     m_path = path;
     m_cells.reset();
+    m_timer.stop();
     m_error.clear();
     if (m_vehicles.vehicles.isEmpty())
         m_vehicles = mission::loadVehicles(mission::vehicleFolders());
@@ -51,6 +52,7 @@ void ChartWatch::setCharts(const QString &path)
         else
             m_error = result->error();
         emit chartsChanged();
+        m_timer.start();
         check();
     });
     m_load.setFuture(QtConcurrent::run([path, result] { *result = charts::sharedCells(path); }));
@@ -61,6 +63,7 @@ void ChartWatch::setCells(std::shared_ptr<const std::vector<charts::Cell>> cells
     m_cells = std::move(cells);
     m_loading = false;
     emit chartsChanged();
+    m_timer.start();
     check();
 }
 
@@ -71,14 +74,12 @@ ChartWatch::Verdict ChartWatch::judge(const QString &system) const
     const mission::VehicleDefinition *vehicle = m_vehicles.find(system);
     if (!m_cells || !track || track->fixes.empty() || !vehicle)
         return v;
-    const bool underwater = vehicle->kind == u"UUV" || vehicle->kind == u"ROV";
-    if (!underwater && vehicle->kind != u"USV")
-        return v; // aircraft and the rest do not float
     const geo::Tracks::Fix &at = track->latest;
-    const double lat = geo::degrees(at.lat), lon = geo::degrees(at.lon);
-    v.report = charts::reportAt(*m_cells, lon, lat, 0, false);
-    const double draft = vehicle->limits.draft.value_or(0.5);
-    v.need = underwater && at.depth > draft ? at.depth + vehicle->limits.minAltitude.value_or(1) : draft + m_margin;
+    const auto need = charts::requiredDepth(vehicle, at.depth); // the plan check's rule
+    if (!need)
+        return v; // aircraft and the rest do not float
+    v.report = charts::reportAt(*m_cells, geo::degrees(at.lon), geo::degrees(at.lat), 0, false);
+    v.need = need->metres;
     if (!v.report.covered) {
         v.level = alarms::Info;
         v.text = u"%1 is off the charts: the water there is not known"_s.arg(system);
@@ -103,11 +104,7 @@ void ChartWatch::check()
 {
     if (!m_cells)
         return;
-    const qint64 now = QDateTime::currentMSecsSinceEpoch();
     for (const QString &system : m_tracks->systems()) {
-        if (m_intervalMs > 0 && now - m_lastCheck.value(system, 0) < m_intervalMs)
-            continue;
-        m_lastCheck.insert(system, now);
         const Verdict v = judge(system);
         const QString message = v.level == alarms::Normal ? QString() : v.text;
         if (v.level == alarms::Unknown || m_raised.value(system) == std::pair{v.level, message})

@@ -6,6 +6,7 @@
 #include <QFutureWatcher>
 #include <QHash>
 #include <QObject>
+#include <QTimer>
 #include <QVariantMap>
 #include <QtQml/qqmlregistration.h>
 
@@ -19,9 +20,9 @@ class Tracks;
 }
 
 // The charted water under each vehicle (docs/charts.md): with charts given
-// (--charts), every vehicle with a definition that floats (a boat, or an
-// underwater vehicle, which needs its depth plus its minimum altitude) is
-// looked up on the charts as it moves, at most once a second, and its alarm
+// (--charts), every vehicle with a definition that floats is looked up on the
+// charts once a second against what it needs (charts::requiredDepth, the plan
+// check's rule), and its alarm
 // `systems/NAME/chart` says when it is on land or in water shallower than it
 // needs (Error), off the charts (Info), and goes back to Normal in safe
 // water. `under(system)` is what the charts say there, for a label.
@@ -46,16 +47,13 @@ public:
     void setVehicles(neptus::mission::VehicleCatalog vehicles) { m_vehicles = std::move(vehicles); }
     // For tests: cells given directly.
     void setCells(std::shared_ptr<const std::vector<neptus::charts::Cell>> cells);
-    double margin() const { return m_margin; }
     // The cells read (null until they are).
     std::shared_ptr<const std::vector<neptus::charts::Cell>> cells() const { return m_cells; }
-    // How often a vehicle is looked up again, at most (1 s; tests set 0).
-    void setInterval(int ms) { m_intervalMs = ms; }
 
     // {covered, land, min, max, place, need, text} under a system's last position; {} when unknown.
     Q_INVOKABLE QVariantMap under(const QString &system) const;
 
-    // Looks every vehicle up again (Tracks::updated calls it; at most once a second each).
+    // Looks every vehicle up again (a timer calls it every second while there are charts).
     void check();
 
 signals:
@@ -77,10 +75,8 @@ private:
     QString m_path;
     bool m_loading = false;
     QString m_error;
-    double m_margin = 0.5;
-    int m_intervalMs = 1000;
     std::shared_ptr<const std::vector<neptus::charts::Cell>> m_cells;
-    QHash<QString, qint64> m_lastCheck; // system -> when, ms
     QHash<QString, std::pair<int, QString>> m_raised; // system -> level and message said
     QFutureWatcher<void> m_load;
+    QTimer m_timer;
 };

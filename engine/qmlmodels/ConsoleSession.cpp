@@ -1,5 +1,7 @@
 #include "qmlmodels/ConsoleSession.h"
 
+#include "charts/ChartCheck.h"
+
 #include "mission/Vehicle.h"
 #include "processor/MissionTranslator.h"
 
@@ -58,6 +60,12 @@ ConsoleSession::ConsoleSession(std::shared_ptr<const msg::Schema> schema, const 
               [this](const msg::Message &message) { return m_console.broadcast(message); })
 {
     connect(&m_console, &session::Console::planMessageReceived, &m_planDesk, &plans::PlanDesk::receive);
+    // A plan the charts say is unsafe is not sent, as the editor marks it; checked again once they are read.
+    m_planDesk.setExtraCheck([this](const mission::Plan &, const mission::PlanGeometry &geometry, const mission::VehicleDefinition *vehicle) {
+        const auto cells = m_chartWatch.cells();
+        return cells ? charts::checkAgainstCharts(geometry, vehicle, *cells) : QList<mission::PlanProblem>{};
+    });
+    connect(&m_chartWatch, &ChartWatch::chartsChanged, &m_planDesk, &plans::PlanDesk::recheck);
     connect(&m_console, &session::Console::sharedMissionReceived, &m_share, &plans::MissionShare::receive);
     m_planDesk.setMavlink({[this] { return m_console.mavlinkSchema(); }, &mavlinkPlanFor,
                            [this](quint16 system, const QString &planId, const QStringList &maneuverOfItem) {

@@ -38,6 +38,8 @@ out=$(chart depth "$cell" -75 38.5 2>/dev/null); grep -q "no chart covers this p
 
 chart depth "$cell" -76.3 north >/dev/null 2>"$work/err"; [ $? = 1 ] && grep -q "'-76.3 north' is not a longitude and latitude" "$work/err"
 check "a position that is not one is refused, naming it" $?
+chart depth "$cell" -76.3 38.85 --radius -5 >/dev/null 2>"$work/err"; [ $? = 1 ] && grep -q "^neptus-chart: --radius '-5' is not a distance in metres$" "$work/err"
+check "a negative radius is refused as it was written ($(cat "$work/err"))" $?
 chart info "$work/nowhere" >/dev/null 2>"$work/err"; [ $? = 1 ] && grep -q "nowhere: no such file or folder" "$work/err"
 check "a path that is not there is refused, naming it" $?
 head -c 2000 /dev/urandom >"$work/XX4BAD.000"

@@ -24,13 +24,107 @@ constexpr double localZoom = 16;
 
 } // namespace
 
-// What a read on the worker thread gives.
+// What a read on the worker thread gives: the cells, and all the map draws of
+// them already in the local frame, so that the GUI thread only sorts (band()).
 struct ChartItem::Loaded
 {
     QString path;
     std::shared_ptr<const std::vector<Cell>> cells;
     QString error;
+    Eigen::Vector2d origin{0, 0}; // Mercator of the local frame's origin
+    double unitsPerWorld = 1;
+    QList<QPolygonF> land;
+    struct Depths
+    {
+        double shallowest; // DRVAL1
+        QList<QPolygonF> rings;
+    };
+    std::vector<Depths> depths;
+    struct Contour
+    {
+        std::optional<double> value; // VALDCO
+        std::vector<QPointF> lines;  // pairs of end points
+    };
+    std::vector<Contour> contours;
+    std::vector<QPointF> coast, restricted; // pairs of end points
+    // Point symbols: hazards (a cross), buoys (a ring), beacons (a triangle), lights (a star), with
+    // the largest scale denominator they are shown at (SCAMIN; 0: none said).
+    enum class Mark { Hazard, Buoy, Beacon, Light };
+    struct Point
+    {
+        Eigen::Vector2d mercator;
+        Mark mark;
+        double scamin;
+    };
+    std::vector<Point> points;
+
+    void convert(); // fills all but path, cells and error from the cells
 };
+
+void ChartItem::Loaded::convert()
+{
+    Cell::Bounds all;
+    for (const Cell &c : *cells) {
+        const auto b = c.bounds();
+        if (b.valid)
+            all = all.valid ? Cell::Bounds{std::min(all.west, b.west), std::min(all.south, b.south), std::max(all.east, b.east),
+                                           std::max(all.north, b.north), true}
+                            : b;
+    }
+    origin = mercatorOf((all.south + all.north) / 2, (all.west + all.east) / 2);
+    unitsPerWorld = 256 * std::exp2(localZoom);
+    const auto local = [this](const Vertex &v) {
+        const Eigen::Vector2d p = (mercatorOf(v.lat, v.lon) - origin) * unitsPerWorld;
+        return QPointF(p.x(), p.y());
+    };
+    const auto rings = [&](const Feature &f) {
+        QList<QPolygonF> out;
+        for (const auto &ring : f.parts) {
+            QPolygonF polygon;
+            polygon.reserve(qsizetype(ring.size()));
+            for (const Vertex &v : ring)
+                polygon.append(local(v));
+            out.append(std::move(polygon));
+        }
+        return out;
+    };
+    const auto segments = [&](const Feature &f, std::vector<QPointF> &out) {
+        for (const auto &line : f.parts)
+            for (std::size_t i = 1; i < line.size(); ++i) {
+                out.push_back(local(line[i - 1]));
+                out.push_back(local(line[i]));
+            }
+    };
+    for (const Cell &c : *cells) {
+        for (const Feature &f : c.features) {
+            const QString &k = f.objectClass;
+            const bool area = f.geometry == Feature::Geometry::Area;
+            if (k == u"LNDARE" && area) {
+                land += rings(f);
+            } else if ((k == u"DEPARE" || k == u"DRGARE") && area) {
+                depths.push_back({f.number(u"DRVAL1"_s).value_or(0), rings(f)});
+            } else if (k == u"DEPCNT") {
+                contours.push_back({f.number(u"VALDCO"_s), {}});
+                segments(f, contours.back().lines);
+            } else if (k == u"COALNE" || k == u"SLCONS") {
+                segments(f, coast);
+            } else if (isRestriction(k) && area) {
+                segments(f, restricted); // the rings, edge by edge
+            } else if (isHazard(k) || (f.geometry == Feature::Geometry::Point
+                                       && (k.startsWith(u"BOY"_s) || k.startsWith(u"BCN"_s) || k == u"LIGHTS"))) {
+                // (An area or line hazard is marked at its first point.)
+                const Mark mark = isHazard(k) ? Mark::Hazard : k.startsWith(u"BOY"_s) ? Mark::Buoy
+                                  : k.startsWith(u"BCN"_s)   ? Mark::Beacon : Mark::Light;
+                for (const auto &part : f.parts) {
+                    if (!part.empty())
+                        points.push_back({mercatorOf(part.front().lat, part.front().lon), mark, f.number(u"SCAMIN"_s).value_or(0)});
+                    if (f.geometry != Feature::Geometry::Point)
+                        break;
+                }
+            }
+        }
+    }
+}
 
 ChartItem::ChartItem(QQuickItem *parent) : MapOverlayItem(parent)
 {
@@ -46,21 +140,29 @@ void ChartItem::setPath(const QString &path)
         return;
     m_path = path;
     emit pathChanged();
-    if (m_loading)
-        return; // read again when this one is done (finished() sees the path changed)
+    if (!m_loading) // else finished() sees the path changed and reads again
+        load(path);
+}
+
+void ChartItem::load(const QString &path)
+{
     if (path.isEmpty()) {
-        m_charts.reset();
-        finished();
+        m_read.reset();
+        m_error.clear();
+        emit loaded();
+        band();
         return;
     }
     auto job = std::make_shared<Loaded>();
     job->path = path;
     m_watcher.setFuture(QtConcurrent::run([job] {
         auto cells = sharedCells(job->path); // the same cells as the vehicles' depth watch and the plan editor
-        if (cells)
+        if (cells) {
             job->cells = *cells;
-        else
+            job->convert();
+        } else {
             job->error = cells.error();
+        }
         return job;
     }));
     m_loading = true;
@@ -76,93 +178,30 @@ void ChartItem::setSafetyDepth(double metres)
     band();
 }
 
+QVariant ChartItem::land() const
+{
+    return QVariant::fromValue(m_read ? m_read->land : QList<QPolygonF>());
+}
+
 QStringList ChartItem::cells() const
 {
     QStringList names;
-    if (m_charts)
-        for (const Cell &c : *m_charts)
+    if (m_read && m_read->cells)
+        for (const Cell &c : *m_read->cells)
             names << u"%1 (edition %2, update %3)"_s.arg(c.name).arg(c.edition).arg(c.update);
     return names;
 }
 
 void ChartItem::finished()
 {
-    if (m_watcher.isFinished() && m_watcher.future().isValid() && m_watcher.future().resultCount() > 0) {
-        const std::shared_ptr<Loaded> job = m_watcher.result();
-        m_watcher.setFuture({});
-        if (job->path != m_path) { // asked for another while reading
-            const QString wanted = std::exchange(m_path, job->path);
-            setPath(wanted);
-            return;
-        }
-        m_charts = job->cells;
-        m_error = job->error;
-    }
+    const std::shared_ptr<Loaded> job = m_watcher.result();
     m_loading = false;
-    m_land.clear();
-    m_coast.clear();
-    m_points.clear();
-    m_restricted.clear();
-    if (m_charts && !m_charts->empty()) {
-        Cell::Bounds all;
-        for (const Cell &c : *m_charts) {
-            const auto b = c.bounds();
-            if (!b.valid)
-                continue;
-            all = all.valid ? Cell::Bounds{std::min(all.west, b.west), std::min(all.south, b.south), std::max(all.east, b.east),
-                                           std::max(all.north, b.north), true}
-                            : b;
-        }
-        m_origin = mercatorOf((all.south + all.north) / 2, (all.west + all.east) / 2);
-        m_unitsPerWorld = 256 * std::exp2(localZoom);
-        const auto local = [this](const Vertex &v) {
-            const Eigen::Vector2d p = (mercatorOf(v.lat, v.lon) - m_origin) * m_unitsPerWorld;
-            return QPointF(p.x(), p.y());
-        };
-        for (const Cell &c : *m_charts) {
-            for (const Feature &f : c.features) {
-                if (f.objectClass == u"LNDARE" && f.geometry == Feature::Geometry::Area) {
-                    for (const auto &ring : f.parts) {
-                        QPolygonF polygon;
-                        polygon.reserve(qsizetype(ring.size()));
-                        for (const Vertex &v : ring)
-                            polygon.append(local(v));
-                        m_land.append(std::move(polygon));
-                    }
-                } else if (f.objectClass == u"COALNE" || f.objectClass == u"SLCONS") {
-                    for (const auto &line : f.parts)
-                        for (std::size_t i = 1; i < line.size(); ++i) {
-                            m_coast.push_back(local(line[i - 1]));
-                            m_coast.push_back(local(line[i]));
-                        }
-                } else if ((f.objectClass == u"RESARE" || f.objectClass == u"CTNARE" || f.objectClass == u"MIPARE")
-                           && f.geometry == Feature::Geometry::Area) {
-                    for (const auto &ring : f.parts)
-                        for (std::size_t i = 1; i < ring.size(); ++i) {
-                            m_restricted.push_back(local(ring[i - 1]));
-                            m_restricted.push_back(local(ring[i]));
-                        }
-                } else if (f.geometry == Feature::Geometry::Point) {
-                    const QString &c = f.objectClass;
-                    const Mark mark = c == u"OBSTRN" || c == u"WRECKS" || c == u"UWTROC" ? Mark::Hazard
-                                      : c.startsWith(u"BOY"_s)                           ? Mark::Buoy
-                                      : c.startsWith(u"BCN"_s)                           ? Mark::Beacon
-                                      : c == u"LIGHTS"                                   ? Mark::Light
-                                                                                         : Mark(-1);
-                    if (int(mark) < 0)
-                        continue;
-                    for (const auto &part : f.parts)
-                        if (!part.empty())
-                            m_points.push_back({mercatorOf(part.front().lat, part.front().lon), mark, f.number(u"SCAMIN"_s).value_or(0)});
-                } else if (f.objectClass == u"OBSTRN" || f.objectClass == u"WRECKS" || f.objectClass == u"UWTROC") {
-                    // An area or line hazard: marked at its first point.
-                    if (!f.parts.empty() && !f.parts.front().empty())
-                        m_points.push_back({mercatorOf(f.parts.front().front().lat, f.parts.front().front().lon), Mark::Hazard,
-                                            f.number(u"SCAMIN"_s).value_or(0)});
-                }
-            }
-        }
+    if (job->path != m_path) { // asked for another while reading
+        load(m_path);
+        return;
     }
+    m_read = job;
+    m_error = job->error;
     m_transform = QMatrix4x4();
     emit loaded();
     emit loadingChanged();
@@ -175,41 +214,20 @@ void ChartItem::band()
         b.clear();
     m_contours.clear();
     m_safety.clear();
-    m_safetyContour = 0;
-    if (m_charts) {
-        const auto local = [this](const Vertex &v) {
-            const Eigen::Vector2d p = (mercatorOf(v.lat, v.lon) - m_origin) * m_unitsPerWorld;
-            return QPointF(p.x(), p.y());
-        };
+    m_safetyContour = m_safetyDepth;
+    if (m_read) {
         // The safety contour: the first charted contour at or past the safety depth (S-52's idea).
         double safety = std::numeric_limits<double>::infinity();
-        for (const Cell &c : *m_charts)
-            for (const Feature &f : c.features)
-                if (f.objectClass == u"DEPCNT")
-                    if (const auto v = f.number(u"VALDCO"_s); v && *v >= m_safetyDepth)
-                        safety = std::min(safety, *v);
-        m_safetyContour = std::isfinite(safety) ? safety : m_safetyDepth;
-        for (const Cell &c : *m_charts) {
-            for (const Feature &f : c.features) {
-                if ((f.objectClass == u"DEPARE" || f.objectClass == u"DRGARE") && f.geometry == Feature::Geometry::Area) {
-                    const double shallowest = f.number(u"DRVAL1"_s).value_or(0);
-                    const int band = shallowest < 0 ? 0 : shallowest < m_safetyContour ? 1 : shallowest < 2 * m_safetyContour ? 2 : 3;
-                    for (const auto &ring : f.parts) {
-                        QPolygonF polygon;
-                        polygon.reserve(qsizetype(ring.size()));
-                        for (const Vertex &v : ring)
-                            polygon.append(local(v));
-                        m_bands[band].append(std::move(polygon));
-                    }
-                } else if (f.objectClass == u"DEPCNT") {
-                    auto &lines = f.number(u"VALDCO"_s) == m_safetyContour ? m_safety : m_contours;
-                    for (const auto &line : f.parts)
-                        for (std::size_t i = 1; i < line.size(); ++i) {
-                            lines.push_back(local(line[i - 1]));
-                            lines.push_back(local(line[i]));
-                        }
-                }
-            }
+        for (const auto &c : m_read->contours)
+            if (c.value && *c.value >= m_safetyDepth)
+                safety = std::min(safety, *c.value);
+        if (std::isfinite(safety))
+            m_safetyContour = safety;
+        for (const auto &d : m_read->depths)
+            m_bands[d.shallowest < 0 ? 0 : d.shallowest < m_safetyContour ? 1 : d.shallowest < 2 * m_safetyContour ? 2 : 3] += d.rings;
+        for (const auto &c : m_read->contours) {
+            auto &lines = c.value == m_safetyContour ? m_safety : m_contours;
+            lines.insert(lines.end(), c.lines.begin(), c.lines.end());
         }
     }
     m_linesChanged = true;
@@ -219,13 +237,13 @@ void ChartItem::band()
 
 void ChartItem::viewUpdated()
 {
-    if (width() <= 0 || height() <= 0)
+    if (width() <= 0 || height() <= 0 || !m_read)
         return;
-    if (const QMatrix4x4 m = localToItem(m_origin, m_unitsPerWorld); m != m_transform) {
+    if (const QMatrix4x4 m = localToItem(m_read->origin, m_read->unitsPerWorld); m != m_transform) {
         m_transform = m;
         emit placed();
     }
-    update(); // the hazards' crosses are drawn in the item's own units
+    update(); // the symbols are drawn in the item's own units
 }
 
 QSGNode *ChartItem::updatePaintNode(QSGNode *old, UpdatePaintNodeData *)
@@ -244,9 +262,9 @@ QSGNode *ChartItem::updatePaintNode(QSGNode *old, UpdatePaintNodeData *)
     QSGGeometryNode *restricted = flatNode(placed, 3, QSGGeometry::DrawLines);
     if (m_linesChanged) {
         setNodePoints(contours, m_contours, m_lineWidth);
-        setNodePoints(coast, m_coast, m_lineWidth);
+        setNodePoints(coast, m_read ? m_read->coast : std::vector<QPointF>{}, m_lineWidth);
         setNodePoints(safety, m_safety, m_lineWidth * 2.5);
-        setNodePoints(restricted, m_restricted, m_lineWidth * 1.5);
+        setNodePoints(restricted, m_read ? m_read->restricted : std::vector<QPointF>{}, m_lineWidth * 1.5);
         m_linesChanged = false;
     }
     setNodeColor(contours, m_contourColor);
@@ -254,36 +272,32 @@ QSGNode *ChartItem::updatePaintNode(QSGNode *old, UpdatePaintNodeData *)
     setNodeColor(safety, m_safetyColor);
     setNodeColor(restricted, m_restrictedColor);
     // Symbols, the same size at every zoom, only those in view and at scales their SCAMIN allows
-    // (the scale of a 0.28 mm pixel, as S-52 counts it).
+    // (the scale for OGC's standard 0.28 mm rendering pixel; without SCAMIN, from zoom 11 in).
     const MapProjection view = projection();
     const double r = std::max(3.0, m_lineWidth * 3);
-    const double worldSize = view.worldSize();
     const double scale = view.metresPerPixel() / 0.00028;
-    const Eigen::Vector2d centre = view.centerMercator();
-    const double c = std::cos(neptus::geo::radians(-view.bearing)), s = std::sin(neptus::geo::radians(-view.bearing));
     std::vector<QPointF> hazards, aids;
-    for (const Point &point : m_points) {
+    for (const Loaded::Point &point : m_read ? m_read->points : std::vector<Loaded::Point>{}) {
         if (point.scamin > 0 ? scale > point.scamin : view.zoom < 11)
             continue;
-        const Eigen::Vector2d d = (point.mercator - centre) * worldSize;
-        const QPointF p(width() / 2 + d.x() * c - d.y() * s, height() / 2 + d.x() * s + d.y() * c);
+        const QPointF p = view.fromMercator(point.mercator);
         if (p.x() < -r || p.y() < -r || p.x() > width() + r || p.y() > height() + r)
             continue;
         switch (point.mark) {
-        case Mark::Hazard:
+        case Loaded::Mark::Hazard:
             hazards.insert(hazards.end(), {p + QPointF(-r, -r), p + QPointF(r, r), p + QPointF(-r, r), p + QPointF(r, -r)});
             break;
-        case Mark::Buoy: // a ring of 8 sides
+        case Loaded::Mark::Buoy: // a ring of 8 sides
             for (int i = 0; i < 8; ++i) {
                 const double a0 = i * std::numbers::pi / 4, a1 = (i + 1) * std::numbers::pi / 4;
                 aids.insert(aids.end(), {p + QPointF(r * std::cos(a0), r * std::sin(a0)), p + QPointF(r * std::cos(a1), r * std::sin(a1))});
             }
             break;
-        case Mark::Beacon: // a triangle standing on the point
+        case Loaded::Mark::Beacon: // a triangle standing on the point
             aids.insert(aids.end(), {p + QPointF(-r, 0), p + QPointF(r, 0), p + QPointF(r, 0), p + QPointF(0, -2 * r),
                                      p + QPointF(0, -2 * r), p + QPointF(-r, 0)});
             break;
-        case Mark::Light: // a star of three strokes
+        case Loaded::Mark::Light: // a star of three strokes
             for (int i = 0; i < 3; ++i) {
                 const double a = i * std::numbers::pi / 3;
                 aids.insert(aids.end(), {p + QPointF(r * std::cos(a), r * std::sin(a)), p - QPointF(r * std::cos(a), r * std::sin(a))});
@@ -302,9 +316,9 @@ QSGNode *ChartItem::updatePaintNode(QSGNode *old, UpdatePaintNodeData *)
 
 QVariantMap ChartItem::featureAt(double lat, double lon, double radius) const
 {
-    if (!m_charts)
+    if (!m_read || !m_read->cells)
         return {};
-    const PointReport r = reportAt(*m_charts, lon, lat, radius);
+    const PointReport r = reportAt(*m_read->cells, lon, lat, radius);
     if (!r.covered)
         return {};
     QVariantList features;

@@ -16,7 +16,7 @@
 // neptus-chart-import helper and its cache), their areas handed to QML
 // Shapes as rings in a local frame placed by `areaTransform` (land; depth areas
 // in four bands by their shallowest depth against the safety depth: drying,
-// shallower than it, up to twice it, deeper), and drawn here: depth contours
+// shallower than it, up to twice it (our choice), deeper), and drawn here: depth contours
 // (the safety contour, the first at or past the safety depth, thicker), the
 // coastline, restricted, caution and military practice areas' edges, and as
 // symbols of one size at every zoom hazards (obstructions, wrecks, rocks:
@@ -55,7 +55,7 @@ public:
     void setPath(const QString &path);
     double safetyDepth() const { return m_safetyDepth; }
     void setSafetyDepth(double metres);
-    QVariant land() const { return QVariant::fromValue(m_land); }
+    QVariant land() const;
     QVariant drying() const { return QVariant::fromValue(m_bands[0]); }
     QVariant shallow() const { return QVariant::fromValue(m_bands[1]); }
     QVariant medium() const { return QVariant::fromValue(m_bands[2]); }
@@ -85,7 +85,10 @@ protected:
 
 private:
     struct Loaded;
+    // Reads `path`'s cells and converts them to the local frame, on a worker thread.
+    void load(const QString &path);
     void finished();
+    // Sorts the depth areas and contours by the safety contour (no conversion again).
     void band();
 
     QString m_path;
@@ -94,23 +97,10 @@ private:
     QColor m_contourColor = Qt::gray, m_safetyColor = Qt::black, m_coastColor = Qt::darkGray, m_hazardColor = Qt::black,
            m_aidColor = Qt::darkMagenta, m_restrictedColor = Qt::magenta;
     double m_lineWidth = 1;
-    std::shared_ptr<const std::vector<neptus::charts::Cell>> m_charts;
-    Eigen::Vector2d m_origin{0, 0};
-    double m_unitsPerWorld = 1;
-    QList<QPolygonF> m_land;
+    // What was read, converted once (Loaded); band() and the paint node take from it.
+    std::shared_ptr<const Loaded> m_read;
     QList<QPolygonF> m_bands[4];
-    std::vector<QPointF> m_contours, m_safety, m_coast; // pairs of end points, local units
-    // Point symbols: hazards (a cross), buoys (a ring), beacons (a triangle), lights (a star), with
-    // the largest scale denominator they are shown at (SCAMIN; 0: always).
-    enum class Mark { Hazard, Buoy, Beacon, Light };
-    struct Point
-    {
-        Eigen::Vector2d mercator;
-        Mark mark;
-        double scamin;
-    };
-    std::vector<Point> m_points;
-    std::vector<QPointF> m_restricted; // restricted, caution and military areas' edges, pairs, local units
+    std::vector<QPointF> m_contours, m_safety; // pairs of end points, local units
     bool m_linesChanged = false;
     QString m_error;
     QMatrix4x4 m_transform;

@@ -181,6 +181,15 @@ TestCase {
         mouseClick(findChild(m, "chartTapped"))
         tryVerify(() => !findChild(m, "chartTapped").visible, 2000, "a tap on it closes it")
         compare(m.chartTapped.depth, undefined, "and asks nothing of the map under it")
+        // No charts; then other charts asked for while a read is going: the last asked for is read.
+        m.charts = ""
+        tryVerify(() => !chart.loading && chart.cells.length === 0, 5000)
+        m.charts = path + "/nowhere"
+        verify(chart.loading)
+        m.charts = path
+        tryVerify(() => !chart.loading, 30000, "still reading")
+        compare(chart.error, "")
+        compare(chart.cells.length, 1, "the charts asked for last are the ones read")
     }
 
     function test_3b_withoutTilesTheCoastlineShowsLand() {

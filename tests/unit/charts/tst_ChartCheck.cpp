@@ -133,7 +133,8 @@ TEST(ChartCheck, HazardsAndRestrictedAreasOnTheWay)
     depth.objectClass = u"DEPARE"_s;
     depth.attributes = {{u"DRVAL1"_s, u"10"_s}, {u"DRVAL2"_s, u"20"_s}};
     c.features.push_back(depth);
-    for (const auto &[lon, valsou] : {std::pair{-8.70, u"3.5"_s}, std::pair{-8.65, u"30"_s}}) {
+    // (Two wrecks alike, neither named: each is a problem of its own.)
+    for (const auto &[lon, valsou] : {std::pair{-8.70, u"3.5"_s}, std::pair{-8.68, u"3.5"_s}, std::pair{-8.65, u"30"_s}}) {
         Feature wreck;
         wreck.objectClass = u"WRECKS"_s;
         wreck.attributes.insert(u"VALSOU"_s, valsou);
@@ -164,9 +165,12 @@ TEST(ChartCheck, HazardsAndRestrictedAreasOnTheWay)
     const auto auv = vehicle(u"auv"_s, u"UUV"_s);
     const auto problems = checkAgainstCharts(mission::planGeometry(plan), &auv, {c});
     const QStringList text = said(problems);
-    ASSERT_EQ(problems.size(), 2) << text.join(u'\n').toStdString();
-    EXPECT_TRUE(text[0].startsWith(u"error: 'e' (Goto): a leg passes "_s)) << text[0].toStdString();
-    EXPECT_TRUE(text[0].endsWith(u"m from a wreck (charted depth 3.5 m; it needs 7.0 m) (unsafe)"_s)) << text[0].toStdString();
-    EXPECT_EQ(text[1], u"warning: 'e' (Goto): a leg enters a restricted area \"Firing Range\""_s);
+    ASSERT_EQ(problems.size(), 3) << text.join(u'\n').toStdString();
+    for (int i : {0, 1}) {
+        EXPECT_TRUE(text[i].startsWith(u"error: 'e' (Goto): a leg passes "_s)) << text[i].toStdString();
+        EXPECT_TRUE(text[i].endsWith(u"m from a wreck (charted depth 3.5 m; it needs 7.0 m) (unsafe)"_s)) << text[i].toStdString();
+    }
     EXPECT_NEAR(*problems[0].lon, -8.70, 0.0005);
+    EXPECT_NEAR(*problems[1].lon, -8.68, 0.0005);
+    EXPECT_EQ(text[2], u"warning: 'e' (Goto): a leg enters a restricted area \"Firing Range\""_s);
 }

@@ -60,7 +60,6 @@ struct Watching : ::testing::Test
         mission::VehicleCatalog catalog;
         catalog.vehicles = {vehicle(u"boat"_s, u"USV"_s), vehicle(u"auv"_s, u"UUV"_s), vehicle(u"plane"_s, u"UAV"_s)};
         watch.setVehicles(catalog);
-        watch.setInterval(0);
         watch.setCells(cells());
     }
     void at(const QString &system, double lon, double depth = 0)

@@ -280,6 +280,27 @@ TEST_F(Desk, APlanWithErrorsIsNotSent)
     EXPECT_TRUE(desk.send(u"lauv-sim-1"_s, u"survey"_s));
 }
 
+// A check the console adds (its charts, through ConsoleSession) keeps a plan
+// from being sent as the plan check's own errors do, and asked again
+// (recheck: the charts were read) it lets the plan go once it passes.
+TEST_F(Desk, AnExtraChecksErrorsKeepAPlanFromBeingSent)
+{
+    bool unsafe = true;
+    desk.setExtraCheck([&](const mission::Plan &plan, const mission::PlanGeometry &geometry, const mission::VehicleDefinition *) {
+        QList<mission::PlanProblem> problems;
+        if (unsafe && plan.id == u"survey" && !geometry.maneuvers.isEmpty())
+            problems.append({mission::PlanProblem::Severity::Error, mission::PlanProblem::Kind::ChartLand, geometry.maneuvers[0].id,
+                             u"'%1' (Goto): a leg crosses land (chart XX5TEST.000)"_s.arg(geometry.maneuvers[0].id), {}, {}, 0});
+        return problems;
+    });
+    EXPECT_EQ(desk.send(u"lauv-sim-1"_s, u"survey"_s).error(),
+              u"plan 'survey' is not sent: 'go' (Goto): a leg crosses land (chart XX5TEST.000)"_s);
+    EXPECT_TRUE(desk.problems().contains(u"survey: 'go' (Goto): a leg crosses land (chart XX5TEST.000)"_s));
+    unsafe = false;
+    desk.recheck();
+    EXPECT_TRUE(desk.send(u"lauv-sim-1"_s, u"survey"_s));
+}
+
 TEST_F(Desk, SilenceAndUnknownSystemsAreSaid)
 {
     desk.setTimeout(std::chrono::milliseconds(20));
