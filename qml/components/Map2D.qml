@@ -129,8 +129,17 @@ Rectangle {
     }
     // Every system in view, with a margin; north up; stops following.
     function fitAll() {
+        fitPositions(systems.map(name => tracks.latest(name)).filter(st => st.lat !== undefined))
+    }
+    // The charts read, whole (a tap on the map's status line: they may be far from the vehicles).
+    function fitCharts() {
+        const b = chart.bounds
+        if (b.west !== undefined)
+            fitPositions([{ lat: b.south, lon: b.west }, { lat: b.north, lon: b.east }])
+    }
+    function fitPositions(positions: var) {
         bearing = 0
-        const ps = systems.map(name => tracks.latest(name)).filter(st => st.lat !== undefined).map(st => screenPoint(st.lat, st.lon))
+        const ps = positions.map(p => screenPoint(p.lat, p.lon))
         if (ps.length === 0)
             return
         following = false
@@ -659,9 +668,11 @@ Rectangle {
               + (root.charts === "" ? ""
                  : chart.loading ? qsTr(" · reading the charts…")
                  : chart.error !== "" ? " · " + chart.error
-                 : qsTr(" · chart %1 · safety contour %2 m · not for navigation").arg(chart.cells.join(", ")).arg(chart.safetyContour))
+                 : qsTr(" · chart %1 · safety contour %2 m · not for navigation · tap to see it").arg(chart.cells.join(", ")).arg(chart.safetyContour))
         color: Theme.textDim
         font.pixelSize: Theme.smallFontPixelSize
+        // A tap on it shows the charts read, whole.
+        TapHandler { enabled: root.charts !== "" && !chart.loading; gesturePolicy: TapHandler.WithinBounds; onTapped: root.fitCharts() }
     }
 
     // What the chart says where the operator tapped; a tap on it, or anywhere on the map, closes it.

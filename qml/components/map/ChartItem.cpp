@@ -19,6 +19,18 @@ Eigen::Vector2d mercatorOf(double latDegrees, double lonDegrees)
     return neptus::geo::toMercator(neptus::geo::radians(latDegrees), neptus::geo::radians(lonDegrees));
 }
 
+// The union of the cells' coverage bounds.
+Cell::Bounds boundsOf(const std::vector<Cell> &cells)
+{
+    Cell::Bounds all;
+    for (const Cell &c : cells)
+        if (const auto b = c.bounds(); b.valid)
+            all = all.valid ? Cell::Bounds{std::min(all.west, b.west), std::min(all.south, b.south), std::max(all.east, b.east),
+                                           std::max(all.north, b.north), true}
+                            : b;
+    return all;
+}
+
 // Local units: a pixel at zoom 16 (about 2 m), around the charts' middle.
 constexpr double localZoom = 16;
 
@@ -63,14 +75,7 @@ struct ChartItem::Loaded
 
 void ChartItem::Loaded::convert()
 {
-    Cell::Bounds all;
-    for (const Cell &c : *cells) {
-        const auto b = c.bounds();
-        if (b.valid)
-            all = all.valid ? Cell::Bounds{std::min(all.west, b.west), std::min(all.south, b.south), std::max(all.east, b.east),
-                                           std::max(all.north, b.north), true}
-                            : b;
-    }
+    const Cell::Bounds all = boundsOf(*cells);
     origin = mercatorOf((all.south + all.north) / 2, (all.west + all.east) / 2);
     unitsPerWorld = 256 * std::exp2(localZoom);
     const auto local = [this](const Vertex &v) {
@@ -181,6 +186,14 @@ void ChartItem::setSafetyDepth(double metres)
 QVariant ChartItem::land() const
 {
     return QVariant::fromValue(m_read ? m_read->land : QList<QPolygonF>());
+}
+
+QVariantMap ChartItem::bounds() const
+{
+    const Cell::Bounds all = m_read && m_read->cells ? boundsOf(*m_read->cells) : Cell::Bounds{};
+    if (!all.valid)
+        return {};
+    return {{u"west"_s, all.west}, {u"south"_s, all.south}, {u"east"_s, all.east}, {u"north"_s, all.north}};
 }
 
 QStringList ChartItem::cells() const

@@ -46,6 +46,8 @@ class ChartItem : public MapOverlayItem
     Q_PROPERTY(QString error READ error NOTIFY loaded)
     Q_PROPERTY(QStringList cells READ cells NOTIFY loaded)
     Q_PROPERTY(double safetyContour READ safetyContour NOTIFY banded)
+    // Where the charts read are: {west, south, east, north} (degrees), {} when none.
+    Q_PROPERTY(QVariantMap bounds READ bounds NOTIFY loaded)
 
 public:
     explicit ChartItem(QQuickItem *parent = nullptr);
@@ -65,6 +67,7 @@ public:
     QString error() const { return m_error; }
     QStringList cells() const;
     double safetyContour() const { return m_safetyContour; }
+    QVariantMap bounds() const;
 
     // What the charts say at a position (degrees), in words, for a tap: the
     // features there (within `radius` metres of a point one), each as

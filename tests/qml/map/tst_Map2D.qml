@@ -181,6 +181,14 @@ TestCase {
         mouseClick(findChild(m, "chartTapped"))
         tryVerify(() => !findChild(m, "chartTapped").visible, 2000, "a tap on it closes it")
         compare(m.chartTapped.depth, undefined, "and asks nothing of the map under it")
+        // Far from the charts, a tap on the status line shows them whole.
+        m.centreAt(41.15, -8.66)
+        mouseClick(findChild(m, "noTiles"))
+        verify(m.centerLatitude > 38.36 && m.centerLatitude < 39.04 && m.centerLongitude > -76.59 && m.centerLongitude < -76.02,
+               m.centerLatitude + ", " + m.centerLongitude)
+        const sw = m.screenPoint(38.36667, -76.58278), ne = m.screenPoint(39.03333, -76.02961)
+        verify(sw.x >= 0 && sw.y <= m.height && ne.x <= m.width && ne.y >= 0, "the whole coverage in view")
+        compare(m.chartTapped.depth, undefined, "the tap was not a question to the chart")
         // No charts; then other charts asked for while a read is going: the last asked for is read.
         m.charts = ""
         tryVerify(() => !chart.loading && chart.cells.length === 0, 5000)
