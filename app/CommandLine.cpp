@@ -103,6 +103,9 @@ std::expected<CommandLine, QString> CommandLine::parse(const QStringList &argume
         QStringLiteral("path"));
     const QCommandLineOption safetyDepth(QStringLiteral("safety-depth"),
         QStringLiteral("Charted water shallower than this stands out on the maps, in metres (default 5)."), QStringLiteral("metres"));
+    const QCommandLineOption displayRate(QStringLiteral("display-rate"),
+        QStringLiteral("Vehicle data shown at most this many times a second while it keeps changing (default 10; 0: every frame)."),
+        QStringLiteral("hz"));
     const QCommandLineOption size(QStringLiteral("size"),
         QStringLiteral("Window size, e.g. 1280x800."), QStringLiteral("WxH"));
     const QCommandLineOption selfTest(QStringLiteral("self-test"),
@@ -207,7 +210,7 @@ std::expected<CommandLine, QString> CommandLine::parse(const QStringList &argume
         QStringLiteral("Map tiles for the web page: a URL with {z}/{x}/{y} (default: the offline coastline only)."), QStringLiteral("url"));
     parser.addOptions({mavlink, mavlinkPeer, mavlinkKey, mavlinkRequireSigning, mavlinkDialect});
     parser.addOptions({logDir, noRecord, database, replay, replaySession, replayFrom, replayPlay, webPort, webBind, webToken, webCert, webKey, webTiles});
-    parser.addOptions({charts, safetyDepth});
+    parser.addOptions({charts, safetyDepth, displayRate});
     parser.addOptions({console, screenshot, screenshotDelay, components, edit, select, system, palette, uiScale, gps, size, selfTest,
                        imcPort, imcBind, imcPeer, ddsDomain, ddsConfig, ddsKeys, ddsIdentity, defs, defsFor, imcDiscovery, dumpTree, quitAfter, forgetAfter, mission, share, name});
     // "--defs-for SYSTEM FILE" (two words, as the documentation writes it) is
@@ -254,6 +257,13 @@ std::expected<CommandLine, QString> CommandLine::parse(const QStringList &argume
         result.safetyDepth = parser.value(safetyDepth).toDouble(&ok);
         if (!ok || !(result.safetyDepth >= 0 && result.safetyDepth <= 1000))
             return std::unexpected(QStringLiteral("--safety-depth must be metres (0 to 1000), not '%1'").arg(parser.value(safetyDepth)));
+    }
+    if (parser.isSet(displayRate)) {
+        bool ok = false;
+        result.displayRate = parser.value(displayRate).toDouble(&ok);
+        if (!ok || !(result.displayRate >= 0 && result.displayRate <= 1000))
+            return std::unexpected(QStringLiteral("--display-rate must be updates a second (0 to 1000; 0: every frame), not '%1'")
+                                       .arg(parser.value(displayRate)));
     }
     result.logDirectory = parser.isSet(logDir) ? QFileInfo(parser.value(logDir)).absoluteFilePath() : QString();
     result.record = !parser.isSet(noRecord);

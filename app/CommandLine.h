@@ -28,6 +28,7 @@ struct CommandLine
     QString system;                     // the console's main system ($main)
     QString charts;                     // S-57 charts for the maps (absolute path)
     double safetyDepth = 5;             // metres
+    double displayRate = 10;            // vehicle data shown a second at most (0: every frame)
     QSize windowSize{1280, 800};
     QStringList definitionFiles;        // --defs: instead of msgdefs/
     QList<std::pair<QString, QString>> definitionsFor; // --defs-for SYSTEM=FILE

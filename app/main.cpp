@@ -324,6 +324,7 @@ int main(int argc, char *argv[])
 
     // The charted water under each vehicle, with its alarm (the maps draw the same charts).
     session.chartWatch()->setCharts(commandLine->charts);
+    session.treeModel()->setDisplayRate(commandLine->displayRate);
     QQmlApplicationEngine engine;
     engine.setInitialProperties({
         {QStringLiteral("session"), QVariant::fromValue(&session)},

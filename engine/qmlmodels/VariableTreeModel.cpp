@@ -18,11 +18,26 @@ VariableTreeModel::VariableTreeModel(VariableTree *tree, QObject *parent)
     // A coarse timer may fire up to 5 % late: 0.8 ms more on a value's way
     // to the screen, every time it happens to land on a late tick.
     m_frame.setTimerType(Qt::PreciseTimer);
-    connect(&m_frame, &QTimer::timeout, this, &VariableTreeModel::sync);
+    connect(&m_frame, &QTimer::timeout, this, [this] {
+        // Within the display rate: changes made since wait for the next turn.
+        // (Half a frame early counts as on time, or 10 Hz would become 7.5.)
+        if (m_displayRate > 0 && m_sinceShown.isValid() && m_sinceShown.elapsed() + 8 < 1000 / m_displayRate)
+            return;
+        sync();
+    });
     m_frame.start();
     m_ageTimer.setInterval(1000);
     connect(&m_ageTimer, &QTimer::timeout, this, &VariableTreeModel::refreshAges);
     m_ageTimer.start();
+}
+
+void VariableTreeModel::setDisplayRate(double perSecond)
+{
+    perSecond = std::max(0.0, perSecond);
+    if (perSecond == m_displayRate)
+        return;
+    m_displayRate = perSecond;
+    emit displayRateChanged();
 }
 
 void VariableTreeModel::setStaleAfter(double seconds)
@@ -95,6 +110,7 @@ void VariableTreeModel::sync()
     VariableTree::Changes changes = m_tree->takeChanges(m_consumer);
     if (changes.isEmpty())
         return;
+    m_sinceShown.start();
 
     // Forgotten systems go first (nothing below names their nodes), in runs
     // of neighbouring rows from the last: a thousand forged ids are one removal.

@@ -20,12 +20,20 @@ class Variable;
 // so any number of updates of a variable between two frames make one
 // notification: one dataChanged per changed range of siblings, never a storm.
 // Rows only ever get added (the tree never removes nodes).
+//
+// The display rate: a change after a quiet spell is shown at the next frame,
+// but while values keep changing they are shown at most `displayRate` times
+// a second, every system's changes in the same frame. Vehicles streaming at
+// 10 Hz each, out of step, otherwise make a frame for every message, and on a
+// tablet drawing in software each frame is battery (issue #39).
 class VariableTreeModel : public QAbstractItemModel
 {
     Q_OBJECT
     QML_ELEMENT
     QML_UNCREATABLE("made by the console, which owns the tree")
     Q_PROPERTY(double staleAfter READ staleAfter WRITE setStaleAfter NOTIFY staleAfterChanged)
+    // Updates shown a second at most while values keep changing (0: every frame).
+    Q_PROPERTY(double displayRate READ displayRate WRITE setDisplayRate NOTIFY displayRateChanged)
     Q_PROPERTY(int nodeCount READ nodeCount NOTIFY synced)
     // The systems heard so far, by the names they are shown by.
     Q_PROPERTY(QStringList systems READ systems NOTIFY systemsChanged)
@@ -53,6 +61,10 @@ public:
     double staleAfter() const { return m_staleAfter; }
     void setStaleAfter(double seconds);
 
+    // 10 by default: the rate vehicles report their state at.
+    double displayRate() const { return m_displayRate; }
+    void setDisplayRate(double perSecond);
+
     int nodeCount() const { return m_tree->nodeCount(); }
     QStringList systems() const { return m_tree->childNames(u""); }
     // The first system heard that is a vehicle (its Announce names no
@@ -70,7 +82,8 @@ public:
     void unlisten(int id);
 
     // Takes the tree's changes and notifies views, Variables and listeners.
-    // Runs by itself every frame (16 ms); tests call it directly.
+    // Runs by itself every frame (16 ms) within the display rate; tests call
+    // it directly.
     Q_INVOKABLE void sync();
     // Recomputes ages and staleness of the rows views showed since the last
     // time (and of every Variable); runs by itself every second (tests call
@@ -92,6 +105,7 @@ public:
 
 signals:
     void staleAfterChanged();
+    void displayRateChanged();
     void systemsChanged();
     void synced();
 
@@ -116,6 +130,8 @@ private:
     mutable std::vector<quint32> m_readAt;
     quint32 m_ageTick = 2; // 0 in m_readAt: never read
     QTimer m_frame;
+    double m_displayRate = 10;
+    QElapsedTimer m_sinceShown; // since the last sync that had changes
     QTimer m_ageTimer;
 
     struct Listener

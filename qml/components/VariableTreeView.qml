@@ -144,7 +144,9 @@ Rectangle {
         objectName: "variableTree"
         anchors { left: parent.left; right: parent.right; top: tools.bottom; bottom: plotPane.visible ? plotPane.top : parent.bottom; margins: Theme.spacing }
         clip: true
-        model: Session.tree
+        // Hidden (the designer's closed panel, a console's other tab), it
+        // follows no values: each one changed would still make a frame.
+        model: view.visible ? Session.tree : null
         flickableDirection: view.dragLeaves ? Flickable.VerticalFlick : Flickable.AutoFlickDirection
         columnWidthProvider: column => [tree.width * 0.4, tree.width * 0.3, tree.width * 0.1, tree.width * 0.2][column]
         delegate: Item {

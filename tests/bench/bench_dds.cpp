@@ -417,6 +417,9 @@ int main(int argc, char **argv)
     auto schema = test::shippedSchema();
     tree::VariableTree tree;
     tree::VariableTreeModel model(&tree);
+    // The pipeline as fast as it goes: every frame, not the console's display
+    // rate (at most 10 updates a second while values keep changing).
+    model.setDisplayRate(0);
     transport::DdsTransport dds(schema, configFor(pinger));
     Receiver receiver;
     receiver.tree = &tree;

@@ -8,7 +8,7 @@ TrailGeometry::TrailGeometry(QQuick3DObject *parent)
     : QQuick3DGeometry(parent)
 {
     m_uploadTimer.setSingleShot(true);
-    m_uploadTimer.setInterval(250);
+    m_uploadTimer.setInterval(2 * uploadEvery);
     connect(&m_uploadTimer, &QTimer::timeout, this, &TrailGeometry::upload);
 }
 
@@ -79,8 +79,11 @@ void TrailGeometry::rebuild()
         m_pointCount = count;
         emit pointCountChanged();
     }
-    // A new or restarted trail shows at once; growth at most every 250 ms.
-    if (restart)
+    // A new or restarted trail shows at once; growth at most every 250 ms,
+    // in a frame the tracks' update makes anyway (a timer of its own would
+    // draw frames of their own, 4 a second for each trail). The timer only
+    // catches the last fixes of a trail that stopped growing.
+    if (restart || !m_sinceUpload.isValid() || m_sinceUpload.elapsed() >= uploadEvery)
         upload();
     else if (!m_uploadTimer.isActive())
         m_uploadTimer.start();
@@ -89,6 +92,7 @@ void TrailGeometry::rebuild()
 void TrailGeometry::upload()
 {
     m_uploadTimer.stop();
+    m_sinceUpload.start();
     clear();
     if (m_pointCount >= 2) {
         setVertexData(m_vertices);

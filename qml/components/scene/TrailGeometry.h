@@ -2,6 +2,7 @@
 
 #include "qmlmodels/Tracks.h"
 
+#include <QElapsedTimer>
 #include <QPointer>
 #include <QTimer>
 #include <QQuick3DGeometry>
@@ -11,7 +12,9 @@
 // One system's trail as a 3D line strip, in metres from the tracks' home:
 // x east, y up, z south (Qt Quick 3D's axes). New fixes are converted as
 // they come, but the whole strip goes to the GPU at most 4 times a second
-// (a long trail is megabytes; the vehicle itself moves every frame).
+// (a long trail is megabytes; the vehicle itself moves every frame), with
+// an update of the tracks: the last growth of a trail that stopped within
+// 500 ms.
 class TrailGeometry : public QQuick3DGeometry
 {
     Q_OBJECT
@@ -19,7 +22,7 @@ class TrailGeometry : public QQuick3DGeometry
     Q_PROPERTY(neptus::geo::Tracks *tracks READ tracks WRITE setTracks NOTIFY tracksChanged)
     Q_PROPERTY(QString system READ system WRITE setSystem NOTIFY systemChanged)
     Q_PROPERTY(int pointCount READ pointCount NOTIFY pointCountChanged)
-    // Points in the geometry handed to the GPU (catches up within 250 ms).
+    // Points in the geometry handed to the GPU (catches up within 500 ms).
     Q_PROPERTY(int uploadedCount READ uploadedCount NOTIFY uploaded)
 
 public:
@@ -42,7 +45,9 @@ private:
     void rebuild();
     void upload();
 
+    static constexpr int uploadEvery = 250; // ms
     QTimer m_uploadTimer;
+    QElapsedTimer m_sinceUpload;
     QPointer<neptus::geo::Tracks> m_tracks;
     QString m_system;
     int m_pointCount = 0;

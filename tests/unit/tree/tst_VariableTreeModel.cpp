@@ -6,7 +6,9 @@
 
 #include <QAbstractItemModelTester>
 #include <QDir>
+#include <QElapsedTimer>
 #include <QSignalSpy>
+#include <QTest>
 
 #include <gtest/gtest.h>
 
@@ -373,4 +375,33 @@ TEST_F(Fixture, AgesRefreshedRightAfterASystemIsForgottenSeeOnlyWhatIsThere)
     }
     EXPECT_EQ(model.rowCount(), 1);
     EXPECT_EQ(model.data(model.index(0, 0)).toString(), QStringLiteral("0x0020"));
+}
+
+// Vehicles streaming out of step would otherwise make a frame for each of
+// their messages (issue #39): while values keep changing, the model shows
+// them at most `displayRate` times a second, all together.
+TEST(VariableTreeModelDisplayRate, ValuesThatKeepChangingAreShownAtTheDisplayRate)
+{
+    VariableTree tree;
+    VariableTreeModel model(&tree);
+    EXPECT_EQ(model.displayRate(), 10.0) << "the rate vehicles report their state at";
+    QSignalSpy synced(&model, &VariableTreeModel::synced);
+    int depth = 0;
+    const auto changeFor = [&](int ms) {
+        QElapsedTimer clock;
+        clock.start();
+        while (clock.elapsed() < ms) {
+            tree.ingest(state(0x1f, ++depth));
+            tree.ingest(state(0x20, depth)); // a second vehicle, in the same turn
+            QTest::qWait(5);
+        }
+    };
+    changeFor(1000);
+    EXPECT_LE(synced.count(), 11) << "10 a second (and the first at once)";
+    EXPECT_GE(synced.count(), 3) << "still shown while they keep changing";
+
+    model.setDisplayRate(0);
+    synced.clear();
+    changeFor(1000);
+    EXPECT_GT(synced.count(), 11) << "0: every frame (16 ms)";
 }
