@@ -31,12 +31,11 @@ bool inside(const Feature &area, double lon, double lat)
         if (band < 0 || band >= double(e.bands.size()))
             return false;
         bool in = false;
-        for (const auto &[r, i] : e.bands[std::size_t(band)]) {
-            const auto &ring = area.parts[r];
-            const Vertex &a = ring[i], &b = ring[i == 0 ? ring.size() - 1 : i - 1];
-            if ((a.lat > lat) != (b.lat > lat) && lon < a.lon + (lat - a.lat) * (b.lon - a.lon) / (b.lat - a.lat))
+        for (const Feature::Edges::Edge &a : e.bands[std::size_t(band)])
+            if ((a.lat0 > lat) != (a.lat1 > lat)
+                && (lon < std::min(a.lon0, a.lon1) // wholly east of the point: crossed; else where it crosses
+                    || (lon < std::max(a.lon0, a.lon1) && lon < a.lon0 + (lat - a.lat0) * (a.lon1 - a.lon0) / (a.lat1 - a.lat0))))
                 in = !in;
-        }
         return in;
     }
     bool in = false; // even-odd over all rings: holes and several outer rings alike
@@ -76,7 +75,7 @@ double distanceTo(const Plane &plane, const Feature &f)
         for (std::size_t i = 0; i < part.size(); ++i) {
             const auto [x, y] = plane.xy(part[i]);
             if (f.geometry == Feature::Geometry::Point || part.size() == 1) {
-                best = std::min(best, std::hypot(x, y));
+                best = std::min(best, x * x + y * y);
                 continue;
             }
             if (i == 0)
@@ -84,10 +83,11 @@ double distanceTo(const Plane &plane, const Feature &f)
             const auto [ax, ay] = plane.xy(part[i - 1]);
             const double dx = x - ax, dy = y - ay, length2 = dx * dx + dy * dy;
             const double t = length2 > 0 ? std::clamp((-ax * dx - ay * dy) / length2, 0.0, 1.0) : 0;
-            best = std::min(best, std::hypot(ax + t * dx, ay + t * dy));
+            const double px = ax + t * dx, py = ay + t * dy;
+            best = std::min(best, px * px + py * py);
         }
     }
-    return best;
+    return std::sqrt(best); // squared until here: metres from a point, hypot's care for overflow is not needed
 }
 
 // Bytes with every count checked against what is left.
@@ -218,11 +218,16 @@ void Cell::index()
                 f.north = std::max(f.north, v.lat);
             }
         }
+        f.role = roleOf(f);
+        f.size = f.role == Feature::Role::SeaArea ? areaOf(f) : 0;
+        f.shallowest = f.role == Feature::Role::Depth ? f.number(u"DRVAL1"_s)
+                     : f.role == Feature::Role::Hazard ? f.number(u"VALSOU"_s) : std::nullopt;
+        f.deepest = f.role == Feature::Role::Depth ? f.number(u"DRVAL2"_s) : std::nullopt;
         f.edges.reset();
         if (isArea(f) && vertices > 32 && f.north > f.south) {
             // About 8 edges a band; each edge in every band its latitudes span.
             auto edges = std::make_shared<Feature::Edges>();
-            const std::size_t bands = std::clamp<std::size_t>(vertices / 8, 1, 4096);
+            const std::size_t bands = std::clamp<std::size_t>(vertices / 8, 1, 16384);
             edges->south = f.south;
             edges->step = (f.north - f.south) / double(bands) * (1 + 1e-12);
             edges->bands.resize(bands);
@@ -233,7 +238,7 @@ void Cell::index()
                     const auto first = std::size_t(std::max(0.0, std::floor((std::min(a.lat, b.lat) - edges->south) / edges->step)));
                     const auto last = std::min(bands - 1, std::size_t(std::floor((std::max(a.lat, b.lat) - edges->south) / edges->step)));
                     for (std::size_t band = first; band <= last; ++band)
-                        edges->bands[band].emplace_back(quint32(r), quint32(i));
+                        edges->bands[band].push_back({a.lon, a.lat, b.lon, b.lat});
                 }
             }
             f.edges = std::move(edges);
@@ -297,6 +302,27 @@ bool isRestriction(const QString &c)
 bool isCoverage(const Feature &f)
 {
     return f.objectClass == u"M_COVR" && isArea(f) && f.attributes.value(u"CATCOV"_s, u"1"_s) == u"1";
+}
+
+Feature::Role roleOf(const Feature &f)
+{
+    using Role = Feature::Role;
+    const QString &c = f.objectClass;
+    if (isCoverage(f))
+        return Role::Coverage;
+    if (c == u"LNDARE")
+        return isArea(f) ? Role::Land : Role::Other;
+    if (c == u"DEPARE" || c == u"DRGARE")
+        return isArea(f) ? Role::Depth : Role::Other;
+    if (isHazard(c))
+        return Role::Hazard;
+    if (isRestriction(c))
+        return Role::Restriction;
+    if (c == u"SEAARE")
+        return isArea(f) && !f.name().isEmpty() ? Role::SeaArea : Role::Other;
+    if (c == u"SOUNDG")
+        return Role::Sounding;
+    return Role::Other;
 }
 
 QString className(const QString &objectClass)
@@ -424,23 +450,24 @@ PointReport reportAt(const std::vector<Cell> &cells, double lon, double lat, dou
             return {&none, false};
         return {&g.buckets[std::size_t(y * g.nx + x)], false};
     };
-    const auto forEach = [&](const Cell &c, const auto &visit) { // visit(feature, its index)
+    const auto forEach = [&](const Cell &c, const auto &visit) { // visit(feature, its role, its index)
         const auto [list, all] = candidates(c);
-        if (all) {
+        if (all) { // not indexed: roles worked out here
             for (std::size_t i = 0; i < c.features.size(); ++i)
-                visit(c.features[i], i);
+                visit(c.features[i], roleOf(c.features[i]), i);
         } else {
             for (const quint32 i : *list)
-                visit(c.features[i], std::size_t(i));
+                visit(c.features[i], c.features[i].role, std::size_t(i));
         }
     };
+    using Role = Feature::Role;
     // The cell with the best usage band (the largest scale) whose coverage holds the point.
     const Cell *best = nullptr;
     for (const Cell &c : cells) {
         if (best && c.usageBand <= best->usageBand)
             continue;
         bool covers = false;
-        forEach(c, [&](const Feature &f, std::size_t) { covers = covers || (isCoverage(f) && inside(f, lon, lat)); });
+        forEach(c, [&](const Feature &f, Role role, std::size_t) { covers = covers || (role == Role::Coverage && inside(f, lon, lat)); });
         if (covers)
             best = &c;
     }
@@ -450,30 +477,42 @@ PointReport reportAt(const std::vector<Cell> &cells, double lon, double lat, dou
     report.cell = best->name;
     const Plane plane(lon, lat);
     double placeSize = 0;
-    forEach(*best, [&](const Feature &f, std::size_t index) {
-        if (!near(f))
+    forEach(*best, [&](const Feature &f, Role role, std::size_t index) {
+        if (role == Role::Other || role == Role::Coverage || (role == Role::Sounding && !soundings) || !near(f))
             return;
-        const QString &c = f.objectClass;
-        if (c == u"LNDARE") {
-            report.land = report.land || (isArea(f) && inside(f, lon, lat));
-        } else if ((c == u"DEPARE" || c == u"DRGARE") && isArea(f) && inside(f, lon, lat)) {
-            const auto lo = f.number(u"DRVAL1"_s), hi = f.number(u"DRVAL2"_s);
-            if (lo && (!report.depthMin || *lo < *report.depthMin)) {
-                report.depthMin = lo;
-                report.depthMax = hi;
-                report.depthArea = f.name();
+        switch (role) {
+        case Role::Land:
+            report.land = report.land || inside(f, lon, lat);
+            break;
+        case Role::Depth:
+            if (inside(f, lon, lat)) {
+                const bool indexed = f.west <= f.east;
+                const auto lo = indexed ? f.shallowest : f.number(u"DRVAL1"_s), hi = indexed ? f.deepest : f.number(u"DRVAL2"_s);
+                if (lo && (!report.depthMin || *lo < *report.depthMin)) {
+                    report.depthMin = lo;
+                    report.depthMax = hi;
+                    report.depthArea = f.name();
+                }
             }
-        } else if (isHazard(c) || isRestriction(c)) {
+            break;
+        case Role::Hazard:
+        case Role::Restriction: {
             const double d = isArea(f) && inside(f, lon, lat) ? 0 : distanceTo(plane, f);
-            if (d <= (isArea(f) && isRestriction(c) ? 0 : radius))
-                (isHazard(c) ? report.hazards : report.restrictions).push_back({c, f.name(), f.number(u"VALSOU"_s), d, index});
-        } else if (c == u"SEAARE" && isArea(f) && !f.name().isEmpty() && inside(f, lon, lat)) {
-            const double size = areaOf(f);
-            if (report.place.isEmpty() || size < placeSize) {
-                report.place = f.name();
-                placeSize = size;
+            if (d <= (isArea(f) && role == Role::Restriction ? 0 : radius))
+                (role == Role::Hazard ? report.hazards : report.restrictions)
+                    .push_back({f.objectClass, f.name(), role == Role::Hazard ? (f.west <= f.east ? f.shallowest : f.number(u"VALSOU"_s)) : std::nullopt, d, index});
+            break;
+        }
+        case Role::SeaArea:
+            if (inside(f, lon, lat)) {
+                const double size = f.west <= f.east ? f.size : areaOf(f);
+                if (report.place.isEmpty() || size < placeSize) {
+                    report.place = f.name();
+                    placeSize = size;
+                }
             }
-        } else if (c == u"SOUNDG" && soundings) {
+            break;
+        case Role::Sounding:
             for (const auto &part : f.parts)
                 for (const Vertex &v : part) {
                     const auto [x, y] = plane.xy(v);
@@ -483,6 +522,10 @@ PointReport reportAt(const std::vector<Cell> &cells, double lon, double lat, dou
                         report.soundingDistance = d;
                     }
                 }
+            break;
+        case Role::Other:
+        case Role::Coverage:
+            break;
         }
     });
     return report;

@@ -27,6 +27,10 @@ struct Vertex
 struct Feature
 {
     enum class Geometry : quint8 { Point = 1, Line = 2, Area = 3 };
+    // What reportAt() asks of it, worked out from its class by Cell::index()
+    // (a plan check asks every feature near each of ten thousand points:
+    // comparing class names there was most of its time).
+    enum class Role : quint8 { Other, Coverage, Land, Depth, Hazard, Restriction, SeaArea, Sounding };
 
     QString objectClass; // S-57 acronym: DEPARE, LNDARE, WRECKS, ...
     Geometry geometry = Geometry::Point;
@@ -41,13 +45,22 @@ struct Feature
 
     // Its bounds, once Cell::index() has run (west > east until then: every point is tested).
     double west = 1, south = 0, east = 0, north = 0;
+    Role role = Role::Other; // Cell::index()
+    double size = 0;          // a named sea area's, in square degrees (Cell::index())
+    // Depth areas' DRVAL1 and DRVAL2, hazards' VALSOU as `shallowest` (Cell::index()).
+    std::optional<double> shallowest, deepest;
     // An area's edges by band of latitude (Cell::index()), so that a point is
     // tested against the few edges at its latitude, not all of a coastline's.
     struct Edges
     {
         double south = 0, step = 1;
-        // Each edge as (ring, i): from the ring's vertex i to the one before it.
-        std::vector<std::vector<std::pair<quint32, quint32>>> bands;
+        // Each edge's ends (longitude, latitude), copied: the few a point is
+        // tested against lie together in memory.
+        struct Edge
+        {
+            double lon0, lat0, lon1, lat1;
+        };
+        std::vector<std::vector<Edge>> bands;
     };
     std::shared_ptr<const Edges> edges;
 };
@@ -92,6 +105,7 @@ const QStringList &keptClasses();
 bool isHazard(const QString &objectClass);
 bool isRestriction(const QString &objectClass);
 bool isCoverage(const Feature &feature);
+Feature::Role roleOf(const Feature &feature);
 // An object class in words ("depth area", "wreck"); the acronym when unknown.
 QString className(const QString &objectClass);
 

@@ -62,11 +62,11 @@ QList<PlanProblem> checkAgainstCharts(const mission::PlanGeometry &geometry, con
             const Need needs = *requiredDepth(vehicle, w.zUnits == u"DEPTH" ? w.z : 0, options);
             const double need = needs.metres;
             const QString &because = needs.why;
+            const QString id = g.id + u'\n';
             for (int i = previous ? 1 : 0; i <= steps; ++i) {
                 const double t = double(i) / steps;
                 const double lat = from.lat + t * (w.lat - from.lat), lon = from.lon + t * (w.lon - from.lon);
                 const PointReport r = reportAt(cells, lon, lat, options.hazardRadius, false);
-                const QString id = g.id + u'\n';
                 if (!r.covered) {
                     add(PlanProblem::Severity::Warning, PlanProblem::Kind::ChartCoverage, id + u"coverage"_s, g,
                         u"a leg leaves the charts' coverage: nothing is known of the water there"_s, lon, lat);
