@@ -2,6 +2,7 @@
 // renders it to a PNG (--screenshot) or checks every QML file (--self-test).
 #include "core/DataFiles.h"
 #include "CommandLine.h"
+#include "charts/ChartFiles.h"
 #include "mission/Vehicle.h"
 #include "transport/mavlink/MavlinkTransport.h"
 #include "ComponentPalette.h"
@@ -322,8 +323,11 @@ int main(int argc, char *argv[])
         QDir().mkpath(standard.first());
     const QStringList componentDirectories = commandLine->componentDirectories + standard;
 
+    // Without --charts, the console's own (the chart manager's), if it holds any.
+    const QString charts = !commandLine->charts.isEmpty() || neptus::charts::libraryCells().isEmpty()
+        ? commandLine->charts : neptus::charts::defaultLibraryDir();
     // The charted water under each vehicle, with its alarm (the maps draw the same charts).
-    session.chartWatch()->setCharts(commandLine->charts);
+    session.chartWatch()->setCharts(charts);
     session.treeModel()->setDisplayRate(commandLine->displayRate);
     QQmlApplicationEngine engine;
     engine.setInitialProperties({
@@ -337,7 +341,7 @@ int main(int argc, char *argv[])
         {QStringLiteral("editing"), commandLine->edit},
         {QStringLiteral("initialSelection"), commandLine->select},
         {QStringLiteral("mainSystem"), mainSystem},
-        {QStringLiteral("charts"), commandLine->charts},
+        {QStringLiteral("charts"), charts},
         {QStringLiteral("safetyDepth"), commandLine->safetyDepth},
         {QStringLiteral("width"), commandLine->windowSize.width()},
         {QStringLiteral("height"), commandLine->windowSize.height()},

@@ -5,6 +5,10 @@
 //   neptus-chart depth PATH LON LAT [--radius M] [--json]
 //                                                 land, or the charted depth, and any hazard
 //                                                 or restricted area at that point
+//   neptus-chart add SOURCE [--library DIR]       copy cells (a cell, an exchange set, a folder
+//                                                 or a zip) into the console's charts
+//   neptus-chart remove CELL [--library DIR]      take a cell out of them
+//   neptus-chart list [--library DIR] [--json]    what they hold (info of the charts folder)
 //
 // PATH is a cell (.000), an exchange set or a folder of cells; --cache DIR
 // says where read cells are kept (default ~/.cache/neptus-qt/charts).
@@ -12,6 +16,7 @@
 
 #include <QCommandLineParser>
 #include <QCoreApplication>
+#include <QDir>
 #include <QLocale>
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -74,14 +79,15 @@ int main(int argc, char **argv)
     QCoreApplication app(argc, argv);
     QCoreApplication::setApplicationName(u"neptus-chart"_s);
     QCommandLineParser parser;
-    parser.setApplicationDescription(u"Nautical charts (S-57 ENC): info PATH | depth PATH LON LAT"_s);
+    parser.setApplicationDescription(u"Nautical charts (S-57 ENC): info PATH | depth PATH LON LAT | add SOURCE | remove CELL | list"_s);
     parser.addHelpOption();
-    parser.addPositionalArgument(u"command"_s, u"info or depth"_s);
+    parser.addPositionalArgument(u"command"_s, u"info, depth, add, remove or list"_s);
     parser.addPositionalArgument(u"path"_s, u"a cell (.000), an exchange set or a folder of cells"_s);
     const QCommandLineOption json(u"json"_s, u"Answer in JSON."_s);
     const QCommandLineOption radius(u"radius"_s, u"depth: metres around the point to look for point hazards (25)."_s, u"metres"_s, u"25"_s);
     const QCommandLineOption cache(u"cache"_s, u"Where read cells are kept."_s, u"dir"_s);
-    parser.addOptions({json, radius, cache});
+    const QCommandLineOption library(u"library"_s, u"The console's charts folder (default ~/.local/share/neptus-qt/charts)."_s, u"dir"_s);
+    parser.addOptions({json, radius, cache, library});
     // Western longitudes and southern latitudes are numbers, not options: kept from the parser's eyes.
     const QString marker = u"\u0001"_s;
     // (A number after an option that takes a value is that value: left as it is, for its own check.)
@@ -89,7 +95,7 @@ int main(int argc, char **argv)
     for (qsizetype i = 1; i < arguments.size(); ++i) {
         bool number = false;
         (void)arguments[i].toDouble(&number);
-        const bool optionValue = arguments[i - 1] == u"--radius" || arguments[i - 1] == u"--cache";
+        const bool optionValue = arguments[i - 1] == u"--radius" || arguments[i - 1] == u"--cache" || arguments[i - 1] == u"--library";
         if (number && arguments[i].startsWith(u'-') && !optionValue)
             arguments[i].prepend(marker);
     }
@@ -98,8 +104,30 @@ int main(int argc, char **argv)
     for (QString &a : args)
         if (a.startsWith(marker))
             a.remove(0, 1);
+    const QString libraryDir = parser.isSet(library) ? parser.value(library) : defaultLibraryDir();
+    if (args.size() == 2 && args[0] == u"add") {
+        const auto added = addToLibrary(args[1], libraryDir);
+        if (!added)
+            return fail(added.error());
+        std::printf("added %s to %s\n", qPrintable(added->join(u", "_s)), qPrintable(QDir(libraryDir).absolutePath()));
+        return 0;
+    }
+    if (args.size() == 2 && args[0] == u"remove") {
+        if (const auto removed = removeFromLibrary(args[1], libraryDir); !removed)
+            return fail(removed.error());
+        std::printf("removed %s from %s\n", qPrintable(args[1]), qPrintable(QDir(libraryDir).absolutePath()));
+        return 0;
+    }
+    if (args.size() == 1 && args[0] == u"list") {
+        if (libraryCells(libraryDir).isEmpty()) { // not an error: a console with no charts of its own yet
+            std::printf(parser.isSet(json) ? "{\"cells\": []}\n" : "%s holds no charts (neptus-chart add SOURCE)\n",
+                        qPrintable(QDir(libraryDir).absolutePath()));
+            return 0;
+        }
+        args = {u"info"_s, libraryDir};
+    }
     if (args.size() < 2 || (args[0] != u"info" && args[0] != u"depth"))
-        return fail(u"usage: neptus-chart info PATH | depth PATH LON LAT (--help)"_s);
+        return fail(u"usage: neptus-chart info PATH | depth PATH LON LAT | add SOURCE | remove CELL | list (--help)"_s);
     LoadOptions options;
     options.cacheDir = parser.value(cache);
     // Progress on standard error: reading a large exchange set takes a while the first time.

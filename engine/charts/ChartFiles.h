@@ -49,4 +49,23 @@ std::expected<std::vector<Cell>, QString> loadCells(const QString &path, const L
 // worker thread. Thread-safe.
 std::expected<std::shared_ptr<const std::vector<Cell>>, QString> sharedCells(const QString &path);
 
+// The console's own charts (the chart manager): cells copied, with their
+// updates, into one folder, a folder per cell, so that a console on a boat
+// needs nothing else once they are added (no stick left in, no internet).
+// $XDG_DATA_HOME/neptus-qt/charts (~/.local/share/…) unless given.
+QString defaultLibraryDir();
+// Adds the cells of a cell file (its updates beside it come too), an
+// exchange set (its folder or its CATALOG.031), a folder of cells, or a zip
+// of any of those (unpacked by
+// libarchive; only cell files are taken, and no name may leave the folder).
+// A cell already there is replaced whole (a new edition, or more updates).
+// Returns the names of the cells added ("US4MD81M"); an error names the
+// source, or the zip entry, that was wrong; a cell whose copy failed is left
+// as it was held.
+std::expected<QStringList, QString> addToLibrary(const QString &source, const QString &libraryDir = {});
+// Takes a cell out of the library by name.
+std::expected<void, QString> removeFromLibrary(const QString &cellName, const QString &libraryDir = {});
+// The cells the library holds, by name, sorted.
+QStringList libraryCells(const QString &libraryDir = {});
+
 } // namespace neptus::charts

@@ -41,6 +41,9 @@ Rectangle {
     property string charts: Session.charts
     property real safetyDepth: Session.safetyDepth
     readonly property ChartItem chartLayer: chart
+    // The console's own charts (the chart manager's), and whether its panel is open.
+    readonly property alias chartLibrary: chartLibrary
+    property alias chartManagerShown: chartPanel.visible
     // What the charts say where the operator last tapped ({} when nothing).
     property var chartTapped: ({})
     // Drawing a plan of the console's mission on the map (the ✎ button).
@@ -544,6 +547,170 @@ Rectangle {
         }
     }
 
+    // The chart manager: the console's own charts (a folder of its own, so a
+    // console on a boat needs nothing else once they are added), from a cell,
+    // an exchange set or a zip; each listed with its edition, update and scale,
+    // its coverage drawn on the map; removed with a second tap.
+    ChartLibrary {
+        id: chartLibrary
+        // The maps and the vehicles' depth watch read the folder again (and use it, if they used none).
+        onChanged: {
+            const path = chartLibrary.cells.length > 0 ? chartLibrary.folder : ""
+            Session.charts = ""
+            if (Session.session)
+                Session.session.charts.charts = ""
+            Qt.callLater(() => {
+                Session.charts = path
+                if (Session.session)
+                    Session.session.charts.charts = path
+            })
+        }
+    }
+    Repeater {
+        model: chartPanel.visible ? chart.cellInfo.filter(c => c.valid) : []
+        Shape {
+            id: coverage
+            required property var modelData
+            objectName: "chartCoverage:" + modelData.name
+            anchors.fill: parent
+            z: 4
+            readonly property var corners: [root.screenPoint(modelData.north, modelData.west), root.screenPoint(modelData.north, modelData.east),
+                                             root.screenPoint(modelData.south, modelData.east), root.screenPoint(modelData.south, modelData.west)]
+            ShapePath {
+                strokeColor: Theme.accent
+                strokeWidth: Theme.mm(0.6)
+                strokeStyle: ShapePath.DashLine
+                fillColor: "transparent"
+                PathPolyline { path: coverage.corners.concat([coverage.corners[0]]) }
+            }
+            Text {
+                x: coverage.corners[0].x + Theme.spacing
+                y: coverage.corners[0].y + Theme.spacing
+                text: coverage.modelData.name
+                color: Theme.accent
+                style: Text.Outline
+                styleColor: Theme.background
+                font.pixelSize: Theme.smallFontPixelSize
+                font.bold: true
+            }
+        }
+    }
+    Rectangle {
+        id: chartPanel
+        objectName: "chartManager"
+        visible: false
+        z: 5
+        anchors { left: parent.left; bottom: parent.bottom; margins: Theme.spacing }
+        width: Math.min(parent.width - Theme.mm(16), Theme.mm(95))
+        height: Math.min(chartColumn.implicitHeight + Theme.spacing * 2, parent.height - Theme.spacing * 2)
+        color: Qt.alpha(Theme.surface, 0.95)
+        border.color: Theme.border
+        radius: Theme.radius
+        // The cell a first tap on its Remove asked about (a second removes it).
+        property string removing: ""
+        onVisibleChanged: removing = ""
+        MouseArea { anchors.fill: parent; acceptedButtons: Qt.AllButtons; onWheel: (w) => w.accepted = true } // touches stay on the panel
+        Flickable {
+            anchors { fill: parent; margins: Theme.spacing }
+            contentHeight: chartColumn.implicitHeight
+            clip: true
+            Column {
+                id: chartColumn
+                width: parent.width
+                spacing: Theme.spacing / 2
+                Text {
+                    width: parent.width
+                    text: qsTr("The console's charts, in %1").arg(chartLibrary.folder)
+                    color: Theme.text
+                    font.pixelSize: Theme.smallFontPixelSize
+                    font.bold: true
+                    wrapMode: Text.WrapAnywhere
+                }
+                Text {
+                    visible: chartLibrary.cells.length === 0
+                    width: parent.width
+                    wrapMode: Text.Wrap
+                    text: qsTr("None yet. Add a cell (.000, its updates come with it), an exchange set (its CATALOG.031) or a zip of them: they are copied here, and this console needs nothing else.")
+                    color: Theme.textDim
+                    font.pixelSize: Theme.smallFontPixelSize
+                }
+                Repeater {
+                    model: chartLibrary.cells
+                    Rectangle {
+                        id: cellRow
+                        required property string modelData
+                        readonly property var info: chart.cellInfo.find(c => c.name === modelData)
+                        objectName: "chartCell:" + modelData
+                        width: chartColumn.width
+                        height: Math.max(Theme.touchTarget, cellText.implicitHeight + Theme.spacing)
+                        color: "transparent"
+                        border.color: Theme.border
+                        radius: Theme.radius
+                        Text {
+                            id: cellText
+                            anchors { left: parent.left; right: removeButton.left; verticalCenter: parent.verticalCenter; margins: Theme.spacing / 2 }
+                            wrapMode: Text.Wrap
+                            color: Theme.text
+                            font.pixelSize: Theme.smallFontPixelSize
+                            text: "<b>" + cellRow.modelData + "</b> " + (cellRow.info
+                                  ? qsTr("edition %1, update %2 (%3) · 1:%4").arg(cellRow.info.edition).arg(cellRow.info.update)
+                                        .arg(cellRow.info.issued).arg(cellRow.info.scale.toLocaleString(Qt.locale("en_GB"), "f", 0))
+                                  : chart.loading ? qsTr("reading…") : qsTr("not read"))
+                        }
+                        TouchButton {
+                            id: removeButton
+                            objectName: "removeChart:" + cellRow.modelData
+                            anchors { right: parent.right; verticalCenter: parent.verticalCenter; rightMargin: Theme.spacing / 2 }
+                            text: chartPanel.removing === cellRow.modelData ? qsTr("Remove it") : qsTr("Remove")
+                            highlighted: chartPanel.removing === cellRow.modelData
+                            enabled: !chartLibrary.busy
+                            toolTip: qsTr("Take this cell out of the console's charts (a second tap)")
+                            onClicked: {
+                                if (chartPanel.removing !== cellRow.modelData) {
+                                    chartPanel.removing = cellRow.modelData
+                                    return
+                                }
+                                chartPanel.removing = ""
+                                chartLibrary.remove(cellRow.modelData)
+                            }
+                        }
+                    }
+                }
+                Text {
+                    objectName: "chartLibraryMessage"
+                    visible: text !== ""
+                    width: parent.width
+                    wrapMode: Text.Wrap
+                    text: chartLibrary.busy ? qsTr("copying the cells…")
+                          : chart.loading ? qsTr("reading the charts…")
+                          : chartLibrary.message
+                    color: chartLibrary.failed && !chartLibrary.busy ? Theme.levelColor(4) : Theme.textDim
+                    font.pixelSize: Theme.smallFontPixelSize
+                }
+                Row {
+                    spacing: Theme.spacing
+                    TouchButton {
+                        objectName: "addCharts"
+                        text: qsTr("Add charts…")
+                        enabled: !chartLibrary.busy
+                        onClicked: chartChooser.open("")
+                    }
+                    TouchButton { text: qsTr("Close"); onClicked: chartPanel.visible = false }
+                }
+            }
+        }
+    }
+    FileChooser {
+        id: chartChooser
+        objectName: "chartChooser"
+        anchors.centerIn: parent
+        width: Math.min(parent.width - Theme.spacing * 2, Theme.mm(160))
+        height: parent.height - Theme.spacing * 2
+        title: qsTr("Add charts: a cell, an exchange set's CATALOG.031, or a zip")
+        nameFilters: ["*.000", "CATALOG.031", "*.zip", "*.ZIP"]
+        onChosen: path => chartLibrary.add(path)
+    }
+
     // Own ship: where the console is (a GPS on the boat), drawn as a ship's
     // circle-and-cross along its course; each system's label says its range
     // and bearing from it.
@@ -635,6 +802,8 @@ Rectangle {
         canDownload: root.tileServer !== ""
         downloading: downloadPanel.visible
         planning: root.editingPlan
+        managingCharts: chartPanel.visible
+        onChartsToggled: chartPanel.visible = !chartPanel.visible
         onPlanToggled: root.editingPlan = !root.editingPlan
         onDownloadToggled: downloadPanel.visible = !downloadPanel.visible
         onZoomIn: root.zoomBy(1)

@@ -1,7 +1,7 @@
 import QtQuick
 
 // A map's buttons, at its right edge for the thumb: zoom, follow, show every
-// system, measure, north up, plan, tiles. They say what was asked; the map
+// system, measure, north up, plan, tiles, charts. They say what was asked; the map
 // does it. Top to bottom, in a second column leftwards when the map is too
 // short for one (give it a height).
 Flow {
@@ -16,6 +16,7 @@ Flow {
     property bool canDownload: false  // a tile server to prepare tiles from
     property bool downloading: false
     property bool planning: false
+    property bool managingCharts: false
 
     signal zoomIn()
     signal zoomOut()
@@ -25,6 +26,7 @@ Flow {
     signal turnNorthUp()
     signal downloadToggled()
     signal planToggled()
+    signal chartsToggled()
 
     spacing: Theme.spacing
 
@@ -67,5 +69,12 @@ Flow {
         toolTip: qsTr("Prepare tiles of this view for going offline")
         highlighted: controls.downloading
         onClicked: controls.downloadToggled()
+    }
+    TouchButton {
+        objectName: "chartsButton"
+        text: "⚓"
+        toolTip: qsTr("Nautical charts: add, see and remove the console's own")
+        highlighted: controls.managingCharts
+        onClicked: controls.chartsToggled()
     }
 }

@@ -2,6 +2,8 @@
 
 #include "charts/ChartFiles.h"
 
+#include <QFileInfo>
+
 #include <QSGGeometryNode>
 #include <QSGTransformNode>
 #include <QtConcurrent/QtConcurrentRun>
@@ -203,6 +205,20 @@ QStringList ChartItem::cells() const
         for (const Cell &c : *m_read->cells)
             names << u"%1 (edition %2, update %3)"_s.arg(c.name).arg(c.edition).arg(c.update);
     return names;
+}
+
+QVariantList ChartItem::cellInfo() const
+{
+    QVariantList list;
+    if (m_read && m_read->cells)
+        for (const Cell &c : *m_read->cells) {
+            const Cell::Bounds b = c.bounds();
+            const QString issued = c.issued.size() == 8 ? u"%1-%2-%3"_s.arg(c.issued.left(4), c.issued.mid(4, 2), c.issued.mid(6, 2)) : c.issued;
+            list.append(QVariantMap{{u"name"_s, QFileInfo(c.name).completeBaseName()}, {u"edition"_s, c.edition}, {u"update"_s, c.update},
+                                    {u"issued"_s, issued}, {u"usageBand"_s, c.usageBand}, {u"scale"_s, c.scale}, {u"valid"_s, b.valid},
+                                    {u"west"_s, b.west}, {u"south"_s, b.south}, {u"east"_s, b.east}, {u"north"_s, b.north}});
+        }
+    return list;
 }
 
 void ChartItem::finished()

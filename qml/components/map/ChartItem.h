@@ -45,6 +45,9 @@ class ChartItem : public MapOverlayItem
     Q_PROPERTY(bool loading READ loading NOTIFY loadingChanged)
     Q_PROPERTY(QString error READ error NOTIFY loaded)
     Q_PROPERTY(QStringList cells READ cells NOTIFY loaded)
+    // Each cell read: name, edition, update, issued (YYYY-MM-DD), usageBand,
+    // scale, and its coverage's west, south, east, north.
+    Q_PROPERTY(QVariantList cellInfo READ cellInfo NOTIFY loaded)
     Q_PROPERTY(double safetyContour READ safetyContour NOTIFY banded)
     // Where the charts read are: {west, south, east, north} (degrees), {} when none.
     Q_PROPERTY(QVariantMap bounds READ bounds NOTIFY loaded)
@@ -66,6 +69,7 @@ public:
     bool loading() const { return m_loading; }
     QString error() const { return m_error; }
     QStringList cells() const;
+    QVariantList cellInfo() const;
     double safetyContour() const { return m_safetyContour; }
     QVariantMap bounds() const;
 

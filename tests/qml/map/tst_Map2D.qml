@@ -200,6 +200,50 @@ TestCase {
         compare(chart.cells.length, 1, "the charts asked for last are the ones read")
     }
 
+    // The chart manager: cells copied into the console's own charts folder,
+    // listed with edition, update, issue date and scale, their coverage drawn
+    // on the map, the maps reading the folder; removed with a second tap.
+    function test_3d_theChartManagerAddsListsAndRemovesCells() {
+        const cell = Fixtures.sharedDir() + "/fixtures/charts/US4MD81M/US4MD81M.000"
+        if (!Fixtures.fileExists(cell))
+            skip("no chart fixture at " + cell + ": ../shared is absent")
+        const m = createTemporaryObject(tiledMap, test, { x: 0, y: 0, width: 800, height: 600, initialZoomLevel: 9, showCoastline: false })
+        m.centreAt(38.7, -76.3)
+        const library = m.chartLibrary
+        library.folder = Fixtures.makeTempDir() + "/charts"
+        compare(library.cells.length, 0)
+        mouseClick(findChild(m, "chartsButton"))
+        const panel = findChild(m, "chartManager")
+        verify(panel.visible)
+        library.add(cell) // (what the chart chooser hands over: FileChooser's own test covers choosing)
+        verify(library.busy)
+        tryCompare(library, "busy", false, 30000)
+        compare(library.failed, false, library.message)
+        compare(library.cells.join(","), "US4MD81M", library.message)
+        tryCompare(Session, "charts", library.folder, 5000, "the maps read the console's charts")
+        const chart = findChild(m, "chart")
+        tryVerify(() => !chart.loading && chart.cells.length === 1, 30000, chart.error)
+        const row = findChild(m, "chartCell:US4MD81M")
+        verify(row)
+        tryVerify(() => row.children[0].text.indexOf("edition 31, update 3 (2025-09-23) · 1:80,000") >= 0, 5000, row.children[0].text)
+        verify(findChild(m, "chartCoverage:US4MD81M"), "its coverage drawn on the map")
+        // Removing: a first tap asks, a second removes; the maps have no charts then.
+        mouseClick(findChild(m, "removeChart:US4MD81M"))
+        compare(library.cells.length, 1, "a first tap only asks")
+        mouseClick(findChild(m, "removeChart:US4MD81M"))
+        compare(library.cells.length, 0)
+        compare(library.message, "removed US4MD81M")
+        tryCompare(Session, "charts", "", 5000)
+        tryVerify(() => chart.cells.length === 0, 5000)
+        // A zip that is not one: the error names it.
+        const bad = library.folder + "/../not.zip"
+        Fixtures.writeFile(bad, "not a zip")
+        library.add(bad)
+        tryCompare(library, "busy", false, 10000)
+        verify(library.failed && library.message.indexOf("not.zip") >= 0, library.message)
+        verify(findChild(m, "chartLibraryMessage").visible)
+    }
+
     function test_3b_withoutTilesTheCoastlineShowsLand() {
         const m = createTemporaryObject(tiledMap, test, { x: 0, y: 0, width: 800, height: 600, initialZoomLevel: 13 })
         m.centreAt(41.15, -8.66)
