@@ -429,6 +429,7 @@ Rectangle {
             required property real lon
             at: root.screenPoint(marker.lat, marker.lon)
             fromOwnShip: root.fromOwnShip(marker.lat, marker.lon)
+            charted: root.chartedUnder(marker.system, marker.lat, marker.lon)
             mapBearing: root.bearing
             tint: root.colorOf(marker.system)
             shape: root.markShape(marker.kind)
@@ -753,6 +754,10 @@ Rectangle {
             font.pixelSize: Theme.smallFontPixelSize
             font.bold: true
         }
+    }
+    // What the charts say under a system (its position as arguments: a binding follows it), {} without charts.
+    function chartedUnder(system: string, lat: real, lon: real): var {
+        return root.charts !== "" && Session.session && !Session.session.charts.loading ? Session.session.charts.under(system) : ({})
     }
     // Range and bearing from own ship ("1.24 km 045°"), for a system's label.
     function fromOwnShip(lat: real, lon: real): string {

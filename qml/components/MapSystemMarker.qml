@@ -16,6 +16,14 @@ Item {
     property color tint: Theme.accent
     // Range and bearing from own ship ("1.24 km 045°"), "" without a GPS.
     property string fromOwnShip: ""
+    // What the charts say under it (ChartWatch.under: covered, land, min, max, need, safe), {} without charts.
+    property var charted: ({})
+    readonly property string chartedText: charted.covered === undefined ? ""
+        : !charted.covered ? qsTr("off the charts")
+        : charted.land ? qsTr("on land on the chart")
+        : charted.min === undefined ? qsTr("no depth charted")
+        : qsTr("charted %1–%2 m").arg(charted.min.toFixed(1)).arg((charted.max !== undefined ? charted.max : charted.min).toFixed(1))
+          + (charted.safe ? "" : qsTr(" < %1 m needed").arg(charted.need.toFixed(1)))
     // The mark as points in a unit square, nose up.
     property var shape: [[0.5, 0], [0.85, 1], [0.5, 0.75], [0.15, 1], [0.5, 0]]
 
@@ -54,6 +62,7 @@ Item {
         }
     }
     Rectangle {
+        id: labelBox
         anchors { top: mark.bottom; horizontalCenter: parent.horizontalCenter; topMargin: Theme.mm(0.5) }
         width: lamp.width + label.implicitWidth + Theme.spacing * 3
         height: label.implicitHeight + 2
@@ -70,6 +79,24 @@ Item {
                   + (!marker.stale ? "" : positionVariable.present ? qsTr(" (stale)") : qsTr(" (announced position)"))
                   + (marker.fromOwnShip ? " · " + marker.fromOwnShip : "")
             color: Theme.text
+            font.pixelSize: Theme.smallFontPixelSize
+            font.bold: marker.selected
+        }
+    }
+    // The charted water under it, under the label: in the alarm's colour when it is not enough.
+    Rectangle {
+        objectName: "charted"
+        visible: marker.chartedText !== ""
+        anchors { top: labelBox.bottom; horizontalCenter: parent.horizontalCenter; topMargin: Theme.mm(0.3) }
+        width: chartedLabel.implicitWidth + Theme.spacing * 2
+        height: chartedLabel.implicitHeight + 2
+        radius: Theme.radius
+        color: marker.charted.safe === false ? Theme.levelColor(4) : Qt.alpha(Theme.surface, 0.85)
+        Text {
+            id: chartedLabel
+            anchors.centerIn: parent
+            text: marker.chartedText
+            color: marker.charted.safe === false ? Theme.background : Theme.text
             font.pixelSize: Theme.smallFontPixelSize
             font.bold: marker.selected
         }

@@ -244,6 +244,34 @@ TestCase {
         verify(findChild(m, "chartLibraryMessage").visible)
     }
 
+    // Under each vehicle's marker, what the charts say there: the depth range
+    // when it is enough for it, in the alarm's colour when it is not.
+    // (Last: the boat it adds stays on the map, far from the others.)
+    function test_zz_theChartedDepthUnderEachVehicle() {
+        const path = Fixtures.sharedDir() + "/fixtures/charts/US4MD81M"
+        if (!Fixtures.fileExists(path + "/US4MD81M.000"))
+            skip("no chart fixture at " + path + ": ../shared is absent")
+        const m = createTemporaryObject(tiledMap, test, { x: 0, y: 0, width: 800, height: 600, initialZoomLevel: 12.3, showCoastline: false })
+        m.centreAt(38.8503, -76.30)
+        Fixtures.nameSystem(73, "caravela-sim") // a boat of 0.3 m draft (vehicles/caravela-sim.xml)
+        Session.charts = path
+        Session.session.charts.charts = path
+        tryVerify(() => !Session.session.charts.loading, 30000)
+        compare(Session.session.charts.error, "")
+        Fixtures.ingest("EstimatedState", 73, { lat: rad(38.8503), lon: rad(-76.312942), psi: 0 })
+        let marker = null
+        tryVerify(() => (marker = findChild(m, "marker:caravela-sim")) !== null, 3000)
+        const label = findChild(marker, "charted")
+        tryVerify(() => label.visible && marker.chartedText === "charted 10.9–18.2 m", 3000, marker.chartedText)
+        Fixtures.ingest("EstimatedState", 73, { lat: rad(38.8503), lon: rad(-76.28), psi: 0 }) // the shoal east of it
+        tryVerify(() => marker.chartedText.indexOf("charted 0.0–1.8 m < ") === 0 && marker.chartedText.indexOf("m needed") > 0, 3000,
+                  marker.chartedText)
+        verify(Qt.colorEqual(label.color, Theme.levelColor(4)), "in the alarm's colour")
+        Session.charts = ""
+        Session.session.charts.charts = ""
+        tryVerify(() => !label.visible, 3000, "no charts, nothing said")
+    }
+
     function test_3b_withoutTilesTheCoastlineShowsLand() {
         const m = createTemporaryObject(tiledMap, test, { x: 0, y: 0, width: 800, height: 600, initialZoomLevel: 13 })
         m.centreAt(41.15, -8.66)
