@@ -79,9 +79,9 @@ void TrailGeometry::rebuild()
         m_pointCount = count;
         emit pointCountChanged();
     }
-    // A new or restarted trail shows at once; growth at most every 250 ms,
+    // A new or restarted trail shows at once; growth at most every second,
     // in a frame the tracks' update makes anyway (a timer of its own would
-    // draw frames of their own, 4 a second for each trail). The timer only
+    // draw frames of their own). The timer only
     // catches the last fixes of a trail that stopped growing.
     if (restart || !m_sinceUpload.isValid() || m_sinceUpload.elapsed() >= uploadEvery)
         upload();

@@ -11,10 +11,11 @@
 
 // One system's trail as a 3D line strip, in metres from the tracks' home:
 // x east, y up, z south (Qt Quick 3D's axes). New fixes are converted as
-// they come, but the whole strip goes to the GPU at most 4 times a second
-// (a long trail is megabytes; the vehicle itself moves every frame), with
-// an update of the tracks: the last growth of a trail that stopped within
-// 500 ms.
+// they come, but the whole strip goes to the GPU at most once a second (a
+// long trail is megabytes, and each upload costs Qt Quick 3D a frame of its
+// own: 4 a second per trail were a fifth of the console's CPU; the vehicle
+// itself moves every frame), with an update of the tracks; the last growth
+// of a trail that stopped within 2 s.
 class TrailGeometry : public QQuick3DGeometry
 {
     Q_OBJECT
@@ -22,7 +23,7 @@ class TrailGeometry : public QQuick3DGeometry
     Q_PROPERTY(neptus::geo::Tracks *tracks READ tracks WRITE setTracks NOTIFY tracksChanged)
     Q_PROPERTY(QString system READ system WRITE setSystem NOTIFY systemChanged)
     Q_PROPERTY(int pointCount READ pointCount NOTIFY pointCountChanged)
-    // Points in the geometry handed to the GPU (catches up within 500 ms).
+    // Points in the geometry handed to the GPU (catches up within 2 s).
     Q_PROPERTY(int uploadedCount READ uploadedCount NOTIFY uploaded)
 
 public:
@@ -45,7 +46,7 @@ private:
     void rebuild();
     void upload();
 
-    static constexpr int uploadEvery = 250; // ms
+    static constexpr int uploadEvery = 1000; // ms
     QTimer m_uploadTimer;
     QElapsedTimer m_sinceUpload;
     QPointer<neptus::geo::Tracks> m_tracks;

@@ -1,0 +1,164 @@
+// What the console costs a tablet's battery (issue "speed where users feel
+// it"): the console program with the default console at 1280x800 on the
+// software renderer (llvmpipe, as here under Xvfb) while N simulated
+// vehicles stream their state at 10 Hz over IMC, as tools/run shows it. After
+// 10 s to settle it counts, over SECONDS, the CPU the process used (per
+// thread: the rasteriser threads, the render thread, the GUI thread, the
+// rest) and the frames it drew (the scene graph's own timing log).
+//
+//   bench_power [SECONDS=30] [--vehicles N=2] [--display-rate HZ] [--idle]
+//
+// --idle: no vehicles at all (goal: no frames).
+#include "Paths.h"
+
+#include <QCoreApplication>
+#include <QDir>
+#include <QElapsedTimer>
+#include <QFile>
+#include <QProcess>
+#include <QTemporaryDir>
+#include <QTest>
+
+#include <unistd.h>
+
+#include <cstdio>
+#include <algorithm>
+#include <map>
+#include <memory>
+#include <vector>
+
+using namespace Qt::StringLiterals;
+
+namespace {
+
+constexpr quint16 firstVehiclePort = 17600, consolePort = 17690;
+
+// CPU clock ticks of each of a process's threads, by thread name.
+std::map<QString, qint64> ticksByThread(qint64 pid)
+{
+    std::map<QString, qint64> ticks;
+    for (const QString &task : QDir(u"/proc/%1/task"_s.arg(pid)).entryList(QDir::Dirs | QDir::NoDotAndDotDot)) {
+        QFile stat(u"/proc/%1/task/%2/stat"_s.arg(pid).arg(task));
+        if (!stat.open(QIODevice::ReadOnly))
+            continue;
+        const QByteArray text = stat.readAll();
+        const qsizetype open = text.indexOf('('), close = text.lastIndexOf(')');
+        const QString name = QString::fromUtf8(text.mid(open + 1, close - open - 1));
+        const QList<QByteArray> fields = text.mid(close + 2).split(' ');
+        ticks[name] += fields.value(11).toLongLong() + fields.value(12).toLongLong();
+    }
+    return ticks;
+}
+
+QString groupOf(const QString &thread)
+{
+    if (thread.startsWith(u"llvmpipe"))
+        return u"rasteriser threads (llvmpipe)"_s;
+    if (thread == u"QSGRenderThread")
+        return u"render thread"_s;
+    if (thread == u"neptus")
+        return u"GUI thread"_s;
+    return u"the rest (links, recorder, scripts, …)"_s;
+}
+
+} // namespace
+
+int main(int argc, char **argv)
+{
+    QCoreApplication app(argc, argv);
+    const QStringList args = app.arguments();
+    const bool idle = args.contains(u"--idle"_s);
+    const auto option = [&](const QString &name, const QString &fallback) {
+        const qsizetype i = args.indexOf(name);
+        return i > 0 && i + 1 < args.size() ? args[i + 1] : fallback;
+    };
+    const int vehicles = idle ? 0 : option(u"--vehicles"_s, u"2"_s).toInt();
+    const QString displayRate = option(u"--display-rate"_s, QString());
+    double seconds = 30;
+    for (qsizetype i = 1; i < args.size(); ++i)
+        if (bool ok = false; !args[i - 1].startsWith(u"--") && (args[i].toDouble(&ok), ok))
+            seconds = args[i].toDouble();
+    const QString bin = QCoreApplication::applicationDirPath();
+
+    // Each vehicle in a process of its own, as tools/run starts them: their
+    // messages come out of step, as real vehicles' do.
+    QTemporaryDir dir;
+    std::vector<std::unique_ptr<QProcess>> sims;
+    for (int i = 0; i < vehicles; ++i) {
+        QFile scenario(dir.filePath(u"vehicle-%1.json"_s.arg(i)));
+        const QString text = u"{\"vehicles\": [{\"id\": %1, \"name\": \"power-%2\", \"kind\": \"%3\", \"port\": %4, "
+                             u"\"lat\": 41.1855, \"lon\": -8.7060, \"phase\": %5}]}"_s
+                                 .arg(90 + i).arg(i + 1).arg(i % 2 ? u"asv"_s : u"auv"_s).arg(firstVehiclePort + i).arg(i * 360 / vehicles);
+        if (!scenario.open(QIODevice::WriteOnly) || scenario.write(text.toUtf8()) < 0)
+            return 1;
+        scenario.close();
+        auto &sim = sims.emplace_back(std::make_unique<QProcess>());
+        sim->setProcessChannelMode(QProcess::ForwardedErrorChannel);
+        sim->start(bin + u"/neptus-sim"_s, {u"--scenario"_s, scenario.fileName()});
+        QTest::qWait(37); // out of step with the others (10 Hz: 100 ms a step)
+    }
+    QStringList arguments{u"--console"_s, neptus::test::sourcePath(u"qml/consoles/Default.qml"_s), u"--size"_s, u"1280x800"_s,
+                          u"--no-record"_s, u"--dds-domain"_s, u"-1"_s, u"--imc-port"_s, QString::number(consolePort),
+                          u"--imc-discovery"_s, u"off"_s, u"--log-dir"_s, dir.filePath(u"logs"_s)};
+    for (int i = 0; i < vehicles; ++i)
+        arguments << u"--imc-peer"_s << u"127.0.0.1:%1"_s.arg(firstVehiclePort + i);
+    if (vehicles > 0)
+        arguments << u"--system"_s << u"power-1"_s;
+    if (!displayRate.isEmpty())
+        arguments << u"--display-rate"_s << displayRate;
+    QProcess console;
+    QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+    env.insert(u"QT_LOGGING_RULES"_s, u"qt.scenegraph.time.renderloop=true"_s); // a line for every frame drawn
+    console.setProcessEnvironment(env);
+    qint64 frames = 0;
+    bool counting = false;
+    QObject::connect(&console, &QProcess::readyReadStandardError, [&] {
+        const QByteArray text = console.readAllStandardError();
+        if (counting)
+            frames += text.count("frame rendered in");
+    });
+    console.start(bin + u"/neptus"_s, arguments);
+    if (!console.waitForStarted(5000) || std::any_of(sims.begin(), sims.end(), [](auto &p) { return !p->waitForStarted(5000); })) {
+        std::fprintf(stderr, "bench_power: cannot start neptus or neptus-sim\n");
+        return 1;
+    }
+    QTest::qWait(10000); // started, vehicles heard, first frames drawn
+    const auto before = ticksByThread(console.processId());
+    counting = true;
+    QElapsedTimer clock;
+    clock.start();
+    QTest::qWait(int(seconds * 1000));
+    const auto after = ticksByThread(console.processId());
+    const double elapsed = clock.elapsed() / 1000.0;
+    counting = false;
+    QFile status(u"/proc/%1/status"_s.arg(console.processId()));
+    status.open(QIODevice::ReadOnly);
+    QByteArray rss;
+    for (const QByteArray &line : status.readAll().split('\n'))
+        if (line.startsWith("VmRSS"))
+            rss = line;
+
+    std::map<QString, double> groups;
+    double total = 0;
+    const double tick = double(sysconf(_SC_CLK_TCK));
+    for (const auto &[thread, t] : after) {
+        const auto was = before.find(thread);
+        const double used = double(t - (was == before.end() ? 0 : was->second)) / tick;
+        groups[groupOf(thread)] += used;
+        total += used;
+    }
+    std::printf("bench_power: the default console at 1280x800 (software OpenGL), %d simulated vehicle%s at 10 Hz over IMC, "
+                "display rate %s, %.0f s\n",
+                vehicles, vehicles == 1 ? "" : "s", displayRate.isEmpty() ? "default" : qPrintable(displayRate), elapsed);
+    std::printf("  CPU: %.1f %% of one core; %.1f frames a second; %s\n", 100 * total / elapsed, double(frames) / elapsed,
+                rss.simplified().constData());
+    for (const auto &[group, used] : groups)
+        std::printf("    %-40s %5.1f %%\n", qPrintable(group), 100 * used / elapsed);
+    console.terminate();
+    console.waitForFinished(5000);
+    for (auto &sim : sims)
+        sim->terminate();
+    for (auto &sim : sims)
+        sim->waitForFinished(5000);
+    return 0;
+}
