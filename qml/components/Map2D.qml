@@ -327,6 +327,35 @@ Rectangle {
         restrictedColor: Theme.chart.restricted
         lineWidth: Math.max(1, Theme.mm(0.2))
     }
+    // Soundings, in metres (one decimal under 31 m, as charts write them):
+    // shallower than the safety depth in the text's colour, deeper dimmed.
+    // Chosen again once the view settles; meanwhile those shown move with it.
+    property var soundingView: null
+    readonly property var viewKey: [centerLatitude, centerLongitude, zoomLevel, bearing, width, height]
+    onViewKeyChanged: soundingTimer.restart()
+    Timer {
+        id: soundingTimer
+        interval: 150
+        onTriggered: root.soundingView = Object.assign(root.viewBounds(root.centerLatitude, root.centerLongitude, root.zoomLevel,
+                                                                       root.bearing, root.width, root.height),
+                                                       { metresPerPixel: root.metresPerPixel })
+    }
+    Repeater {
+        model: root.charts !== "" && !chart.loading && root.soundingView
+               ? chart.soundingsIn(root.soundingView.west, root.soundingView.south, root.soundingView.east, root.soundingView.north,
+                                   root.soundingView.metresPerPixel) : []
+        Text {
+            required property var modelData
+            readonly property point at: root.screenPoint(modelData.lat, modelData.lon)
+            objectName: "sounding"
+            x: at.x - width / 2
+            y: at.y - height / 2
+            text: modelData.depth < 31 ? modelData.depth.toFixed(1) : Math.round(modelData.depth)
+            color: modelData.depth < root.safetyDepth ? Theme.text : Theme.textDim
+            font.pixelSize: Math.round(Theme.smallFontPixelSize * 0.85)
+            font.bold: modelData.depth < root.safetyDepth
+        }
+    }
 
     // Lat/lon grid: the map itself when there are no tiles (and no
     // north/east grid, which takes its place once home is known).

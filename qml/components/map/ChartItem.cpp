@@ -9,6 +9,7 @@
 #include <QtConcurrent/QtConcurrentRun>
 
 #include <cmath>
+#include <optional>
 #include <numbers>
 
 using namespace neptus::charts;
@@ -341,6 +342,39 @@ QSGNode *ChartItem::updatePaintNode(QSGNode *old, UpdatePaintNodeData *)
     setNodePoints(aidNode, aids, m_lineWidth * 1.5);
     setNodeColor(aidNode, m_aidColor);
     return root;
+}
+
+QVariantList ChartItem::soundingsIn(double west, double south, double east, double north, double metresPerPixel, int most) const
+{
+    if (!m_read || !m_read->cells || !(east > west && north > south) || most <= 0)
+        return {};
+    const double scale = metresPerPixel / 0.00028; // OGC's standard 0.28 mm rendering pixel, as the symbols
+    const int side = std::max(1, int(std::sqrt(double(most))));
+    struct Kept { double lat, lon, depth; };
+    std::vector<std::optional<Kept>> places(std::size_t(side * side));
+    for (const Cell &cell : *m_read->cells)
+        for (const Feature &f : cell.features) {
+            if (f.role != Feature::Role::Sounding || f.west > east || f.east < west || f.south > north || f.north < south)
+                continue;
+            const auto scamin = f.number(u"SCAMIN"_s);
+            if (scamin ? scale > *scamin : metresPerPixel > 20)
+                continue;
+            for (const auto &part : f.parts)
+                for (const Vertex &v : part) {
+                    if (v.lon < west || v.lon > east || v.lat < south || v.lat > north)
+                        continue;
+                    const int x = std::min(side - 1, int((v.lon - west) / (east - west) * side));
+                    const int y = std::min(side - 1, int((v.lat - south) / (north - south) * side));
+                    auto &place = places[std::size_t(y * side + x)];
+                    if (!place || v.z < place->depth)
+                        place = Kept{v.lat, v.lon, v.z};
+                }
+        }
+    QVariantList list;
+    for (const auto &place : places)
+        if (place)
+            list.append(QVariantMap{{u"lat"_s, place->lat}, {u"lon"_s, place->lon}, {u"depth"_s, place->depth}});
+    return list;
 }
 
 QVariantMap ChartItem::featureAt(double lat, double lon, double radius) const

@@ -77,6 +77,11 @@ public:
     // features there (within `radius` metres of a point one), each as
     // {what, name, depth, text}; and the charted depth {land, min, max, place}.
     Q_INVOKABLE QVariantMap featureAt(double lat, double lon, double radius = 30) const;
+    // Soundings to write on the map in a view ({lat, lon, depth}): those its
+    // SCAMIN allows at `metresPerPixel` (without one, from 20 m a pixel in),
+    // at most one in each of about `most` equal places of the view, the
+    // shallowest there (what a skipper looks for).
+    Q_INVOKABLE QVariantList soundingsIn(double west, double south, double east, double north, double metresPerPixel, int most = 150) const;
 
 signals:
     void pathChanged();

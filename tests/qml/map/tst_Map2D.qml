@@ -168,6 +168,15 @@ TestCase {
         tryVerify(() => Qt.colorEqual(colourAt(38.8503, -76.37), Theme.land), 10000, "Kent Island is land")
         tryVerify(() => Qt.colorEqual(colourAt(38.8503, -76.312942), Theme.chart.deep), 10000, "Eastern Bay, 10.9-18.2 m: deep")
         tryVerify(() => Qt.colorEqual(colourAt(38.8503, -76.28), Theme.chart.shallow), 10000, "the 0-1.8 m shoal stands out")
+        // Soundings written where the view is close enough, the shallowest of each place; none zoomed out.
+        const soundings = () => { const list = []; for (const c of m.children) if (c.objectName === "sounding") list.push(c); return list }
+        tryVerify(() => soundings().length > 20, 5000, soundings().length + " soundings")
+        verify(soundings().some(t => t.text === "12.4"), "the 12.4 m sounding 177 m from the middle of Eastern Bay")
+        verify(soundings().every(t => /^\d+(\.\d)?$/.test(t.text)), soundings().map(t => t.text).join(" "))
+        m.zoomLevel = 9
+        tryVerify(() => soundings().length === 0, 5000, soundings().length + " soundings zoomed out")
+        m.zoomLevel = 12.3
+        tryVerify(() => soundings().length > 20, 5000)
         // A deeper safety depth: Eastern Bay's 10.9 m is now shallower than the safety contour (18.2 m).
         m.safetyDepth = 12
         compare(chart.safetyContour, 18.2)
