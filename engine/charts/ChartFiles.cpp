@@ -160,7 +160,8 @@ std::expected<std::vector<Cell>, QString> loadCells(const QString &path, const L
     return out;
 }
 
-std::expected<std::shared_ptr<const std::vector<Cell>>, QString> sharedCells(const QString &path)
+std::expected<std::shared_ptr<const std::vector<Cell>>, QString> sharedCells(
+    const QString &path, const std::function<void(int, int, const QString &)> &progress)
 {
     static QMutex mutex;
     static QHash<QString, std::weak_ptr<const std::vector<Cell>>> open;
@@ -175,7 +176,7 @@ std::expected<std::shared_ptr<const std::vector<Cell>>, QString> sharedCells(con
             key += u'\n' + cacheKey(cell);
     if (auto cells = open.value(key).lock())
         return cells;
-    auto loaded = loadCells(absolute);
+    auto loaded = loadCells(absolute, {}, progress);
     if (!loaded)
         return std::unexpected(loaded.error());
     auto cells = std::make_shared<const std::vector<Cell>>(std::move(*loaded));

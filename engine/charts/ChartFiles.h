@@ -46,8 +46,10 @@ std::expected<std::vector<Cell>, QString> loadCells(const QString &path, const L
 // The cells of `path` for everyone in this process who asks (the maps, the
 // vehicles' depth watch, the plan editor): read once (loadCells, with the
 // default options) and shared while anyone holds them. Blocking: call it on a
-// worker thread. Thread-safe.
-std::expected<std::shared_ptr<const std::vector<Cell>>, QString> sharedCells(const QString &path);
+// worker thread. Thread-safe. `progress` as loadCells's, for the asker that
+// reads them (one who waits for another's read hears nothing).
+std::expected<std::shared_ptr<const std::vector<Cell>>, QString> sharedCells(
+    const QString &path, const std::function<void(int, int, const QString &)> &progress = {});
 
 // The console's own charts (the chart manager): cells copied, with their
 // updates, into one folder, a folder per cell, so that a console on a boat

@@ -712,7 +712,7 @@ Rectangle {
                     width: parent.width
                     wrapMode: Text.Wrap
                     text: chartLibrary.busy ? qsTr("copying the cells…")
-                          : chart.loading ? qsTr("reading the charts…")
+                          : chart.loading ? qsTr("reading the charts…") + (chart.progress !== "" ? " " + chart.progress : "")
                           : chartLibrary.message
                     color: chartLibrary.failed && !chartLibrary.busy ? Theme.levelColor(4) : Theme.textDim
                     font.pixelSize: Theme.smallFontPixelSize
@@ -869,7 +869,7 @@ Rectangle {
                  : coastline.resolution !== "" ? qsTr("coastline (GSHHG, %1 resolution)").arg(coastline.resolution)
                  : qsTr("coastline loading…"))
               + (root.charts === "" ? ""
-                 : chart.loading ? qsTr(" · reading the charts…")
+                 : chart.loading ? qsTr(" · reading the charts…") + (chart.progress !== "" ? " " + chart.progress : "")
                  : chart.error !== "" ? " · " + chart.error
                  : qsTr(" · chart %1 · safety contour %2 m · not for navigation · tap to see it").arg(chart.cells.join(", ")).arg(chart.safetyContour))
         color: Theme.textDim

@@ -3,6 +3,7 @@
 #include "charts/ChartFiles.h"
 
 #include <QFileInfo>
+#include <QPointer>
 
 #include <QSGGeometryNode>
 #include <QSGTransformNode>
@@ -163,8 +164,19 @@ void ChartItem::load(const QString &path)
     }
     auto job = std::make_shared<Loaded>();
     job->path = path;
-    m_watcher.setFuture(QtConcurrent::run([job] {
-        auto cells = sharedCells(job->path); // the same cells as the vehicles' depth watch and the plan editor
+    m_progress.clear();
+    const QPointer<ChartItem> self(this);
+    const auto progress = [self, path](int done, int total, const QString &cell) {
+        const QString text = u"%1, %2 of %3"_s.arg(QFileInfo(cell).fileName()).arg(done + 1).arg(total);
+        QMetaObject::invokeMethod(self, [self, path, text] {
+            if (self && self->m_loading && self->m_path == path) {
+                self->m_progress = text;
+                emit self->loadingChanged();
+            }
+        }, Qt::QueuedConnection);
+    };
+    m_watcher.setFuture(QtConcurrent::run([job, progress] {
+        auto cells = sharedCells(job->path, progress); // the same cells as the vehicles' depth watch and the plan editor
         if (cells) {
             job->cells = *cells;
             job->convert();

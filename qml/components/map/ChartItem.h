@@ -43,6 +43,8 @@ class ChartItem : public MapOverlayItem
     Q_PROPERTY(QVariant deep READ deep NOTIFY banded)
     Q_PROPERTY(QMatrix4x4 areaTransform READ areaTransform NOTIFY placed)
     Q_PROPERTY(bool loading READ loading NOTIFY loadingChanged)
+    // While loading: the cell being read and how far ("US4MD81M.000, 1 of 3"), "" else.
+    Q_PROPERTY(QString progress READ progress NOTIFY loadingChanged)
     Q_PROPERTY(QString error READ error NOTIFY loaded)
     Q_PROPERTY(QStringList cells READ cells NOTIFY loaded)
     // Each cell read: name, edition, update, issued (YYYY-MM-DD), usageBand,
@@ -67,6 +69,7 @@ public:
     QVariant deep() const { return QVariant::fromValue(m_bands[3]); }
     QMatrix4x4 areaTransform() const { return m_transform; }
     bool loading() const { return m_loading; }
+    QString progress() const { return m_loading ? m_progress : QString(); }
     QString error() const { return m_error; }
     QStringList cells() const;
     QVariantList cellInfo() const;
@@ -117,5 +120,6 @@ private:
     QString m_error;
     QMatrix4x4 m_transform;
     QFutureWatcher<std::shared_ptr<Loaded>> m_watcher;
+    QString m_progress;
     bool m_loading = false; // from asking the worker until its answer is taken (isRunning() is false while queued)
 };

@@ -2,6 +2,7 @@
 // cells copied with their updates into a folder of their own, from a cell, a
 // folder or a zip, replaced whole, removed; bad zips refused by name.
 #include "charts/ChartFiles.h"
+#include "Fixtures.h"
 
 #include <QDir>
 #include <QFile>
@@ -130,4 +131,32 @@ TEST(ChartLibrary, ABadZipIsRefusedByNameAndTheLibraryStaysAsItWas)
     EXPECT_TRUE(added.error().contains(u"holds no S-57 cell"_s)) << added.error().toStdString();
 
     EXPECT_EQ(QDir(library).entryList(QDir::AllEntries | QDir::NoDotAndDotDot | QDir::Hidden), QStringList{u"XX4KEEP"_s});
+}
+
+// The maps, the depth watch and the plan editor share the cells of a folder
+// (sharedCells): read once, with progress for the one who reads them, and
+// read again when the folder's cells change (the chart manager added or
+// replaced one), even while the old ones are still held.
+TEST(ChartLibrary, SharedCellsAreReadAgainWhenTheFolderChanges)
+{
+    NEPTUS_REQUIRE_FIXTURE(fixture, "charts/US4MD81M/US4MD81M.000");
+    QTemporaryDir dir;
+    const QString library = dir.filePath(u"library"_s);
+    ASSERT_TRUE(addToLibrary(fixture, library));
+    QStringList said;
+    const auto progress = [&](int done, int total, const QString &cell) { said << u"%1/%2 %3"_s.arg(done).arg(total).arg(QFileInfo(cell).fileName()); };
+    const auto first = sharedCells(library, progress);
+    ASSERT_TRUE(first) << first.error().toStdString();
+    EXPECT_EQ(said, QStringList{u"0/1 US4MD81M.000"_s}) << "which cell is being read, and how far";
+    said.clear();
+    const auto same = sharedCells(library, progress);
+    ASSERT_TRUE(same);
+    EXPECT_EQ(same->get(), first->get()) << "read once, shared";
+    EXPECT_TRUE(said.isEmpty());
+
+    ASSERT_TRUE(addToLibrary(fixture, library)); // the cell again (as a new edition would be): new files
+    const auto changed = sharedCells(library, progress);
+    ASSERT_TRUE(changed);
+    EXPECT_NE(changed->get(), first->get()) << "the folder's cells changed: read again";
+    EXPECT_EQ(said.size(), 1);
 }
