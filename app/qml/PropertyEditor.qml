@@ -410,7 +410,32 @@ Rectangle {
         property string componentId: ""
         spacing: Theme.spacing / 2
         readonly property string saved: editor ? (editor.text, editor.value(componentId, "alarmScript") || "") : ""
-        readonly property var check: Session.scripts && area.text.trim() !== "" ? Session.scripts.check(area.text) : ({ ok: true })
+        // The script checked once the typing pauses, on the script thread; until
+        // its answer comes for this very text it cannot be applied.
+        property var check: ({ ok: true })
+        property string checkedText: ""
+        readonly property bool checkCurrent: checkedText === area.text
+        Timer {
+            id: checkTimer
+            interval: 250
+            onTriggered: {
+                if (Session.scripts && area.text.trim() !== "") {
+                    Session.scripts.checkLater(area.text)
+                } else {
+                    scriptEditor.check = ({ ok: true })
+                    scriptEditor.checkedText = area.text
+                }
+            }
+        }
+        Connections {
+            target: Session.scripts
+            function onScriptChecked(source, result) {
+                if (source === area.text) {
+                    scriptEditor.check = result
+                    scriptEditor.checkedText = source
+                }
+            }
+        }
         onSavedChanged: area.text = saved
         // Dragged by the handle under the text: a longer script gets more room.
         property real extraHeight: 0
@@ -487,6 +512,7 @@ Rectangle {
                 placeholderText: "return sys.lauv.Voltage.value < 22 ? Warning(\"low battery\") : Normal"
                 placeholderTextColor: Theme.textDim
                 background: null
+                onTextChanged: checkTimer.restart()
             }
         }
         // Drag to give the script more (or less) room.
@@ -521,7 +547,7 @@ Rectangle {
         TouchButton {
             objectName: "applyScript"
             text: qsTr("Apply script")
-            enabled: scriptEditor.check.ok && area.text !== scriptEditor.saved
+            enabled: scriptEditor.checkCurrent && scriptEditor.check.ok && area.text !== scriptEditor.saved
             onClicked: scriptEditor.editor.setValue(scriptEditor.componentId, "alarmScript", area.text)
         }
         // Or without writing: "battery below 20 → Warning" written for you.

@@ -316,6 +316,16 @@ QVariantMap ScriptHost::check(const QString &source) const
     return checked(ScriptRunner::check(source));
 }
 
+void ScriptHost::checkLater(const QString &source)
+{
+    QMetaObject::invokeMethod(m_worker, [this, source] {
+        const QVariantMap result = checked(ScriptRunner::check(source));
+        ++m_checksMade;
+        // (Posted to this host's thread; gone with the host if it is destroyed first.)
+        QMetaObject::invokeMethod(this, [this, source, result] { emit scriptChecked(source, result); }, Qt::QueuedConnection);
+    }, Qt::QueuedConnection);
+}
+
 QVariantMap ScriptHost::testRun(const QString &source)
 {
     if (const auto error = ScriptRunner::check(source))

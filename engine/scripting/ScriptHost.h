@@ -65,16 +65,27 @@ public:
 
     // For a script editor: {ok, line, column, message}.
     Q_INVOKABLE QVariantMap check(const QString &source) const;
+    // The same, as it is typed: made on the script thread (the QML compiler
+    // that reports the line builds an engine each time: not on the GUI
+    // thread), answered by scriptChecked(source, {ok, line, column, message}).
+    Q_INVOKABLE void checkLater(const QString &source);
+    // How many checks checkLater() has made (tests: once per pause in the typing).
+    Q_INVOKABLE int checksMade() const { return m_checksMade.load(); }
+
     // Runs `source` once against the current tree without keeping it, and
     // waits for it (at most twice the time limit and a grace period):
     // {ok, level, levelName, message, reads: [paths]}.
     Q_INVOKABLE QVariantMap testRun(const QString &source);
+
+signals:
+    void scriptChecked(const QString &source, const QVariantMap &result);
 
 private:
     QThread m_thread;
     ScriptWorker *m_worker;
     std::atomic<int> m_limitMs{50};
     std::atomic<int> m_memoryMb{512};
+    std::atomic<int> m_checksMade{0};
     friend class ScriptWorker;
 };
 

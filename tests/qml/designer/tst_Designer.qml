@@ -440,6 +440,15 @@ TestCase {
         waitForRendering(shell.designer)
         const area = findChild(shell.designer, "scriptArea")
         verify(area)
+        // Typed a key at a time, it is checked once the typing pauses, off the GUI thread (the
+        // check builds a QML engine: per keystroke it made typing lag), and cannot be applied
+        // until the check of what is there has come back.
+        const before = Session.scripts.checksMade()
+        for (const key of "return Normal")
+            area.insert(area.length, key)
+        verify(!findChild(shell.designer, "applyScript").enabled, "not checked yet")
+        tryVerify(() => findChild(shell.designer, "applyScript").enabled, 3000, "checked, and it compiles")
+        compare(Session.scripts.checksMade() - before, 1, "one check for 13 keys")
         // A mistake on the second line: shown there, and it cannot be applied.
         area.text = "const v = boat.Voltage.value\nif (v < 22 return Warning(\"low battery\")\nreturn Normal"
         tryVerify(() => findChild(shell.designer, "scriptError").visible)
