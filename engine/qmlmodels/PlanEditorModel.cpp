@@ -219,10 +219,20 @@ void PlanEditorModel::changed()
         }
     }
     m_maneuverList = maneuverList();
-    m_problemList = problemList();
+    const auto same = [](const PlanProblem &a, const PlanProblem &b) {
+        return a.severity == b.severity && a.kind == b.kind && a.maneuver == b.maneuver && a.message == b.message && a.lat == b.lat
+            && a.lon == b.lon;
+    };
+    const bool problemsMoved = !std::equal(m_problems.begin(), m_problems.end(), m_shownProblems.begin(), m_shownProblems.end(), same);
+    if (problemsMoved) {
+        m_shownProblems = m_problems;
+        m_problemList = problemList();
+    }
     if (m_desk)
         m_desk->shareEdits(m_mission); // only what changed goes out
     emit edited();
+    if (problemsMoved)
+        emit problemsChanged();
 }
 
 QVariantList PlanEditorModel::maneuverList() const

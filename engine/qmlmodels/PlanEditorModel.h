@@ -44,7 +44,9 @@ class PlanEditorModel : public QObject
     // order: [{lat, lon, maneuver, distance (m along the plan), z, zUnits}].
     Q_PROPERTY(QVariantList path READ path NOTIFY edited)
     // [{severity: "error" | "warning", kind, maneuver, message, lat, lon (NaN: none)}], worst first.
-    Q_PROPERTY(QVariantList problems READ problems NOTIFY edited)
+    // Said changed only when it is (a list views rebuild whole: an edit that
+    // left the problems as they were recreated the rows under the finger).
+    Q_PROPERTY(QVariantList problems READ problems NOTIFY problemsChanged)
     // The plan as a graph, laid out in columns by the number of steps from
     // the start (maneuvers the start does not reach after those):
     // [{id, type, index, column, row, start, severity}] and
@@ -201,6 +203,7 @@ signals:
     void exportChanged();
     void terrainChanged();
     void edited();
+    void problemsChanged();
     void errorChanged();
 
 private:
@@ -227,6 +230,7 @@ private:
     bool m_modified = false;
     neptus::mission::PlanGeometry m_geometry;
     QList<neptus::mission::PlanProblem> m_problems;
+    QList<neptus::mission::PlanProblem> m_shownProblems; // what m_problemList says
     // Conditions checked so far: compiling one takes milliseconds, a plan is checked on every edit.
     mutable QHash<QString, std::optional<neptus::scripting::CompileError>> m_conditionChecks;
     const std::optional<neptus::scripting::CompileError> &conditionProblem(const QString &condition) const;

@@ -141,8 +141,15 @@ TEST(PlanEditor, AParameterOutOfRangeIsAProblem)
         if (p.toMap().value(u"name"_s) == u"z"_s)
             shown = p.toMap().value(u"value"_s) == u"500"_s && !p.toMap().value(u"problem"_s).toString().isEmpty();
     EXPECT_TRUE(shown) << "the form marks the field";
-    EXPECT_TRUE(editor.undo());
+    // The problems list is said changed only when it is: views rebuild it whole.
+    QSignalSpy problems(&editor, &PlanEditorModel::problemsChanged);
+    EXPECT_TRUE(editor.setParameter(u"go"_s, u"speed"_s, u"1.2"_s));
+    EXPECT_EQ(problems.count(), 0) << "an edit that leaves the problems as they were";
+    EXPECT_TRUE(editor.undo()); // the speed
+    EXPECT_EQ(problems.count(), 0);
+    EXPECT_TRUE(editor.undo()); // the depth
     EXPECT_EQ(editor.errorCount(), 0);
+    EXPECT_EQ(problems.count(), 1) << "its problem gone";
 }
 
 TEST(PlanEditor, RemovingAManeuverJoinsItsNeighbours)
