@@ -325,6 +325,7 @@ Rectangle {
         hazardColor: Theme.chart.hazard
         aidColor: Theme.chart.aid
         restrictedColor: Theme.chart.restricted
+        fairwayColor: Theme.chart.contour
         lineWidth: Math.max(1, Theme.mm(0.2))
     }
     // Soundings, in metres (one decimal under 31 m, as charts write them):

@@ -62,7 +62,7 @@ struct ChartItem::Loaded
         std::vector<QPointF> lines;  // pairs of end points
     };
     std::vector<Contour> contours;
-    std::vector<QPointF> coast, restricted; // pairs of end points
+    std::vector<QPointF> coast, restricted, fairways; // pairs of end points (fairways' edges dashed)
     // Point symbols: hazards (a cross), buoys (a ring), beacons (a triangle), lights (a star), with
     // the largest scale denominator they are shown at (SCAMIN; 0: none said).
     enum class Mark { Hazard, Buoy, Beacon, Light };
@@ -119,6 +119,16 @@ void ChartItem::Loaded::convert()
                 segments(f, coast);
             } else if (isRestriction(k) && area) {
                 segments(f, restricted); // the rings, edge by edge
+            } else if (k == u"FAIRWY" && area) {
+                // Edges dashed, 120 m on and 80 m off (60 and 40 local units: a unit is 2 m).
+                std::vector<QPointF> edges;
+                segments(f, edges);
+                for (std::size_t i = 0; i + 1 < edges.size(); i += 2) {
+                    const QPointF a = edges[i], d = edges[i + 1] - a;
+                    const double length = std::hypot(d.x(), d.y());
+                    for (double at = 0; at < length; at += 100)
+                        fairways.insert(fairways.end(), {a + d * (at / length), a + d * (std::min(length, at + 60) / length)});
+                }
             } else if (isHazard(k) || (f.geometry == Feature::Geometry::Point
                                        && (k.startsWith(u"BOY"_s) || k.startsWith(u"BCN"_s) || k == u"LIGHTS"))) {
                 // (An area or line hazard is marked at its first point.)
@@ -302,7 +312,9 @@ QSGNode *ChartItem::updatePaintNode(QSGNode *old, UpdatePaintNodeData *)
     QSGGeometryNode *coast = flatNode(placed, 1, QSGGeometry::DrawLines);
     QSGGeometryNode *safety = flatNode(placed, 2, QSGGeometry::DrawLines);
     QSGGeometryNode *restricted = flatNode(placed, 3, QSGGeometry::DrawLines);
+    QSGGeometryNode *fairways = flatNode(placed, 4, QSGGeometry::DrawLines);
     if (m_linesChanged) {
+        setNodePoints(fairways, m_read ? m_read->fairways : std::vector<QPointF>{}, m_lineWidth);
         setNodePoints(contours, m_contours, m_lineWidth);
         setNodePoints(coast, m_read ? m_read->coast : std::vector<QPointF>{}, m_lineWidth);
         setNodePoints(safety, m_safety, m_lineWidth * 2.5);
@@ -313,6 +325,7 @@ QSGNode *ChartItem::updatePaintNode(QSGNode *old, UpdatePaintNodeData *)
     setNodeColor(coast, m_coastColor);
     setNodeColor(safety, m_safetyColor);
     setNodeColor(restricted, m_restrictedColor);
+    setNodeColor(fairways, m_fairwayColor);
     // Symbols, the same size at every zoom, only those in view and at scales their SCAMIN allows
     // (the scale for OGC's standard 0.28 mm rendering pixel; without SCAMIN, from zoom 11 in).
     const MapProjection view = projection();

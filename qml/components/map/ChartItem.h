@@ -18,7 +18,8 @@
 // in four bands by their shallowest depth against the safety depth: drying,
 // shallower than it, up to twice it (our choice), deeper), and drawn here: depth contours
 // (the safety contour, the first at or past the safety depth, thicker), the
-// coastline, restricted, caution and military practice areas' edges, and as
+// coastline, restricted, caution and military practice areas' edges,
+// fairways' edges dashed, and as
 // symbols of one size at every zoom hazards (obstructions, wrecks, rocks:
 // crosses), buoys (rings), beacons (triangles) and lights (stars), each only
 // at scales its SCAMIN allows. `featureAt` says what is at a tapped point.
@@ -34,6 +35,7 @@ class ChartItem : public MapOverlayItem
     Q_PROPERTY(QColor hazardColor MEMBER m_hazardColor NOTIFY styleChanged)
     Q_PROPERTY(QColor aidColor MEMBER m_aidColor NOTIFY styleChanged)
     Q_PROPERTY(QColor restrictedColor MEMBER m_restrictedColor NOTIFY styleChanged)
+    Q_PROPERTY(QColor fairwayColor MEMBER m_fairwayColor NOTIFY styleChanged)
     Q_PROPERTY(double lineWidth MEMBER m_lineWidth NOTIFY styleChanged)
     // Closed rings in local units, even-odd, per band; placed by `areaTransform`.
     Q_PROPERTY(QVariant land READ land NOTIFY loaded)
@@ -110,7 +112,7 @@ private:
     double m_safetyDepth = 5;
     double m_safetyContour = 0;
     QColor m_contourColor = Qt::gray, m_safetyColor = Qt::black, m_coastColor = Qt::darkGray, m_hazardColor = Qt::black,
-           m_aidColor = Qt::darkMagenta, m_restrictedColor = Qt::magenta;
+           m_aidColor = Qt::darkMagenta, m_restrictedColor = Qt::magenta, m_fairwayColor = Qt::gray;
     double m_lineWidth = 1;
     // What was read, converted once (Loaded); band() and the paint node take from it.
     std::shared_ptr<const Loaded> m_read;
