@@ -147,6 +147,10 @@ public:
     // waited for the vehicle's reason are told (a timer does it every second
     // while there is something to do).
     void supervise();
+    // The vehicle definitions read when the mission opened (shared with the
+    // console's depth watch, so they are read once).
+    const mission::VehicleCatalog &definitions() const { return m_definitions; }
+
     // Replies come within this or are asked again (tests shorten it).
     void setTimeout(std::chrono::milliseconds timeout) { m_timeout = timeout; }
 

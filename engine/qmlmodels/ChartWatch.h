@@ -43,7 +43,8 @@ public:
     void setCharts(const QString &path);
     bool loading() const { return m_loading; }
     QString error() const { return m_error; }
-    // The vehicles it knows (the shipped and the user's definitions unless set).
+    // The vehicles it knows: the console's plan desk's, for the mission open
+    // (ConsoleSession); read here only when none were given.
     void setVehicles(neptus::mission::VehicleCatalog vehicles) { m_vehicles = std::move(vehicles); }
     // For tests: cells given directly.
     void setCells(std::shared_ptr<const std::vector<neptus::charts::Cell>> cells);

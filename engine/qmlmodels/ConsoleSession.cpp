@@ -66,6 +66,12 @@ ConsoleSession::ConsoleSession(std::shared_ptr<const msg::Schema> schema, const 
         return cells ? charts::checkAgainstCharts(geometry, vehicle, *cells) : QList<mission::PlanProblem>{};
     });
     connect(&m_chartWatch, &ChartWatch::chartsChanged, &m_planDesk, &plans::PlanDesk::recheck);
+    // The depth watch judges vehicles by the definitions the plan desk read for the mission (not a read of its own).
+    // (None before a mission opens: the depth watch reads its own then.)
+    connect(&m_planDesk, &plans::PlanDesk::missionChanged, this, [this] {
+        if (!m_planDesk.definitions().vehicles.isEmpty())
+            m_chartWatch.setVehicles(m_planDesk.definitions());
+    });
     connect(&m_console, &session::Console::sharedMissionReceived, &m_share, &plans::MissionShare::receive);
     m_planDesk.setMavlink({[this] { return m_console.mavlinkSchema(); }, &mavlinkPlanFor,
                            [this](quint16 system, const QString &planId, const QStringList &maneuverOfItem) {
