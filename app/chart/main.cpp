@@ -43,11 +43,6 @@ QString usageBand(int band)
     return band >= 1 && band <= 6 ? names[band - 1] : u"unknown"_s;
 }
 
-QString date(const QString &yyyymmdd)
-{
-    return yyyymmdd.size() == 8 ? u"%1-%2-%3"_s.arg(yyyymmdd.left(4), yyyymmdd.mid(4, 2), yyyymmdd.mid(6, 2)) : yyyymmdd;
-}
-
 QJsonArray found(const std::vector<PointReport::Found> &list)
 {
     QJsonArray out;
@@ -147,14 +142,14 @@ int main(int argc, char **argv)
                 for (auto it = counts.cbegin(); it != counts.cend(); ++it)
                     features.insert(it.key(), it.value());
                 list.append(QJsonObject{{u"name"_s, c.name}, {u"edition"_s, c.edition}, {u"update"_s, c.update},
-                                        {u"issued"_s, date(c.issued)}, {u"usageBand"_s, c.usageBand}, {u"scale"_s, c.scale},
+                                        {u"issued"_s, c.issuedDate()}, {u"usageBand"_s, c.usageBand}, {u"scale"_s, c.scale},
                                         {u"coverage"_s, QJsonObject{{u"west"_s, b.west}, {u"south"_s, b.south}, {u"east"_s, b.east},
                                                                     {u"north"_s, b.north}}},
                                         {u"features"_s, features}});
                 continue;
             }
             std::printf("%s: edition %d, update %d (%s), usage band %d (%s), 1:%s\n", qPrintable(c.name), c.edition, c.update,
-                        qPrintable(date(c.issued)), c.usageBand, qPrintable(usageBand(c.usageBand)),
+                        qPrintable(c.issuedDate()), c.usageBand, qPrintable(usageBand(c.usageBand)),
                         qPrintable(QLocale(QLocale::English).toString(c.scale)));
             if (b.valid)
                 std::printf("  coverage: longitude %.5f … %.5f, latitude %.5f … %.5f\n", b.west, b.east, b.south, b.north);

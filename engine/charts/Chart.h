@@ -71,6 +71,11 @@ struct Cell
     int edition = 0;      // EDTN
     int update = 0;       // UPDN: the last update applied
     QString issued;       // ISDT of the last update (YYYYMMDD)
+    // `issued` as YYYY-MM-DD (as it is when it is not eight digits).
+    QString issuedDate() const
+    {
+        return issued.size() == 8 ? issued.left(4) + u'-' + issued.mid(4, 2) + u'-' + issued.mid(6, 2) : issued;
+    }
     int usageBand = 0;    // INTU: 1 overview … 6 berthing
     int scale = 0;        // DSPM CSCL: compilation scale, 1:scale
     QString comment;      // DSID COMT

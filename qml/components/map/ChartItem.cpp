@@ -106,18 +106,19 @@ void ChartItem::Loaded::convert()
     };
     for (const Cell &c : *cells) {
         for (const Feature &f : c.features) {
+            // (Roles and charted depths as Cell::index() worked them out when the cell was read.)
             const QString &k = f.objectClass;
             const bool area = f.geometry == Feature::Geometry::Area;
-            if (k == u"LNDARE" && area) {
+            if (f.role == Feature::Role::Land) {
                 land += rings(f);
-            } else if ((k == u"DEPARE" || k == u"DRGARE") && area) {
-                depths.push_back({f.number(u"DRVAL1"_s).value_or(0), rings(f)});
+            } else if (f.role == Feature::Role::Depth) {
+                depths.push_back({f.shallowest.value_or(0), rings(f)});
             } else if (k == u"DEPCNT") {
                 contours.push_back({f.number(u"VALDCO"_s), {}});
                 segments(f, contours.back().lines);
             } else if (k == u"COALNE" || k == u"SLCONS") {
                 segments(f, coast);
-            } else if (isRestriction(k) && area) {
+            } else if (f.role == Feature::Role::Restriction && area) {
                 segments(f, restricted); // the rings, edge by edge
             } else if (k == u"FAIRWY" && area) {
                 // Edges dashed, 120 m on and 80 m off (60 and 40 local units: a unit is 2 m).
@@ -129,10 +130,10 @@ void ChartItem::Loaded::convert()
                     for (double at = 0; at < length; at += 100)
                         fairways.insert(fairways.end(), {a + d * (at / length), a + d * (std::min(length, at + 60) / length)});
                 }
-            } else if (isHazard(k) || (f.geometry == Feature::Geometry::Point
+            } else if (f.role == Feature::Role::Hazard || (f.geometry == Feature::Geometry::Point
                                        && (k.startsWith(u"BOY"_s) || k.startsWith(u"BCN"_s) || k == u"LIGHTS"))) {
                 // (An area or line hazard is marked at its first point.)
-                const Mark mark = isHazard(k) ? Mark::Hazard : k.startsWith(u"BOY"_s) ? Mark::Buoy
+                const Mark mark = f.role == Feature::Role::Hazard ? Mark::Hazard : k.startsWith(u"BOY"_s) ? Mark::Buoy
                                   : k.startsWith(u"BCN"_s)   ? Mark::Beacon : Mark::Light;
                 for (const auto &part : f.parts) {
                     if (!part.empty())
@@ -236,9 +237,8 @@ QVariantList ChartItem::cellInfo() const
     if (m_read && m_read->cells)
         for (const Cell &c : *m_read->cells) {
             const Cell::Bounds b = c.bounds();
-            const QString issued = c.issued.size() == 8 ? u"%1-%2-%3"_s.arg(c.issued.left(4), c.issued.mid(4, 2), c.issued.mid(6, 2)) : c.issued;
             list.append(QVariantMap{{u"name"_s, QFileInfo(c.name).completeBaseName()}, {u"edition"_s, c.edition}, {u"update"_s, c.update},
-                                    {u"issued"_s, issued}, {u"usageBand"_s, c.usageBand}, {u"scale"_s, c.scale}, {u"valid"_s, b.valid},
+                                    {u"issued"_s, c.issuedDate()}, {u"usageBand"_s, c.usageBand}, {u"scale"_s, c.scale}, {u"valid"_s, b.valid},
                                     {u"west"_s, b.west}, {u"south"_s, b.south}, {u"east"_s, b.east}, {u"north"_s, b.north}});
         }
     return list;
