@@ -75,7 +75,7 @@ int runMavlink(const QCommandLineParser &parser)
     bool latOk = false, lonOk = false;
     const double lat = latLon.value(0).toDouble(&latOk), lon = latLon.value(1).toDouble(&lonOk);
     if (latLon.size() != 2 || !latOk || !lonOk || std::abs(lat) > 90 || std::abs(lon) > 180)
-        return usage(QStringLiteral("--home must look like 41.1405,-8.6110, not '%1'").arg(parser.value(home)));
+        return usage(QStringLiteral("--home must look like 41.1705,-8.7150, not '%1'").arg(parser.value(home)));
     config.autopilot.home = geo::Geodetic{geo::radians(lat), geo::radians(lon), 0};
     if (!config.tcp)
         config.port = parser.isSet(port) ? quint16(parser.value(port).toUInt()) : 0;
@@ -167,8 +167,10 @@ int main(int argc, char *argv[])
         QStringLiteral("With --mavlink: arming is refused with this reason (\"Gyros inconsistent\"; repeatable)."),
         QStringLiteral("reason"));
     const QCommandLineOption home(QStringLiteral("home"),
-        QStringLiteral("With --mavlink: where it starts, lat,lon in degrees (default 41.1405,-8.6110, the Douro of docs/examples)."),
-        QStringLiteral("lat,lon"), QStringLiteral("41.1405,-8.6110"));
+        QStringLiteral("With --mavlink: where it starts, lat,lon in degrees (default off Leixões, where every simulated "
+                       "vehicle circles and docs/examples/leixoes.xml is)."),
+        QStringLiteral("lat,lon"),
+        QStringLiteral("%1,%2").arg(sim::SimulatedVehicle::Config{}.latDeg).arg(sim::SimulatedVehicle::Config{}.lonDeg));
     const QCommandLineOption mavlinkKey(QStringLiteral("mavlink-key"),
         QStringLiteral("With --mavlink: sign with the key in this file (a passphrase or 64 hex digits, as the console's "
                        "--mavlink-key) and drop, as ArduPilot does on a telemetry link, every frame not signed with it "

@@ -15,7 +15,7 @@ namespace neptus::sim {
 //   {"timeFactor": 1,
 //    "vehicles": [
 //      {"id": "0x1f", "name": "lauv-sim-1", "kind": "auv", "port": 6002,
-//       "lat": 41.1405, "lon": -8.6110, "phase": 0, "transitions": "first",
+//       "lat": 41.1705, "lon": -8.7150, "phase": 0, "transitions": "first",
 //       "faults": ["battery-drain@120", "comms-loss@300:20"]},
 //      {"id": 32, "name": "caravela-sim", "kind": "asv", "port": 6003, "dds": true, "phase": 180}]}
 //

@@ -16,7 +16,7 @@
 namespace neptus::sim {
 
 // A vehicle that is a faithful live data source: it follows a circular track
-// around a reference point (by default in the Douro river by Porto) and says
+// around a reference point (by default in open sea off Leixões, by Porto) and says
 // what a DUNE vehicle says — Announce, Heartbeat, EntityList, EntityState for
 // its navigation, motor and batteries, EstimatedState (IMC's lat/lon
 // reference plus x/y/z offsets, attitude and speeds), Voltage, Rpm and the
@@ -34,8 +34,8 @@ public:
         quint16 id = 0x1f;
         QString name = QStringLiteral("lauv-sim-1");
         Kind kind = Kind::Auv;
-        double latDeg = 41.1405;  // the Douro by Porto
-        double lonDeg = -8.6110;
+        double latDeg = 41.1705;  // off Leixões (docs/examples/leixoes.xml)
+        double lonDeg = -8.7150;
         double radiusM = 150;
         double speedMps = 1.5;
         double phase = 0;         // where on the circle it starts, radians

@@ -20,16 +20,16 @@ namespace {
 
 const char *const missionText = R"X(<?xml version="1.0" encoding="UTF-8"?>
 <mission format="1" id="bench" name="bench">
-  <home lat="41.1405" lon="-8.6110" height="0"/>
+  <home lat="41.1705" lon="-8.7150" height="0"/>
   <vehicle id="v"/>
   <plan id="survey" vehicle="v" start="go">
     <maneuvers>
-      <Goto id="go" lat="41.1412" lon="-8.6110" z="2" z_units="DEPTH" speed="1.5" speed_units="METERS_PS"/>
-      <Loiter id="circle" lat="41.1412" lon="-8.6110" z="2" z_units="DEPTH" speed="1.5" speed_units="METERS_PS"
+      <Goto id="go" lat="41.1712" lon="-8.7150" z="2" z_units="DEPTH" speed="1.5" speed_units="METERS_PS"/>
+      <Loiter id="circle" lat="41.1712" lon="-8.7150" z="2" z_units="DEPTH" speed="1.5" speed_units="METERS_PS"
               duration="120" radius="20" type="CIRCULAR" direction="CLOCKW"/>
-      <Rows id="rows" lat="41.1415" lon="-8.6105" z="3" z_units="DEPTH" speed="1.5" speed_units="METERS_PS"
+      <Rows id="rows" lat="41.1715" lon="-8.7145" z="3" z_units="DEPTH" speed="1.5" speed_units="METERS_PS"
             width="200" length="400" hstep="20" bearing="0"/>
-      <Loiter id="hold" lat="41.1412" lon="-8.6110" z="2" z_units="DEPTH" speed="1.5" speed_units="METERS_PS"
+      <Loiter id="hold" lat="41.1712" lon="-8.7150" z="2" z_units="DEPTH" speed="1.5" speed_units="METERS_PS"
               duration="0" radius="30" type="CIRCULAR" direction="CLOCKW"/>
     </maneuvers>
     <transition from="go" to="circle"/>

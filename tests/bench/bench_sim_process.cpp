@@ -104,9 +104,9 @@ int main(int argc, char **argv)
     for (int i = 0; i < vehicles; ++i) {
         const QString name = u"sim-%1"_s.arg(i);
         auto mission = mission::readMission(QStringLiteral(R"X(<?xml version="1.0" encoding="UTF-8"?>
-<mission format="1" id="b" name="b"><home lat="41.1405" lon="-8.6110" height="0"/><vehicle id="%1"/>
+<mission format="1" id="b" name="b"><home lat="41.1705" lon="-8.7150" height="0"/><vehicle id="%1"/>
 <plan id="circle" vehicle="%1" start="l"><maneuvers>
-<Loiter id="l" lat="41.1410" lon="-8.6110" z="%2" z_units="%3" speed="%4" speed_units="METERS_PS" duration="0" radius="60" type="CIRCULAR" direction="CLOCKW"/>
+<Loiter id="l" lat="41.1710" lon="-8.7150" z="%2" z_units="%3" speed="%4" speed_units="METERS_PS" duration="0" radius="60" type="CIRCULAR" direction="CLOCKW"/>
 </maneuvers></plan></mission>)X").arg(name).arg(i % 3 == 2 ? 100 : 2).arg(i % 3 == 2 ? u"HEIGHT"_s : u"DEPTH"_s).arg(i % 3 == 2 ? 18 : 1.5).toUtf8(), u"b.xml"_s);
         const auto spec = mission::planSpecification(mission->plans.first(), *schema);
         msg::Message start(schema->byAbbrev(u"PlanControl"));

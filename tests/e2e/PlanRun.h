@@ -21,19 +21,19 @@ namespace neptus::test {
 using namespace Qt::StringLiterals;
 using namespace neptus;
 
-// Near the simulator's reference point (the Douro by Porto).
+// Near the simulator's reference point (off Leixões, by Porto).
 inline QByteArray missionFor(const char *vehicle, double z, const char *units)
 {
     return QStringLiteral(R"X(<?xml version="1.0" encoding="UTF-8"?>
 <mission format="1" id="e2e" name="e2e">
-  <home lat="41.1405" lon="-8.6110" height="0"/>
+  <home lat="41.1705" lon="-8.7150" height="0"/>
   <vehicle id="%1"/>
   <plan id="survey" vehicle="%1" start="go">
     <maneuvers>
-      <Goto id="go" lat="41.1412" lon="-8.6110" z="%2" z_units="%3" speed="1.5" speed_units="METERS_PS"/>
-      <Loiter id="circle" lat="41.1412" lon="-8.6110" z="%2" z_units="%3" speed="1.5" speed_units="METERS_PS"
+      <Goto id="go" lat="41.1712" lon="-8.7150" z="%2" z_units="%3" speed="1.5" speed_units="METERS_PS"/>
+      <Loiter id="circle" lat="41.1712" lon="-8.7150" z="%2" z_units="%3" speed="1.5" speed_units="METERS_PS"
               duration="45" radius="15" type="CIRCULAR" direction="CLOCKW"/>
-      <Rows id="rows" lat="41.1415" lon="-8.6105" z="%2" z_units="%3" speed="1.5" speed_units="METERS_PS"
+      <Rows id="rows" lat="41.1715" lon="-8.7145" z="%2" z_units="%3" speed="1.5" speed_units="METERS_PS"
             width="40" length="50" hstep="20" bearing="0"/>
     </maneuvers>
     <transition from="go" to="circle"/>

@@ -72,8 +72,8 @@ TEST(ConsoleProcess, APacketOfATypeItsDefinitionsLackNeitherKillsItNorIsHidden)
 TEST(ConsoleProcess, ARestartedConsoleOpensTheMissionItHadOpen)
 {
     QTemporaryDir dir;
-    const QString mission = dir.filePath(QStringLiteral("douro.xml"));
-    ASSERT_TRUE(QFile::copy(neptus::test::sourcePath(QStringLiteral("docs/examples/douro.xml")), mission));
+    const QString mission = dir.filePath(QStringLiteral("leixoes.xml"));
+    ASSERT_TRUE(QFile::copy(neptus::test::sourcePath(QStringLiteral("docs/examples/leixoes.xml")), mission));
     QProcessEnvironment environment = QProcessEnvironment::systemEnvironment();
     environment.insert(QStringLiteral("XDG_CONFIG_HOME"), dir.filePath(QStringLiteral("config")));
     environment.insert(QStringLiteral("XDG_DATA_HOME"), dir.filePath(QStringLiteral("data")));

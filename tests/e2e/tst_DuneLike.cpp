@@ -25,12 +25,12 @@ namespace {
 
 const QByteArray missionText = R"X(<?xml version="1.0" encoding="UTF-8"?>
 <mission format="1" id="dune" name="DUNE-like">
-  <home lat="41.1405" lon="-8.6110" height="0"/>
+  <home lat="41.1705" lon="-8.7150" height="0"/>
   <vehicle id="lauv-simulator-1"/>
   <plan id="survey" vehicle="lauv-simulator-1" start="go">
     <maneuvers>
-      <Goto id="go" lat="41.1412" lon="-8.6110" z="2" z_units="DEPTH" speed="1.6" speed_units="METERS_PS"/>
-      <StationKeeping id="wait" lat="41.1412" lon="-8.6110" z="0" z_units="DEPTH" speed="1.6" speed_units="METERS_PS"
+      <Goto id="go" lat="41.1712" lon="-8.7150" z="2" z_units="DEPTH" speed="1.6" speed_units="METERS_PS"/>
+      <StationKeeping id="wait" lat="41.1712" lon="-8.7150" z="0" z_units="DEPTH" speed="1.6" speed_units="METERS_PS"
                       duration="20" radius="10"/>
     </maneuvers>
     <transition from="go" to="wait"/>

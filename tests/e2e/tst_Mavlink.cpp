@@ -127,7 +127,7 @@ TEST(Mavlink, OverTcpAPlanIsUploadedReadBackAndTheBoatStopped)
     ASSERT_TRUE(config.has_value());
     ASSERT_TRUE(session.console().startMavlink(*config).has_value());
     auto &desk = session.planDesk();
-    ASSERT_TRUE(desk.openMission(sourcePath(u"docs/examples/douro.xml"_s)).has_value());
+    ASSERT_TRUE(desk.openMission(sourcePath(u"docs/examples/leixoes.xml"_s)).has_value());
     ASSERT_TRUE(QTest::qWaitFor([&] { return desk.isMavlink(u"ardurover-1"_s); }, 10000)) << boat.output.constData();
     const auto log = [&] { return desk.log(u"ardurover-1"_s).join(u'\n'); };
     ASSERT_TRUE(desk.send(u"ardurover-1"_s, u"harbour-loop"_s).has_value());
@@ -168,7 +168,7 @@ TEST(Mavlink, WithSigningOnAnUnsignedImpostorsCommandsAndHeartbeatsChangeNothing
     ASSERT_TRUE(session.console().startMavlink(*config).has_value());
     transport::MavlinkTransport &link = *session.console().mavlinkLinks().front();
     auto &desk = session.planDesk();
-    ASSERT_TRUE(desk.openMission(sourcePath(u"docs/examples/douro.xml"_s)).has_value());
+    ASSERT_TRUE(desk.openMission(sourcePath(u"docs/examples/leixoes.xml"_s)).has_value());
     ASSERT_TRUE(QTest::qWaitFor([&] { return desk.isMavlink(u"ardurover-1"_s); }, 10000)) << boat.output.constData();
     const quint16 id = config->idBase + 1;
     const auto log = [&] { return desk.log(u"ardurover-1"_s).join(u'\n'); };
@@ -218,7 +218,7 @@ TEST(Mavlink, WithSigningOnAnUnsignedImpostorsCommandsAndHeartbeatsChangeNothing
 }
 
 // The paper's team in one console: an AUV on IMC, an ASV on DDS and an
-// ArduRover boat on MAVLink, each given its plan of docs/examples/douro.xml
+// ArduRover boat on MAVLink, each given its plan of docs/examples/leixoes.xml
 // at once; the plan logs, the database and the web page's state show all three.
 TEST(Mavlink, AMixedTeamRunsItsPlansAtOnceAndTheDatabaseAndWebPageShowAllThree)
 {
@@ -249,7 +249,7 @@ TEST(Mavlink, AMixedTeamRunsItsPlansAtOnceAndTheDatabaseAndWebPageShowAllThree)
     mavlink.port = mavlinkPort;
     ASSERT_TRUE(console.startMavlink(mavlink).has_value());
     auto &desk = session.planDesk();
-    ASSERT_TRUE(desk.openMission(sourcePath(u"docs/examples/douro.xml"_s)).has_value());
+    ASSERT_TRUE(desk.openMission(sourcePath(u"docs/examples/leixoes.xml"_s)).has_value());
     ASSERT_TRUE(QTest::qWaitFor([&] { return heard(console.tree(), u"lauv-sim-1"_s) && heard(console.tree(), u"caravela-sim"_s)
                                               && desk.isMavlink(u"ardurover-1"_s); }, 20000));
 
@@ -272,12 +272,12 @@ TEST(Mavlink, AMixedTeamRunsItsPlansAtOnceAndTheDatabaseAndWebPageShowAllThree)
             << vehicle << "\n" << log(vehicle).toStdString();
     ASSERT_TRUE(QTest::qWaitFor([&] { return log("ardurover-1").contains(u"harbour-loop completed"_s); }, 60000)) << log("ardurover-1").toStdString();
 
-    // The map (Map2D draws session.tracks): each of the three on the Douro, with a trail.
+    // The map (Map2D draws session.tracks): each of the three off Leixões, with a trail.
     for (const auto &[vehicle, plan] : plans) {
         const QVariantMap at = session.tracks()->latest(QString::fromLatin1(vehicle));
         ASSERT_FALSE(at.isEmpty()) << vehicle << " is not on the map";
-        EXPECT_NEAR(at.value(u"lat"_s).toDouble(), 41.1405, 0.01) << vehicle;
-        EXPECT_NEAR(at.value(u"lon"_s).toDouble(), -8.6110, 0.01) << vehicle;
+        EXPECT_NEAR(at.value(u"lat"_s).toDouble(), 41.1705, 0.01) << vehicle;
+        EXPECT_NEAR(at.value(u"lon"_s).toDouble(), -8.7150, 0.01) << vehicle;
         EXPECT_GT(session.tracks()->count(QString::fromLatin1(vehicle)), 5) << vehicle << " has no trail";
     }
 

@@ -77,21 +77,21 @@ TEST(PlanExecution, AConditionalTransitionIsCarriedOutByTheConsoleForAFirstTrans
     QObject::connect(&console, &session::Console::planMessageReceived, &desk, &plans::PlanDesk::receive);
     auto mission = mission::readMission(QByteArrayLiteral(R"X(<?xml version="1.0" encoding="UTF-8"?>
 <mission format="1" id="meet" name="Meet at the buoy">
-  <home lat="41.1405" lon="-8.6110" height="0"/>
+  <home lat="41.1705" lon="-8.7150" height="0"/>
   <vehicle id="lauv-sim-1"/>
   <vehicle id="caravela-sim"/>
-  <map id="m"><mark id="buoy" lat="41.1400" lon="-8.6100"/></map>
+  <map id="m"><mark id="buoy" lat="41.1700" lon="-8.7140"/></map>
   <plan id="meet" vehicle="lauv-sim-1" start="out">
     <maneuvers>
-      <Goto id="out" lat="41.1410" lon="-8.6110" z="0" z_units="DEPTH" speed="1.5" speed_units="METERS_PS"/>
-      <Goto id="dive" lat="41.1412" lon="-8.6105" z="3" z_units="DEPTH" speed="1.5" speed_units="METERS_PS"/>
+      <Goto id="out" lat="41.1710" lon="-8.7150" z="0" z_units="DEPTH" speed="1.5" speed_units="METERS_PS"/>
+      <Goto id="dive" lat="41.1712" lon="-8.7145" z="3" z_units="DEPTH" speed="1.5" speed_units="METERS_PS"/>
     </maneuvers>
     <transition from="out" to="dive" condition="distance(&quot;caravela-sim&quot;, &quot;buoy&quot;) &lt; 50"/>
   </plan>
   <plan id="later" vehicle="caravela-sim" start="away">
     <maneuvers>
-      <StationKeeping id="away" lat="41.1390" lon="-8.6125" z="0" z_units="DEPTH" speed="2" speed_units="METERS_PS" duration="300" radius="10"/>
-      <Goto id="buoy" lat="41.1400" lon="-8.6100" z="0" z_units="DEPTH" speed="2" speed_units="METERS_PS"/>
+      <StationKeeping id="away" lat="41.1690" lon="-8.7165" z="0" z_units="DEPTH" speed="2" speed_units="METERS_PS" duration="300" radius="10"/>
+      <Goto id="buoy" lat="41.1700" lon="-8.7140" z="0" z_units="DEPTH" speed="2" speed_units="METERS_PS"/>
     </maneuvers>
     <transition from="away" to="buoy"/>
   </plan>
@@ -230,13 +230,13 @@ TEST(PlanExecution, AnImportedNeptusCrossHatchIsDrivenThroughEveryCorner)
     session::Console console(test::shippedSchema());
     ASSERT_TRUE(console.startImc(imcTo({16126})));
     ASSERT_TRUE(QTest::qWaitFor([&] { return heard(console.tree(), u"lauv-sim-1"_s); }, 15000));
-    // 41°08'26.4" N, 8°36'37.2" W: 25 m north-east of the simulator's reference point.
+    // 41°10'14.52" N, 8°42'51.48" W: 25 m north-east of the simulator's reference point.
     const auto imported = mission::importNeptus(R"(<mission-def><header><id>e2e</id><name>e2e</name></header><definitions>
 <vehicles><vehicle><id>lauv-sim-1</id><name>lauv-sim-1</name></vehicle></vehicles>
-<home-reference><origin><latitude>41.1405</latitude><longitude>-8.6110</longitude><depth>0</depth></origin></home-reference>
+<home-reference><origin><latitude>41.1705</latitude><longitude>-8.7150</longitude><depth>0</depth></origin></home-reference>
 </definitions><body><plan id="survey" vehicle="lauv-sim-1"><graph><node start="true"><id>cross</id><maneuver>
 <CrossHatchPattern kind="automatic"><basePoint type="pointType"><point>
-  <coordinate><latitude>41N08'26.4''</latitude><longitude>8W36'37.2''</longitude><height>0</height></coordinate>
+  <coordinate><latitude>41N10'14.52''</latitude><longitude>8W42'51.48''</longitude><height>0</height></coordinate>
   <z>2.0</z><zunits>DEPTH</zunits></point><radiusTolerance>0.0</radiusTolerance></basePoint>
   <width>40</width><hstep>20</hstep><bearing>30</bearing><curveOffset>5</curveOffset><speed unit="m/s">1.5</speed>
 </CrossHatchPattern></maneuver></node></graph></plan></body></mission-def>)",

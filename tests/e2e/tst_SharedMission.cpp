@@ -24,8 +24,8 @@ using namespace Qt::StringLiterals;
 TEST(SharedMission, OneConsoleEditsASharedMissionTheOtherShowsTheChange)
 {
     QTemporaryDir dir;
-    const QString file = dir.filePath(u"douro.xml"_s), shot = dir.filePath(u"console-a.png"_s);
-    ASSERT_TRUE(QFile::copy(test::sourcePath(u"docs/examples/douro.xml"_s), file));
+    const QString file = dir.filePath(u"leixoes.xml"_s), shot = dir.filePath(u"console-a.png"_s);
+    ASSERT_TRUE(QFile::copy(test::sourcePath(u"docs/examples/leixoes.xml"_s), file));
     QFile::setPermissions(file, QFile::ReadOwner | QFile::WriteOwner);
 
     // Console A: the program, sharing its mission; it draws itself after 14 s and exits.
@@ -46,7 +46,7 @@ TEST(SharedMission, OneConsoleEditsASharedMissionTheOtherShowsTheChange)
     ASSERT_TRUE(share.start({}).has_value());
     ASSERT_TRUE(QTest::qWaitFor([&] { return share.mission().plans.size() == 3 && !share.mission().maps.isEmpty(); }, 20000))
         << "B got A's mission: " << output();
-    EXPECT_EQ(share.mission().id, u"douro"_s);
+    EXPECT_EQ(share.mission().id, u"leixoes"_s);
     EXPECT_EQ(share.authorOf(u"plan:survey"_s), u"console-a"_s);
 
     // B adds a mark and moves the survey's first maneuver.

@@ -26,11 +26,11 @@ using namespace Qt::StringLiterals;
 
 namespace {
 
-// A copy of the shipped Douro mission to edit.
-QString douroCopy(const QTemporaryDir &dir)
+// A copy of the shipped Leixões mission to edit.
+QString exampleCopy(const QTemporaryDir &dir)
 {
-    const QString path = dir.filePath(u"douro.xml"_s);
-    QFile::copy(neptus::test::sourcePath(u"docs/examples/douro.xml"_s), path);
+    const QString path = dir.filePath(u"leixoes.xml"_s);
+    QFile::copy(neptus::test::sourcePath(u"docs/examples/leixoes.xml"_s), path);
     QFile::setPermissions(path, QFile::ReadOwner | QFile::WriteOwner);
     return path;
 }
@@ -49,7 +49,7 @@ TEST(PlanEditor, OpensAMissionAtItsFirstPlanWithItsVehiclesManeuvers)
 {
     QTemporaryDir dir;
     PlanEditorModel editor;
-    editor.setMissionPath(douroCopy(dir));
+    editor.setMissionPath(exampleCopy(dir));
     EXPECT_EQ(editor.error(), QString());
     EXPECT_EQ(editor.planIds(), (QStringList{u"survey"_s, u"patrol"_s, u"harbour-loop"_s}));
     EXPECT_EQ(editor.planId(), u"survey"_s);
@@ -93,11 +93,11 @@ TEST(PlanEditor, AddMoveUndoRedo)
 {
     QTemporaryDir dir;
     PlanEditorModel editor;
-    editor.setMissionPath(douroCopy(dir));
+    editor.setMissionPath(exampleCopy(dir));
     QSignalSpy edited(&editor, &PlanEditorModel::edited);
     const double length = editor.statistics().value(u"length"_s).toDouble();
 
-    const QString id = editor.addManeuver(u"Goto"_s, 41.1420, -8.6100);
+    const QString id = editor.addManeuver(u"Goto"_s, 41.1720, -8.7140);
     EXPECT_EQ(id, u"goto1"_s);
     EXPECT_EQ(edited.size(), 1) << "checked at once";
     EXPECT_EQ(editor.maneuvers().size(), 5);
@@ -107,19 +107,19 @@ TEST(PlanEditor, AddMoveUndoRedo)
     EXPECT_GT(editor.statistics().value(u"length"_s).toDouble(), length);
     EXPECT_TRUE(editor.modified());
 
-    EXPECT_TRUE(editor.moveManeuver(id, 41.1425, -8.6095));
-    EXPECT_NEAR(byId(editor.maneuvers(), id).value(u"lat"_s).toDouble(), 41.1425, 1e-9);
+    EXPECT_TRUE(editor.moveManeuver(id, 41.1725, -8.7135));
+    EXPECT_NEAR(byId(editor.maneuvers(), id).value(u"lat"_s).toDouble(), 41.1725, 1e-9);
     EXPECT_TRUE(editor.undo());
-    EXPECT_NEAR(byId(editor.maneuvers(), id).value(u"lat"_s).toDouble(), 41.1420, 1e-9) << "the move undone";
+    EXPECT_NEAR(byId(editor.maneuvers(), id).value(u"lat"_s).toDouble(), 41.1720, 1e-9) << "the move undone";
     EXPECT_TRUE(editor.undo());
     EXPECT_EQ(editor.maneuvers().size(), 4) << "the add undone";
     EXPECT_FALSE(editor.canUndo());
     EXPECT_TRUE(editor.redo());
     EXPECT_TRUE(editor.redo());
-    EXPECT_NEAR(byId(editor.maneuvers(), id).value(u"lat"_s).toDouble(), 41.1425, 1e-9) << "both redone";
+    EXPECT_NEAR(byId(editor.maneuvers(), id).value(u"lat"_s).toDouble(), 41.1725, 1e-9) << "both redone";
     EXPECT_FALSE(editor.canRedo());
 
-    EXPECT_EQ(editor.addManeuver(u"Launch"_s, 41.14, -8.61), QString());
+    EXPECT_EQ(editor.addManeuver(u"Launch"_s, 41.1700, -8.7140), QString());
     EXPECT_TRUE(editor.error().startsWith(u"lauv-sim-1 cannot do Launch"_s)) << editor.error().toStdString();
 }
 
@@ -128,7 +128,7 @@ TEST(PlanEditor, AParameterOutOfRangeIsAProblem)
 {
     QTemporaryDir dir;
     PlanEditorModel editor;
-    editor.setMissionPath(douroCopy(dir));
+    editor.setMissionPath(exampleCopy(dir));
     EXPECT_TRUE(editor.setParameter(u"go"_s, u"z"_s, u"500"_s));
     EXPECT_EQ(editor.errorCount(), 1);
     const QVariantMap problem = editor.problems().first().toMap();
@@ -156,7 +156,7 @@ TEST(PlanEditor, RemovingAManeuverJoinsItsNeighbours)
 {
     QTemporaryDir dir;
     PlanEditorModel editor;
-    editor.setMissionPath(douroCopy(dir));
+    editor.setMissionPath(exampleCopy(dir));
     EXPECT_TRUE(editor.removeManeuver(u"wait"_s));
     const auto *plan = editor.plan();
     ASSERT_EQ(plan->transitions.size(), 2);
@@ -171,11 +171,11 @@ TEST(PlanEditor, RemovingAManeuverJoinsItsNeighbours)
 TEST(PlanEditor, RowsOverADrawnAreaSavedAndReadBack)
 {
     QTemporaryDir dir;
-    const QString path = douroCopy(dir);
+    const QString path = exampleCopy(dir);
     PlanEditorModel editor;
     editor.setMissionPath(path);
-    const QVariantList area{QVariantMap{{u"lat"_s, 41.1395}, {u"lon"_s, -8.6130}}, QVariantMap{{u"lat"_s, 41.1420}, {u"lon"_s, -8.6130}},
-                            QVariantMap{{u"lat"_s, 41.1420}, {u"lon"_s, -8.6090}}, QVariantMap{{u"lat"_s, 41.1395}, {u"lon"_s, -8.6090}}};
+    const QVariantList area{QVariantMap{{u"lat"_s, 41.1695}, {u"lon"_s, -8.7170}}, QVariantMap{{u"lat"_s, 41.1720}, {u"lon"_s, -8.7170}},
+                            QVariantMap{{u"lat"_s, 41.1720}, {u"lon"_s, -8.7130}}, QVariantMap{{u"lat"_s, 41.1695}, {u"lon"_s, -8.7130}}};
     const QString id = editor.addRows(area, 25, 0, 0, false);
     ASSERT_FALSE(id.isEmpty()) << editor.error().toStdString();
     EXPECT_EQ(byId(editor.maneuvers(), id).value(u"type"_s), u"FollowPath"_s);
@@ -196,7 +196,7 @@ TEST(PlanEditor, TheGraphLaidOutInStepsFromTheStartWithConditionsChecked)
 {
     QTemporaryDir dir;
     PlanEditorModel editor;
-    editor.setMissionPath(douroCopy(dir));
+    editor.setMissionPath(exampleCopy(dir));
     // go → wait → rows → surface: a column each.
     const auto column = [&](const QString &id) { return byId(editor.nodes(), id).value(u"column"_s).toInt(); };
     EXPECT_EQ(column(u"go"_s), 0);
@@ -241,18 +241,18 @@ TEST(PlanEditor, MapFeaturesAddedMovedReshapedAndUndoneWithThePlanCheckedAgainst
 {
     QTemporaryDir dir;
     PlanEditorModel editor;
-    editor.setMissionPath(douroCopy(dir));
+    editor.setMissionPath(exampleCopy(dir));
     QSignalSpy features(&editor, &PlanEditorModel::featuresChanged);
     const qsizetype before = editor.features().size();
     const auto byFeature = [&](const QString &id) { return byId(editor.features(), id); };
 
     // A mark where tapped; moved.
-    const QString mark = editor.addFeature(u"mark"_s, {QVariantMap{{u"lat"_s, 41.1401}, {u"lon"_s, -8.6201}}});
+    const QString mark = editor.addFeature(u"mark"_s, {QVariantMap{{u"lat"_s, 41.1701}, {u"lon"_s, -8.6201}}});
     ASSERT_EQ(mark, u"mark1"_s) << editor.error().toStdString();
     EXPECT_EQ(features.size(), 1);
     EXPECT_EQ(editor.features().size(), before + 1);
-    ASSERT_TRUE(editor.moveFeature(mark, 41.1402, -8.6202));
-    EXPECT_DOUBLE_EQ(byFeature(mark).value(u"lat"_s).toDouble(), 41.1402);
+    ASSERT_TRUE(editor.moveFeature(mark, 41.1702, -8.6202));
+    EXPECT_DOUBLE_EQ(byFeature(mark).value(u"lat"_s).toDouble(), 41.1702);
 
     // A no-go polygon over the survey plan's first leg: the plan has an error at once.
     ASSERT_EQ(editor.errorCount(), 0);
@@ -332,7 +332,7 @@ TEST(PlanEditor, ASharedMissionsEditsGoOutAndComeIn)
     });
     ours = &share;
     PlanDeskModel deskModel(&desk, &share);
-    ASSERT_TRUE(desk.openMission(douroCopy(dir)).has_value());
+    ASSERT_TRUE(desk.openMission(exampleCopy(dir)).has_value());
     PlanEditorModel editor;
     editor.setDesk(&deskModel);
     editor.setMissionPath(desk.missionPath());
@@ -342,7 +342,7 @@ TEST(PlanEditor, ASharedMissionsEditsGoOutAndComeIn)
     ASSERT_EQ(theirs.mission().plans.size(), 3) << "the other console joined and got it all";
 
     // Ours: a Goto, at once on the other console.
-    const QString id = editor.addManeuver(u"Goto"_s, 41.1420, -8.6100);
+    const QString id = editor.addManeuver(u"Goto"_s, 41.1720, -8.7140);
     ASSERT_NE(theirs.mission().plans[0].maneuver(id), nullptr);
     EXPECT_EQ(theirs.authorOf(u"plan:survey"_s), u"console-a"_s);
 
@@ -351,8 +351,8 @@ TEST(PlanEditor, ASharedMissionsEditsGoOutAndComeIn)
     neptus::mission::Feature mark;
     mark.kind = u"mark"_s;
     mark.id = u"from-b"_s;
-    mark.position.lat = 41.1411;
-    mark.position.lon = -8.6111;
+    mark.position.lat = 41.1711;
+    mark.position.lon = -8.7151;
     edited.maps[0].features.append(mark);
     QSignalSpy told(&deskModel, &PlanDeskModel::sharedChange);
     theirs.update(edited);
@@ -377,7 +377,7 @@ TEST(PlanEditor, ExportsThePlanToItsVehiclesTargetsStepByStep)
 {
     QTemporaryDir dir;
     PlanEditorModel editor;
-    editor.setMissionPath(douroCopy(dir));
+    editor.setMissionPath(exampleCopy(dir));
     QStringList targets;
     for (const QVariant &t : editor.exportTargets())
         targets << t.toMap().value(u"target"_s).toString();
@@ -408,7 +408,7 @@ TEST(PlanEditor, APointPlannedBelowTheTerrainIsAnError)
 {
     QTemporaryDir dir;
     PlanEditorModel editor;
-    editor.setMissionPath(douroCopy(dir));
+    editor.setMissionPath(exampleCopy(dir));
     // A flat seabed 10 m down, 600 m square around the survey's start (Y up, as .obj files are).
     QFile obj(dir.filePath(u"seabed.obj"_s));
     ASSERT_TRUE(obj.open(QIODevice::WriteOnly));
@@ -465,13 +465,13 @@ TEST(PlanEditor, TheSeabedIsInterpolatedUnderAPoint)
 }
 
 // With the console's charts read, every edit is also checked against them: the
-// Douro survey passes a charted 0-1 m shoal 150 m west of it; its last maneuver
+// Leixões survey passes a charted 0-1 m shoal 150 m west of it; its last maneuver
 // dragged onto the shoal is unsafe, saying where; undone, it is not.
 TEST(PlanEditor, ChecksEveryEditAgainstTheConsolesCharts)
 {
     QTemporaryDir dir;
     PlanEditorModel editor;
-    editor.setMissionPath(douroCopy(dir));
+    editor.setMissionPath(exampleCopy(dir));
     ASSERT_EQ(editor.errorCount(), 0);
     neptus::tree::VariableTree tree;
     neptus::tree::VariableTreeModel model{&tree};
@@ -491,16 +491,16 @@ TEST(PlanEditor, ChecksEveryEditAgainstTheConsolesCharts)
     neptus::charts::Cell cell;
     cell.name = u"XX5DOURO.000"_s;
     cell.usageBand = 5;
-    cell.features = {area(u"M_COVR"_s, -8.65, -8.55, 41.10, 41.20, {{u"CATCOV"_s, u"1"_s}}),
-                     area(u"DEPARE"_s, -8.65, -8.55, 41.10, 41.20, {{u"DRVAL1"_s, u"10"_s}, {u"DRVAL2"_s, u"20"_s}}),
-                     area(u"DEPARE"_s, -8.6145, -8.6135, 41.1400, 41.1410, {{u"DRVAL1"_s, u"0"_s}, {u"DRVAL2"_s, u"1"_s}})};
+    cell.features = {area(u"M_COVR"_s, -8.75, -8.65, 41.13, 41.23, {{u"CATCOV"_s, u"1"_s}}),
+                     area(u"DEPARE"_s, -8.75, -8.65, 41.13, 41.23, {{u"DRVAL1"_s, u"10"_s}, {u"DRVAL2"_s, u"20"_s}}),
+                     area(u"DEPARE"_s, -8.7185, -8.7175, 41.1700, 41.1710, {{u"DRVAL1"_s, u"0"_s}, {u"DRVAL2"_s, u"1"_s}})};
     cell.index();
     watch.setCells(std::make_shared<const std::vector<neptus::charts::Cell>>(std::vector<neptus::charts::Cell>{cell}));
     QStringList said;
     for (const QVariant &p : editor.problems())
         said << p.toMap().value(u"message"_s).toString();
     EXPECT_EQ(editor.errorCount(), 0) << said.join(u'\n').toStdString();
-    ASSERT_TRUE(editor.moveManeuver(u"surface"_s, 41.1405, -8.6140));
+    ASSERT_TRUE(editor.moveManeuver(u"surface"_s, 41.1705, -8.7180));
     ASSERT_GE(editor.errorCount(), 1) << "the drag is checked against the chart";
     QVariantMap shoal;
     said.clear();

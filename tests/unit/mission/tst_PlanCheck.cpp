@@ -228,9 +228,9 @@ TEST(PlanCheck, WhatTheVehicleCannotDoAndHowLongItCanGo)
 }
 
 // The shipped example, against the shipped vehicles: nothing wrong.
-TEST(PlanCheck, TheDouroExampleIsClean)
+TEST(PlanCheck, TheLeixoesExampleIsClean)
 {
-    const auto mission = loadMission(neptus::test::sourcePath(u"docs/examples/douro.xml"_s));
+    const auto mission = loadMission(neptus::test::sourcePath(u"docs/examples/leixoes.xml"_s));
     ASSERT_TRUE(mission.has_value());
     const VehicleCatalog vehicles = loadVehicles({neptus::test::sourcePath(u"vehicles"_s)});
     for (const Plan &plan : mission->plans) {

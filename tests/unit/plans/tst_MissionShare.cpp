@@ -47,9 +47,9 @@ struct Network
     }
 };
 
-mission::Mission douro()
+mission::Mission leixoes()
 {
-    auto m = mission::loadMission(neptus::test::sourcePath(u"docs/examples/douro.xml"_s));
+    auto m = mission::loadMission(neptus::test::sourcePath(u"docs/examples/leixoes.xml"_s));
     EXPECT_TRUE(m.has_value());
     return m ? *m : mission::Mission{};
 }
@@ -66,12 +66,12 @@ TEST(MissionShare, AConsoleJoiningLateGetsTheMissionThenEditsFlowBothWays)
     b = &shareB;
     net.consoles = {a, b};
 
-    const mission::Mission mission = douro();
+    const mission::Mission mission = leixoes();
     ASSERT_TRUE(a->start(mission));
     QSignalSpy heardByB(b, &MissionShare::remoteChange);
     ASSERT_TRUE(b->start({})); // no mission yet: HELLO, and A sends everything
     EXPECT_EQ(mission::writeMission(b->mission()), mission::writeMission(mission));
-    EXPECT_EQ(b->mission().id, u"douro"_s);
+    EXPECT_EQ(b->mission().id, u"leixoes"_s);
     EXPECT_GE(heardByB.size(), 4) << "header, plans, features";
 
     // A moves a maneuver: B has it, and knows who.
@@ -127,12 +127,12 @@ TEST(MissionShare, DamagedOrForeignObjectsAreIgnoredAndSaid)
     MissionShare shareA(net.schema, u"console-a"_s, net.publisherFor(&a));
     a = &shareA;
     net.consoles = {a};
-    ASSERT_TRUE(a->start(douro()));
+    ASSERT_TRUE(a->start(leixoes()));
     QSignalSpy problems(a, &MissionShare::problem);
     const msg::MessageDef *def = net.schema->byAbbrev(u"MissionChange");
     ASSERT_NE(def, nullptr) << "msgdefs/sharing.xml";
     msg::Message m(def);
-    m.setBytes(def->indexOf(u"mission"), "douro");
+    m.setBytes(def->indexOf(u"mission"), "leixoes");
     m.setInteger(def->indexOf(u"op"), 0);
     m.setBytes(def->indexOf(u"object"), "plan:survey");
     m.setInteger(def->indexOf(u"version"), 9);

@@ -27,35 +27,35 @@ constexpr quint16 console = 0x4001;
 
 const char *const missionText = R"X(<?xml version="1.0" encoding="UTF-8"?>
 <mission format="1" id="desk" name="Desk">
-  <home lat="41.1405" lon="-8.6110" height="0"/>
+  <home lat="41.1705" lon="-8.7150" height="0"/>
   <vehicle id="lauv-sim-1"/>
   <vehicle id="x8-02"/>
   <map id="m">
-    <mark id="buoy" name="Buoy" lat="41.1409" lon="-8.6115"/>
+    <mark id="buoy" name="Buoy" lat="41.1709" lon="-8.7155"/>
   </map>
   <plan id="survey" vehicle="lauv-sim-1" start="go">
     <maneuvers>
-      <Goto id="go" lat="41.1409" lon="-8.6110" z="2" z_units="DEPTH" speed="1.5" speed_units="METERS_PS"/>
-      <Goto id="back" lat="41.1405" lon="-8.6110" z="0" z_units="DEPTH" speed="1.5" speed_units="METERS_PS"/>
+      <Goto id="go" lat="41.1709" lon="-8.7150" z="2" z_units="DEPTH" speed="1.5" speed_units="METERS_PS"/>
+      <Goto id="back" lat="41.1705" lon="-8.7150" z="0" z_units="DEPTH" speed="1.5" speed_units="METERS_PS"/>
     </maneuvers>
     <transition from="go" to="back"/>
   </plan>
   <plan id="choice" vehicle="lauv-sim-1" start="a">
     <maneuvers>
-      <Goto id="a" lat="41.1407" lon="-8.6110" z="0" z_units="DEPTH" speed="1.5" speed_units="METERS_PS"/>
-      <Goto id="b" lat="41.1409" lon="-8.6112" z="0" z_units="DEPTH" speed="1.5" speed_units="METERS_PS"/>
-      <Goto id="c" lat="41.1407" lon="-8.6114" z="0" z_units="DEPTH" speed="1.5" speed_units="METERS_PS"/>
+      <Goto id="a" lat="41.1707" lon="-8.7150" z="0" z_units="DEPTH" speed="1.5" speed_units="METERS_PS"/>
+      <Goto id="b" lat="41.1709" lon="-8.7152" z="0" z_units="DEPTH" speed="1.5" speed_units="METERS_PS"/>
+      <Goto id="c" lat="41.1707" lon="-8.7154" z="0" z_units="DEPTH" speed="1.5" speed_units="METERS_PS"/>
     </maneuvers>
     <transition from="a" to="b" condition="distance(&quot;caravela-sim&quot;, &quot;buoy&quot;) &lt; 50"/>
     <transition from="b" to="c"/>
   </plan>
   <plan id="other" vehicle="x8-02" start="up">
-    <maneuvers><Takeoff id="up" lat="41.14" lon="-8.61" z="100" z_units="HEIGHT" speed="17"/></maneuvers>
+    <maneuvers><Takeoff id="up" lat="41.1700" lon="-8.7140" z="100" z_units="HEIGHT" speed="17"/></maneuvers>
   </plan>
   <plan id="own" vehicle="lauv-sim-1" start="a">
     <maneuvers>
-      <Goto id="a" lat="41.1407" lon="-8.6110" z="0" z_units="DEPTH" speed="1.5" speed_units="METERS_PS"/>
-      <Goto id="b" lat="41.1405" lon="-8.6110" z="0" z_units="DEPTH" speed="1.5" speed_units="METERS_PS"/>
+      <Goto id="a" lat="41.1707" lon="-8.7150" z="0" z_units="DEPTH" speed="1.5" speed_units="METERS_PS"/>
+      <Goto id="b" lat="41.1705" lon="-8.7150" z="0" z_units="DEPTH" speed="1.5" speed_units="METERS_PS"/>
     </maneuvers>
     <transition from="a" to="b" condition="sys[&quot;lauv-sim-1&quot;].EstimatedState.depth &lt; 1 &amp;&amp; $elapsed &gt; 5"/>
   </plan>
@@ -126,8 +126,8 @@ struct Desk : ::testing::Test
     {
         msg::Message s(schema->byAbbrev(u"EstimatedState"));
         s.header.src = 0x20;
-        s.setNumber(s.def()->indexOf(u"lat"), 41.1409 * M_PI / 180);
-        s.setNumber(s.def()->indexOf(u"lon"), -8.6115 * M_PI / 180);
+        s.setNumber(s.def()->indexOf(u"lat"), 41.1709 * M_PI / 180);
+        s.setNumber(s.def()->indexOf(u"lon"), -8.7155 * M_PI / 180);
         s.setNumber(s.def()->indexOf(u"x"), north);
         tree.ingest(s);
     }
@@ -263,8 +263,8 @@ TEST_F(Desk, APlanWithErrorsIsNotSent)
     mission::Feature rock;
     rock.kind = u"circle"_s;
     rock.id = u"rock"_s;
-    rock.position.lat = 41.1407;
-    rock.position.lon = -8.6110;
+    rock.position.lat = 41.1707;
+    rock.position.lon = -8.7150;
     rock.attributes = {{u"role"_s, u"no-go"_s}, {u"radius"_s, u"5"_s}};
     edited.maps.first().features.append(rock);
     desk.setMission(edited);

@@ -28,14 +28,14 @@ constexpr quint16 console = 0x4001;
 
 const char *const missionText = R"X(<?xml version="1.0" encoding="UTF-8"?>
 <mission format="1" id="sim" name="Sim">
-  <home lat="41.1405" lon="-8.6110" height="0"/>
+  <home lat="41.1705" lon="-8.7150" height="0"/>
   <vehicle id="lauv-sim-1"/>
   <plan id="survey" vehicle="lauv-sim-1" start="go">
     <maneuvers>
-      <Goto id="go" lat="41.1415" lon="-8.6110" z="3" z_units="DEPTH" speed="1.5" speed_units="METERS_PS"/>
-      <Loiter id="circle" lat="41.1415" lon="-8.6110" z="2" z_units="DEPTH" speed="1.5" speed_units="METERS_PS"
+      <Goto id="go" lat="41.1715" lon="-8.7150" z="3" z_units="DEPTH" speed="1.5" speed_units="METERS_PS"/>
+      <Loiter id="circle" lat="41.1715" lon="-8.7150" z="2" z_units="DEPTH" speed="1.5" speed_units="METERS_PS"
               duration="60" radius="20" type="CIRCULAR" direction="CLOCKW"/>
-      <Rows id="rows" lat="41.1420" lon="-8.6100" z="4" z_units="DEPTH" speed="1.5" speed_units="METERS_PS"
+      <Rows id="rows" lat="41.1720" lon="-8.7140" z="4" z_units="DEPTH" speed="1.5" speed_units="METERS_PS"
             width="60" length="80" hstep="30" bearing="0"/>
     </maneuvers>
     <transition from="go" to="circle"/>
@@ -43,9 +43,9 @@ const char *const missionText = R"X(<?xml version="1.0" encoding="UTF-8"?>
   </plan>
   <plan id="choice" vehicle="lauv-sim-1" start="a">
     <maneuvers>
-      <Goto id="a" lat="41.1407" lon="-8.6110" z="0" z_units="DEPTH" speed="1.5" speed_units="METERS_PS"/>
-      <Goto id="b" lat="41.1409" lon="-8.6110" z="0" z_units="DEPTH" speed="1.5" speed_units="METERS_PS"/>
-      <Goto id="c" lat="41.1407" lon="-8.6113" z="0" z_units="DEPTH" speed="1.5" speed_units="METERS_PS"/>
+      <Goto id="a" lat="41.1707" lon="-8.7150" z="0" z_units="DEPTH" speed="1.5" speed_units="METERS_PS"/>
+      <Goto id="b" lat="41.1709" lon="-8.7150" z="0" z_units="DEPTH" speed="1.5" speed_units="METERS_PS"/>
+      <Goto id="c" lat="41.1707" lon="-8.7153" z="0" z_units="DEPTH" speed="1.5" speed_units="METERS_PS"/>
     </maneuvers>
     <transition from="a" to="b" condition="sea.EstimatedState.depth &lt; 2"/>
     <transition from="a" to="c"/>
@@ -152,7 +152,7 @@ struct Sim : ::testing::Test
     }
     Eigen::Vector2d north(double lat, double lon) const
     {
-        return {(lat - 41.1405) * 111'100, (lon + 8.6110) * 111'100 * std::cos(41.1405 * M_PI / 180)};
+        return {(lat - 41.1705) * 111'100, (lon + 8.7150) * 111'100 * std::cos(41.1705 * M_PI / 180)};
     }
 };
 
@@ -238,7 +238,7 @@ TEST_F(Sim, RunsGotoLoiterAndRowsToTheEndAndSaysSo)
     EXPECT_EQ(state->text(u"plan_id"), u"survey"_s);
 
     // It ended where the rows end: 60 m east and 80 m north of the corner, or near it.
-    const Eigen::Vector2d corner = north(41.1420, -8.6100);
+    const Eigen::Vector2d corner = north(41.1720, -8.7140);
     EXPECT_LT((vehicle.motion().ned.head<2>() - corner).norm(), 140);
     EXPECT_LT(vehicle.motion().ned.z(), 4.5);
 }
