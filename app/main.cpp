@@ -172,6 +172,10 @@ int main(int argc, char *argv[])
     }
     if (recorder)
         session.console().setRecorder(recorder.get());
+    // Without --charts, the console's own (the chart manager's), if it holds any.
+    const QString charts = !commandLine->charts.isEmpty() || neptus::charts::libraryCells().isEmpty()
+        ? commandLine->charts : neptus::charts::defaultLibraryDir();
+
     // The live web page (--web-port, or the settings' web/port): read-only, on loopback unless told.
     int webPort = commandLine->webPort;
     if (webPort < 0 && QSettings().contains(QStringLiteral("web/port")))
@@ -194,6 +198,8 @@ int main(int argc, char *argv[])
         config.certificate = commandLine->webCertificate;
         config.key = commandLine->webKey;
         config.tiles = commandLine->webTiles;
+        config.charts = charts; // the chart layer the console's maps draw
+        config.safetyDepth = commandLine->safetyDepth;
         config.title = commandLine->name.isEmpty() ? QFileInfo(commandLine->consoleFile).completeBaseName() : commandLine->name;
         config.pageDir = neptus::dataPath(QStringLiteral("web"));
         config.history = databaseLocation;
@@ -323,9 +329,6 @@ int main(int argc, char *argv[])
         QDir().mkpath(standard.first());
     const QStringList componentDirectories = commandLine->componentDirectories + standard;
 
-    // Without --charts, the console's own (the chart manager's), if it holds any.
-    const QString charts = !commandLine->charts.isEmpty() || neptus::charts::libraryCells().isEmpty()
-        ? commandLine->charts : neptus::charts::defaultLibraryDir();
     // The charted water under each vehicle, with its alarm (the maps draw the same charts).
     session.chartWatch()->setCharts(charts);
     session.treeModel()->setDisplayRate(commandLine->displayRate);

@@ -27,7 +27,7 @@ set(NEPTUS_LAYERS
   "neptus-simulation   sim         neptus-messages neptus-geo neptus-plans"
   "neptus-logs         log         neptus-messages neptus-geo"
   "neptus-database     database    neptus-core"
-  "neptus-web          web         neptus-session neptus-database neptus-coastline"
+  "neptus-web          web         neptus-session neptus-database neptus-coastline neptus-charts"
   "neptus-session      session     neptus-scripting neptus-transport neptus-logs neptus-database"
   "neptus-engine       qmlmodels   neptus-session neptus-geo neptus-plans neptus-processor neptus-models neptus-charts"
   # Programs: the command-line tools link no QML.

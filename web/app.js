@@ -12,6 +12,8 @@ const colours = ['#1e88e5', '#43a047', '#8e24aa', '#00897b', '#3949ab', '#6d4c41
 const map = L.map('map', { zoomControl: true, attributionControl: false, preferCanvas: true }).setView([41.18, -8.7], 13);
 const systems = new Map(); // name → { marker, track, colour, fitted }
 let coastLayer = null, coastBox = null, fitted = false;
+map.createPane('coast').style.zIndex = 340;
+const coastRenderer = L.canvas({ pane: 'coast' });
 
 function element(tag, className, text) {
   const e = document.createElement(tag);
@@ -58,9 +60,77 @@ function loadCoastline() {
     .then((answer) => {
       if (!answer) return;
       if (coastLayer) coastLayer.remove();
-      coastLayer = L.layerGroup(answer.lines.map((line) => L.polyline(line, { color: '#6d5c3d', weight: 1.5, interactive: false })));
+      // (Under a chart: its own coastline is the better one where it has one.)
+      coastLayer = L.layerGroup(answer.lines.map((line) => L.polyline(line, { renderer: coastRenderer, color: '#6d5c3d', weight: 1.5,
+                                                                              interactive: false })));
       coastLayer.addTo(map);
       coastBox = b;
+    })
+    .catch(() => {});
+}
+
+// The console's nautical chart (when it has one), drawn as its map draws it: depth areas shaded
+// against the safety contour, land, contours, the coast, restricted areas and fairways, and
+// hazards, buoys, beacons and lights as symbols at the scales their SCAMIN allows. Under the tracks.
+map.createPane('chart').style.zIndex = 350;
+map.createPane('chartMarks').style.zIndex = 360;
+const chartRenderer = L.canvas({ pane: 'chart' });
+let chartsShown = false, chartLayer = null, chartBox = null, chartZoom = -1, chartSafety = 5, chartAnswer = null;
+const cssColour = (name) => getComputedStyle(document.documentElement).getPropertyValue('--chart-' + name).trim();
+
+function chartSymbol(mark, colours) {
+  const c = mark.kind === 'hazard' ? colours.hazard : colours.aid;
+  const shape = mark.kind === 'hazard' ? '<path d="M-5,-5 L5,5 M5,-5 L-5,5" stroke="' + c + '" stroke-width="2"/>'
+    : mark.kind === 'buoy' ? '<circle r="4.5" fill="none" stroke="' + c + '" stroke-width="2"/>'
+    : mark.kind === 'beacon' ? '<path d="M0,-6 L5.5,4.5 L-5.5,4.5 Z" fill="none" stroke="' + c + '" stroke-width="2"/>'
+    : '<path d="M0,-7 L1.8,-2 L7,-2 L2.8,1.2 L4.3,6.5 L0,3.3 L-4.3,6.5 L-2.8,1.2 L-7,-2 L-1.8,-2 Z" fill="' + c + '"/>';
+  return L.divIcon({ html: '<svg viewBox="-8 -8 16 16" width="16" height="16">' + shape + '</svg>', className: 'chart-mark',
+                     iconSize: [16, 16], iconAnchor: [8, 8] });
+}
+
+function drawChart() {
+  const answer = chartAnswer;
+  if (!answer) return;
+  if (chartLayer) chartLayer.remove();
+  const colours = {};
+  for (const name of ['deep', 'medium', 'shallow', 'drying', 'land', 'contour', 'safety', 'coast', 'hazard', 'aid', 'restricted'])
+    colours[name] = cssColour(name);
+  const layers = [];
+  for (const shade of ['deep', 'medium', 'shallow', 'drying', 'land'])
+    for (const polygon of answer.areas[shade])
+      layers.push(L.polygon(polygon, { renderer: chartRenderer, stroke: false, fillColor: colours[shade], fillOpacity: 1, interactive: false }));
+  const lineStyles = { contour: { color: colours.contour, weight: 1 }, safety: { color: colours.safety, weight: 2 },
+                       coast: { color: colours.coast, weight: 1.5 }, restricted: { color: colours.restricted, weight: 1.5, dashArray: '6 4' },
+                       fairway: { color: colours.contour, weight: 1.5, dashArray: '10 7' } };
+  for (const [kind, style] of Object.entries(lineStyles))
+    for (const line of answer.lines[kind])
+      layers.push(L.polyline(line, Object.assign({ renderer: chartRenderer, interactive: false }, style)));
+  // The scale for OGC's standard 0.28 mm rendering pixel, as the console's map works it out.
+  const scale = 156543.03 * Math.cos(map.getCenter().lat * Math.PI / 180) / Math.pow(2, map.getZoom()) / 0.00028;
+  for (const mark of answer.marks) {
+    if (mark.scamin > 0 ? scale > mark.scamin : map.getZoom() < 11) continue;
+    const words = [mark.what, mark.name, mark.depth !== undefined ? 'charted depth ' + mark.depth + ' m' : ''].filter((x) => x).join(' · ');
+    layers.push(L.marker([mark.lat, mark.lon], { pane: 'chartMarks', icon: chartSymbol(mark, colours), title: words, keyboard: false }));
+  }
+  chartLayer = L.layerGroup(layers).addTo(map);
+  document.getElementById('chart-status').textContent = answer.cells.length
+    ? 'chart ' + answer.cells.join(', ') + ' · safety contour ' + answer.safetyContour + ' m · not for navigation' : '';
+}
+
+function loadChart() {
+  const b = map.getBounds().pad(0.5);
+  if (b.getEast() - b.getWest() > 10 || b.getNorth() - b.getSouth() > 10) return;
+  if (chartBox && chartBox.contains(map.getBounds()) && chartZoom === map.getZoom()) return;
+  const box = [b.getWest(), b.getSouth(), b.getEast(), b.getNorth()].map((v) => v.toFixed(4));
+  const zoom = map.getZoom();
+  fetch(withToken('/api/chart?bbox=' + box.join(',') + '&safety=' + chartSafety))
+    .then((r) => r.ok ? r.json() : null)
+    .then((answer) => {
+      if (!answer) return;
+      chartAnswer = answer;
+      chartBox = b;
+      chartZoom = zoom;
+      drawChart();
     })
     .catch(() => {});
 }
@@ -177,6 +247,13 @@ function connect() {
       document.getElementById('title').textContent = message.title;
       document.title = message.title + ' · live';
       if (message.tiles) L.tileLayer(message.tiles, { maxZoom: 19 }).addTo(map);
+      if (message.charts && !chartsShown) { // (a reconnection's hello adds nothing)
+        chartsShown = true;
+        chartSafety = message.safetyDepth;
+        map.on('moveend', loadChart);
+        loadChart();
+        window.matchMedia('(prefers-color-scheme: dark)').addEventListener('change', drawChart);
+      }
       if (message.history) {
         document.getElementById('history-section').hidden = false;
         loadEvents();

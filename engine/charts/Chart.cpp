@@ -340,6 +340,52 @@ QString className(const QString &objectClass)
     return names.value(objectClass, objectClass);
 }
 
+Drawn drawnAs(const Feature &f)
+{
+    using Role = Feature::Role;
+    const QString &k = f.objectClass;
+    const bool area = isArea(f);
+    if (f.role == Role::Land)
+        return Drawn::Land;
+    if (f.role == Role::Depth)
+        return Drawn::Depth;
+    if (f.role == Role::Hazard)
+        return Drawn::Hazard;
+    if (k == u"DEPCNT")
+        return Drawn::Contour;
+    if (k == u"COALNE" || k == u"SLCONS")
+        return Drawn::Coast;
+    if (f.role == Role::Restriction && area)
+        return Drawn::Restricted;
+    if (k == u"FAIRWY" && area)
+        return Drawn::Fairway;
+    if (f.geometry == Feature::Geometry::Point) {
+        if (k.startsWith(u"BOY"_s))
+            return Drawn::Buoy;
+        if (k.startsWith(u"BCN"_s))
+            return Drawn::Beacon;
+        if (k == u"LIGHTS")
+            return Drawn::Light;
+    }
+    return Drawn::Nothing;
+}
+
+double safetyContour(const std::vector<Cell> &cells, double safetyDepth)
+{
+    double safety = std::numeric_limits<double>::infinity();
+    for (const Cell &c : cells)
+        for (const Feature &f : c.features)
+            if (f.objectClass == u"DEPCNT")
+                if (const auto value = f.number(u"VALDCO"_s); value && *value >= safetyDepth)
+                    safety = std::min(safety, *value);
+    return std::isfinite(safety) ? safety : safetyDepth;
+}
+
+int depthShade(double shallowest, double safetyContour)
+{
+    return shallowest < 0 ? 0 : shallowest < safetyContour ? 1 : shallowest < 2 * safetyContour ? 2 : 3;
+}
+
 QByteArray encodeCell(const Cell &cell)
 {
     QByteArray out(magic, magicSize);

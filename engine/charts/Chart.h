@@ -114,6 +114,20 @@ Feature::Role roleOf(const Feature &feature);
 // An object class in words ("depth area", "wreck"); the acronym when unknown.
 QString className(const QString &objectClass);
 
+// How a chart is drawn, the same on the console's map and the live web page:
+// land and depth areas filled, depth contours, the coastline, restricted
+// areas' and fairways' edges, and hazards, buoys, beacons and lights as
+// symbols (an area or line hazard at its first point). Needs the role
+// Cell::index() works out.
+enum class Drawn : quint8 { Nothing, Land, Depth, Contour, Coast, Restricted, Fairway, Hazard, Buoy, Beacon, Light };
+Drawn drawnAs(const Feature &feature);
+// The safety contour (S-52's idea): the first charted depth contour (DEPCNT's
+// VALDCO) at or past the safety depth; the safety depth when there is none.
+double safetyContour(const std::vector<Cell> &cells, double safetyDepth);
+// A depth area's shade by its shallowest depth: 0 drying, 1 shallower than the
+// safety contour (it stands out), 2 up to twice it (our choice), 3 deeper.
+int depthShade(double shallowest, double safetyContour);
+
 // A cell as bytes, as the helper writes it and the cache keeps it:
 //   "NQCHART2\n", then counted strings and numbers (little-endian; positions
 //   in 1e-7 degrees, about a centimetre; depths in millimetres, only for parts

@@ -1,7 +1,9 @@
 #include "web/LiveServer.h"
 
+#include "charts/ChartFiles.h"
 #include "geo/Coastline.h"
 #include "session/Console.h"
+#include "web/ChartLayer.h"
 #include "web/Requests.h"
 
 #include <QDateTime>
@@ -83,6 +85,7 @@ LiveServer::LiveServer(session::OperationsFeed &feed, WebConfig config, QObject 
 {
     m_history.setMaxThreadCount(1);
     m_history.setExpiryTimeout(-1); // one thread, kept: its database connection with it
+    m_charts.setMaxThreadCount(1);
     connect(&m_timer, &QTimer::timeout, this, &LiveServer::push);
 }
 
@@ -94,6 +97,7 @@ LiveServer::~LiveServer()
         delete client;
     }
     m_history.waitForDone();
+    m_charts.waitForDone();
 }
 
 QString LiveServer::url() const
@@ -167,6 +171,19 @@ std::expected<quint16, QString> LiveServer::start()
                     lines.append(line);
                 }
                 return QHttpServerResponse(QJsonObject{{u"resolution"_s, QString(QChar(resolution))}, {u"lines"_s, lines}});
+            });
+        }
+        if (api->kind == ApiRequest::Chart) {
+            if (m_config.charts.isEmpty())
+                return QtFuture::makeReadyValueFuture(failure(404, u"this console has no charts"_s));
+            return QtConcurrent::run(&m_charts, [path = m_config.charts, r = *api] {
+                // The same cells as the console's map (read once, shared while anyone holds them).
+                const auto cells = charts::sharedCells(path);
+                if (!cells)
+                    return failure(503, cells.error());
+                // About a pixel: the page asks for its view and half as much again each way.
+                const double tolerance = std::max(r.east - r.west, r.north - r.south) / 4000;
+                return QHttpServerResponse(chartLayer(**cells, r.west, r.south, r.east, r.north, r.safety, tolerance));
             });
         }
         if (!m_config.history)
@@ -316,7 +333,9 @@ QByteArray LiveServer::helloFrame() const
         tracks.insert(s.name, line);
     }
     return QJsonDocument(QJsonObject{{u"type"_s, u"hello"_s}, {u"title"_s, m_config.title}, {u"tiles"_s, m_config.tiles},
-                                     {u"history"_s, m_config.history.has_value()}, {u"tracks"_s, tracks}})
+                                     {u"history"_s, m_config.history.has_value()}, {u"charts"_s, !m_config.charts.isEmpty()},
+                                     {u"safetyDepth"_s, m_config.safetyDepth},
+                                     {u"tracks"_s, tracks}})
         .toJson(QJsonDocument::Compact);
 }
 

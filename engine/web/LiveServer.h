@@ -28,6 +28,8 @@ struct WebConfig
     QString token;                  // required when listening beyond loopback
     QString certificate, key;       // PEM files: HTTPS and WSS
     QString tiles;                  // a tile URL template ({z}/{x}/{y}); empty: the offline coastline only
+    QString charts;                 // S-57 cells the console draws (charts::sharedCells); empty: none
+    double safetyDepth = 5;         // metres, as the console's (--safety-depth)
     QString title = QStringLiteral("Neptus-Qt");
     int maxConnections = 200;       // HTTP and WebSocket together
     int pushMs = 1000;              // how often the page hears what changed
@@ -45,7 +47,8 @@ struct WebConfig
 // then only with an access token. Requests are checked before use (web/
 // Requests.h); connections and incoming frames are bounded; a browser that
 // does not keep up misses frames instead of holding the console; history
-// queries run on a thread of their own.
+// queries run on a thread of their own. With charts, the page draws the
+// chart layer the console's map draws (/api/chart, web/ChartLayer.h).
 class LiveServer : public QObject
 {
     Q_OBJECT
@@ -75,6 +78,7 @@ private:
     std::vector<QWebSocket *> m_clients;
     QTimer m_timer;
     QThreadPool m_history; // one thread: a Reader of its own
+    QThreadPool m_charts;  // one thread: the first read of the cells may take a while
     std::unique_ptr<geo::Coastline> m_coastline;
     qint64 m_framesSent = 0, m_framesSkipped = 0;
 };

@@ -76,10 +76,16 @@ std::expected<ApiRequest, RequestError> parseApi(const QUrl &url, qint64 nowMs)
         }
         return request;
     }
-    if (path == u"/api/coastline"_s) {
-        request.kind = ApiRequest::Coastline;
-        if (auto ok = onlyParameters(query, {u"bbox"_s}); !ok)
+    if (path == u"/api/coastline"_s || path == u"/api/chart"_s) {
+        request.kind = path == u"/api/chart"_s ? ApiRequest::Chart : ApiRequest::Coastline;
+        if (auto ok = onlyParameters(query, request.kind == ApiRequest::Chart ? QStringList{u"bbox"_s, u"safety"_s} : QStringList{u"bbox"_s}); !ok)
             return std::unexpected(ok.error());
+        if (query.hasQueryItem(u"safety"_s)) {
+            bool ok = false;
+            request.safety = query.queryItemValue(u"safety"_s).toDouble(&ok);
+            if (!ok || !(request.safety >= 0) || request.safety > 1000)
+                return std::unexpected(RequestError{400, u"'safety' must be a depth in metres, 0 to 1000"_s});
+        }
         const QStringList parts = query.queryItemValue(u"bbox"_s).split(u',');
         double v[4] = {};
         bool ok = parts.size() == 4;

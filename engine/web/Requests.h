@@ -13,11 +13,12 @@ namespace neptus::web {
 // status and the reason. Nothing here changes anything: the page is read-only.
 struct ApiRequest
 {
-    enum Kind { State, Track, Alarms, Plans, Coastline };
+    enum Kind { State, Track, Alarms, Plans, Coastline, Chart };
     Kind kind = State;
     QString system;            // Track
     qint64 fromMs = 0, toMs = 0; // Track, Alarms, Plans
-    double west = 0, south = 0, east = 0, north = 0; // Coastline (degrees)
+    double west = 0, south = 0, east = 0, north = 0; // Coastline, Chart (degrees)
+    double safety = 5;         // Chart: the safety depth, metres
 };
 
 struct RequestError
@@ -31,7 +32,8 @@ constexpr qint64 maxSpanMs = 7 * 24 * 3600 * 1000ll; // a week of history at mos
 
 // /api/state, /api/track?system=NAME[&from=MS][&to=MS], /api/alarms, /api/plans
 // ([from], [to]: milliseconds since 1970 UTC; default the last hour before
-// `nowMs`), /api/coastline?bbox=W,S,E,N (at most 10° a side).
+// `nowMs`), /api/coastline?bbox=W,S,E,N (at most 10° a side),
+// /api/chart?bbox=W,S,E,N[&safety=METRES] (the same box; safety depth 0–1000 m, default 5).
 std::expected<ApiRequest, RequestError> parseApi(const QUrl &url, qint64 nowMs);
 
 // The static files the page is made of, by URL path: the file to send (in the

@@ -400,6 +400,26 @@ Rectangle {
         color: Theme.textDim
         font.pixelSize: Theme.smallFontPixelSize
     }
+    // Where the mouse is (a desk console; a finger does not hover) and, over a chart, the charted
+    // depth there, as a tap would say it.
+    HoverHandler {
+        id: hover
+        acceptedDevices: PointerDevice.Mouse | PointerDevice.TouchPad | PointerDevice.Stylus
+    }
+    Text {
+        id: cursorLabel
+        objectName: "cursorLabel"
+        readonly property var at: hover.hovered ? root.toCoordinate(hover.point.position.x, hover.point.position.y) : ({})
+        readonly property var charted: at.lat !== undefined && root.charts !== "" && !chart.loading
+                                       ? chart.featureAt(at.lat, at.lon, 1) : ({})
+        visible: at.lat !== undefined
+        anchors { left: parent.left; top: gridLabel.visible ? gridLabel.bottom : parent.top; leftMargin: Theme.spacing
+                  topMargin: gridLabel.visible ? 0 : Theme.spacing }
+        text: at.lat === undefined ? "" : "%1°, %2°".arg(at.lat.toFixed(5)).arg(at.lon.toFixed(5))
+                                          + (charted.depth !== undefined ? " · " + charted.depth : "")
+        color: Theme.textDim
+        font.pixelSize: Theme.smallFontPixelSize
+    }
     // Past tracks.maxDrawn systems the rest are counted, not drawn.
     Text {
         objectName: "hiddenSystems"

@@ -2,12 +2,14 @@
 // over the DevTools protocol, opens the page a console serves while two
 // simulated vehicles move; it shows both, their positions change, an alarm
 // raised on the console appears; screenshots at a desktop's size and a
-// phone's are written to build/<preset>/screenshots/ to be looked at.
+// phone's are written to build/<preset>/screenshots/ to be looked at. With
+// the console's chart, the page draws it as the console's map does.
 #include "database/Database.h"
 #include "session/OperationsFeed.h"
 #include "web/LiveServer.h"
 #include "core/DataFiles.h"
 
+#include "Fixtures.h"
 #include "PlanRun.h"
 #include "SimProcess.h"
 
@@ -209,4 +211,62 @@ TEST(WebPage, AHeadlessBrowserSeesBothVehiclesMoveAndAnAlarmAppear)
         << "the coastline is drawn";
     QTest::qWait(500);
     EXPECT_TRUE(browser.screenshot(shots + u"/web-1024x600-night.png"_s));
+}
+
+// The console's chart on the page (the README's NOAA cell): depth areas,
+// land, contours and symbols drawn under the tracks at approach and harbour
+// zoom, the cell named with "not for navigation", day and night.
+TEST(WebPage, TheConsolesChartIsDrawnAsItsMapDrawsIt)
+{
+    NEPTUS_REQUIRE_FIXTURE(cell, "charts/US4MD81M");
+    QTemporaryDir cache;
+    qputenv("XDG_CACHE_HOME", QFile::encodeName(cache.path()));
+    session::Console console(shippedSchema());
+    session::OperationsFeed feed(console, nullptr);
+    web::WebConfig config;
+    config.port = 0;
+    config.pageDir = dataPath(u"web"_s);
+    config.title = u"Chesapeake trials"_s;
+    config.charts = cell;
+    config.safetyDepth = 4;
+    web::LiveServer server(feed, config);
+    ASSERT_TRUE(server.start().has_value());
+
+    Browser browser;
+    QString why;
+    ASSERT_TRUE(browser.start(&why)) << why.toStdString();
+    browser.size(1280, 800, false);
+    browser.open(server.url());
+    // (The page has said hello: it knows the console has charts.)
+    ASSERT_TRUE(QTest::qWaitFor([&] { return browser.evaluate(u"typeof chartsShown !== 'undefined' && chartsShown"_s).toBool(); }, 10000));
+    browser.evaluate(u"map.setView([38.93, -76.36], 12), true"_s);
+    const auto status = [&] { return browser.evaluate(u"document.getElementById('chart-status').textContent"_s).toString(); };
+    ASSERT_TRUE(QTest::qWaitFor([&] { return status().contains(u"US4MD81M"_s); }, 20000)) << status().toStdString()
+        << browser.evaluate(u"JSON.stringify({shown: chartsShown, box: chartBox ? chartBox.toBBoxString() : null, n: chartAnswer ? chartAnswer.cells : null})"_s).toString().toStdString();
+    EXPECT_TRUE(status().contains(u"not for navigation"_s));
+    EXPECT_TRUE(status().contains(u"safety contour 5.4 m"_s)) << status().toStdString() << ": the first contour past 4 m";
+    const int approach = browser.evaluate(u"chartLayer.getLayers().length"_s).toInt();
+    EXPECT_GT(approach, 100);
+    // Drawn on the map, under everything else: the canvas of the chart's pane holds depth shades.
+    EXPECT_EQ(browser.evaluate(u"getComputedStyle(map.getPane('chart')).zIndex"_s).toString(), u"350"_s);
+    const QString shots = QDir(programDirectory()).filePath(u"../screenshots"_s);
+    QTest::qWait(500);
+    EXPECT_TRUE(browser.screenshot(shots + u"/web-chart-approach-1280x800.png"_s));
+
+    browser.evaluate(u"map.setView([38.975, -76.33], 14), true"_s);
+    ASSERT_TRUE(QTest::qWaitFor([&] { return browser.evaluate(u"chartZoom"_s).toInt() == 14; }, 20000));
+    EXPECT_GT(browser.evaluate(u"document.querySelectorAll('.chart-mark').length"_s).toInt(), 0);
+    EXPECT_TRUE(browser.evaluate(u"[...document.querySelectorAll('.chart-mark')].some(e => /buoy|beacon|light/.test(e.title))"_s).toBool())
+        << "each symbol says what it is";
+    QTest::qWait(500);
+    EXPECT_TRUE(browser.screenshot(shots + u"/web-chart-harbour-1280x800.png"_s));
+
+    browser.size(1024, 600, false);
+    browser.call(u"Emulation.setEmulatedMedia"_s, {{u"features"_s, QJsonArray{QJsonObject{{u"name"_s, u"prefers-color-scheme"_s},
+                                                                                          {u"value"_s, u"dark"_s}}}}});
+    // The chart's colours follow the device's: the dusk table when dark.
+    EXPECT_TRUE(QTest::qWaitFor([&] { return browser.evaluate(u"cssColour('deep')"_s).toString() == u"#1a2833"_s; }, 5000));
+    QTest::qWait(800);
+    EXPECT_TRUE(browser.screenshot(shots + u"/web-chart-harbour-1024x600-night.png"_s));
+    qunsetenv("XDG_CACHE_HOME");
 }

@@ -107,20 +107,19 @@ void ChartItem::Loaded::convert()
     for (const Cell &c : *cells) {
         for (const Feature &f : c.features) {
             // (Roles and charted depths as Cell::index() worked them out when the cell was read.)
-            const QString &k = f.objectClass;
-            const bool area = f.geometry == Feature::Geometry::Area;
-            if (f.role == Feature::Role::Land) {
+            const Drawn drawn = drawnAs(f);
+            if (drawn == Drawn::Land) {
                 land += rings(f);
-            } else if (f.role == Feature::Role::Depth) {
+            } else if (drawn == Drawn::Depth) {
                 depths.push_back({f.shallowest.value_or(0), rings(f)});
-            } else if (k == u"DEPCNT") {
+            } else if (drawn == Drawn::Contour) {
                 contours.push_back({f.number(u"VALDCO"_s), {}});
                 segments(f, contours.back().lines);
-            } else if (k == u"COALNE" || k == u"SLCONS") {
+            } else if (drawn == Drawn::Coast) {
                 segments(f, coast);
-            } else if (f.role == Feature::Role::Restriction && area) {
+            } else if (drawn == Drawn::Restricted) {
                 segments(f, restricted); // the rings, edge by edge
-            } else if (k == u"FAIRWY" && area) {
+            } else if (drawn == Drawn::Fairway) {
                 // Edges dashed, 120 m on and 80 m off (60 and 40 local units: a unit is 2 m).
                 std::vector<QPointF> edges;
                 segments(f, edges);
@@ -130,11 +129,10 @@ void ChartItem::Loaded::convert()
                     for (double at = 0; at < length; at += 100)
                         fairways.insert(fairways.end(), {a + d * (at / length), a + d * (std::min(length, at + 60) / length)});
                 }
-            } else if (f.role == Feature::Role::Hazard || (f.geometry == Feature::Geometry::Point
-                                       && (k.startsWith(u"BOY"_s) || k.startsWith(u"BCN"_s) || k == u"LIGHTS"))) {
+            } else if (drawn == Drawn::Hazard || drawn == Drawn::Buoy || drawn == Drawn::Beacon || drawn == Drawn::Light) {
                 // (An area or line hazard is marked at its first point.)
-                const Mark mark = f.role == Feature::Role::Hazard ? Mark::Hazard : k.startsWith(u"BOY"_s) ? Mark::Buoy
-                                  : k.startsWith(u"BCN"_s)   ? Mark::Beacon : Mark::Light;
+                const Mark mark = drawn == Drawn::Hazard ? Mark::Hazard : drawn == Drawn::Buoy ? Mark::Buoy
+                                  : drawn == Drawn::Beacon ? Mark::Beacon : Mark::Light;
                 for (const auto &part : f.parts) {
                     if (!part.empty())
                         points.push_back({mercatorOf(part.front().lat, part.front().lon), mark, f.number(u"SCAMIN"_s).value_or(0)});
@@ -268,15 +266,9 @@ void ChartItem::band()
     m_safety.clear();
     m_safetyContour = m_safetyDepth;
     if (m_read) {
-        // The safety contour: the first charted contour at or past the safety depth (S-52's idea).
-        double safety = std::numeric_limits<double>::infinity();
-        for (const auto &c : m_read->contours)
-            if (c.value && *c.value >= m_safetyDepth)
-                safety = std::min(safety, *c.value);
-        if (std::isfinite(safety))
-            m_safetyContour = safety;
+        m_safetyContour = m_read->cells ? neptus::charts::safetyContour(*m_read->cells, m_safetyDepth) : m_safetyDepth;
         for (const auto &d : m_read->depths)
-            m_bands[d.shallowest < 0 ? 0 : d.shallowest < m_safetyContour ? 1 : d.shallowest < 2 * m_safetyContour ? 2 : 3] += d.rings;
+            m_bands[depthShade(d.shallowest, m_safetyContour)] += d.rings;
         for (const auto &c : m_read->contours) {
             auto &lines = c.value == m_safetyContour ? m_safety : m_contours;
             lines.insert(lines.end(), c.lines.begin(), c.lines.end());

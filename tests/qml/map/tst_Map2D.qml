@@ -181,8 +181,16 @@ TestCase {
         m.safetyDepth = 12
         compare(chart.safetyContour, 18.2)
         tryVerify(() => Qt.colorEqual(colourAt(38.8503, -76.312942), Theme.chart.shallow), 10000, "now shallow")
-        // A tap says what is there.
+        // The mouse over it says where it is and the charted depth there.
         const p = m.screenPoint(38.8503, -76.312942)
+        const cursor = findChild(m, "cursorLabel")
+        mouseMove(m, p.x, p.y)
+        tryVerify(() => cursor.visible && cursor.text.indexOf("charted depth 10.9–18.2 m, Eastern Bay") > 0, 2000, cursor.text)
+        verify(cursor.text.startsWith("38.850"), cursor.text)
+        const q = m.screenPoint(38.8503, -76.37)
+        mouseMove(m, q.x, q.y)
+        tryVerify(() => cursor.text.indexOf(" · land") > 0, 2000, cursor.text)
+        // A tap says what is there.
         mouseClick(m, p.x, p.y)
         tryVerify(() => m.chartTapped.depth !== undefined, 2000)
         compare(m.chartTapped.depth, "charted depth 10.9–18.2 m, Eastern Bay")

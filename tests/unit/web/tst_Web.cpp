@@ -9,6 +9,7 @@
 #include "web/LiveServer.h"
 #include "web/Requests.h"
 
+#include "Fixtures.h"
 #include "Schemas.h"
 
 #include <QJsonArray>
@@ -16,6 +17,8 @@
 #include <QJsonObject>
 #include <QElapsedTimer>
 #include <QFile>
+#include <QFileInfo>
+#include <QSet>
 #include <QNetworkAccessManager>
 #include <QProcess>
 #include <QSslCertificate>
@@ -123,6 +126,12 @@ TEST(WebRequests, WhatThePageMayAskIsCheckedBeforeUse)
     EXPECT_EQ(refused(u"/api/alarms?colour=red"_s), 400);
     EXPECT_EQ(refused(u"/api/coastline?bbox=-20,41,-8,42"_s), 400);
     EXPECT_EQ(refused(u"/api/coastline?bbox=1,2,3"_s), 400);
+    EXPECT_EQ(web::parseApi(api(u"/api/chart?bbox=-77,38,-76,39&safety=8"_s), now)->safety, 8);
+    EXPECT_EQ(web::parseApi(api(u"/api/chart?bbox=-77,38,-76,39"_s), now)->kind, web::ApiRequest::Chart);
+    EXPECT_EQ(refused(u"/api/chart?bbox=-77,38,-76,39&safety=-1"_s), 400);
+    EXPECT_EQ(refused(u"/api/chart?bbox=-77,38,-76,39&safety=deep"_s), 400);
+    EXPECT_EQ(refused(u"/api/chart?bbox=-90,38,-76,39"_s), 400);
+    EXPECT_EQ(refused(u"/api/coastline?bbox=-77,38,-76,39&safety=3"_s), 400);
     EXPECT_EQ(refused(u"/api/command?op=abort"_s), 404);
     EXPECT_EQ(refused(u"/api/state?x="_s + QString(3000, u'a')), 414);
 
@@ -346,4 +355,58 @@ TEST_F(Server, HostileInputIsRefusedAndTheServerKeepsServing)
     const Reply after = fetch(QUrl(base + u"/api/state"_s));
     EXPECT_EQ(after.status, 200);
     EXPECT_TRUE(after.body.contains("lauv-sim-1"));
+}
+
+// The chart layer: the page draws the console's chart (the README's NOAA cell)
+// as the console's map does — land, depth areas shaded against the safety
+// contour (the first charted contour at or past the console's safety depth),
+// contours with the safety contour apart, the coast, and buoys, beacons,
+// lights and hazards in words — only what meets the box asked; without
+// charts it says there are none.
+TEST_F(Server, DrawsTheConsolesChartLayer)
+{
+    NEPTUS_REQUIRE_FIXTURE(cell, "charts/US4MD81M");
+    start(); // no charts
+    EXPECT_EQ(fetch(QUrl(base + u"/api/chart?bbox=-76.5,38.8,-76.3,39.0"_s)).status, 404);
+
+    QTemporaryDir cache;
+    qputenv("XDG_CACHE_HOME", QFile::encodeName(cache.path()));
+    web::WebConfig config;
+    config.charts = cell;
+    config.safetyDepth = 4;
+    start(config);
+    const Reply reply = fetch(QUrl(base + u"/api/chart?bbox=-76.60,38.35,-76.00,39.05&safety=4"_s));
+    ASSERT_EQ(reply.status, 200) << reply.body.constData();
+    const QJsonObject chart = QJsonDocument::fromJson(reply.body).object();
+    EXPECT_EQ(chart.value(u"cells"_s).toArray(), QJsonArray{u"US4MD81M.000"_s});
+    const double safety = chart.value(u"safetyContour"_s).toDouble();
+    EXPECT_GE(safety, 4);
+    const QJsonObject areas = chart.value(u"areas"_s).toObject(), lines = chart.value(u"lines"_s).toObject();
+    for (const char *shade : {"land", "shallow", "medium", "deep"})
+        EXPECT_GT(areas.value(QLatin1StringView(shade)).toArray().size(), 0) << shade;
+    for (const char *kind : {"contour", "safety", "coast"})
+        EXPECT_GT(lines.value(QLatin1StringView(kind)).toArray().size(), 0) << kind;
+    // Every polygon's rings and every line are [lat, lon] pairs in the cell.
+    const QJsonArray land = areas.value(u"land"_s).toArray();
+    const QJsonArray firstRing = land[0].toArray()[0].toArray();
+    ASSERT_GE(firstRing.size(), 4);
+    EXPECT_NEAR(firstRing[0][0].toDouble(), 38.7, 0.4);
+    EXPECT_NEAR(firstRing[0][1].toDouble(), -76.3, 0.3);
+    QSet<QString> kinds;
+    QStringList words;
+    for (const QJsonValue &m : chart.value(u"marks"_s).toArray()) {
+        kinds.insert(m[u"kind"_s].toString());
+        words.append(m[u"what"_s].toString());
+    }
+    EXPECT_TRUE(kinds.contains(u"buoy"_s) && kinds.contains(u"light"_s) && kinds.contains(u"hazard"_s)) << kinds.values().join(u',').toStdString();
+    EXPECT_TRUE(words.contains(u"lateral buoy"_s));
+    // A deeper safety depth moves the safety contour and the shades with it.
+    const QJsonObject deeper = QJsonDocument::fromJson(fetch(QUrl(base + u"/api/chart?bbox=-76.60,38.35,-76.00,39.05&safety=12"_s)).body).object();
+    EXPECT_GT(deeper.value(u"safetyContour"_s).toDouble(), safety);
+    EXPECT_GT(deeper[u"areas"_s][u"shallow"_s].toArray().size(), areas.value(u"shallow"_s).toArray().size());
+    // A box away from the cell: nothing of it.
+    const QJsonObject away = QJsonDocument::fromJson(fetch(QUrl(base + u"/api/chart?bbox=-9,41,-8,42"_s)).body).object();
+    EXPECT_TRUE(away.value(u"cells"_s).toArray().isEmpty());
+    EXPECT_TRUE(away.value(u"marks"_s).toArray().isEmpty());
+    qunsetenv("XDG_CACHE_HOME");
 }
