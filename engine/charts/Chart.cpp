@@ -44,8 +44,10 @@ bool inside(const Feature &area, double lon, double lat)
     return in;
 }
 
-// Metres of reach a feature is indexed with: what reportAt looks for around a point at most.
-constexpr double indexReach = 500;
+// Metres of reach a feature is indexed with: what reportAt looks for around a point at most
+// (a hazard within the radius asked; a sounding within 500 m). The smaller a feature's reach,
+// the fewer places list it, and the fewer features a point is tested against.
+constexpr double indexReach = 100, soundingReach = 500;
 
 // Square degrees inside its outer rings less its holes (shoelace; only to compare sizes).
 double areaOf(const Feature &area)
@@ -257,7 +259,8 @@ void Cell::index()
     auto g = std::make_shared<Grid>();
     // (Longitude's reach at the cell's latitude furthest from the equator: the widest in degrees.)
     const double poleward = std::max(std::abs(south), std::abs(north));
-    const double reachLat = indexReach / 110574.0, reachLon = indexReach / (111320.0 * std::max(0.01, std::cos(poleward * std::numbers::pi / 180)));
+    const double reachLat = soundingReach / 110574.0,
+                 reachLon = soundingReach / (111320.0 * std::max(0.01, std::cos(poleward * std::numbers::pi / 180)));
     g->west = west - reachLon;
     g->south = south - reachLat;
     g->nx = g->ny = 64;
@@ -266,15 +269,16 @@ void Cell::index()
     g->buckets.resize(std::size_t(g->nx * g->ny));
     for (std::size_t i = 0; i < features.size(); ++i) {
         const Feature &f = features[i];
-        if (f.west > f.east)
+        if (f.west > f.east || f.role == Feature::Role::Other)
             continue;
-        const int x0 = std::clamp(int((f.west - reachLon - g->west) / g->dx), 0, g->nx - 1);
-        const int x1 = std::clamp(int((f.east + reachLon - g->west) / g->dx), 0, g->nx - 1);
-        const int y0 = std::clamp(int((f.south - reachLat - g->south) / g->dy), 0, g->ny - 1);
-        const int y1 = std::clamp(int((f.north + reachLat - g->south) / g->dy), 0, g->ny - 1);
+        const double k = f.role == Feature::Role::Sounding ? 1 : indexReach / soundingReach;
+        const int x0 = std::clamp(int((f.west - k * reachLon - g->west) / g->dx), 0, g->nx - 1);
+        const int x1 = std::clamp(int((f.east + k * reachLon - g->west) / g->dx), 0, g->nx - 1);
+        const int y0 = std::clamp(int((f.south - k * reachLat - g->south) / g->dy), 0, g->ny - 1);
+        const int y1 = std::clamp(int((f.north + k * reachLat - g->south) / g->dy), 0, g->ny - 1);
         for (int y = y0; y <= y1; ++y)
             for (int x = x0; x <= x1; ++x)
-                g->buckets[std::size_t(y * g->nx + x)].push_back(quint32(i));
+                g->buckets[std::size_t(y * g->nx + x)].push_back({f.west, f.south, f.east, f.north, quint32(i), f.role});
     }
     grid = std::move(g);
 }
@@ -481,39 +485,39 @@ PointReport reportAt(const std::vector<Cell> &cells, double lon, double lat, dou
     // Features whose bounds, grown by the radius (or the 500 m a sounding is looked for), miss the point are skipped.
     const double reach = std::max(radius, soundings ? 500.0 : 0.0);
     const double dLat = reach / 110574.0, dLon = reach / (111320.0 * std::max(0.01, std::cos(lat * std::numbers::pi / 180)));
-    const auto near = [&](const Feature &f) {
-        return f.west > f.east || (lon >= f.west - dLon && lon <= f.east + dLon && lat >= f.south - dLat && lat <= f.north + dLat);
-    };
+    using Role = Feature::Role;
     PointReport report;
-    // The features of a cell that may matter here: those its grid lists at the point (all, unindexed).
-    static const std::vector<quint32> none;
-    const auto candidates = [&](const Cell &c) -> std::pair<const std::vector<quint32> *, bool> {
-        if (!c.grid || radius > indexReach)
-            return {nullptr, true};
+    // visit(feature, its role, its index) for the features of a cell whose role `wanted` takes and
+    // whose bounds, grown by `grow` (× dLon, dLat), hold the point: those the cell's grid lists at the
+    // point, filtered on the grid's copy of their role and bounds; all, when the cell is not indexed.
+    const auto forEach = [&](const Cell &c, const auto &wanted, double grow, const auto &visit) {
+        const double gLon = grow * dLon, gLat = grow * dLat;
+        if (!c.grid || radius > indexReach) {
+            for (std::size_t i = 0; i < c.features.size(); ++i) {
+                const Feature &f = c.features[i];
+                const Role role = f.west > f.east ? roleOf(f) : f.role;
+                if (wanted(role) && (f.west > f.east || (lon >= f.west - gLon && lon <= f.east + gLon && lat >= f.south - gLat
+                                                         && lat <= f.north + gLat)))
+                    visit(f, role, i);
+            }
+            return;
+        }
         const Cell::Grid &g = *c.grid;
         const int x = int(std::floor((lon - g.west) / g.dx)), y = int(std::floor((lat - g.south) / g.dy));
         if (x < 0 || y < 0 || x >= g.nx || y >= g.ny)
-            return {&none, false};
-        return {&g.buckets[std::size_t(y * g.nx + x)], false};
+            return;
+        for (const Cell::Grid::Candidate &k : g.buckets[std::size_t(y * g.nx + x)])
+            if (wanted(k.role) && lon >= k.west - gLon && lon <= k.east + gLon && lat >= k.south - gLat && lat <= k.north + gLat)
+                visit(c.features[k.feature], k.role, std::size_t(k.feature));
     };
-    const auto forEach = [&](const Cell &c, const auto &visit) { // visit(feature, its role, its index)
-        const auto [list, all] = candidates(c);
-        if (all) { // not indexed: roles worked out here
-            for (std::size_t i = 0; i < c.features.size(); ++i)
-                visit(c.features[i], roleOf(c.features[i]), i);
-        } else {
-            for (const quint32 i : *list)
-                visit(c.features[i], c.features[i].role, std::size_t(i));
-        }
-    };
-    using Role = Feature::Role;
     // The cell with the best usage band (the largest scale) whose coverage holds the point.
     const Cell *best = nullptr;
     for (const Cell &c : cells) {
         if (best && c.usageBand <= best->usageBand)
             continue;
         bool covers = false;
-        forEach(c, [&](const Feature &f, Role role, std::size_t) { covers = covers || (role == Role::Coverage && inside(f, lon, lat)); });
+        forEach(c, [](Role role) { return role == Role::Coverage; }, 0,
+                [&](const Feature &f, Role, std::size_t) { covers = covers || inside(f, lon, lat); });
         if (covers)
             best = &c;
     }
@@ -523,28 +527,34 @@ PointReport reportAt(const std::vector<Cell> &cells, double lon, double lat, dou
     report.cell = best->name;
     const Plane plane(lon, lat);
     double placeSize = 0;
-    forEach(*best, [&](const Feature &f, Role role, std::size_t index) {
-        if (role == Role::Other || role == Role::Coverage || (role == Role::Sounding && !soundings) || !near(f))
-            return;
+    const auto wanted = [soundings](Role role) {
+        return role != Role::Other && role != Role::Coverage && (role != Role::Sounding || soundings);
+    };
+    forEach(*best, wanted, 1, [&](const Feature &f, Role role, std::size_t index) {
         switch (role) {
         case Role::Land:
             report.land = report.land || inside(f, lon, lat);
             break;
-        case Role::Depth:
-            if (inside(f, lon, lat)) {
-                const bool indexed = f.west <= f.east;
-                const auto lo = indexed ? f.shallowest : f.number(u"DRVAL1"_s), hi = indexed ? f.deepest : f.number(u"DRVAL2"_s);
-                if (lo && (!report.depthMin || *lo < *report.depthMin)) {
-                    report.depthMin = lo;
-                    report.depthMax = hi;
-                    report.depthArea = f.name();
-                }
+        case Role::Depth: {
+            const bool indexed = f.west <= f.east;
+            const auto lo = indexed ? f.shallowest : f.number(u"DRVAL1"_s);
+            // (One no shallower than the one found already would change nothing: not tested.)
+            if (lo && (!report.depthMin || *lo < *report.depthMin) && inside(f, lon, lat)) {
+                report.depthMin = lo;
+                report.depthMax = indexed ? f.deepest : f.number(u"DRVAL2"_s);
+                report.depthArea = f.name();
             }
             break;
+        }
         case Role::Hazard:
         case Role::Restriction: {
-            const double d = isArea(f) && inside(f, lon, lat) ? 0 : distanceTo(plane, f);
-            if (d <= (isArea(f) && role == Role::Restriction ? 0 : radius))
+            // A restricted area counts only inside it (no distance to its edges worked out);
+            // a hazard, area or not, within the radius.
+            const bool area = isArea(f);
+            if (area && role == Role::Restriction && !inside(f, lon, lat))
+                break;
+            const double d = area && inside(f, lon, lat) ? 0 : distanceTo(plane, f);
+            if (d <= (area && role == Role::Restriction ? 0 : radius))
                 (role == Role::Hazard ? report.hazards : report.restrictions)
                     .push_back({f.objectClass, f.name(), role == Role::Hazard ? (f.west <= f.east ? f.shallowest : f.number(u"VALSOU"_s)) : std::nullopt, d, index});
             break;

@@ -91,14 +91,22 @@ struct Cell
     };
     Bounds bounds() const;
     // Works out each feature's bounds and a grid of which features are near
-    // each place (within 500 m), so that reportAt() tests a point only against
+    // each place (hazards and areas within 100 m, soundings 500 m), so that reportAt() tests a point only against
     // those (decodeCell does it; a cell changed after must be indexed again).
     void index();
     struct Grid
     {
         double west = 0, south = 0, dx = 1, dy = 1;
         int nx = 0, ny = 0;
-        std::vector<std::vector<quint32>> buckets; // feature indices, nx × ny
+        // A feature near a place, with what reportAt() filters on first (its
+        // role and bounds), so that the many it skips are never read whole.
+        struct Candidate
+        {
+            double west, south, east, north;
+            quint32 feature; // index in features
+            Feature::Role role;
+        };
+        std::vector<std::vector<Candidate>> buckets; // nx × ny; features of role Other left out
     };
     std::shared_ptr<const Grid> grid;
 };

@@ -53,13 +53,18 @@ QList<PlanProblem> checkAgainstCharts(const mission::PlanGeometry &geometry, con
 
     // Legs as the plan check walks them: the transit into each maneuver, then its own.
     const mission::Waypoint *previous = nullptr;
+    std::optional<double> lastDepth; // what the last leg needed, worked out again only when its depth changes
+    Need needs;
     for (const mission::ManeuverGeometry &g : geometry.maneuvers) {
         for (const mission::Waypoint &w : g.points) {
             const mission::Waypoint &from = previous ? *previous : w;
             const double length = previous ? mission::distance(from, w) : 0;
             // Not more than 20,000 points a leg: a leg longer than 200 km is walked in longer steps.
             const int steps = std::clamp(int(std::ceil(length / options.step)), 1, 20000);
-            const Need needs = *requiredDepth(vehicle, w.zUnits == u"DEPTH" ? w.z : 0, options);
+            if (const double depth = w.zUnits == u"DEPTH" ? w.z : 0; depth != lastDepth) {
+                needs = *requiredDepth(vehicle, depth, options);
+                lastDepth = depth;
+            }
             const double need = needs.metres;
             const QString &because = needs.why;
             const QString id = g.id + u'\n';
