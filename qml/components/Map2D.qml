@@ -287,23 +287,19 @@ Rectangle {
         objectName: "chartAreas"
         visible: chart.visible
         transform: Matrix4x4 { matrix: chart.areaTransform }
+        // (The model never changes, only each band's paths: the chart hands over the areas near the
+        // view, thinned for its zoom, when the view leaves them; the Shapes are not made again.)
         Repeater {
-            model: [
-                { paths: chart.deep, fill: Theme.chart.deep },
-                { paths: chart.medium, fill: Theme.chart.medium },
-                { paths: chart.shallow, fill: Theme.chart.shallow },
-                { paths: chart.drying, fill: Theme.chart.drying },
-                { paths: chart.land, fill: Theme.land }
-            ]
+            model: ["deep", "medium", "shallow", "drying", "land"]
             Shape {
                 id: band
-                required property var modelData
+                required property string modelData
                 asynchronous: true
                 ShapePath {
-                    fillColor: band.modelData.fill
+                    fillColor: band.modelData === "land" ? Theme.land : Theme.chart[band.modelData]
                     fillRule: ShapePath.OddEvenFill
                     strokeWidth: -1
-                    PathMultiline { paths: band.modelData.paths }
+                    PathMultiline { paths: chart[band.modelData] }
                 }
             }
         }

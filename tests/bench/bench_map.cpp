@@ -7,9 +7,11 @@
 #include "FrameTimes.h"
 #include "geo/Geodesy.h"
 #include "FakeVehicle.h"
+#include "Paths.h"
 #include "qmlmodels/ConsoleSession.h"
 
 #include <QElapsedTimer>
+#include <QFileInfo>
 #include <QGuiApplication>
 #include <QQmlComponent>
 #include <QQmlEngine>
@@ -132,6 +134,38 @@ int main(int argc, char **argv)
     map->setProperty("showCoastline", true);
     coastRead();
     print("zoom 6 (Iberia), coastline, panning", neptus::test::measureFrames(window, frames, pan));
+
+    // A nautical chart (the NOAA cell of ../shared/fixtures/charts: depth areas, contours, symbols)
+    // at harbour and approach zoom over Eastern Bay, next to grid only at the same place.
+    const QString cell = test::sharedPath(QStringLiteral("fixtures/charts/US4MD81M"));
+    if (!smoke && QFileInfo::exists(cell)) {
+        map->setProperty("showCoastline", false);
+        map->setProperty("showTrails", false);
+        QMetaObject::invokeMethod(map.get(), "centreAt", Q_ARG(double, 38.8503), Q_ARG(double, -76.3129));
+        auto *chart = map->findChild<QObject *>(QStringLiteral("chart"));
+        if (!chart)
+            qFatal("Map2D has no chart item");
+        for (const auto &[zoom, name] : {std::pair{14.0, "harbour (zoom 14)"}, std::pair{11.5, "approach (zoom 11.5)"}}) {
+            map->setProperty("zoomLevel", zoom);
+            map->setProperty("charts", QString());
+            print(qPrintable(QStringLiteral("%1, grid only, panning").arg(QLatin1StringView(name))),
+                  neptus::test::measureFrames(window, frames, pan));
+            map->setProperty("charts", cell);
+            QElapsedTimer waited;
+            waited.start();
+            while ((chart->property("loading").toBool() || chart->property("cells").toStringList().isEmpty()) && waited.elapsed() < 60000)
+                QCoreApplication::processEvents(QEventLoop::AllEvents, 50);
+            neptus::test::measureFrames(window, 30, pan); // the chart's first frames upload it
+            print(qPrintable(QStringLiteral("%1, chart, panning").arg(QLatin1StringView(name))),
+                  neptus::test::measureFrames(window, frames, pan));
+            // Where it goes: the filled areas (QML Shapes) apart from the lines and symbols (ChartItem).
+            auto *areas = map->findChild<QQuickItem *>(QStringLiteral("chartAreas"));
+            areas->setVisible(false);
+            print(qPrintable(QStringLiteral("%1, chart without its areas").arg(QLatin1StringView(name))),
+                  neptus::test::measureFrames(window, frames, pan));
+            areas->setVisible(true);
+        }
+    }
     if (!drew)
         std::fprintf(stderr, "bench_map: a run drew no frames\n");
     return drew ? 0 : 1;

@@ -7,6 +7,7 @@
 #include "BenchMain.h"
 #include "Paths.h"
 #include "charts/ChartCheck.h"
+#include "charts/ChartFiles.h"
 #include "charts/S57Reader.h"
 #include "mission/MissionXml.h"
 #include "mission/PlanCheck.h"
@@ -308,6 +309,41 @@ void ChartCheck(benchmark::State &state)
     state.counters["problems"] = static_cast<double>(problems);
 }
 BENCHMARK(ChartCheck)->Unit(benchmark::kMillisecond);
+
+// Opening the NOAA cell (base and three updates) as the console does
+// (charts::loadCell): the first time through the neptus-chart-import helper
+// (GDAL in its own process) into an empty cache, then from the cache.
+void ChartOpen(benchmark::State &state, bool cached)
+{
+    const QString cell = test::sharedPath(u"fixtures/charts/US4MD81M/US4MD81M.000"_s);
+    if (!QFile::exists(cell)) {
+        state.SkipWithError("no chart: ../shared/fixtures/charts is absent");
+        return;
+    }
+    QTemporaryDir warm;
+    charts::LoadOptions options;
+    options.cacheDir = warm.path();
+    if (cached && !charts::loadCell(cell, options)) {
+        state.SkipWithError("the helper could not read the cell");
+        return;
+    }
+    std::size_t features = 0;
+    for (auto _ : state) {
+        QTemporaryDir cold;
+        if (!cached)
+            options.cacheDir = cold.path();
+        bool fromCache = false;
+        const auto read = charts::loadCell(cell, options, &fromCache);
+        if (!read || fromCache != cached) {
+            state.SkipWithError(read ? "read from where it should not have been" : qPrintable(read.error()));
+            return;
+        }
+        features = read->features.size();
+    }
+    state.counters["features"] = static_cast<double>(features);
+}
+BENCHMARK_CAPTURE(ChartOpen, first, false)->Unit(benchmark::kMillisecond)->Iterations(3);
+BENCHMARK_CAPTURE(ChartOpen, cached, true)->Unit(benchmark::kMillisecond);
 
 void TranslationInput(benchmark::State &state)
 {

@@ -167,8 +167,8 @@ void ChartItem::load(const QString &path)
     if (path.isEmpty()) {
         m_read.reset();
         m_error.clear();
-        emit loaded();
         band();
+        emit loaded();
         return;
     }
     auto job = std::make_shared<Loaded>();
@@ -205,11 +205,6 @@ void ChartItem::setSafetyDepth(double metres)
     m_safetyDepth = metres;
     emit styleChanged();
     band();
-}
-
-QVariant ChartItem::land() const
-{
-    return QVariant::fromValue(m_read ? m_read->land : QList<QPolygonF>());
 }
 
 QVariantMap ChartItem::bounds() const
@@ -253,9 +248,9 @@ void ChartItem::finished()
     m_read = job;
     m_error = job->error;
     m_transform = QMatrix4x4();
+    band(); // before anyone hears of it: the shades point into what was read
     emit loaded();
     emit loadingChanged();
-    band();
 }
 
 void ChartItem::band()
@@ -268,15 +263,54 @@ void ChartItem::band()
     if (m_read) {
         m_safetyContour = m_read->cells ? neptus::charts::safetyContour(*m_read->cells, m_safetyDepth) : m_safetyDepth;
         for (const auto &d : m_read->depths)
-            m_bands[depthShade(d.shallowest, m_safetyContour)] += d.rings;
+            for (const QPolygonF &ring : d.rings)
+                m_bands[depthShade(d.shallowest, m_safetyContour)].push_back(&ring);
         for (const auto &c : m_read->contours) {
             auto &lines = c.value == m_safetyContour ? m_safety : m_contours;
             lines.insert(lines.end(), c.lines.begin(), c.lines.end());
         }
     }
     m_linesChanged = true;
+    m_shapedZoom = -1; // the shades changed: shaped again
+    if (m_read && width() > 0 && height() > 0)
+        viewUpdated(); // (placed first)
+    else
+        shape();
+}
+
+void ChartItem::shape()
+{
+    for (auto &s : m_shapes)
+        s.clear();
+    const MapProjection view = projection();
+    m_shapedZoom = int(std::floor(view.zoom * 2));
+    if (m_read && width() > 0 && height() > 0) {
+        // The view in local units, and as much again on every side.
+        const QRectF seen = m_transform.inverted().mapRect(QRectF(0, 0, width(), height()));
+        m_shaped = seen.adjusted(-seen.width(), -seen.height(), seen.width(), seen.height());
+        // About 0.75 pixel at the lower zoom of the half level, in local units (a pixel at localZoom).
+        const double tolerance = 0.75 * std::exp2(localZoom - m_shapedZoom / 2.0);
+        const auto add = [&](const QPolygonF &ring, QList<QPolygonF> &into) {
+            const QRectF box = ring.boundingRect();
+            if (!box.intersects(m_shaped) || (box.width() < tolerance && box.height() < tolerance))
+                return;
+            QPolygonF thinned;
+            for (qsizetype i = 0; i < ring.size(); ++i) {
+                const QPointF &p = ring[i];
+                if (thinned.isEmpty() || i + 1 == ring.size() || std::abs(p.x() - thinned.last().x()) >= tolerance
+                    || std::abs(p.y() - thinned.last().y()) >= tolerance)
+                    thinned.append(p);
+            }
+            if (thinned.size() >= 3)
+                into.append(std::move(thinned));
+        };
+        for (int b = 0; b < 4; ++b)
+            for (const QPolygonF *ring : m_bands[b])
+                add(*ring, m_shapes[b]);
+        for (const QPolygonF &ring : m_read->land)
+            add(ring, m_shapes[4]);
+    }
     emit banded();
-    viewUpdated();
 }
 
 void ChartItem::viewUpdated()
@@ -287,6 +321,9 @@ void ChartItem::viewUpdated()
         m_transform = m;
         emit placed();
     }
+    if (m_shapedZoom != int(std::floor(projection().zoom * 2))
+        || !m_shaped.contains(m_transform.inverted().mapRect(QRectF(0, 0, width(), height()))))
+        shape();
     update(); // the symbols are drawn in the item's own units
 }
 

@@ -38,7 +38,7 @@ class ChartItem : public MapOverlayItem
     Q_PROPERTY(QColor fairwayColor MEMBER m_fairwayColor NOTIFY styleChanged)
     Q_PROPERTY(double lineWidth MEMBER m_lineWidth NOTIFY styleChanged)
     // Closed rings in local units, even-odd, per band; placed by `areaTransform`.
-    Q_PROPERTY(QVariant land READ land NOTIFY loaded)
+    Q_PROPERTY(QVariant land READ land NOTIFY banded)
     Q_PROPERTY(QVariant drying READ drying NOTIFY banded)
     Q_PROPERTY(QVariant shallow READ shallow NOTIFY banded)
     Q_PROPERTY(QVariant medium READ medium NOTIFY banded)
@@ -64,11 +64,11 @@ public:
     void setPath(const QString &path);
     double safetyDepth() const { return m_safetyDepth; }
     void setSafetyDepth(double metres);
-    QVariant land() const;
-    QVariant drying() const { return QVariant::fromValue(m_bands[0]); }
-    QVariant shallow() const { return QVariant::fromValue(m_bands[1]); }
-    QVariant medium() const { return QVariant::fromValue(m_bands[2]); }
-    QVariant deep() const { return QVariant::fromValue(m_bands[3]); }
+    QVariant land() const { return QVariant::fromValue(m_shapes[4]); }
+    QVariant drying() const { return QVariant::fromValue(m_shapes[0]); }
+    QVariant shallow() const { return QVariant::fromValue(m_shapes[1]); }
+    QVariant medium() const { return QVariant::fromValue(m_shapes[2]); }
+    QVariant deep() const { return QVariant::fromValue(m_shapes[3]); }
     QMatrix4x4 areaTransform() const { return m_transform; }
     bool loading() const { return m_loading; }
     QString progress() const { return m_loading ? m_progress : QString(); }
@@ -107,6 +107,10 @@ private:
     void finished();
     // Sorts the depth areas and contours by the safety contour (no conversion again).
     void band();
+    // The areas handed to the Shapes: those near the view (three views wide), their points
+    // thinned to about a pixel at its zoom, so that a frame fills what can be seen, not the whole
+    // cell. Worked out again (shape()) when the view leaves that region or the zoom moves half a level.
+    void shape();
 
     QString m_path;
     double m_safetyDepth = 5;
@@ -116,7 +120,10 @@ private:
     double m_lineWidth = 1;
     // What was read, converted once (Loaded); band() and the paint node take from it.
     std::shared_ptr<const Loaded> m_read;
-    QList<QPolygonF> m_bands[4];
+    std::vector<const QPolygonF *> m_bands[4]; // the depth areas' rings by shade (in m_read)
+    QList<QPolygonF> m_shapes[5];              // shape(): the four shades, then land
+    QRectF m_shaped;                           // the region (local units) they were worked out for
+    int m_shapedZoom = -1;                     // and the view's zoom, in half levels
     std::vector<QPointF> m_contours, m_safety; // pairs of end points, local units
     bool m_linesChanged = false;
     QString m_error;
