@@ -280,30 +280,8 @@ Rectangle {
         shoreWidth: Math.max(1, Theme.mm(0.25))
     }
 
-    // Nautical charts: depth areas by band, then land (Shapes placed by the chart item's transform,
-    // so moving the view moves them without new geometry), under the contours, the coastline and
-    // the hazards the item draws itself.
-    Item {
-        objectName: "chartAreas"
-        visible: chart.visible
-        transform: Matrix4x4 { matrix: chart.areaTransform }
-        // (The model never changes, only each band's paths: the chart hands over the areas near the
-        // view, thinned for its zoom, when the view leaves them; the Shapes are not made again.)
-        Repeater {
-            model: ["deep", "medium", "shallow", "drying", "land"]
-            Shape {
-                id: band
-                required property string modelData
-                asynchronous: true
-                ShapePath {
-                    fillColor: band.modelData === "land" ? Theme.land : Theme.chart[band.modelData]
-                    fillRule: ShapePath.OddEvenFill
-                    strokeWidth: -1
-                    PathMultiline { paths: chart[band.modelData] }
-                }
-            }
-        }
-    }
+    // Nautical charts: depth areas by shade and land (painted by the chart item into an image of the
+    // region around the view, moved with the view), the contours, the coastline and the symbols.
     ChartItem {
         id: chart
         objectName: "chart"
@@ -315,6 +293,11 @@ Rectangle {
         centerLongitude: root.centerLongitude
         zoomLevel: root.zoomLevel
         bearing: root.bearing
+        landColor: Theme.land
+        deepColor: Theme.chart.deep
+        mediumColor: Theme.chart.medium
+        shallowColor: Theme.chart.shallow
+        dryingColor: Theme.chart.drying
         contourColor: Theme.chart.contour
         safetyContourColor: Theme.chart.safety
         coastColor: Theme.shore

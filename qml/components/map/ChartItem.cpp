@@ -5,10 +5,15 @@
 #include <QFileInfo>
 #include <QPointer>
 
+#include <QPainter>
+#include <QPainterPath>
+#include <QQuickWindow>
 #include <QSGGeometryNode>
+#include <QSGImageNode>
 #include <QSGTransformNode>
 #include <QtConcurrent/QtConcurrentRun>
 
+#include <array>
 #include <cmath>
 #include <optional>
 #include <numbers>
@@ -148,6 +153,15 @@ ChartItem::ChartItem(QQuickItem *parent) : MapOverlayItem(parent)
 {
     setFlag(ItemHasContents);
     connect(&m_watcher, &QFutureWatcherBase::finished, this, &ChartItem::finished);
+    connect(&m_painter, &QFutureWatcherBase::finished, this, &ChartItem::areasPainted);
+    // A colour, or showing the areas at all, changed: painted again.
+    connect(this, &ChartItem::styleChanged, this, [this] {
+        m_wantedZoom = -1;
+        m_linesChanged = true;
+        viewUpdated();
+        if (!m_read || !m_areasShown)
+            paintAreas();
+    });
 }
 
 ChartItem::~ChartItem() = default;
@@ -255,6 +269,7 @@ void ChartItem::finished()
 
 void ChartItem::band()
 {
+    ++m_generation; // an image painted before is of other areas now
     for (auto &b : m_bands)
         b.clear();
     m_contours.clear();
@@ -271,59 +286,101 @@ void ChartItem::band()
         }
     }
     m_linesChanged = true;
-    m_shapedZoom = -1; // the shades changed: shaped again
-    if (m_read && width() > 0 && height() > 0)
-        viewUpdated(); // (placed first)
-    else
-        shape();
-}
-
-void ChartItem::shape()
-{
-    for (auto &s : m_shapes)
-        s.clear();
-    const MapProjection view = projection();
-    m_shapedZoom = int(std::floor(view.zoom * 2));
     if (m_read && width() > 0 && height() > 0) {
-        // The view in local units, and as much again on every side.
-        const QRectF seen = m_transform.inverted().mapRect(QRectF(0, 0, width(), height()));
-        m_shaped = seen.adjusted(-seen.width(), -seen.height(), seen.width(), seen.height());
-        // About 0.75 pixel at the lower zoom of the half level, in local units (a pixel at localZoom).
-        const double tolerance = 0.75 * std::exp2(localZoom - m_shapedZoom / 2.0);
-        const auto add = [&](const QPolygonF &ring, QList<QPolygonF> &into) {
-            const QRectF box = ring.boundingRect();
-            if (!box.intersects(m_shaped) || (box.width() < tolerance && box.height() < tolerance))
-                return;
-            QPolygonF thinned;
-            for (qsizetype i = 0; i < ring.size(); ++i) {
-                const QPointF &p = ring[i];
-                if (thinned.isEmpty() || i + 1 == ring.size() || std::abs(p.x() - thinned.last().x()) >= tolerance
-                    || std::abs(p.y() - thinned.last().y()) >= tolerance)
-                    thinned.append(p);
-            }
-            if (thinned.size() >= 3)
-                into.append(std::move(thinned));
-        };
-        for (int b = 0; b < 4; ++b)
-            for (const QPolygonF *ring : m_bands[b])
-                add(*ring, m_shapes[b]);
-        for (const QPolygonF &ring : m_read->land)
-            add(ring, m_shapes[4]);
+        m_wantedZoom = -1; // the shades changed: painted again
+        viewUpdated();     // (placed first)
+    } else {
+        paintAreas();
     }
     emit banded();
+}
+
+void ChartItem::paintAreas()
+{
+    const MapProjection view = projection();
+    m_wantedZoom = int(std::floor(view.zoom * 2));
+    if (!m_read || !m_areasShown || width() <= 0 || height() <= 0) {
+        m_areas = Areas{};
+        m_wantedRegion = QRectF();
+        m_areasChanged = true;
+        update();
+        return;
+    }
+    // The view in local units, and half as much again on every side.
+    const QRectF seen = m_transform.inverted().mapRect(QRectF(0, 0, width(), height()));
+    m_wantedRegion = seen.adjusted(-seen.width() / 2, -seen.height() / 2, seen.width() / 2, seen.height() / 2);
+    if (m_painter.isRunning()) {
+        m_repaintAreas = true; // areasPainted() starts again with what is wanted then
+        return;
+    }
+    // Pixels per local unit at this zoom; at most 4096 pixels a side (a texture every renderer takes).
+    double scale = std::exp2(view.zoom - localZoom);
+    scale = std::min({scale, 4096 / m_wantedRegion.width(), 4096 / m_wantedRegion.height()});
+    const QSize size(std::max(1, int(std::ceil(m_wantedRegion.width() * scale))), std::max(1, int(std::ceil(m_wantedRegion.height() * scale))));
+    std::array<std::vector<const QPolygonF *>, 5> rings;
+    for (int b = 0; b < 4; ++b)
+        rings[std::size_t(b)] = m_bands[b];
+    for (const QPolygonF &ring : m_read->land)
+        rings[4].push_back(&ring);
+    const std::array<QColor, 5> fills{m_dryingColor, m_shallowColor, m_mediumColor, m_deepColor, m_landColor}; // as depthShade(), then land
+    m_painter.setFuture(QtConcurrent::run([read = m_read, rings = std::move(rings), fills, region = m_wantedRegion, zoom = m_wantedZoom,
+                                           size, scale, generation = m_generation] {
+        Areas areas{QImage(size, QImage::Format_ARGB32_Premultiplied), region, zoom, generation};
+        areas.image.fill(Qt::transparent);
+        QPainter painter(&areas.image);
+        painter.scale(scale, scale);
+        painter.translate(-region.topLeft());
+        painter.setPen(Qt::NoPen);
+        // Deep to drying, land last; each band's rings by the even-odd rule together, as the cell's
+        // holes are rings of their own. Points closer than half a pixel are left out.
+        const double tolerance = 0.5 / scale;
+        for (const std::size_t b : {3u, 2u, 1u, 0u, 4u}) {
+            QPainterPath path;
+            path.setFillRule(Qt::OddEvenFill);
+            for (const QPolygonF *ring : rings[b]) {
+                if (!ring->boundingRect().intersects(region))
+                    continue;
+                QPolygonF thinned;
+                thinned.reserve(ring->size());
+                for (qsizetype i = 0; i < ring->size(); ++i) {
+                    const QPointF &p = (*ring)[i];
+                    if (thinned.isEmpty() || i + 1 == ring->size() || std::abs(p.x() - thinned.last().x()) >= tolerance
+                        || std::abs(p.y() - thinned.last().y()) >= tolerance)
+                        thinned.append(p);
+                }
+                if (thinned.size() >= 3)
+                    path.addPolygon(thinned);
+            }
+            painter.fillPath(path, fills[b]);
+        }
+        return areas;
+    }));
+    emit paintingChanged();
+}
+
+void ChartItem::areasPainted()
+{
+    Areas painted = m_painter.result();
+    if (m_read && m_areasShown && painted.generation == m_generation) {
+        m_areas = std::move(painted);
+        m_areasChanged = true;
+        update();
+    }
+    if (m_repaintAreas) {
+        m_repaintAreas = false;
+        paintAreas();
+    }
+    emit paintingChanged();
 }
 
 void ChartItem::viewUpdated()
 {
     if (width() <= 0 || height() <= 0 || !m_read)
         return;
-    if (const QMatrix4x4 m = localToItem(m_read->origin, m_read->unitsPerWorld); m != m_transform) {
-        m_transform = m;
-        emit placed();
-    }
-    if (m_shapedZoom != int(std::floor(projection().zoom * 2))
-        || !m_shaped.contains(m_transform.inverted().mapRect(QRectF(0, 0, width(), height()))))
-        shape();
+    m_transform = localToItem(m_read->origin, m_read->unitsPerWorld);
+    if (m_wantedZoom != int(std::floor(projection().zoom * 2))
+        || !m_wantedRegion.contains(m_transform.inverted().mapRect(QRectF(0, 0, width(), height()))))
+        paintAreas();
     update(); // the symbols are drawn in the item's own units
 }
 
@@ -332,10 +389,26 @@ QSGNode *ChartItem::updatePaintNode(QSGNode *old, UpdatePaintNodeData *)
     QSGNode *root = old;
     if (!root) {
         root = new QSGNode;
-        root->appendChildNode(new QSGTransformNode);
+        root->appendChildNode(new QSGTransformNode); // the filled areas' image, under
+        root->appendChildNode(new QSGTransformNode); // the lines
         m_linesChanged = true;
+        m_areasChanged = true;
     }
-    auto *placed = static_cast<QSGTransformNode *>(root->firstChild());
+    auto *areasPlaced = static_cast<QSGTransformNode *>(root->firstChild());
+    areasPlaced->setMatrix(m_transform);
+    if (m_areasChanged) {
+        delete areasPlaced->firstChild();
+        if (!m_areas.image.isNull() && window()) {
+            QSGImageNode *image = window()->createImageNode();
+            image->setTexture(window()->createTextureFromImage(m_areas.image));
+            image->setOwnsTexture(true);
+            image->setFiltering(QSGTexture::Linear); // scaled smoothly until painted again for a new zoom
+            image->setRect(m_areas.region);
+            areasPlaced->appendChildNode(image);
+        }
+        m_areasChanged = false;
+    }
+    auto *placed = static_cast<QSGTransformNode *>(root->firstChild()->nextSibling());
     placed->setMatrix(m_transform);
     QSGGeometryNode *contours = flatNode(placed, 0, QSGGeometry::DrawLines);
     QSGGeometryNode *coast = flatNode(placed, 1, QSGGeometry::DrawLines);
@@ -389,10 +462,10 @@ QSGNode *ChartItem::updatePaintNode(QSGNode *old, UpdatePaintNodeData *)
             break;
         }
     }
-    QSGGeometryNode *hazardNode = flatNode(root, 1, QSGGeometry::DrawLines);
+    QSGGeometryNode *hazardNode = flatNode(root, 2, QSGGeometry::DrawLines);
     setNodePoints(hazardNode, hazards, m_lineWidth * 1.5);
     setNodeColor(hazardNode, m_hazardColor);
-    QSGGeometryNode *aidNode = flatNode(root, 2, QSGGeometry::DrawLines);
+    QSGGeometryNode *aidNode = flatNode(root, 3, QSGGeometry::DrawLines);
     setNodePoints(aidNode, aids, m_lineWidth * 1.5);
     setNodeColor(aidNode, m_aidColor);
     return root;

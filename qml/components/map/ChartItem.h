@@ -5,6 +5,7 @@
 
 #include <QColor>
 #include <QFutureWatcher>
+#include <QImage>
 #include <QMatrix4x4>
 #include <QPolygonF>
 #include <QtQml/qqmlregistration.h>
@@ -13,10 +14,10 @@
 
 // Nautical charts (S-57 cells, engine/charts) under Map2D's vehicles: the
 // cells of `path` read once on a worker thread (through the
-// neptus-chart-import helper and its cache), their areas handed to QML
-// Shapes as rings in a local frame placed by `areaTransform` (land; depth areas
-// in four bands by their shallowest depth against the safety depth: drying,
-// shallower than it, up to twice it (our choice), deeper), and drawn here: depth contours
+// neptus-chart-import helper and its cache), drawn here: their areas (land;
+// depth areas in four shades by their shallowest depth against the safety depth:
+// drying, shallower than it, up to twice it (our choice), deeper) painted on a
+// worker thread into an image of the region around the view, depth contours
 // (the safety contour, the first at or past the safety depth, thicker), the
 // coastline, restricted, caution and military practice areas' edges,
 // fairways' edges dashed, and as
@@ -37,13 +38,16 @@ class ChartItem : public MapOverlayItem
     Q_PROPERTY(QColor restrictedColor MEMBER m_restrictedColor NOTIFY styleChanged)
     Q_PROPERTY(QColor fairwayColor MEMBER m_fairwayColor NOTIFY styleChanged)
     Q_PROPERTY(double lineWidth MEMBER m_lineWidth NOTIFY styleChanged)
-    // Closed rings in local units, even-odd, per band; placed by `areaTransform`.
-    Q_PROPERTY(QVariant land READ land NOTIFY banded)
-    Q_PROPERTY(QVariant drying READ drying NOTIFY banded)
-    Q_PROPERTY(QVariant shallow READ shallow NOTIFY banded)
-    Q_PROPERTY(QVariant medium READ medium NOTIFY banded)
-    Q_PROPERTY(QVariant deep READ deep NOTIFY banded)
-    Q_PROPERTY(QMatrix4x4 areaTransform READ areaTransform NOTIFY placed)
+    // The filled areas' colours: land, and depth areas by shade (deep, medium, shallow, drying).
+    Q_PROPERTY(QColor landColor MEMBER m_landColor NOTIFY styleChanged)
+    Q_PROPERTY(QColor deepColor MEMBER m_deepColor NOTIFY styleChanged)
+    Q_PROPERTY(QColor mediumColor MEMBER m_mediumColor NOTIFY styleChanged)
+    Q_PROPERTY(QColor shallowColor MEMBER m_shallowColor NOTIFY styleChanged)
+    Q_PROPERTY(QColor dryingColor MEMBER m_dryingColor NOTIFY styleChanged)
+    // Whether the filled areas are drawn (the benchmark times the lines and symbols alone).
+    Q_PROPERTY(bool areasShown MEMBER m_areasShown NOTIFY styleChanged)
+    // While the areas are being painted for a new place or zoom (the last image is shown meanwhile).
+    Q_PROPERTY(bool painting READ painting NOTIFY paintingChanged)
     Q_PROPERTY(bool loading READ loading NOTIFY loadingChanged)
     // While loading: the cell being read and how far ("US4MD81M.000, 1 of 3"), "" else.
     Q_PROPERTY(QString progress READ progress NOTIFY loadingChanged)
@@ -64,13 +68,8 @@ public:
     void setPath(const QString &path);
     double safetyDepth() const { return m_safetyDepth; }
     void setSafetyDepth(double metres);
-    QVariant land() const { return QVariant::fromValue(m_shapes[4]); }
-    QVariant drying() const { return QVariant::fromValue(m_shapes[0]); }
-    QVariant shallow() const { return QVariant::fromValue(m_shapes[1]); }
-    QVariant medium() const { return QVariant::fromValue(m_shapes[2]); }
-    QVariant deep() const { return QVariant::fromValue(m_shapes[3]); }
-    QMatrix4x4 areaTransform() const { return m_transform; }
     bool loading() const { return m_loading; }
+    bool painting() const { return m_painter.isRunning(); }
     QString progress() const { return m_loading ? m_progress : QString(); }
     QString error() const { return m_error; }
     QStringList cells() const;
@@ -93,7 +92,7 @@ signals:
     void styleChanged();
     void loaded();
     void banded();
-    void placed();
+    void paintingChanged();
     void loadingChanged();
 
 protected:
@@ -107,10 +106,12 @@ private:
     void finished();
     // Sorts the depth areas and contours by the safety contour (no conversion again).
     void band();
-    // The areas handed to the Shapes: those near the view (three views wide), their points
-    // thinned to about a pixel at its zoom, so that a frame fills what can be seen, not the whole
-    // cell. Worked out again (shape()) when the view leaves that region or the zoom moves half a level.
-    void shape();
+    // The filled areas, painted on a worker thread into one image of the region around the view
+    // (twice the view each way) at its zoom, drawn as one texture that moves with the view: a
+    // frame copies an image, whatever the cell holds. Painted again (paintAreas()) when the view
+    // leaves that region or the zoom moves half a level, the last image shown (scaled) meanwhile.
+    void paintAreas();
+    void areasPainted();
 
     QString m_path;
     double m_safetyDepth = 5;
@@ -121,9 +122,23 @@ private:
     // What was read, converted once (Loaded); band() and the paint node take from it.
     std::shared_ptr<const Loaded> m_read;
     std::vector<const QPolygonF *> m_bands[4]; // the depth areas' rings by shade (in m_read)
-    QList<QPolygonF> m_shapes[5];              // shape(): the four shades, then land
-    QRectF m_shaped;                           // the region (local units) they were worked out for
-    int m_shapedZoom = -1;                     // and the view's zoom, in half levels
+    QColor m_dryingColor = Qt::darkGreen, m_shallowColor = Qt::blue, m_mediumColor = Qt::cyan, m_deepColor = Qt::white,
+           m_landColor = Qt::lightGray;
+    bool m_areasShown = true;
+    struct Areas
+    {
+        QImage image;
+        QRectF region;     // local units the image covers
+        int zoom = -1;     // the view's zoom it was painted for, in half levels
+        quint64 generation = 0;
+    };
+    quint64 m_generation = 0;          // band(): the areas or their shades changed
+    Areas m_areas;                     // shown
+    QRectF m_wantedRegion;             // asked for (what the next paint covers)
+    int m_wantedZoom = -1;
+    bool m_areasChanged = false;       // a new image for the paint node
+    bool m_repaintAreas = false;       // asked again while painting
+    QFutureWatcher<Areas> m_painter;
     std::vector<QPointF> m_contours, m_safety; // pairs of end points, local units
     bool m_linesChanged = false;
     QString m_error;
