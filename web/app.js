@@ -79,7 +79,7 @@ let chartsShown = false, chartLayer = null, chartBox = null, chartZoom = -1, cha
 const cssColour = (name) => getComputedStyle(document.documentElement).getPropertyValue('--chart-' + name).trim();
 
 function chartSymbol(mark, colours) {
-  const c = mark.kind === 'hazard' ? colours.hazard : colours.aid;
+  const c = mark.kind === 'hazard' ? colours.hazard : mark.colour ? colours[mark.colour] : colours.aid;
   const shape = mark.kind === 'hazard' ? '<path d="M-5,-5 L5,5 M5,-5 L-5,5" stroke="' + c + '" stroke-width="2"/>'
     : mark.kind === 'buoy' ? '<circle r="4.5" fill="none" stroke="' + c + '" stroke-width="2"/>'
     : mark.kind === 'beacon' ? '<path d="M0,-6 L5.5,4.5 L-5.5,4.5 Z" fill="none" stroke="' + c + '" stroke-width="2"/>'
@@ -93,7 +93,8 @@ function drawChart() {
   if (!answer) return;
   if (chartLayer) chartLayer.remove();
   const colours = {};
-  for (const name of ['deep', 'medium', 'shallow', 'drying', 'land', 'contour', 'safety', 'coast', 'hazard', 'aid', 'restricted'])
+  for (const name of ['deep', 'medium', 'shallow', 'drying', 'land', 'contour', 'safety', 'coast', 'hazard', 'aid', 'restricted',
+                      'red', 'green', 'yellow'])
     colours[name] = cssColour(name);
   const layers = [];
   for (const shade of ['deep', 'medium', 'shallow', 'drying', 'land'])

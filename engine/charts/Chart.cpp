@@ -374,6 +374,21 @@ Drawn drawnAs(const Feature &f)
     return Drawn::Nothing;
 }
 
+AidColour aidColour(const Feature &f)
+{
+    // GDAL writes a list attribute as "(count:a,b,...)"; a plain "3" is taken too.
+    QString text = f.attributes.value(u"COLOUR"_s).trimmed();
+    if (text.startsWith(u'(') && text.endsWith(u')'))
+        text = text.mid(1, text.size() - 2).section(u':', -1);
+    bool ok = false;
+    switch (text.section(u',', 0, 0).trimmed().toInt(&ok)) {
+    case 3: return AidColour::Red;
+    case 4: return AidColour::Green;
+    case 6: return AidColour::Yellow;
+    default: return AidColour::Other;
+    }
+}
+
 double safetyContour(const std::vector<Cell> &cells, double safetyDepth)
 {
     double safety = std::numeric_limits<double>::infinity();

@@ -129,6 +129,12 @@ QString className(const QString &objectClass);
 // Cell::index() works out.
 enum class Drawn : quint8 { Nothing, Land, Depth, Contour, Coast, Restricted, Fairway, Hazard, Buoy, Beacon, Light };
 Drawn drawnAs(const Feature &feature);
+// An aid's colour as it is drawn: the first of its COLOUR attribute's S-57
+// colours ("(1:3)" red, "(3:4,3,4)" green with bands), what matters at a
+// glance (port and starboard, a yellow special mark); Other for the rest
+// (white, black, none said), drawn in the chart's aid colour.
+enum class AidColour : quint8 { Other, Red, Green, Yellow };
+AidColour aidColour(const Feature &feature);
 // The safety contour (S-52's idea): the first charted depth contour (DEPCNT's
 // VALDCO) at or past the safety depth; the safety depth when there is none.
 double safetyContour(const std::vector<Cell> &cells, double safetyDepth);

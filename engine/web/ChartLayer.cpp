@@ -75,6 +75,9 @@ QJsonObject chartLayer(const std::vector<charts::Cell> &cells, double west, doub
                                      {u"scamin"_s, f.number(u"SCAMIN"_s).value_or(0)}, {u"what"_s, charts::className(f.objectClass)}};
                     if (!f.name().isEmpty())
                         mark.insert(u"name"_s, f.name());
+                    if (drawn != Drawn::Hazard)
+                        if (const charts::AidColour c = charts::aidColour(f); c != charts::AidColour::Other)
+                            mark.insert(u"colour"_s, c == charts::AidColour::Red ? u"red"_s : c == charts::AidColour::Green ? u"green"_s : u"yellow"_s);
                     if (drawn == Drawn::Hazard && f.shallowest)
                         mark.insert(u"depth"_s, *f.shallowest);
                     marks.append(mark);

@@ -16,7 +16,8 @@ namespace neptus::web {
 //    "areas": {"deep": [polygon, …], "medium", "shallow", "drying", "land"},
 //    "lines": {"contour": [polyline, …], "safety", "coast", "restricted", "fairway"},
 //    "marks": [{"kind": "hazard"|"buoy"|"beacon"|"light", "lat", "lon",
-//               "scamin", "what": "wreck", "name", "depth"}, …]}
+//               "scamin", "what": "wreck", "name", "depth",
+//               "colour": "red"|"green"|"yellow" (an aid's charted colour)}, …]}
 // A polygon is a list of rings (even-odd), a ring or polyline a list of
 // [lat, lon]. Points nearer than `tolerance` degrees to the last one kept are
 // left out (about a pixel of the page's view), and positions are rounded to

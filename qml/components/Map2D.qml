@@ -303,6 +303,9 @@ Rectangle {
         coastColor: Theme.shore
         hazardColor: Theme.chart.hazard
         aidColor: Theme.chart.aid
+        redAidColor: Theme.chart.red
+        greenAidColor: Theme.chart.green
+        yellowAidColor: Theme.chart.yellow
         restrictedColor: Theme.chart.restricted
         fairwayColor: Theme.chart.contour
         lineWidth: Math.max(1, Theme.mm(0.2))

@@ -47,21 +47,24 @@ QtObject {
           sea: "#cfe0ec", land: "#ece3c8", shore: "#5e4f32", traces: ["#1565c0", "#d32f2f", "#2e7d32", "#6a1b9a"],
           sky: "#4f86c6", ground: "#8a5a2b", water: "#cfe3f5", waterSurface: "#4f9fd6",
           chart: { deep: "#f6f9fc", medium: "#d6e7f3", shallow: "#93bfe2", drying: "#b3cd9b", contour: "#7d93a6",
-                   safety: "#173a5e", hazard: "#111111", aid: "#8e2a8c", restricted: "#c2185b" } },
+                   safety: "#173a5e", hazard: "#111111", aid: "#8e2a8c", restricted: "#c2185b",
+                   red: "#d32f2f", green: "#2e7d32", yellow: "#c99a00" } },
         { background: "#1d2229", surface: "#262c35", titleBar: "#14181d", text: "#e3e7ec",
           textDim: "#98a2b0", accent: "#5ea8ff", border: "#47515f",
           levels: ["#6c7480", "#3fae52", "#4f8fe6", "#e0a52a", "#ef4b4b", "#d26ad2"],
           sea: "#142531", land: "#2f2b23", shore: "#9c8b63", traces: ["#5ea8ff", "#ff6b6b", "#5fd07a", "#c58af9"],
           sky: "#2c4a6b", ground: "#4f3419", water: "#1f3346", waterSurface: "#2a5573",
           chart: { deep: "#1a2833", medium: "#1f3343", shallow: "#2c4d69", drying: "#2e3b25", contour: "#5c7184",
-                   safety: "#a8c4dc", hazard: "#e3e7ec", aid: "#d38bd1", restricted: "#e57399" } },
+                   safety: "#a8c4dc", hazard: "#e3e7ec", aid: "#d38bd1", restricted: "#e57399",
+                   red: "#e06666", green: "#5fbf6f", yellow: "#d9c25a" } },
         { background: "#000000", surface: "#0a0000", titleBar: "#050000", text: "#a30000",
           textDim: "#6a0000", accent: "#c80000", border: "#360000",
           levels: ["#2e1010", "#3a4a00", "#4a1a3a", "#8a4a00", "#c00000", "#ff1a1a"],
           sea: "#050000", land: "#170400", shore: "#6a0000", traces: ["#ff3030", "#c08000", "#a05050", "#ff8080"],
           sky: "#140000", ground: "#2a0a00", water: "#100000", waterSurface: "#300000",
           chart: { deep: "#020000", medium: "#070000", shallow: "#120000", drying: "#221000", contour: "#3a0000",
-                   safety: "#8a0000", hazard: "#a30000", aid: "#700000", restricted: "#5a0000" } }
+                   safety: "#8a0000", hazard: "#a30000", aid: "#700000", restricted: "#5a0000",
+                   red: "#700000", green: "#700000", yellow: "#700000" } }
     ]
     readonly property var colors: palettes[Math.max(0, Math.min(palette, palettes.length - 1))]
 
@@ -79,7 +82,8 @@ QtObject {
     readonly property color shore: colors.shore
     // A nautical chart (S-57, ChartItem): depth areas deep (past twice the safety depth), medium,
     // shallow (shallower than the safety contour: it stands out) and drying; depth contours, the
-    // safety contour, hazards. S-52's idea (day, dusk and night tables), not its tables.
+    // safety contour, hazards, aids (buoys, beacons, lights: red, green and yellow ones in those colours
+    // by day and dusk, at night all in the night's red). S-52's idea (day, dusk and night tables), not its tables.
     readonly property var chart: colors.chart
     // Instruments: an attitude indicator's sky and ground, a water column and its seabed.
     readonly property color sky: colors.sky

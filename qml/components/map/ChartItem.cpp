@@ -76,6 +76,7 @@ struct ChartItem::Loaded
         Eigen::Vector2d mercator;
         Mark mark;
         double scamin;
+        AidColour colour;
     };
     std::vector<Point> points;
 
@@ -140,7 +141,7 @@ void ChartItem::Loaded::convert()
                                   : drawn == Drawn::Beacon ? Mark::Beacon : Mark::Light;
                 for (const auto &part : f.parts) {
                     if (!part.empty())
-                        points.push_back({mercatorOf(part.front().lat, part.front().lon), mark, f.number(u"SCAMIN"_s).value_or(0)});
+                        points.push_back({mercatorOf(part.front().lat, part.front().lon), mark, f.number(u"SCAMIN"_s).value_or(0), aidColour(f)});
                     if (f.geometry != Feature::Geometry::Point)
                         break;
                 }
@@ -433,13 +434,14 @@ QSGNode *ChartItem::updatePaintNode(QSGNode *old, UpdatePaintNodeData *)
     const MapProjection view = projection();
     const double r = std::max(3.0, m_lineWidth * 3);
     const double scale = view.metresPerPixel() / 0.00028;
-    std::vector<QPointF> hazards, aids;
+    std::vector<QPointF> hazards, aidsBy[4]; // aids by AidColour
     for (const Loaded::Point &point : m_read ? m_read->points : std::vector<Loaded::Point>{}) {
         if (point.scamin > 0 ? scale > point.scamin : view.zoom < 11)
             continue;
         const QPointF p = view.fromMercator(point.mercator);
         if (p.x() < -r || p.y() < -r || p.x() > width() + r || p.y() > height() + r)
             continue;
+        auto &aids = aidsBy[int(point.colour)];
         switch (point.mark) {
         case Loaded::Mark::Hazard:
             hazards.insert(hazards.end(), {p + QPointF(-r, -r), p + QPointF(r, r), p + QPointF(-r, r), p + QPointF(r, -r)});
@@ -465,9 +467,13 @@ QSGNode *ChartItem::updatePaintNode(QSGNode *old, UpdatePaintNodeData *)
     QSGGeometryNode *hazardNode = flatNode(root, 2, QSGGeometry::DrawLines);
     setNodePoints(hazardNode, hazards, m_lineWidth * 1.5);
     setNodeColor(hazardNode, m_hazardColor);
-    QSGGeometryNode *aidNode = flatNode(root, 3, QSGGeometry::DrawLines);
-    setNodePoints(aidNode, aids, m_lineWidth * 1.5);
-    setNodeColor(aidNode, m_aidColor);
+    // Aids in their charted colour (red, green, yellow; the rest in the aid colour).
+    const QColor aidColours[4] = {m_aidColor, m_redAidColor, m_greenAidColor, m_yellowAidColor};
+    for (int c = 0; c < 4; ++c) {
+        QSGGeometryNode *aidNode = flatNode(root, 3 + c, QSGGeometry::DrawLines);
+        setNodePoints(aidNode, aidsBy[c], m_lineWidth * 1.5);
+        setNodeColor(aidNode, aidColours[c]);
+    }
     return root;
 }
 

@@ -35,6 +35,10 @@ class ChartItem : public MapOverlayItem
     Q_PROPERTY(QColor coastColor MEMBER m_coastColor NOTIFY styleChanged)
     Q_PROPERTY(QColor hazardColor MEMBER m_hazardColor NOTIFY styleChanged)
     Q_PROPERTY(QColor aidColor MEMBER m_aidColor NOTIFY styleChanged)
+    // Buoys, beacons and lights charted red, green or yellow (COLOUR's first colour).
+    Q_PROPERTY(QColor redAidColor MEMBER m_redAidColor NOTIFY styleChanged)
+    Q_PROPERTY(QColor greenAidColor MEMBER m_greenAidColor NOTIFY styleChanged)
+    Q_PROPERTY(QColor yellowAidColor MEMBER m_yellowAidColor NOTIFY styleChanged)
     Q_PROPERTY(QColor restrictedColor MEMBER m_restrictedColor NOTIFY styleChanged)
     Q_PROPERTY(QColor fairwayColor MEMBER m_fairwayColor NOTIFY styleChanged)
     Q_PROPERTY(double lineWidth MEMBER m_lineWidth NOTIFY styleChanged)
@@ -117,7 +121,8 @@ private:
     double m_safetyDepth = 5;
     double m_safetyContour = 0;
     QColor m_contourColor = Qt::gray, m_safetyColor = Qt::black, m_coastColor = Qt::darkGray, m_hazardColor = Qt::black,
-           m_aidColor = Qt::darkMagenta, m_restrictedColor = Qt::magenta, m_fairwayColor = Qt::gray;
+           m_aidColor = Qt::darkMagenta, m_restrictedColor = Qt::magenta, m_fairwayColor = Qt::gray, m_redAidColor = Qt::red,
+           m_greenAidColor = Qt::darkGreen, m_yellowAidColor = Qt::darkYellow;
     double m_lineWidth = 1;
     // What was read, converted once (Loaded); band() and the paint node take from it.
     std::shared_ptr<const Loaded> m_read;

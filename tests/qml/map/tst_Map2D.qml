@@ -198,6 +198,20 @@ TestCase {
         mouseClick(findChild(m, "chartTapped"))
         tryVerify(() => !findChild(m, "chartTapped").visible, 2000, "a tap on it closes it")
         compare(m.chartTapped.depth, undefined, "and asks nothing of the map under it")
+        // Buoys in their charted colours: Philpots Island Buoy 2 red, Greenwood Creek Buoy 3 green.
+        const drawnIn = (lat, lon, colour) => {
+            const image = grabImage(m), q = m.screenPoint(lat, lon)
+            for (let dx = -8; dx <= 8; ++dx)
+                for (let dy = -8; dy <= 8; ++dy)
+                    if (Qt.colorEqual(image.pixel(q.x + dx, q.y + dy), colour))
+                        return true
+            return false
+        }
+        m.centreAt(38.8983, -76.3375)
+        tryVerify(() => drawnIn(38.8982947, -76.3375269, Theme.chart.red), 5000, "a red lateral buoy is drawn red")
+        verify(!drawnIn(38.8982947, -76.3375269, Theme.chart.green))
+        m.centreAt(38.8843, -76.2033)
+        tryVerify(() => drawnIn(38.8843286, -76.2033236, Theme.chart.green), 5000, "a green one green")
         // Far from the charts, a tap on the status line shows them whole.
         m.centreAt(41.15, -8.66)
         mouseClick(findChild(m, "noTiles"))

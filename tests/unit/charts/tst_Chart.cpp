@@ -168,3 +168,23 @@ TEST(Chart, TheBestUsageBandCoveringThePointAnswers)
     EXPECT_EQ(reportAt(cells, -8.76, 41.12).cell, u"XX4TEST.000"_s) << "outside the harbour cell";
     EXPECT_EQ(reportAt(cells, -8.76, 41.12).place, u"The Bay"_s);
 }
+
+// An aid's colour as drawn, from its COLOUR list as GDAL writes it: the first
+// colour (a green-red-green preferred channel buoy is green), red, green and
+// yellow apart, the rest (white, black, none said, nonsense) as other aids.
+TEST(Chart, AnAidIsDrawnInItsFirstChartedColour)
+{
+    const auto colour = [](const QString &value) {
+        return aidColour(point(u"BOYLAT"_s, 0, 0, value.isNull() ? QMap<QString, QString>{} : QMap<QString, QString>{{u"COLOUR"_s, value}}));
+    };
+    EXPECT_EQ(colour(u"(1:3)"_s), AidColour::Red);
+    EXPECT_EQ(colour(u"(1:4)"_s), AidColour::Green);
+    EXPECT_EQ(colour(u"(3:4,3,4)"_s), AidColour::Green);
+    EXPECT_EQ(colour(u"(2:6,2)"_s), AidColour::Yellow);
+    EXPECT_EQ(colour(u"3"_s), AidColour::Red);
+    EXPECT_EQ(colour(u"(1:1)"_s), AidColour::Other);
+    EXPECT_EQ(colour(u"(1:2)"_s), AidColour::Other);
+    EXPECT_EQ(colour(QString()), AidColour::Other);
+    EXPECT_EQ(colour(u"(red)"_s), AidColour::Other);
+    EXPECT_EQ(drawnAs([] { Feature f = point(u"BOYLAT"_s, 0, 0); f.role = roleOf(f); return f; }()), Drawn::Buoy);
+}

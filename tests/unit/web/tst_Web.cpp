@@ -400,6 +400,12 @@ TEST_F(Server, DrawsTheConsolesChartLayer)
     }
     EXPECT_TRUE(kinds.contains(u"buoy"_s) && kinds.contains(u"light"_s) && kinds.contains(u"hazard"_s)) << kinds.values().join(u',').toStdString();
     EXPECT_TRUE(words.contains(u"lateral buoy"_s));
+    // Aids in their charted colours: port (red) and starboard (green) lateral buoys both there.
+    QSet<QString> colours;
+    for (const QJsonValue &m : chart.value(u"marks"_s).toArray())
+        if (m[u"kind"_s].toString() == u"buoy"_s)
+            colours.insert(m[u"colour"_s].toString());
+    EXPECT_TRUE(colours.contains(u"red"_s) && colours.contains(u"green"_s)) << colours.values().join(u',').toStdString();
     // A deeper safety depth moves the safety contour and the shades with it.
     const QJsonObject deeper = QJsonDocument::fromJson(fetch(QUrl(base + u"/api/chart?bbox=-76.60,38.35,-76.00,39.05&safety=12"_s)).body).object();
     EXPECT_GT(deeper.value(u"safetyContour"_s).toDouble(), safety);
