@@ -137,7 +137,7 @@ TestCase {
         verify(Qt.colorEqual(marker("go").color, Theme.levelColor(4)), "the marker is an error's")
         verify(findAll(map2d, "problem").some(row => row.children[0].text.indexOf("'go' (Goto): z = 500 m") > 0))
         // Saved and sent: the desk refuses it.
-        mouseClick(findChild(map2d, "savePlanButton"))
+        mouseClick(reveal(findChild(map2d, "savePlanButton")))
         tryCompare(model(), "modified", false)
         tryVerify(() => Fixtures.session.plans.missionProblems.some(p => p.indexOf("z = 500 m") >= 0), 3000)
         // Undo, redo, undo.
@@ -250,11 +250,13 @@ TestCase {
         // A tap on the problem goes there.
         map2d.centreAt(41.1380, -8.6150)
         const count = model().maneuvers.length
-        mouseClick(findAll(map2d, "problem").find(row => row.children[0].text.indexOf("'rock'") > 0))
+        // (Brought into the panel's view first, as every other tap here: a row scrolled out of it is
+        // clipped, and the click lands on whatever the panel shows there instead.)
+        mouseClick(reveal(findAll(map2d, "problem").find(row => row.children[0].text.indexOf("'rock'") > 0)))
         compare(model().maneuvers.length, count, "a tap on the panel is not a tap on the map under it")
         fuzzyCompare(map2d.centerLatitude, problem.lat, 1e-6)
         // Saved: the file has every edit.
-        mouseClick(findChild(map2d, "savePlanButton"))
+        mouseClick(reveal(findChild(map2d, "savePlanButton")))
         tryCompare(model(), "modified", false)
         const saved = Fixtures.readFile(file)
         verify(saved.indexOf('id="goto1"') > 0 && saved.indexOf("<FollowPath") > 0, saved)
@@ -407,7 +409,7 @@ TestCase {
         mouseClick(reveal(findChild(map2d, "undoButton")))
         mouseClick(findChild(map2d, "undoButton"))
         compare(model().features.find(f => f.id === "image1").scale, 0.5)
-        mouseClick(findChild(map2d, "savePlanButton"))
+        mouseClick(reveal(findChild(map2d, "savePlanButton")))
         tryCompare(model(), "modified", false)
         const saved = Fixtures.readFile(file)
         verify(saved.indexOf('<polygon id="polygon1" layer="hazards" role="no-go">') > 0, saved)
