@@ -76,6 +76,7 @@ map.createPane('chart').style.zIndex = 350;
 map.createPane('chartMarks').style.zIndex = 360;
 const chartRenderer = L.canvas({ pane: 'chart' });
 let chartsShown = false, chartLayer = null, chartBox = null, chartZoom = -1, chartSafety = 5, chartAnswer = null;
+let chartAsked = 0; // the last request's number: an older answer arriving later is not drawn
 const cssColour = (name) => getComputedStyle(document.documentElement).getPropertyValue('--chart-' + name).trim();
 
 function chartSymbol(mark, colours) {
@@ -124,10 +125,11 @@ function loadChart() {
   if (chartBox && chartBox.contains(map.getBounds()) && chartZoom === map.getZoom()) return;
   const box = [b.getWest(), b.getSouth(), b.getEast(), b.getNorth()].map((v) => v.toFixed(4));
   const zoom = map.getZoom();
+  const asked = ++chartAsked;
   fetch(withToken('/api/chart?bbox=' + box.join(',') + '&safety=' + chartSafety))
     .then((r) => r.ok ? r.json() : null)
     .then((answer) => {
-      if (!answer) return;
+      if (!answer || asked !== chartAsked) return;
       chartAnswer = answer;
       chartBox = b;
       chartZoom = zoom;

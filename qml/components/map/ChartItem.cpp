@@ -263,6 +263,8 @@ void ChartItem::finished()
     m_read = job;
     m_error = job->error;
     m_transform = QMatrix4x4();
+    m_areas = Areas{}; // the image of the cells read before is not placed on these
+    m_areasChanged = true;
     band(); // before anyone hears of it: the shades point into what was read
     emit loaded();
     emit loadingChanged();
