@@ -307,6 +307,12 @@ void ChartCheck(benchmark::State &state)
     state.counters["maneuvers"] = 1000;
     state.counters["km"] = geometry.length / 1000;
     state.counters["problems"] = static_cast<double>(problems);
+    // What the cell's grid holds (the memory the index costs).
+    std::size_t entries = 0;
+    for (const auto &bucket : cell->grid->buckets)
+        entries += bucket.size();
+    state.counters["grid_entries"] = static_cast<double>(entries);
+    state.counters["grid_MB"] = static_cast<double>(entries * sizeof(charts::Cell::Grid::Candidate)) / 1e6;
 }
 BENCHMARK(ChartCheck)->Unit(benchmark::kMillisecond);
 
