@@ -1,6 +1,8 @@
 #pragma once
 
+#include <cmath>
 #include <cstddef>
+#include <iterator>
 
 namespace neptus::geo {
 
@@ -20,6 +22,26 @@ bool insideRing(const Ring &ring, double x, double y, XY xy)
             inside = !inside;
     }
     return inside;
+}
+
+// A polyline or ring with the points nearer than `tolerance` (in x and in y)
+// to the last one kept left out, its first and last points always kept: what
+// a map draws at a scale where `tolerance` is about a pixel.
+template <typename Points, typename XY>
+Points thinned(const Points &points, double tolerance, XY xy)
+{
+    Points kept;
+    const std::size_t n = std::size(points);
+    for (std::size_t i = 0; i < n; ++i) {
+        if (i > 0 && i + 1 < n) {
+            const auto [x, y] = xy(points[i]);
+            const auto [lx, ly] = xy(kept.back());
+            if (std::abs(x - lx) < tolerance && std::abs(y - ly) < tolerance)
+                continue;
+        }
+        kept.push_back(points[i]);
+    }
+    return kept;
 }
 
 } // namespace neptus::geo

@@ -1,5 +1,7 @@
 #include "web/ChartLayer.h"
 
+#include "geo/Polygon.h"
+
 #include <QJsonArray>
 
 #include <cmath>
@@ -15,15 +17,8 @@ double rounded(double degrees) { return std::round(degrees * 1e6) / 1e6; }
 QJsonArray path(const std::vector<charts::Vertex> &points, double tolerance, bool closed)
 {
     QJsonArray out;
-    const charts::Vertex *kept = nullptr;
-    for (std::size_t i = 0; i < points.size(); ++i) {
-        const charts::Vertex &v = points[i];
-        const bool end = i + 1 == points.size();
-        if (kept && !end && std::abs(v.lon - kept->lon) < tolerance && std::abs(v.lat - kept->lat) < tolerance)
-            continue;
+    for (const charts::Vertex &v : geo::thinned(points, tolerance, [](const charts::Vertex &p) { return std::pair{p.lon, p.lat}; }))
         out.append(QJsonArray{rounded(v.lat), rounded(v.lon)});
-        kept = &v;
-    }
     // A ring too small to see is left out whole; a line keeps its two ends.
     if (closed && out.size() < 4)
         return {};

@@ -176,11 +176,14 @@ std::expected<quint16, QString> LiveServer::start()
         if (api->kind == ApiRequest::Chart) {
             if (m_config.charts.isEmpty())
                 return QtFuture::makeReadyValueFuture(failure(404, u"this console has no charts"_s));
-            return QtConcurrent::run(&m_charts, [path = m_config.charts, r = *api] {
-                // The same cells as the console's map (read once, shared while anyone holds them).
+            return QtConcurrent::run(&m_charts, [path = m_config.charts, r = *api, held = &m_chartCells] {
+                // The same cells as the console's map (read once, shared while anyone holds them);
+                // held here too, so that a page without a map beside it (neptus-logd) does not read
+                // them again at every request. (Touched only on m_charts' one thread.)
                 const auto cells = charts::sharedCells(path);
                 if (!cells)
                     return failure(503, cells.error());
+                *held = *cells;
                 // About a pixel: the page asks for its view and half as much again each way.
                 const double tolerance = std::max(r.east - r.west, r.north - r.south) / 4000;
                 return QHttpServerResponse(chartLayer(**cells, r.west, r.south, r.east, r.north, r.safety, tolerance));

@@ -18,6 +18,7 @@ class QTcpServer;
 class QWebSocket;
 
 namespace neptus::geo { class Coastline; }
+namespace neptus::charts { struct Cell; }
 
 namespace neptus::web {
 
@@ -79,6 +80,7 @@ private:
     QTimer m_timer;
     QThreadPool m_history; // one thread: a Reader of its own
     QThreadPool m_charts;  // one thread: the first read of the cells may take a while
+    std::shared_ptr<const std::vector<charts::Cell>> m_chartCells; // the last read, on m_charts' thread
     std::unique_ptr<geo::Coastline> m_coastline;
     qint64 m_framesSent = 0, m_framesSkipped = 0;
 };

@@ -112,6 +112,15 @@ public:
                                                         {u"mobile"_s, phone}});
     }
     void open(const QString &url) { call(u"Page.navigate"_s, {{u"url"_s, url}}); }
+    // Started, at a desktop's size (1280×800), on `url`.
+    bool startAt(const QString &url, QString *error)
+    {
+        if (!start(error))
+            return false;
+        size(1280, 800, false);
+        open(url);
+        return true;
+    }
     bool screenshot(const QString &file)
     {
         const QByteArray png = QByteArray::fromBase64(call(u"Page.captureScreenshot"_s, {{u"format"_s, u"png"_s}})
@@ -154,9 +163,7 @@ TEST(WebPage, AHeadlessBrowserSeesBothVehiclesMoveAndAnAlarmAppear)
 
     Browser browser;
     QString why;
-    ASSERT_TRUE(browser.start(&why)) << why.toStdString();
-    browser.size(1280, 800, false);
-    browser.open(server.url());
+    ASSERT_TRUE(browser.startAt(server.url(), &why)) << why.toStdString();
 
     // Both vehicles, on the map and in the list.
     const auto names = [&] {
@@ -234,9 +241,7 @@ TEST(WebPage, TheConsolesChartIsDrawnAsItsMapDrawsIt)
 
     Browser browser;
     QString why;
-    ASSERT_TRUE(browser.start(&why)) << why.toStdString();
-    browser.size(1280, 800, false);
-    browser.open(server.url());
+    ASSERT_TRUE(browser.startAt(server.url(), &why)) << why.toStdString();
     // (The page has said hello: it knows the console has charts.)
     ASSERT_TRUE(QTest::qWaitFor([&] { return browser.evaluate(u"typeof chartsShown !== 'undefined' && chartsShown"_s).toBool(); }, 10000));
     browser.evaluate(u"map.setView([38.93, -76.36], 12), true"_s);

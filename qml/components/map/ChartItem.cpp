@@ -1,6 +1,7 @@
 #include "ChartItem.h"
 
 #include "charts/ChartFiles.h"
+#include "geo/Polygon.h"
 
 #include <QFileInfo>
 #include <QPointer>
@@ -326,9 +327,9 @@ void ChartItem::paintAreas()
     for (const QPolygonF &ring : m_read->land)
         rings[4].push_back(&ring);
     const std::array<QColor, 5> fills{m_dryingColor, m_shallowColor, m_mediumColor, m_deepColor, m_landColor}; // as depthShade(), then land
-    m_painter.setFuture(QtConcurrent::run([read = m_read, rings = std::move(rings), fills, region = m_wantedRegion, zoom = m_wantedZoom,
-                                           size, scale, generation = m_generation] {
-        Areas areas{QImage(size, QImage::Format_ARGB32_Premultiplied), region, zoom, generation};
+    m_painter.setFuture(QtConcurrent::run([read = m_read, rings = std::move(rings), fills, region = m_wantedRegion, size, scale,
+                                           generation = m_generation] {
+        Areas areas{QImage(size, QImage::Format_ARGB32_Premultiplied), region, generation};
         areas.image.fill(Qt::transparent);
         QPainter painter(&areas.image);
         painter.scale(scale, scale);
@@ -343,14 +344,7 @@ void ChartItem::paintAreas()
             for (const QPolygonF *ring : rings[b]) {
                 if (!ring->boundingRect().intersects(region))
                     continue;
-                QPolygonF thinned;
-                thinned.reserve(ring->size());
-                for (qsizetype i = 0; i < ring->size(); ++i) {
-                    const QPointF &p = (*ring)[i];
-                    if (thinned.isEmpty() || i + 1 == ring->size() || std::abs(p.x() - thinned.last().x()) >= tolerance
-                        || std::abs(p.y() - thinned.last().y()) >= tolerance)
-                        thinned.append(p);
-                }
+                const QPolygonF thinned = neptus::geo::thinned(*ring, tolerance, [](const QPointF &p) { return std::pair{p.x(), p.y()}; });
                 if (thinned.size() >= 3)
                     path.addPolygon(thinned);
             }

@@ -134,8 +134,7 @@ private:
     {
         QImage image;
         QRectF region;     // local units the image covers
-        int zoom = -1;     // the view's zoom it was painted for, in half levels
-        quint64 generation = 0;
+        quint64 generation = 0; // band()'s, when it was asked for
     };
     quint64 m_generation = 0;          // band(): the areas or their shades changed
     Areas m_areas;                     // shown

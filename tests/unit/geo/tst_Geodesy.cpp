@@ -1,6 +1,7 @@
 // Geodesy against published reference values (each test names its source),
 // plus round trips that must hold everywhere.
 #include "geo/Geodesy.h"
+#include "geo/Polygon.h"
 
 #include <gtest/gtest.h>
 
@@ -141,4 +142,16 @@ TEST(Geodesy, WebMercator)
     const auto back = fromMercator(toMercator(radians(-33.9), radians(151.2)));
     EXPECT_NEAR(degrees(back.x()), -33.9, 1e-12);
     EXPECT_NEAR(degrees(back.y()), 151.2, 1e-12);
+}
+
+// A line thinned for drawing: points within the tolerance of the last kept
+// (in x and in y) left out, the ends always kept.
+TEST(Polygon, ThinnedKeepsTheEndsAndDropsWhatIsCloserThanTheTolerance)
+{
+    const std::vector<std::pair<double, double>> line{{0, 0}, {0.4, 0.1}, {1, 0}, {1.2, 0.3}, {1.3, 0.2}, {3, 0}, {3.1, 0}};
+    const auto kept = neptus::geo::thinned(line, 1.0, [](const auto &p) { return p; });
+    const std::vector<std::pair<double, double>> expected{{0, 0}, {1, 0}, {3, 0}, {3.1, 0}};
+    EXPECT_EQ(kept, expected);
+    EXPECT_EQ(neptus::geo::thinned(line, 0.0, [](const auto &p) { return p; }), line) << "nothing dropped at 0";
+    EXPECT_TRUE(neptus::geo::thinned(std::vector<std::pair<double, double>>{}, 1.0, [](const auto &p) { return p; }).empty());
 }
