@@ -42,7 +42,8 @@ inline std::unique_ptr<QQuickItem> showInWindow(QQmlEngine &engine, QQuickWindow
     return item;
 }
 
-inline FrameTimes measureFrames(QQuickWindow &window, int frames, const std::function<void()> &step)
+// The frame-to-frame times (ms) of `frames` frames, `step` run after each.
+inline std::vector<double> frameTimes(QQuickWindow &window, int frames, const std::function<void()> &step)
 {
     std::vector<double> ms;
     QElapsedTimer frame;
@@ -61,10 +62,20 @@ inline FrameTimes measureFrames(QQuickWindow &window, int frames, const std::fun
     while (static_cast<int>(ms.size()) < frames && total.elapsed() < 120000)
         QCoreApplication::processEvents(QEventLoop::AllEvents, 5);
     QObject::disconnect(connection);
+    return ms;
+}
+
+inline FrameTimes summary(std::vector<double> ms)
+{
     std::sort(ms.begin(), ms.end());
     if (ms.empty())
         return {};
     return {ms[ms.size() / 2], ms[ms.size() * 99 / 100], ms.back(), int(ms.size())};
+}
+
+inline FrameTimes measureFrames(QQuickWindow &window, int frames, const std::function<void()> &step)
+{
+    return summary(frameTimes(window, frames, step));
 }
 
 } // namespace neptus::test

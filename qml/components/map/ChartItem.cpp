@@ -14,6 +14,7 @@
 #include <QSGTransformNode>
 #include <QtConcurrent/QtConcurrentRun>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <optional>
@@ -43,6 +44,9 @@ Cell::Bounds boundsOf(const std::vector<Cell> &cells)
 
 // Local units: a pixel at zoom 16 (about 2 m), around the charts' middle.
 constexpr double localZoom = 16;
+
+// The side of the tiles the chart's image is drawn in (pixels).
+constexpr int tileSide = 256;
 
 } // namespace
 
@@ -159,9 +163,8 @@ ChartItem::ChartItem(QQuickItem *parent) : MapOverlayItem(parent)
     // A colour, or showing the areas at all, changed: painted again.
     connect(this, &ChartItem::styleChanged, this, [this] {
         m_wantedZoom = -1;
-        m_linesChanged = true;
         viewUpdated();
-        if (!m_read || !m_areasShown)
+        if (!m_read || !m_imageShown)
             paintAreas();
     });
 }
@@ -276,8 +279,7 @@ void ChartItem::band()
     ++m_generation; // an image painted before is of other areas now
     for (auto &b : m_bands)
         b.clear();
-    m_contours.clear();
-    m_safety.clear();
+    auto contours = std::make_shared<std::vector<QPointF>>(), safety = std::make_shared<std::vector<QPointF>>();
     m_safetyContour = m_safetyDepth;
     if (m_read) {
         m_safetyContour = m_read->cells ? neptus::charts::safetyContour(*m_read->cells, m_safetyDepth) : m_safetyDepth;
@@ -285,11 +287,12 @@ void ChartItem::band()
             for (const QPolygonF &ring : d.rings)
                 m_bands[depthShade(d.shallowest, m_safetyContour)].push_back(&ring);
         for (const auto &c : m_read->contours) {
-            auto &lines = c.value == m_safetyContour ? m_safety : m_contours;
+            auto &lines = c.value == m_safetyContour ? *safety : *contours;
             lines.insert(lines.end(), c.lines.begin(), c.lines.end());
         }
     }
-    m_linesChanged = true;
+    m_contours = std::move(contours);
+    m_safety = std::move(safety);
     if (m_read && width() > 0 && height() > 0) {
         m_wantedZoom = -1; // the shades changed: painted again
         viewUpdated();     // (placed first)
@@ -303,23 +306,26 @@ void ChartItem::paintAreas()
 {
     const MapProjection view = projection();
     m_wantedZoom = int(std::floor(view.zoom * 2));
-    if (!m_read || !m_areasShown || width() <= 0 || height() <= 0) {
+    if (!m_read || !m_imageShown || width() <= 0 || height() <= 0) {
         m_areas = Areas{};
         m_wantedRegion = QRectF();
         m_areasChanged = true;
         update();
         return;
     }
-    // The view in local units, and half as much again on every side.
+    // The view in local units, and half as much again on every side (less on a screen over 2048
+    // pixels, so that the image stays within 4096 pixels a side).
     const QRectF seen = m_transform.inverted().mapRect(QRectF(0, 0, width(), height()));
-    m_wantedRegion = seen.adjusted(-seen.width() / 2, -seen.height() / 2, seen.width() / 2, seen.height() / 2);
+    const double pixels = std::exp2(view.zoom - localZoom); // a local unit at this zoom
+    const double mx = std::clamp((4096 / pixels - seen.width()) / 2, 0.0, seen.width() / 2),
+                 my = std::clamp((4096 / pixels - seen.height()) / 2, 0.0, seen.height() / 2);
+    m_wantedRegion = seen.adjusted(-mx, -my, mx, my);
     if (m_painter.isRunning()) {
         m_repaintAreas = true; // areasPainted() starts again with what is wanted then
         return;
     }
-    // Pixels per local unit at this zoom; at most 4096 pixels a side (a texture every renderer takes).
-    double scale = std::exp2(view.zoom - localZoom);
-    scale = std::min({scale, 4096 / m_wantedRegion.width(), 4096 / m_wantedRegion.height()});
+    // Pixels per local unit: those of this zoom, fewer on a screen wider than 4096 pixels.
+    const double scale = std::min({pixels, 4096 / m_wantedRegion.width(), 4096 / m_wantedRegion.height()});
     const QSize size(std::max(1, int(std::ceil(m_wantedRegion.width() * scale))), std::max(1, int(std::ceil(m_wantedRegion.height() * scale))));
     std::array<std::vector<const QPolygonF *>, 5> rings;
     for (int b = 0; b < 4; ++b)
@@ -327,16 +333,31 @@ void ChartItem::paintAreas()
     for (const QPolygonF &ring : m_read->land)
         rings[4].push_back(&ring);
     const std::array<QColor, 5> fills{m_dryingColor, m_shallowColor, m_mediumColor, m_deepColor, m_landColor}; // as depthShade(), then land
-    m_painter.setFuture(QtConcurrent::run([read = m_read, rings = std::move(rings), fills, region = m_wantedRegion, size, scale,
+    // The lines over them, in this order: pairs of end points (in m_read, or the contours sorted by band())
+    // with their colour and width in pixels.
+    using Points = std::shared_ptr<const std::vector<QPointF>>;
+    struct Lines
+    {
+        Points points;
+        QColor colour;
+        double width;
+    };
+    const std::array<Lines, 5> lines{Lines{Points(m_read, &m_read->fairways), m_fairwayColor, m_lineWidth},
+                                     Lines{m_contours, m_contourColor, m_lineWidth}, Lines{Points(m_read, &m_read->coast), m_coastColor, m_lineWidth},
+                                     Lines{m_safety, m_safetyColor, m_lineWidth * 2.5},
+                                     Lines{Points(m_read, &m_read->restricted), m_restrictedColor, m_lineWidth * 1.5}};
+    m_painter.setFuture(QtConcurrent::run([read = m_read, rings = std::move(rings), fills, lines, region = m_wantedRegion, size, scale,
                                            generation = m_generation] {
-        Areas areas{QImage(size, QImage::Format_ARGB32_Premultiplied), region, generation};
-        areas.image.fill(Qt::transparent);
-        QPainter painter(&areas.image);
+        QImage image(size, QImage::Format_ARGB32_Premultiplied);
+        image.fill(Qt::transparent);
+        QPainter painter(&image);
         painter.scale(scale, scale);
         painter.translate(-region.topLeft());
         painter.setPen(Qt::NoPen);
         // Deep to drying, land last; each band's rings by the even-odd rule together, as the cell's
-        // holes are rings of their own. Points closer than half a pixel are left out.
+        // holes are rings of their own. Points closer than half a pixel are left out; each area's
+        // edge is drawn in its colour too, so that neighbours thinned apart leave no gap between them
+        // (the shallower's edge over the deeper: where the charts cover, the image is opaque).
         const double tolerance = 0.5 / scale;
         for (const std::size_t b : {3u, 2u, 1u, 0u, 4u}) {
             QPainterPath path;
@@ -348,8 +369,49 @@ void ChartItem::paintAreas()
                 if (thinned.size() >= 3)
                     path.addPolygon(thinned);
             }
-            painter.fillPath(path, fills[b]);
+            QPen edge(fills[b], 1);
+            edge.setCosmetic(true);
+            painter.setPen(edge);
+            painter.setBrush(fills[b]);
+            painter.drawPath(path);
         }
+        // The lines, smoothed, each segment that may cross the region.
+        painter.setRenderHint(QPainter::Antialiasing);
+        std::vector<QLineF> seen;
+        for (const Lines &l : lines) {
+            seen.clear();
+            const std::vector<QPointF> &points = *l.points;
+            for (std::size_t i = 0; i + 1 < points.size(); i += 2) {
+                const QPointF a = points[i], b = points[i + 1];
+                if (std::max(a.x(), b.x()) >= region.left() && std::min(a.x(), b.x()) <= region.right()
+                    && std::max(a.y(), b.y()) >= region.top() && std::min(a.y(), b.y()) <= region.bottom())
+                    seen.emplace_back(a, b);
+            }
+            QPen pen(l.colour, l.width);
+            pen.setCosmetic(true); // a width in pixels at every zoom
+            pen.setCapStyle(Qt::FlatCap);
+            painter.setPen(pen);
+            painter.drawLines(seen.data(), int(seen.size()));
+        }
+        painter.end();
+        // Cut in tiles: those wholly painted opaque (drawn without blending, which costs the software
+        // renderer several ms a frame), those partly (blended), and none where nothing is painted.
+        Areas areas{{}, region, scale, generation};
+        for (int y = 0; y < size.height(); y += tileSide)
+            for (int x = 0; x < size.width(); x += tileSide) {
+                const QRect cut = QRect(x, y, tileSide, tileSide) & image.rect();
+                bool none = true, all = true;
+                for (int row = cut.top(); row <= cut.bottom() && (none || all); ++row) {
+                    const auto *line = reinterpret_cast<const QRgb *>(image.constScanLine(row));
+                    for (int column = cut.left(); column <= cut.right(); ++column) {
+                        const int alpha = qAlpha(line[column]);
+                        none = none && alpha == 0;
+                        all = all && alpha == 255;
+                    }
+                }
+                if (!none)
+                    areas.tiles.push_back({all ? image.copy(cut).convertToFormat(QImage::Format_RGB32) : image.copy(cut), cut.topLeft()});
+            }
         return areas;
     }));
     emit paintingChanged();
@@ -358,7 +420,7 @@ void ChartItem::paintAreas()
 void ChartItem::areasPainted()
 {
     Areas painted = m_painter.result();
-    if (m_read && m_areasShown && painted.generation == m_generation) {
+    if (m_read && m_imageShown && painted.generation == m_generation) {
         m_areas = std::move(painted);
         m_areasChanged = true;
         update();
@@ -386,45 +448,42 @@ QSGNode *ChartItem::updatePaintNode(QSGNode *old, UpdatePaintNodeData *)
     QSGNode *root = old;
     if (!root) {
         root = new QSGNode;
-        root->appendChildNode(new QSGTransformNode); // the filled areas' image, under
-        root->appendChildNode(new QSGTransformNode); // the lines
-        m_linesChanged = true;
+        root->appendChildNode(new QSGTransformNode); // the image of the areas and lines, under the symbols
         m_areasChanged = true;
     }
     auto *areasPlaced = static_cast<QSGTransformNode *>(root->firstChild());
-    areasPlaced->setMatrix(m_transform);
     if (m_areasChanged) {
-        delete areasPlaced->firstChild();
-        if (!m_areas.image.isNull() && window()) {
+        while (QSGNode *tile = areasPlaced->firstChild())
+            delete tile;
+        for (const Areas::Tile &tile : window() ? m_areas.tiles : std::vector<Areas::Tile>{}) {
             QSGImageNode *image = window()->createImageNode();
-            image->setTexture(window()->createTextureFromImage(m_areas.image));
+            image->setTexture(window()->createTextureFromImage(tile.image));
             image->setOwnsTexture(true);
-            image->setFiltering(QSGTexture::Linear); // scaled smoothly until painted again for a new zoom
-            image->setRect(m_areas.region);
             areasPlaced->appendChildNode(image);
         }
         m_areasChanged = false;
     }
-    auto *placed = static_cast<QSGTransformNode *>(root->firstChild()->nextSibling());
-    placed->setMatrix(m_transform);
-    QSGGeometryNode *contours = flatNode(placed, 0, QSGGeometry::DrawLines);
-    QSGGeometryNode *coast = flatNode(placed, 1, QSGGeometry::DrawLines);
-    QSGGeometryNode *safety = flatNode(placed, 2, QSGGeometry::DrawLines);
-    QSGGeometryNode *restricted = flatNode(placed, 3, QSGGeometry::DrawLines);
-    QSGGeometryNode *fairways = flatNode(placed, 4, QSGGeometry::DrawLines);
-    if (m_linesChanged) {
-        setNodePoints(fairways, m_read ? m_read->fairways : std::vector<QPointF>{}, m_lineWidth);
-        setNodePoints(contours, m_contours, m_lineWidth);
-        setNodePoints(coast, m_read ? m_read->coast : std::vector<QPointF>{}, m_lineWidth);
-        setNodePoints(safety, m_safety, m_lineWidth * 2.5);
-        setNodePoints(restricted, m_read ? m_read->restricted : std::vector<QPointF>{}, m_lineWidth * 1.5);
-        m_linesChanged = false;
+    if (m_read && areasPlaced->firstChild()) {
+        // At the zoom it was painted for and north up, the image is placed on whole pixels, a
+        // pixel of it on a pixel of the screen: the software renderer then copies it instead of
+        // sampling it. Else it is scaled smoothly (and turned) until painted again.
+        const MapProjection view = projection();
+        const double pixelsPerUnit = view.worldSize() / m_read->unitsPerWorld;
+        const bool copied = view.bearing == 0 && std::abs(pixelsPerUnit / m_areas.scale - 1) < 1e-9;
+        const Eigen::Vector2d offset = (m_read->origin - view.centerMercator()) * m_read->unitsPerWorld;
+        const QPointF topLeft(std::round(width() / 2 + pixelsPerUnit * (m_areas.region.left() + offset.x())),
+                              std::round(height() / 2 + pixelsPerUnit * (m_areas.region.top() + offset.y())));
+        areasPlaced->setMatrix(copied ? QMatrix4x4() : m_transform);
+        QSGNode *node = areasPlaced->firstChild();
+        for (const Areas::Tile &tile : m_areas.tiles) {
+            auto *image = static_cast<QSGImageNode *>(node);
+            const QRectF pixels(tile.at, QSizeF(tile.image.size()));
+            image->setRect(copied ? pixels.translated(topLeft)
+                                  : QRectF(m_areas.region.topLeft() + pixels.topLeft() / m_areas.scale, pixels.size() / m_areas.scale));
+            image->setFiltering(copied ? QSGTexture::Nearest : QSGTexture::Linear);
+            node = node->nextSibling();
+        }
     }
-    setNodeColor(contours, m_contourColor);
-    setNodeColor(coast, m_coastColor);
-    setNodeColor(safety, m_safetyColor);
-    setNodeColor(restricted, m_restrictedColor);
-    setNodeColor(fairways, m_fairwayColor);
     // Symbols, the same size at every zoom, only those in view and at scales their SCAMIN allows
     // (the scale for OGC's standard 0.28 mm rendering pixel; without SCAMIN, from zoom 11 in).
     const MapProjection view = projection();
@@ -460,13 +519,13 @@ QSGNode *ChartItem::updatePaintNode(QSGNode *old, UpdatePaintNodeData *)
             break;
         }
     }
-    QSGGeometryNode *hazardNode = flatNode(root, 2, QSGGeometry::DrawLines);
+    QSGGeometryNode *hazardNode = flatNode(root, 1, QSGGeometry::DrawLines);
     setNodePoints(hazardNode, hazards, m_lineWidth * 1.5);
     setNodeColor(hazardNode, m_hazardColor);
     // Aids in their charted colour (red, green, yellow; the rest in the aid colour).
     const QColor aidColours[4] = {m_aidColor, m_redAidColor, m_greenAidColor, m_yellowAidColor};
     for (int c = 0; c < 4; ++c) {
-        QSGGeometryNode *aidNode = flatNode(root, 3 + c, QSGGeometry::DrawLines);
+        QSGGeometryNode *aidNode = flatNode(root, 2 + c, QSGGeometry::DrawLines);
         setNodePoints(aidNode, aidsBy[c], m_lineWidth * 1.5);
         setNodeColor(aidNode, aidColours[c]);
     }

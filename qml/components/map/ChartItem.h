@@ -16,11 +16,11 @@
 // cells of `path` read once on a worker thread (through the
 // neptus-chart-import helper and its cache), drawn here: their areas (land;
 // depth areas in four shades by their shallowest depth against the safety depth:
-// drying, shallower than it, up to twice it (our choice), deeper) painted on a
-// worker thread into an image of the region around the view, depth contours
-// (the safety contour, the first at or past the safety depth, thicker), the
-// coastline, restricted, caution and military practice areas' edges,
-// fairways' edges dashed, and as
+// drying, shallower than it, up to twice it (our choice), deeper), and over
+// them depth contours (the safety contour, the first at or past the safety
+// depth, thicker), the coastline, restricted, caution and military practice
+// areas' edges and fairways' edges dashed, all painted on a worker thread into
+// an image of the region around the view; over that, drawn every frame, as
 // symbols of one size at every zoom hazards (obstructions, wrecks, rocks:
 // crosses), buoys (rings), beacons (triangles) and lights (stars), each only
 // at scales its SCAMIN allows. `featureAt` says what is at a tapped point.
@@ -48,9 +48,9 @@ class ChartItem : public MapOverlayItem
     Q_PROPERTY(QColor mediumColor MEMBER m_mediumColor NOTIFY styleChanged)
     Q_PROPERTY(QColor shallowColor MEMBER m_shallowColor NOTIFY styleChanged)
     Q_PROPERTY(QColor dryingColor MEMBER m_dryingColor NOTIFY styleChanged)
-    // Whether the filled areas are drawn (the benchmark times the lines and symbols alone).
-    Q_PROPERTY(bool areasShown MEMBER m_areasShown NOTIFY styleChanged)
-    // While the areas are being painted for a new place or zoom (the last image is shown meanwhile).
+    // Whether the painted image (areas and lines) is drawn (the benchmark times the symbols alone).
+    Q_PROPERTY(bool imageShown MEMBER m_imageShown NOTIFY styleChanged)
+    // While the image is being painted for a new place or zoom (the last one is shown meanwhile).
     Q_PROPERTY(bool painting READ painting NOTIFY paintingChanged)
     Q_PROPERTY(bool loading READ loading NOTIFY loadingChanged)
     // While loading: the cell being read and how far ("US4MD81M.000, 1 of 3"), "" else.
@@ -110,9 +110,9 @@ private:
     void finished();
     // Sorts the depth areas and contours by the safety contour (no conversion again).
     void band();
-    // The filled areas, painted on a worker thread into one image of the region around the view
-    // (twice the view each way) at its zoom, drawn as one texture that moves with the view: a
-    // frame copies an image, whatever the cell holds. Painted again (paintAreas()) when the view
+    // The filled areas and the lines, painted on a worker thread into one image of the region
+    // around the view (twice the view each way) at its zoom, drawn as one texture that moves with
+    // the view: a frame copies an image, whatever the cell holds. Painted again (paintAreas()) when the view
     // leaves that region or the zoom moves half a level, the last image shown (scaled) meanwhile.
     void paintAreas();
     void areasPainted();
@@ -129,11 +129,17 @@ private:
     std::vector<const QPolygonF *> m_bands[4]; // the depth areas' rings by shade (in m_read)
     QColor m_dryingColor = Qt::darkGreen, m_shallowColor = Qt::blue, m_mediumColor = Qt::cyan, m_deepColor = Qt::white,
            m_landColor = Qt::lightGray;
-    bool m_areasShown = true;
+    bool m_imageShown = true;
     struct Areas
     {
-        QImage image;
+        struct Tile
+        {
+            QImage image; // without an alpha channel where wholly opaque
+            QPoint at;    // its top left pixel in the image
+        };
+        std::vector<Tile> tiles; // where anything is painted
         QRectF region;     // local units the image covers
+        double scale = 1;  // its pixels per local unit
         quint64 generation = 0; // band()'s, when it was asked for
     };
     quint64 m_generation = 0;          // band(): the areas or their shades changed
@@ -143,8 +149,8 @@ private:
     bool m_areasChanged = false;       // a new image for the paint node
     bool m_repaintAreas = false;       // asked again while painting
     QFutureWatcher<Areas> m_painter;
-    std::vector<QPointF> m_contours, m_safety; // pairs of end points, local units
-    bool m_linesChanged = false;
+    // The contours but the safety contour, and the safety contour (band()): pairs of end points, local units.
+    std::shared_ptr<const std::vector<QPointF>> m_contours, m_safety;
     QString m_error;
     QMatrix4x4 m_transform;
     QFutureWatcher<std::shared_ptr<Loaded>> m_watcher;
