@@ -98,15 +98,18 @@ function drawChart() {
                       'red', 'green', 'yellow'])
     colours[name] = cssColour(name);
   const layers = [];
-  for (const shade of ['deep', 'medium', 'shallow', 'drying', 'land'])
-    for (const polygon of answer.areas[shade])
-      layers.push(L.polygon(polygon, { renderer: chartRenderer, stroke: false, fillColor: colours[shade], fillOpacity: 1, interactive: false }));
   const lineStyles = { contour: { color: colours.contour, weight: 1 }, safety: { color: colours.safety, weight: 2 },
                        coast: { color: colours.coast, weight: 1.5 }, restricted: { color: colours.restricted, weight: 1.5, dashArray: '6 4' },
                        fairway: { color: colours.contour, weight: 1.5, dashArray: '10 7' } };
-  for (const [kind, style] of Object.entries(lineStyles))
-    for (const line of answer.lines[kind])
-      layers.push(L.polyline(line, Object.assign({ renderer: chartRenderer, interactive: false }, style)));
+  // Usage band after usage band, overview first: where cells overlap, the best band covers the rest.
+  for (const band of answer.layers) {
+    for (const shade of ['deep', 'medium', 'shallow', 'drying', 'land'])
+      for (const polygon of band.areas[shade])
+        layers.push(L.polygon(polygon, { renderer: chartRenderer, stroke: false, fillColor: colours[shade], fillOpacity: 1, interactive: false }));
+    for (const [kind, style] of Object.entries(lineStyles))
+      for (const line of band.lines[kind])
+        layers.push(L.polyline(line, Object.assign({ renderer: chartRenderer, interactive: false }, style)));
+  }
   // The scale for OGC's standard 0.28 mm rendering pixel, as the console's map works it out.
   const scale = 156543.03 * Math.cos(map.getCenter().lat * Math.PI / 180) / Math.pow(2, map.getZoom()) / 0.00028;
   for (const mark of answer.marks) {

@@ -9,6 +9,7 @@
 #include <cstring>
 #include <limits>
 #include <numbers>
+#include <numeric>
 
 namespace neptus::charts {
 
@@ -495,6 +496,50 @@ std::expected<Cell, QString> decodeCell(QByteArrayView bytes)
     return cell;
 }
 
+bool Cell::covers(double lon, double lat) const
+{
+    if (!grid) {
+        for (const Feature &f : features)
+            if ((f.west > f.east ? roleOf(f) : f.role) == Feature::Role::Coverage && inside(f, lon, lat))
+                return true;
+        return false;
+    }
+    const Grid &g = *grid;
+    const int x = int(std::floor((lon - g.west) / g.dx)), y = int(std::floor((lat - g.south) / g.dy));
+    if (x < 0 || y < 0 || x >= g.nx || y >= g.ny)
+        return false;
+    for (const Grid::Candidate &k : g.buckets[std::size_t(y * g.nx + x)])
+        if (k.role == Feature::Role::Coverage && lon >= k.west && lon <= k.east && lat >= k.south && lat <= k.north
+            && inside(features[k.feature], lon, lat))
+            return true;
+    return false;
+}
+
+const Cell *bestCellAt(const std::vector<Cell> &cells, double lon, double lat)
+{
+    const Cell *best = nullptr;
+    for (const Cell &c : cells)
+        if ((!best || c.usageBand > best->usageBand) && c.covers(lon, lat))
+            best = &c;
+    return best;
+}
+
+std::vector<std::size_t> drawingOrder(const std::vector<Cell> &cells)
+{
+    std::vector<std::size_t> order(cells.size());
+    std::iota(order.begin(), order.end(), std::size_t(0));
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return cells[a].usageBand < cells[b].usageBand; });
+    return order;
+}
+
+bool coveredByBetter(const std::vector<Cell> &cells, const Cell &cell, double lon, double lat)
+{
+    for (const Cell &c : cells)
+        if (c.usageBand > cell.usageBand && c.covers(lon, lat))
+            return true;
+    return false;
+}
+
 PointReport reportAt(const std::vector<Cell> &cells, double lon, double lat, double radius, bool soundings)
 {
     // Features whose bounds, grown by the radius (or the 500 m a sounding is looked for), miss the point are skipped.
@@ -525,17 +570,7 @@ PointReport reportAt(const std::vector<Cell> &cells, double lon, double lat, dou
             if (wanted(k.role) && lon >= k.west - gLon && lon <= k.east + gLon && lat >= k.south - gLat && lat <= k.north + gLat)
                 visit(c.features[k.feature], k.role, std::size_t(k.feature));
     };
-    // The cell with the best usage band (the largest scale) whose coverage holds the point.
-    const Cell *best = nullptr;
-    for (const Cell &c : cells) {
-        if (best && c.usageBand <= best->usageBand)
-            continue;
-        bool covers = false;
-        forEach(c, [](Role role) { return role == Role::Coverage; }, 0,
-                [&](const Feature &f, Role, std::size_t) { covers = covers || inside(f, lon, lat); });
-        if (covers)
-            best = &c;
-    }
+    const Cell *best = bestCellAt(cells, lon, lat);
     if (!best)
         return report;
     report.covered = true;

@@ -94,6 +94,8 @@ struct Cell
     // each place (hazards and areas within 100 m, soundings 500 m), so that reportAt() tests a point only against
     // those (decodeCell does it; a cell changed after must be indexed again).
     void index();
+    // Whether its data coverage (M_COVR with CATCOV 1) holds the point.
+    bool covers(double lon, double lat) const;
     struct Grid
     {
         double west = 0, south = 0, dx = 1, dy = 1;
@@ -177,6 +179,17 @@ struct PointReport
     std::optional<double> sounding;
     double soundingDistance = 0;
 };
+
+// The cell with the best usage band (the largest scale) whose data coverage
+// holds the point; null when none does.
+const Cell *bestCellAt(const std::vector<Cell> &cells, double lon, double lat);
+// Where cells overlap, the best usage band is what is drawn (S-52's idea, as
+// chart plotters quilt): the cells' indices by usage band, overview first, so
+// that drawn in this order the best band covers the others; and whether a
+// cell of a better band than `cell` covers a point (a symbol or sounding of
+// `cell` there is left out: the better cell's own are drawn).
+std::vector<std::size_t> drawingOrder(const std::vector<Cell> &cells);
+bool coveredByBetter(const std::vector<Cell> &cells, const Cell &cell, double lon, double lat);
 
 // `soundings`: look for the nearest sounding (a plan check does not).
 PointReport reportAt(const std::vector<Cell> &cells, double lon, double lat, double radius = 25, bool soundings = true);

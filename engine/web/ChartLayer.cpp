@@ -33,11 +33,25 @@ QJsonObject chartLayer(const std::vector<charts::Cell> &cells, double west, doub
     using charts::Drawn;
     const double safety = charts::safetyContour(cells, safetyDepth);
     static const char *const shades[] = {"drying", "shallow", "medium", "deep"};
-    QJsonArray shaded[4], land, contour, safetyLine, coast, restricted, fairway, marks, names;
+    QJsonArray layers, marks, names;
+    QJsonArray shaded[4], land, contour, safetyLine, coast, restricted, fairway; // the layer being filled
     const auto meets = [&](const charts::Feature &f) {
         return f.west > f.east || (f.east >= west && f.west <= east && f.north >= south && f.south <= north);
     };
-    for (const charts::Cell &cell : cells) {
+    const auto endLayer = [&](int band) {
+        QJsonObject areas{{u"land"_s, land}};
+        for (int i = 0; i < 4; ++i)
+            areas.insert(QString::fromLatin1(shades[i]), shaded[i]);
+        layers.append(QJsonObject{{u"band"_s, band},
+                                  {u"areas"_s, areas},
+                                  {u"lines"_s, QJsonObject{{u"contour"_s, contour}, {u"safety"_s, safetyLine}, {u"coast"_s, coast},
+                                                           {u"restricted"_s, restricted}, {u"fairway"_s, fairway}}}});
+        for (QJsonArray *a : {&shaded[0], &shaded[1], &shaded[2], &shaded[3], &land, &contour, &safetyLine, &coast, &restricted, &fairway})
+            *a = QJsonArray();
+    };
+    const std::vector<std::size_t> order = charts::drawingOrder(cells);
+    for (std::size_t n = 0; n < order.size(); ++n) {
+        const charts::Cell &cell = cells[order[n]];
         bool used = false;
         for (const charts::Feature &f : cell.features) {
             const Drawn drawn = charts::drawnAs(f);
@@ -64,7 +78,7 @@ QJsonObject chartLayer(const std::vector<charts::Cell> &cells, double west, doub
                 static const QString kinds[] = {u"hazard"_s, u"buoy"_s, u"beacon"_s, u"light"_s};
                 const QString &kind = kinds[int(drawn) - int(Drawn::Hazard)];
                 for (const auto &part : f.parts) {
-                    if (part.empty())
+                    if (part.empty() || charts::coveredByBetter(cells, cell, part.front().lon, part.front().lat))
                         continue;
                     QJsonObject mark{{u"kind"_s, kind}, {u"lat"_s, rounded(part.front().lat)}, {u"lon"_s, rounded(part.front().lon)},
                                      {u"scamin"_s, f.number(u"SCAMIN"_s).value_or(0)}, {u"what"_s, charts::className(f.objectClass)}};
@@ -83,16 +97,10 @@ QJsonObject chartLayer(const std::vector<charts::Cell> &cells, double west, doub
         }
         if (used)
             names.append(cell.name);
+        if (n + 1 == order.size() || cells[order[n + 1]].usageBand != cell.usageBand)
+            endLayer(cell.usageBand);
     }
-    QJsonObject areas{{u"land"_s, land}};
-    for (int i = 0; i < 4; ++i)
-        areas.insert(QString::fromLatin1(shades[i]), shaded[i]);
-    return {{u"cells"_s, names},
-            {u"safetyContour"_s, safety},
-            {u"areas"_s, areas},
-            {u"lines"_s, QJsonObject{{u"contour"_s, contour}, {u"safety"_s, safetyLine}, {u"coast"_s, coast},
-                                     {u"restricted"_s, restricted}, {u"fairway"_s, fairway}}},
-            {u"marks"_s, marks}};
+    return {{u"cells"_s, names}, {u"safetyContour"_s, safety}, {u"layers"_s, layers}, {u"marks"_s, marks}};
 }
 
 } // namespace neptus::web

@@ -59,21 +59,29 @@ struct ChartItem::Loaded
     QString error;
     Eigen::Vector2d origin{0, 0}; // Mercator of the local frame's origin
     double unitsPerWorld = 1;
-    QList<QPolygonF> land;
     struct Depths
     {
         double shallowest; // DRVAL1
         QList<QPolygonF> rings;
     };
-    std::vector<Depths> depths;
     struct Contour
     {
         std::optional<double> value; // VALDCO
         std::vector<QPointF> lines;  // pairs of end points
     };
-    std::vector<Contour> contours;
-    std::vector<QPointF> coast, restricted, fairways; // pairs of end points (fairways' edges dashed)
-    // Point symbols: hazards (a cross), buoys (a ring), beacons (a triangle), lights (a star), with
+    // What the cells of one usage band draw: painted one band after the other,
+    // overview first (drawingOrder()), so that where cells overlap the best
+    // band covers the rest.
+    struct Layer
+    {
+        int band = 0;
+        QList<QPolygonF> land;
+        std::vector<Depths> depths;
+        std::vector<Contour> contours;
+        std::vector<QPointF> coast, restricted, fairways; // pairs of end points (fairways' edges dashed)
+    };
+    std::vector<Layer> layers;
+    // Point symbols (only where no cell of a better band covers them): hazards (a cross), buoys (a ring), beacons (a triangle), lights (a star), with
     // the largest scale denominator they are shown at (SCAMIN; 0: none said).
     enum class Mark { Hazard, Buoy, Beacon, Light };
     struct Point
@@ -115,7 +123,12 @@ void ChartItem::Loaded::convert()
                 out.push_back(local(line[i]));
             }
     };
-    for (const Cell &c : *cells) {
+    for (const std::size_t index : drawingOrder(*cells)) {
+        const Cell &c = (*cells)[index];
+        if (layers.empty() || layers.back().band != c.usageBand)
+            layers.push_back({c.usageBand, {}, {}, {}, {}, {}, {}});
+        Layer &layer = layers.back();
+        auto &[band, land, depths, contours, coast, restricted, fairways] = layer;
         for (const Feature &f : c.features) {
             // (Roles and charted depths as Cell::index() worked them out when the cell was read.)
             const Drawn drawn = drawnAs(f);
@@ -145,7 +158,7 @@ void ChartItem::Loaded::convert()
                 const Mark mark = drawn == Drawn::Hazard ? Mark::Hazard : drawn == Drawn::Buoy ? Mark::Buoy
                                   : drawn == Drawn::Beacon ? Mark::Beacon : Mark::Light;
                 for (const auto &part : f.parts) {
-                    if (!part.empty())
+                    if (!part.empty() && !coveredByBetter(*cells, c, part.front().lon, part.front().lat))
                         points.push_back({mercatorOf(part.front().lat, part.front().lon), mark, f.number(u"SCAMIN"_s).value_or(0), aidColour(f)});
                     if (f.geometry != Feature::Geometry::Point)
                         break;
@@ -277,22 +290,25 @@ void ChartItem::finished()
 void ChartItem::band()
 {
     ++m_generation; // an image painted before is of other areas now
-    for (auto &b : m_bands)
-        b.clear();
-    auto contours = std::make_shared<std::vector<QPointF>>(), safety = std::make_shared<std::vector<QPointF>>();
+    m_shaded.clear();
     m_safetyContour = m_safetyDepth;
     if (m_read) {
         m_safetyContour = m_read->cells ? neptus::charts::safetyContour(*m_read->cells, m_safetyDepth) : m_safetyDepth;
-        for (const auto &d : m_read->depths)
-            for (const QPolygonF &ring : d.rings)
-                m_bands[depthShade(d.shallowest, m_safetyContour)].push_back(&ring);
-        for (const auto &c : m_read->contours) {
-            auto &lines = c.value == m_safetyContour ? *safety : *contours;
-            lines.insert(lines.end(), c.lines.begin(), c.lines.end());
+        for (const Loaded::Layer &layer : m_read->layers) {
+            Shaded shaded;
+            for (const auto &d : layer.depths)
+                for (const QPolygonF &ring : d.rings)
+                    shaded.shades[std::size_t(depthShade(d.shallowest, m_safetyContour))].push_back(&ring);
+            auto contours = std::make_shared<std::vector<QPointF>>(), safety = std::make_shared<std::vector<QPointF>>();
+            for (const auto &c : layer.contours) {
+                auto &lines = c.value == m_safetyContour ? *safety : *contours;
+                lines.insert(lines.end(), c.lines.begin(), c.lines.end());
+            }
+            shaded.contours = std::move(contours);
+            shaded.safety = std::move(safety);
+            m_shaded.push_back(std::move(shaded));
         }
     }
-    m_contours = std::move(contours);
-    m_safety = std::move(safety);
     if (m_read && width() > 0 && height() > 0) {
         m_wantedZoom = -1; // the shades changed: painted again
         viewUpdated();     // (placed first)
@@ -327,14 +343,10 @@ void ChartItem::paintAreas()
     // Pixels per local unit: those of this zoom, fewer on a screen wider than 4096 pixels.
     const double scale = std::min({pixels, 4096 / m_wantedRegion.width(), 4096 / m_wantedRegion.height()});
     const QSize size(std::max(1, int(std::ceil(m_wantedRegion.width() * scale))), std::max(1, int(std::ceil(m_wantedRegion.height() * scale))));
-    std::array<std::vector<const QPolygonF *>, 5> rings;
-    for (int b = 0; b < 4; ++b)
-        rings[std::size_t(b)] = m_bands[b];
-    for (const QPolygonF &ring : m_read->land)
-        rings[4].push_back(&ring);
     const std::array<QColor, 5> fills{m_dryingColor, m_shallowColor, m_mediumColor, m_deepColor, m_landColor}; // as depthShade(), then land
-    // The lines over them, in this order: pairs of end points (in m_read, or the contours sorted by band())
-    // with their colour and width in pixels.
+    // Each layer (usage band) in turn: its areas' rings by fill, and the lines over them, in this
+    // order: pairs of end points (in m_read, or the contours sorted by band()) with their colour and
+    // width in pixels.
     using Points = std::shared_ptr<const std::vector<QPointF>>;
     struct Lines
     {
@@ -342,56 +354,72 @@ void ChartItem::paintAreas()
         QColor colour;
         double width;
     };
-    const std::array<Lines, 5> lines{Lines{Points(m_read, &m_read->fairways), m_fairwayColor, m_lineWidth},
-                                     Lines{m_contours, m_contourColor, m_lineWidth}, Lines{Points(m_read, &m_read->coast), m_coastColor, m_lineWidth},
-                                     Lines{m_safety, m_safetyColor, m_lineWidth * 2.5},
-                                     Lines{Points(m_read, &m_read->restricted), m_restrictedColor, m_lineWidth * 1.5}};
-    m_painter.setFuture(QtConcurrent::run([read = m_read, rings = std::move(rings), fills, lines, region = m_wantedRegion, size, scale,
+    struct Painted
+    {
+        std::array<std::vector<const QPolygonF *>, 5> rings;
+        std::array<Lines, 5> lines;
+    };
+    std::vector<Painted> layers;
+    for (std::size_t i = 0; i < m_read->layers.size(); ++i) {
+        const Loaded::Layer &layer = m_read->layers[i];
+        const Shaded &shaded = m_shaded[i];
+        Painted painted{{shaded.shades[0], shaded.shades[1], shaded.shades[2], shaded.shades[3], {}},
+                        {Lines{Points(m_read, &layer.fairways), m_fairwayColor, m_lineWidth},
+                         Lines{shaded.contours, m_contourColor, m_lineWidth}, Lines{Points(m_read, &layer.coast), m_coastColor, m_lineWidth},
+                         Lines{shaded.safety, m_safetyColor, m_lineWidth * 2.5},
+                         Lines{Points(m_read, &layer.restricted), m_restrictedColor, m_lineWidth * 1.5}}};
+        for (const QPolygonF &ring : layer.land)
+            painted.rings[4].push_back(&ring);
+        layers.push_back(std::move(painted));
+    }
+    m_painter.setFuture(QtConcurrent::run([read = m_read, layers = std::move(layers), fills, region = m_wantedRegion, size, scale,
                                            generation = m_generation] {
         QImage image(size, QImage::Format_ARGB32_Premultiplied);
         image.fill(Qt::transparent);
         QPainter painter(&image);
         painter.scale(scale, scale);
         painter.translate(-region.topLeft());
-        painter.setPen(Qt::NoPen);
-        // Deep to drying, land last; each band's rings by the even-odd rule together, as the cell's
-        // holes are rings of their own. Points closer than half a pixel are left out; each area's
-        // edge is drawn in its colour too, so that neighbours thinned apart leave no gap between them
-        // (the shallower's edge over the deeper: where the charts cover, the image is opaque).
-        const double tolerance = 0.5 / scale;
-        for (const std::size_t b : {3u, 2u, 1u, 0u, 4u}) {
-            QPainterPath path;
-            path.setFillRule(Qt::OddEvenFill);
-            for (const QPolygonF *ring : rings[b]) {
-                if (!ring->boundingRect().intersects(region))
-                    continue;
-                const QPolygonF thinned = neptus::geo::thinned(*ring, tolerance, [](const QPointF &p) { return std::pair{p.x(), p.y()}; });
-                if (thinned.size() >= 3)
-                    path.addPolygon(thinned);
+        for (const Painted &layer : layers) {
+            painter.setRenderHint(QPainter::Antialiasing, false);
+            // Deep to drying, land last; each shade's rings by the even-odd rule together, as the cell's
+            // holes are rings of their own. Points closer than half a pixel are left out; each area's
+            // edge is drawn in its colour too, so that neighbours thinned apart leave no gap between them
+            // (the shallower's edge over the deeper: where the charts cover, the image is opaque).
+            const double tolerance = 0.5 / scale;
+            for (const std::size_t b : {3u, 2u, 1u, 0u, 4u}) {
+                QPainterPath path;
+                path.setFillRule(Qt::OddEvenFill);
+                for (const QPolygonF *ring : layer.rings[b]) {
+                    if (!ring->boundingRect().intersects(region))
+                        continue;
+                    const QPolygonF thinned = neptus::geo::thinned(*ring, tolerance, [](const QPointF &p) { return std::pair{p.x(), p.y()}; });
+                    if (thinned.size() >= 3)
+                        path.addPolygon(thinned);
+                }
+                QPen edge(fills[b], 1);
+                edge.setCosmetic(true);
+                painter.setPen(edge);
+                painter.setBrush(fills[b]);
+                painter.drawPath(path);
             }
-            QPen edge(fills[b], 1);
-            edge.setCosmetic(true);
-            painter.setPen(edge);
-            painter.setBrush(fills[b]);
-            painter.drawPath(path);
-        }
-        // The lines, smoothed, each segment that may cross the region.
-        painter.setRenderHint(QPainter::Antialiasing);
-        std::vector<QLineF> seen;
-        for (const Lines &l : lines) {
-            seen.clear();
-            const std::vector<QPointF> &points = *l.points;
-            for (std::size_t i = 0; i + 1 < points.size(); i += 2) {
-                const QPointF a = points[i], b = points[i + 1];
-                if (std::max(a.x(), b.x()) >= region.left() && std::min(a.x(), b.x()) <= region.right()
-                    && std::max(a.y(), b.y()) >= region.top() && std::min(a.y(), b.y()) <= region.bottom())
-                    seen.emplace_back(a, b);
+            // The lines, smoothed, each segment that may cross the region.
+            painter.setRenderHint(QPainter::Antialiasing);
+            std::vector<QLineF> seen;
+            for (const Lines &l : layer.lines) {
+                seen.clear();
+                const std::vector<QPointF> &points = *l.points;
+                for (std::size_t i = 0; i + 1 < points.size(); i += 2) {
+                    const QPointF a = points[i], b = points[i + 1];
+                    if (std::max(a.x(), b.x()) >= region.left() && std::min(a.x(), b.x()) <= region.right()
+                        && std::max(a.y(), b.y()) >= region.top() && std::min(a.y(), b.y()) <= region.bottom())
+                        seen.emplace_back(a, b);
+                }
+                QPen pen(l.colour, l.width);
+                pen.setCosmetic(true); // a width in pixels at every zoom
+                pen.setCapStyle(Qt::FlatCap);
+                painter.setPen(pen);
+                painter.drawLines(seen.data(), int(seen.size()));
             }
-            QPen pen(l.colour, l.width);
-            pen.setCosmetic(true); // a width in pixels at every zoom
-            pen.setCapStyle(Qt::FlatCap);
-            painter.setPen(pen);
-            painter.drawLines(seen.data(), int(seen.size()));
         }
         painter.end();
         // Cut in tiles: those wholly painted opaque (drawn without blending, which costs the software
@@ -540,7 +568,14 @@ QVariantList ChartItem::soundingsIn(double west, double south, double east, doub
     const int side = std::max(1, int(std::sqrt(double(most))));
     struct Kept { double lat, lon, depth; };
     std::vector<std::optional<Kept>> places(std::size_t(side * side));
-    for (const Cell &cell : *m_read->cells)
+    const std::vector<Cell> &cells = *m_read->cells;
+    for (const Cell &cell : cells) {
+        // (Only where a cell of a better band meets this one is each sounding asked whether it is covered.)
+        const Cell::Bounds b = cell.bounds();
+        const bool overlapped = std::ranges::any_of(cells, [&](const Cell &other) {
+            const Cell::Bounds o = other.bounds();
+            return other.usageBand > cell.usageBand && (!o.valid || !b.valid || (o.west <= b.east && o.east >= b.west && o.south <= b.north && o.north >= b.south));
+        });
         for (const Feature &f : cell.features) {
             if (f.role != Feature::Role::Sounding || f.west > east || f.east < west || f.south > north || f.north < south)
                 continue;
@@ -549,7 +584,7 @@ QVariantList ChartItem::soundingsIn(double west, double south, double east, doub
                 continue;
             for (const auto &part : f.parts)
                 for (const Vertex &v : part) {
-                    if (v.lon < west || v.lon > east || v.lat < south || v.lat > north)
+                    if (v.lon < west || v.lon > east || v.lat < south || v.lat > north || (overlapped && coveredByBetter(cells, cell, v.lon, v.lat)))
                         continue;
                     const int x = std::min(side - 1, int((v.lon - west) / (east - west) * side));
                     const int y = std::min(side - 1, int((v.lat - south) / (north - south) * side));
@@ -558,6 +593,7 @@ QVariantList ChartItem::soundingsIn(double west, double south, double east, doub
                         place = Kept{v.lat, v.lon, v.z};
                 }
         }
+    }
     QVariantList list;
     for (const auto &place : places)
         if (place)

@@ -10,6 +10,7 @@
 #include <QPolygonF>
 #include <QtQml/qqmlregistration.h>
 
+#include <array>
 #include <memory>
 
 // Nautical charts (S-57 cells, engine/charts) under Map2D's vehicles: the
@@ -126,7 +127,14 @@ private:
     double m_lineWidth = 1;
     // What was read, converted once (Loaded); band() and the paint node take from it.
     std::shared_ptr<const Loaded> m_read;
-    std::vector<const QPolygonF *> m_bands[4]; // the depth areas' rings by shade (in m_read)
+    // band(): each layer's (usage band's) depth areas' rings by shade (in m_read), and its contours but
+    // the safety contour, and the safety contour (pairs of end points, local units), as m_read->layers.
+    struct Shaded
+    {
+        std::array<std::vector<const QPolygonF *>, 4> shades;
+        std::shared_ptr<const std::vector<QPointF>> contours, safety;
+    };
+    std::vector<Shaded> m_shaded;
     QColor m_dryingColor = Qt::darkGreen, m_shallowColor = Qt::blue, m_mediumColor = Qt::cyan, m_deepColor = Qt::white,
            m_landColor = Qt::lightGray;
     bool m_imageShown = true;
@@ -149,8 +157,6 @@ private:
     bool m_areasChanged = false;       // a new image for the paint node
     bool m_repaintAreas = false;       // asked again while painting
     QFutureWatcher<Areas> m_painter;
-    // The contours but the safety contour, and the safety contour (band()): pairs of end points, local units.
-    std::shared_ptr<const std::vector<QPointF>> m_contours, m_safety;
     QString m_error;
     QMatrix4x4 m_transform;
     QFutureWatcher<std::shared_ptr<Loaded>> m_watcher;

@@ -169,6 +169,28 @@ TEST(Chart, TheBestUsageBandCoveringThePointAnswers)
     EXPECT_EQ(reportAt(cells, -8.76, 41.12).place, u"The Bay"_s);
 }
 
+// Where cells overlap, the best usage band is drawn over the rest: cells in
+// band order, overview first, and a lesser cell's point there covered.
+TEST(Chart, WhereCellsOverlapTheBestUsageBandIsDrawnOverTheRest)
+{
+    Cell harbour;
+    harbour.name = u"XX5HARB.000"_s;
+    harbour.usageBand = 5;
+    harbour.features.push_back(area(u"M_COVR"_s, {box(-8.75, 41.14, -8.74, 41.15)}, {{u"CATCOV"_s, u"1"_s}}));
+    Cell overview = cell(u"XX1OVER.000"_s, 1);
+    harbour.index();
+    overview.index();
+    const std::vector<Cell> cells{harbour, cell(), overview};
+    EXPECT_EQ(drawingOrder(cells), (std::vector<std::size_t>{2, 1, 0}));
+    EXPECT_TRUE(coveredByBetter(cells, cells[1], -8.745, 41.145)) << "inside the harbour cell";
+    EXPECT_TRUE(coveredByBetter(cells, cells[2], -8.745, 41.145));
+    EXPECT_TRUE(coveredByBetter(cells, cells[2], -8.72, 41.18)) << "the overview under the band-4 cell";
+    EXPECT_FALSE(coveredByBetter(cells, cells[1], -8.72, 41.18)) << "outside the harbour cell";
+    EXPECT_FALSE(coveredByBetter(cells, cells[0], -8.745, 41.145)) << "nothing better than the harbour";
+    EXPECT_EQ(bestCellAt(cells, -8.745, 41.145), &cells[0]);
+    EXPECT_EQ(bestCellAt(cells, -8.5, 41.145), nullptr);
+}
+
 // An aid's colour as drawn, from its COLOUR list as GDAL writes it: the first
 // colour (a green-red-green preferred channel buoy is green), red, green and
 // yellow apart, the rest (white, black, none said, nonsense) as other aids.

@@ -6,6 +6,7 @@
 // the upgrade, more connections than allowed) refused while it keeps serving.
 #include "session/Console.h"
 #include "session/OperationsFeed.h"
+#include "web/ChartLayer.h"
 #include "web/LiveServer.h"
 #include "web/Requests.h"
 
@@ -381,7 +382,10 @@ TEST_F(Server, DrawsTheConsolesChartLayer)
     EXPECT_EQ(chart.value(u"cells"_s).toArray(), QJsonArray{u"US4MD81M.000"_s});
     const double safety = chart.value(u"safetyContour"_s).toDouble();
     EXPECT_GE(safety, 4);
-    const QJsonObject areas = chart.value(u"areas"_s).toObject(), lines = chart.value(u"lines"_s).toObject();
+    ASSERT_EQ(chart.value(u"layers"_s).toArray().size(), 1) << "one cell: one usage band";
+    const QJsonObject layer = chart[u"layers"_s][0].toObject();
+    EXPECT_EQ(layer.value(u"band"_s).toInt(), 4);
+    const QJsonObject areas = layer.value(u"areas"_s).toObject(), lines = layer.value(u"lines"_s).toObject();
     for (const char *shade : {"land", "shallow", "medium", "deep"})
         EXPECT_GT(areas.value(QLatin1StringView(shade)).toArray().size(), 0) << shade;
     for (const char *kind : {"contour", "safety", "coast"})
@@ -409,10 +413,59 @@ TEST_F(Server, DrawsTheConsolesChartLayer)
     // A deeper safety depth moves the safety contour and the shades with it.
     const QJsonObject deeper = QJsonDocument::fromJson(fetch(QUrl(base + u"/api/chart?bbox=-76.60,38.35,-76.00,39.05&safety=12"_s)).body).object();
     EXPECT_GT(deeper.value(u"safetyContour"_s).toDouble(), safety);
-    EXPECT_GT(deeper[u"areas"_s][u"shallow"_s].toArray().size(), areas.value(u"shallow"_s).toArray().size());
+    EXPECT_GT(deeper[u"layers"_s][0][u"areas"_s][u"shallow"_s].toArray().size(), areas.value(u"shallow"_s).toArray().size());
     // A box away from the cell: nothing of it.
     const QJsonObject away = QJsonDocument::fromJson(fetch(QUrl(base + u"/api/chart?bbox=-9,41,-8,42"_s)).body).object();
     EXPECT_TRUE(away.value(u"cells"_s).toArray().isEmpty());
     EXPECT_TRUE(away.value(u"marks"_s).toArray().isEmpty());
     qunsetenv("XDG_CACHE_HOME");
+}
+
+// Where cells overlap, the page draws usage band after usage band, overview
+// first, so that the best band covers the rest; a symbol of the lesser cell
+// where the better one covers is left out (its own are drawn).
+TEST(WebChart, OverlappingCellsComeBandByBandTheBestLast)
+{
+    const auto box = [](double w, double s, double e, double n) {
+        return std::vector<charts::Vertex>{{w, s, 0}, {e, s, 0}, {e, n, 0}, {w, n, 0}, {w, s, 0}};
+    };
+    const auto feature = [](const QString &objectClass, charts::Feature::Geometry geometry, std::vector<std::vector<charts::Vertex>> parts,
+                            QMap<QString, QString> attributes) {
+        charts::Feature f;
+        f.objectClass = objectClass;
+        f.geometry = geometry;
+        f.parts = std::move(parts);
+        f.attributes = std::move(attributes);
+        return f;
+    };
+    using G = charts::Feature::Geometry;
+    charts::Cell harbour;
+    harbour.name = u"XX5HARB.000"_s;
+    harbour.usageBand = 5;
+    harbour.features = {feature(u"M_COVR"_s, G::Area, {box(-8.75, 41.14, -8.74, 41.15)}, {{u"CATCOV"_s, u"1"_s}}),
+                        feature(u"DEPARE"_s, G::Area, {box(-8.75, 41.14, -8.74, 41.15)}, {{u"DRVAL1"_s, u"3"_s}, {u"DRVAL2"_s, u"4"_s}}),
+                        feature(u"WRECKS"_s, G::Point, {{{-8.745, 41.146, 0}}}, {{u"OBJNAM"_s, u"Harbour Wreck"_s}})};
+    charts::Cell approach;
+    approach.name = u"XX3APPR.000"_s;
+    approach.usageBand = 3;
+    approach.features = {feature(u"M_COVR"_s, G::Area, {box(-8.8, 41.1, -8.7, 41.2)}, {{u"CATCOV"_s, u"1"_s}}),
+                         feature(u"DEPARE"_s, G::Area, {box(-8.8, 41.1, -8.7, 41.2)}, {{u"DRVAL1"_s, u"10"_s}, {u"DRVAL2"_s, u"20"_s}}),
+                         feature(u"WRECKS"_s, G::Point, {{{-8.745, 41.144, 0}}}, {{u"OBJNAM"_s, u"Approach Wreck Inside"_s}}),
+                         feature(u"WRECKS"_s, G::Point, {{{-8.72, 41.18, 0}}}, {{u"OBJNAM"_s, u"Approach Wreck Outside"_s}})};
+    for (charts::Cell *c : {&harbour, &approach})
+        c->index();
+    // The harbour cell first in the list: drawn last all the same.
+    const QJsonObject chart = web::chartLayer({harbour, approach}, -9, 41, -8, 42, 5, 0);
+    const QJsonArray layers = chart.value(u"layers"_s).toArray();
+    ASSERT_EQ(layers.size(), 2);
+    EXPECT_EQ(layers[0][u"band"_s].toInt(), 3);
+    EXPECT_EQ(layers[1][u"band"_s].toInt(), 5);
+    EXPECT_EQ(layers[0][u"areas"_s][u"deep"_s].toArray().size(), 1) << "the approach cell's 10-20 m, deep against 5 m";
+    EXPECT_EQ(layers[1][u"areas"_s][u"shallow"_s].toArray().size(), 1) << "the harbour's 3-4 m, over it";
+    EXPECT_EQ(chart.value(u"cells"_s).toArray(), (QJsonArray{u"XX3APPR.000"_s, u"XX5HARB.000"_s}));
+    QStringList names;
+    for (const QJsonValue &m : chart.value(u"marks"_s).toArray())
+        names << m[u"name"_s].toString();
+    names.sort();
+    EXPECT_EQ(names, (QStringList{u"Approach Wreck Outside"_s, u"Harbour Wreck"_s}));
 }
