@@ -79,14 +79,32 @@ let chartsShown = false, chartLayer = null, chartBox = null, chartZoom = -1, cha
 let chartAsked = 0; // the last request's number: an older answer arriving later is not drawn
 const cssColour = (name) => getComputedStyle(document.documentElement).getPropertyValue('--chart-' + name).trim();
 
+// A symbol's outline by its charted shape, as the console's map draws it (ChartItem's appendOutline),
+// 5 pixels a unit, the point at 0,0.
+const chartShapes = {
+  cross: 'M-5,-5 L5,5 M5,-5 L-5,5',
+  flare: 'M0,0 L3,6.2 L4.95,7.4 L7.07,7.07 L7.4,4.95 L6.2,3 Z',
+  ring: 'M5,0 A5,5 0 1,0 -5,0 A5,5 0 1,0 5,0 Z',
+  conical: 'M-4,3.5 L4,3.5 L0,-5.5 Z',
+  can: 'M-3,-3 L3,-3 L3,3 L-3,3 Z',
+  spherical: 'M-4.5,2.5 A4.5,4.5 0 0,1 4.5,2.5 Z',
+  pillar: 'M-2,3.5 L2,3.5 L1.25,-6.5 L-1.25,-6.5 Z',
+  spar: 'M-0.75,3.5 L0.75,3.5 L0.75,-7 L-0.75,-7 Z',
+  barrel: 'M5,0 A5,2.75 0 1,0 -5,0 A5,2.75 0 1,0 5,0 Z',
+  'super-buoy': 'M6.5,0 A6.5,6.5 0 1,0 -6.5,0 A6.5,6.5 0 1,0 6.5,0 Z M3,0 A3,3 0 1,0 -3,0 A3,3 0 1,0 3,0 Z',
+  triangle: 'M-5,0 L5,0 L0,-10 Z',
+  stake: 'M0,0 L0,-10 M-2.5,-10 L2.5,-10',
+  tower: 'M-2.5,0 L2.5,0 L2.5,-9 L-2.5,-9 Z',
+  lattice: 'M-3.5,0 L3.5,0 L1.5,-9 L-1.5,-9 Z M-3.5,0 L1.5,-9 M3.5,0 L-1.5,-9',
+  pile: 'M-1.25,0 L1.25,0 L1.25,-7.5 L-1.25,-7.5 Z',
+  cairn: 'M-4.5,0 L4.5,0 L0,-6 Z',
+};
+
 function chartSymbol(mark, colours) {
   const c = mark.kind === 'hazard' ? colours.hazard : mark.colour ? colours[mark.colour] : colours.aid;
-  const shape = mark.kind === 'hazard' ? '<path d="M-5,-5 L5,5 M5,-5 L-5,5" stroke="' + c + '" stroke-width="2"/>'
-    : mark.kind === 'buoy' ? '<circle r="4.5" fill="none" stroke="' + c + '" stroke-width="2"/>'
-    : mark.kind === 'beacon' ? '<path d="M0,-6 L5.5,4.5 L-5.5,4.5 Z" fill="none" stroke="' + c + '" stroke-width="2"/>'
-    : '<path d="M0,-7 L1.8,-2 L7,-2 L2.8,1.2 L4.3,6.5 L0,3.3 L-4.3,6.5 L-2.8,1.2 L-7,-2 L-1.8,-2 Z" fill="' + c + '"/>';
-  return L.divIcon({ html: '<svg viewBox="-8 -8 16 16" width="16" height="16">' + shape + '</svg>', className: 'chart-mark',
-                     iconSize: [16, 16], iconAnchor: [8, 8] });
+  const d = chartShapes[mark.shape] || chartShapes.ring;
+  const svg = '<svg viewBox="-12 -12 24 24" width="24" height="24"><path d="' + d + '" fill="none" stroke="' + c + '" stroke-width="1.8"/></svg>';
+  return L.divIcon({ html: svg, className: 'chart-mark', iconSize: [24, 24], iconAnchor: [12, 12] });
 }
 
 function drawChart() {

@@ -390,6 +390,40 @@ AidColour aidColour(const Feature &f)
     }
 }
 
+Shape shapeOf(const Feature &f)
+{
+    switch (drawnAs(f)) {
+    case Drawn::Hazard:
+        return Shape::Cross;
+    case Drawn::Light:
+        return Shape::Flare;
+    case Drawn::Buoy: {
+        // BOYSHP: 1 conical, 2 can, 3 spherical, 4 pillar, 5 spar, 6 barrel, 7 super-buoy, 8 ice buoy.
+        static constexpr Shape buoys[] = {Shape::Ring, Shape::Conical, Shape::Can, Shape::Spherical, Shape::Pillar,
+                                          Shape::Spar, Shape::Barrel, Shape::SuperBuoy};
+        const int shape = f.attributes.value(u"BOYSHP"_s).toInt();
+        return shape > 0 && shape < int(std::size(buoys)) ? buoys[shape] : Shape::Ring;
+    }
+    case Drawn::Beacon: {
+        // BCNSHP: 1 stake, pole, perch or post, 2 withy, 3 tower, 4 lattice, 5 pile, 6 cairn, 7 buoyant beacon.
+        static constexpr Shape beacons[] = {Shape::Triangle, Shape::Stake, Shape::Stake, Shape::Tower, Shape::Lattice, Shape::Pile,
+                                            Shape::Cairn};
+        const int shape = f.attributes.value(u"BCNSHP"_s).toInt();
+        return shape > 0 && shape < int(std::size(beacons)) ? beacons[shape] : Shape::Triangle;
+    }
+    default:
+        return Shape::Nothing;
+    }
+}
+
+QString shapeName(Shape shape)
+{
+    static const QString names[] = {QString(), u"cross"_s, u"flare"_s, u"ring"_s, u"conical"_s, u"can"_s, u"spherical"_s,
+                                    u"pillar"_s, u"spar"_s, u"barrel"_s, u"super-buoy"_s, u"triangle"_s, u"stake"_s,
+                                    u"tower"_s, u"lattice"_s, u"pile"_s, u"cairn"_s};
+    return names[std::size_t(shape)];
+}
+
 double safetyContour(const std::vector<Cell> &cells, double safetyDepth)
 {
     double safety = std::numeric_limits<double>::infinity();

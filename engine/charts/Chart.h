@@ -137,6 +137,17 @@ Drawn drawnAs(const Feature &feature);
 // (white, black, none said), drawn in the chart's aid colour.
 enum class AidColour : quint8 { Other, Red, Green, Yellow };
 AidColour aidColour(const Feature &feature);
+// A symbol's shape, as paper charts draw it (INT 1's simplified symbols):
+// buoys by BOYSHP (conical, can, spherical, pillar, spar, barrel, super-buoy;
+// a ring when not said), beacons by BCNSHP (stake or withy, tower, lattice,
+// pile, cairn; a triangle when not said), hazards a cross, lights a flare (a
+// teardrop from the light, away to the lower right, beside a buoy's shape).
+// Nothing for a feature drawnAs() draws no symbol for.
+enum class Shape : quint8 { Nothing, Cross, Flare, Ring, Conical, Can, Spherical, Pillar, Spar, Barrel, SuperBuoy,
+                            Triangle, Stake, Tower, Lattice, Pile, Cairn };
+Shape shapeOf(const Feature &feature);
+// Its name in the page's JSON ("cross", "flare", "conical", "can", …; "" for Nothing).
+QString shapeName(Shape shape);
 // The safety contour (S-52's idea): the first charted depth contour (DEPCNT's
 // VALDCO) at or past the safety depth; the safety depth when there is none.
 double safetyContour(const std::vector<Cell> &cells, double safetyDepth);

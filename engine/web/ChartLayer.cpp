@@ -80,7 +80,7 @@ QJsonObject chartLayer(const std::vector<charts::Cell> &cells, double west, doub
                 for (const auto &part : f.parts) {
                     if (part.empty() || charts::coveredByBetter(cells, cell, part.front().lon, part.front().lat))
                         continue;
-                    QJsonObject mark{{u"kind"_s, kind}, {u"lat"_s, rounded(part.front().lat)}, {u"lon"_s, rounded(part.front().lon)},
+                    QJsonObject mark{{u"kind"_s, kind}, {u"shape"_s, charts::shapeName(charts::shapeOf(f))}, {u"lat"_s, rounded(part.front().lat)}, {u"lon"_s, rounded(part.front().lon)},
                                      {u"scamin"_s, f.number(u"SCAMIN"_s).value_or(0)}, {u"what"_s, charts::className(f.objectClass)}};
                     if (!f.name().isEmpty())
                         mark.insert(u"name"_s, f.name());

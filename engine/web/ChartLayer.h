@@ -16,7 +16,8 @@ namespace neptus::web {
 //    "layers": [{"band": 4,
 //                "areas": {"deep": [polygon, …], "medium", "shallow", "drying", "land"},
 //                "lines": {"contour": [polyline, …], "safety", "coast", "restricted", "fairway"}}, …],
-//    "marks": [{"kind": "hazard"|"buoy"|"beacon"|"light", "lat", "lon",
+//    "marks": [{"kind": "hazard"|"buoy"|"beacon"|"light",
+//               "shape": "cross"|"flare"|"conical"|"can"|… (charts::shapeName), "lat", "lon",
 //               "scamin", "what": "wreck", "name", "depth",
 //               "colour": "red"|"green"|"yellow" (an aid's charted colour)}, …]}
 // A layer is what the cells of one usage band draw, overview first: drawn in

@@ -309,6 +309,7 @@ Rectangle {
         restrictedColor: Theme.chart.restricted
         fairwayColor: Theme.chart.contour
         lineWidth: Math.max(1, Theme.mm(0.2))
+        symbolRadius: Math.max(4, Theme.mm(1.5))
     }
     // Soundings, in metres (one decimal under 31 m, as charts write them):
     // shallower than the safety depth in the text's colour, deeper dimmed.

@@ -45,6 +45,81 @@ Cell::Bounds boundsOf(const std::vector<Cell> &cells)
 // Local units: a pixel at zoom 16 (about 2 m), around the charts' middle.
 constexpr double localZoom = 16;
 
+// A symbol's outline (shapeOf()) around `p`, `r` pixels its size, as pairs of end points.
+void appendOutline(std::vector<QPointF> &lines, Shape shape, QPointF p, double r)
+{
+    const auto closed = [&](std::initializer_list<QPointF> corners) {
+        for (auto it = corners.begin(); it != corners.end(); ++it)
+            lines.insert(lines.end(), {p + *it * r, p + *(std::next(it) == corners.end() ? corners.begin() : std::next(it)) * r});
+    };
+    const auto ellipse = [&](double rx, double ry, QPointF centre, double from = 0, double to = 2 * std::numbers::pi) {
+        const int sides = 12;
+        for (int i = 0; i < sides; ++i) {
+            const double a0 = from + (to - from) * i / sides, a1 = from + (to - from) * (i + 1) / sides;
+            lines.insert(lines.end(), {p + (centre + QPointF(rx * std::cos(a0), ry * std::sin(a0))) * r,
+                                       p + (centre + QPointF(rx * std::cos(a1), ry * std::sin(a1))) * r});
+        }
+    };
+    switch (shape) {
+    case Shape::Nothing:
+        break;
+    case Shape::Cross:
+        lines.insert(lines.end(), {p + QPointF(-r, -r), p + QPointF(r, r), p + QPointF(-r, r), p + QPointF(r, -r)});
+        break;
+    case Shape::Flare: { // a teardrop from the light, towards the lower right (S-52's light flare)
+        const QPointF u(std::numbers::sqrt2 / 2, std::numbers::sqrt2 / 2), v(-u.y(), u.x());
+        closed({{0, 0}, 1.3 * u + 0.45 * v, 1.75 * u + 0.35 * v, 2.0 * u, 1.75 * u - 0.35 * v, 1.3 * u - 0.45 * v});
+        break;
+    }
+    case Shape::Ring:
+        ellipse(1, 1, {});
+        break;
+    case Shape::Conical: // a nun: pointed on top
+        closed({{-0.8, 0.7}, {0.8, 0.7}, {0, -1.1}});
+        break;
+    case Shape::Can: // flat on top
+        closed({{-0.6, -0.6}, {0.6, -0.6}, {0.6, 0.6}, {-0.6, 0.6}});
+        break;
+    case Shape::Spherical: // a dome on its waterline
+        ellipse(0.9, 0.9, {0, 0.5}, std::numbers::pi, 2 * std::numbers::pi);
+        closed({{-0.9, 0.5}, {0.9, 0.5}});
+        break;
+    case Shape::Pillar: // tall and narrow
+        closed({{-0.4, 0.7}, {0.4, 0.7}, {0.25, -1.3}, {-0.25, -1.3}});
+        break;
+    case Shape::Spar: // a pole
+        closed({{-0.15, 0.7}, {0.15, 0.7}, {0.15, -1.4}, {-0.15, -1.4}});
+        break;
+    case Shape::Barrel:
+        ellipse(1, 0.55, {});
+        break;
+    case Shape::SuperBuoy:
+        ellipse(1.3, 1.3, {});
+        ellipse(0.6, 0.6, {});
+        break;
+    case Shape::Triangle: // standing on the point
+        closed({{-1, 0}, {1, 0}, {0, -2}});
+        break;
+    case Shape::Stake: // a post with a bar on top
+        lines.insert(lines.end(), {p, p + QPointF(0, -2 * r), p + QPointF(-0.5 * r, -2 * r), p + QPointF(0.5 * r, -2 * r)});
+        break;
+    case Shape::Tower:
+        closed({{-0.5, 0}, {0.5, 0}, {0.5, -1.8}, {-0.5, -1.8}});
+        break;
+    case Shape::Lattice: // a frame, braced
+        closed({{-0.7, 0}, {0.7, 0}, {0.3, -1.8}, {-0.3, -1.8}});
+        lines.insert(lines.end(), {p + QPointF(-0.7, 0) * r, p + QPointF(0.3, -1.8) * r, p + QPointF(0.7, 0) * r, p + QPointF(-0.3, -1.8) * r});
+        break;
+    case Shape::Pile:
+        closed({{-0.25, 0}, {0.25, 0}, {0.25, -1.5}, {-0.25, -1.5}});
+        break;
+    case Shape::Cairn: // a heap of stones
+        closed({{-0.9, 0}, {0.9, 0}, {0, -1.2}});
+        ellipse(0.3, 0.3, {0, -0.45});
+        break;
+    }
+}
+
 // The side of the tiles the chart's image is drawn in (pixels).
 constexpr int tileSide = 256;
 
@@ -81,13 +156,12 @@ struct ChartItem::Loaded
         std::vector<QPointF> coast, restricted, fairways; // pairs of end points (fairways' edges dashed)
     };
     std::vector<Layer> layers;
-    // Point symbols (only where no cell of a better band covers them): hazards (a cross), buoys (a ring), beacons (a triangle), lights (a star), with
-    // the largest scale denominator they are shown at (SCAMIN; 0: none said).
-    enum class Mark { Hazard, Buoy, Beacon, Light };
+    // Point symbols (only where no cell of a better band covers them) by their shape (shapeOf()),
+    // with the largest scale denominator they are shown at (SCAMIN; 0: none said).
     struct Point
     {
         Eigen::Vector2d mercator;
-        Mark mark;
+        Shape shape;
         double scamin;
         AidColour colour;
     };
@@ -155,11 +229,10 @@ void ChartItem::Loaded::convert()
                 }
             } else if (drawn == Drawn::Hazard || drawn == Drawn::Buoy || drawn == Drawn::Beacon || drawn == Drawn::Light) {
                 // (An area or line hazard is marked at its first point.)
-                const Mark mark = drawn == Drawn::Hazard ? Mark::Hazard : drawn == Drawn::Buoy ? Mark::Buoy
-                                  : drawn == Drawn::Beacon ? Mark::Beacon : Mark::Light;
+                const Shape shape = shapeOf(f);
                 for (const auto &part : f.parts) {
                     if (!part.empty() && !coveredByBetter(*cells, c, part.front().lon, part.front().lat))
-                        points.push_back({mercatorOf(part.front().lat, part.front().lon), mark, f.number(u"SCAMIN"_s).value_or(0), aidColour(f)});
+                        points.push_back({mercatorOf(part.front().lat, part.front().lon), shape, f.number(u"SCAMIN"_s).value_or(0), aidColour(f)});
                     if (f.geometry != Feature::Geometry::Point)
                         break;
                 }
@@ -515,7 +588,7 @@ QSGNode *ChartItem::updatePaintNode(QSGNode *old, UpdatePaintNodeData *)
     // Symbols, the same size at every zoom, only those in view and at scales their SCAMIN allows
     // (the scale for OGC's standard 0.28 mm rendering pixel; without SCAMIN, from zoom 11 in).
     const MapProjection view = projection();
-    const double r = std::max(3.0, m_lineWidth * 3);
+    const double r = m_symbolRadius;
     const double scale = view.metresPerPixel() / 0.00028;
     std::vector<QPointF> hazards, aidsBy[4]; // aids by AidColour
     for (const Loaded::Point &point : m_read ? m_read->points : std::vector<Loaded::Point>{}) {
@@ -524,28 +597,7 @@ QSGNode *ChartItem::updatePaintNode(QSGNode *old, UpdatePaintNodeData *)
         const QPointF p = view.fromMercator(point.mercator);
         if (p.x() < -r || p.y() < -r || p.x() > width() + r || p.y() > height() + r)
             continue;
-        auto &aids = aidsBy[int(point.colour)];
-        switch (point.mark) {
-        case Loaded::Mark::Hazard:
-            hazards.insert(hazards.end(), {p + QPointF(-r, -r), p + QPointF(r, r), p + QPointF(-r, r), p + QPointF(r, -r)});
-            break;
-        case Loaded::Mark::Buoy: // a ring of 8 sides
-            for (int i = 0; i < 8; ++i) {
-                const double a0 = i * std::numbers::pi / 4, a1 = (i + 1) * std::numbers::pi / 4;
-                aids.insert(aids.end(), {p + QPointF(r * std::cos(a0), r * std::sin(a0)), p + QPointF(r * std::cos(a1), r * std::sin(a1))});
-            }
-            break;
-        case Loaded::Mark::Beacon: // a triangle standing on the point
-            aids.insert(aids.end(), {p + QPointF(-r, 0), p + QPointF(r, 0), p + QPointF(r, 0), p + QPointF(0, -2 * r),
-                                     p + QPointF(0, -2 * r), p + QPointF(-r, 0)});
-            break;
-        case Loaded::Mark::Light: // a star of three strokes
-            for (int i = 0; i < 3; ++i) {
-                const double a = i * std::numbers::pi / 3;
-                aids.insert(aids.end(), {p + QPointF(r * std::cos(a), r * std::sin(a)), p - QPointF(r * std::cos(a), r * std::sin(a))});
-            }
-            break;
-        }
+        appendOutline(point.shape == Shape::Cross ? hazards : aidsBy[int(point.colour)], point.shape, p, r);
     }
     QSGGeometryNode *hazardNode = flatNode(root, 1, QSGGeometry::DrawLines);
     setNodePoints(hazardNode, hazards, m_lineWidth * 1.5);

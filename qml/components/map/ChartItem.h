@@ -23,8 +23,9 @@
 // areas' edges and fairways' edges dashed, all painted on a worker thread into
 // an image of the region around the view; over that, drawn every frame, as
 // symbols of one size at every zoom hazards (obstructions, wrecks, rocks:
-// crosses), buoys (rings), beacons (triangles) and lights (stars), each only
-// at scales its SCAMIN allows. `featureAt` says what is at a tapped point.
+// crosses), buoys and beacons by their charted shape (charts::shapeOf: a
+// conical buoy pointed, a can square, a beacon tower tall, …) and lights
+// (flares beside them), each only at scales its SCAMIN allows. `featureAt` says what is at a tapped point.
 class ChartItem : public MapOverlayItem
 {
     Q_OBJECT
@@ -43,6 +44,8 @@ class ChartItem : public MapOverlayItem
     Q_PROPERTY(QColor restrictedColor MEMBER m_restrictedColor NOTIFY styleChanged)
     Q_PROPERTY(QColor fairwayColor MEMBER m_fairwayColor NOTIFY styleChanged)
     Q_PROPERTY(double lineWidth MEMBER m_lineWidth NOTIFY styleChanged)
+    // A symbol's size: half a buoy's width, in pixels.
+    Q_PROPERTY(double symbolRadius MEMBER m_symbolRadius NOTIFY styleChanged)
     // The filled areas' colours: land, and depth areas by shade (deep, medium, shallow, drying).
     Q_PROPERTY(QColor landColor MEMBER m_landColor NOTIFY styleChanged)
     Q_PROPERTY(QColor deepColor MEMBER m_deepColor NOTIFY styleChanged)
@@ -125,6 +128,7 @@ private:
            m_aidColor = Qt::darkMagenta, m_restrictedColor = Qt::magenta, m_fairwayColor = Qt::gray, m_redAidColor = Qt::red,
            m_greenAidColor = Qt::darkGreen, m_yellowAidColor = Qt::darkYellow;
     double m_lineWidth = 1;
+    double m_symbolRadius = 4;
     // What was read, converted once (Loaded); band() and the paint node take from it.
     std::shared_ptr<const Loaded> m_read;
     // band(): each layer's (usage band's) depth areas' rings by shade (in m_read), and its contours but

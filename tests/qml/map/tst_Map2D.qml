@@ -212,6 +212,33 @@ TestCase {
         verify(!drawnIn(38.8982947, -76.3375269, Theme.chart.green))
         m.centreAt(38.8843, -76.2033)
         tryVerify(() => drawnIn(38.8843286, -76.2033236, Theme.chart.green), 5000, "a green one green")
+        // In their charted shapes: the green can (BOYSHP 2) square, its flat top drawn; the
+        // red nun (BOYSHP 1) pointed, nothing where a can's top corners would be, its tip drawn
+        // (close enough in that its neighbours, Buoys 4 and 6, are apart from it).
+        const zoom = m.zoomLevel
+        m.zoomLevel = 16
+        const r = findChild(m, "chart").symbolRadius
+        const near = (image, x, y, colour) => {
+            for (let dx = -1; dx <= 1; ++dx)
+                for (let dy = -1; dy <= 1; ++dy)
+                    if (Qt.colorEqual(image.pixel(Math.round(x) + dx, Math.round(y) + dy), colour))
+                        return true
+            return false
+        }
+        tryVerify(() => drawnIn(38.8843286, -76.2033236, Theme.chart.green), 5000)
+        let shot = grabImage(m)
+        let at = m.screenPoint(38.8843286, -76.2033236)
+        verify(near(shot, at.x - 0.5 * r, at.y - 0.6 * r, Theme.chart.green) && near(shot, at.x, at.y - 0.6 * r, Theme.chart.green)
+               && near(shot, at.x + 0.5 * r, at.y - 0.6 * r, Theme.chart.green), "a can buoy's flat top")
+        verify(!near(shot, at.x, at.y - r, Theme.chart.green), "not a ring's (nor a nun's) top")
+        m.centreAt(38.8983, -76.3375)
+        tryVerify(() => drawnIn(38.8982947, -76.3375269, Theme.chart.red), 5000)
+        shot = grabImage(m)
+        at = m.screenPoint(38.8982947, -76.3375269)
+        verify(near(shot, at.x, at.y - 1.05 * r, Theme.chart.red), "a nun's tip")
+        verify(!near(shot, at.x - 0.75 * r, at.y - 0.75 * r, Theme.chart.red) && !near(shot, at.x + 0.75 * r, at.y - 0.75 * r, Theme.chart.red),
+               "and no flat top")
+        m.zoomLevel = zoom
         // Far from the charts, a tap on the status line shows them whole.
         m.centreAt(41.15, -8.66)
         mouseClick(findChild(m, "noTiles"))

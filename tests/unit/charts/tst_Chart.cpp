@@ -210,3 +210,38 @@ TEST(Chart, AnAidIsDrawnInItsFirstChartedColour)
     EXPECT_EQ(colour(u"(red)"_s), AidColour::Other);
     EXPECT_EQ(drawnAs([] { Feature f = point(u"BOYLAT"_s, 0, 0); f.role = roleOf(f); return f; }()), Drawn::Buoy);
 }
+
+// Buoys and beacons in their charted shape (BOYSHP, BCNSHP), as paper charts
+// draw them; a ring or a triangle when the cell does not say; hazards a cross,
+// lights a flare, and no symbol for what is not one.
+TEST(Chart, BuoysAndBeaconsAreDrawnInTheirChartedShape)
+{
+    const auto shape = [](const QString &objectClass, QMap<QString, QString> attributes = {}) {
+        Feature f = point(objectClass, 0, 0, std::move(attributes));
+        f.role = roleOf(f);
+        return shapeOf(f);
+    };
+    EXPECT_EQ(shape(u"BOYLAT"_s, {{u"BOYSHP"_s, u"1"_s}}), Shape::Conical);
+    EXPECT_EQ(shape(u"BOYLAT"_s, {{u"BOYSHP"_s, u"2"_s}}), Shape::Can);
+    EXPECT_EQ(shape(u"BOYSPP"_s, {{u"BOYSHP"_s, u"3"_s}}), Shape::Spherical);
+    EXPECT_EQ(shape(u"BOYSAW"_s, {{u"BOYSHP"_s, u"4"_s}}), Shape::Pillar);
+    EXPECT_EQ(shape(u"BOYSPP"_s, {{u"BOYSHP"_s, u"5"_s}}), Shape::Spar);
+    EXPECT_EQ(shape(u"BOYSPP"_s, {{u"BOYSHP"_s, u"6"_s}}), Shape::Barrel);
+    EXPECT_EQ(shape(u"BOYSPP"_s, {{u"BOYSHP"_s, u"7"_s}}), Shape::SuperBuoy);
+    EXPECT_EQ(shape(u"BOYLAT"_s), Shape::Ring);
+    EXPECT_EQ(shape(u"BOYLAT"_s, {{u"BOYSHP"_s, u"8"_s}}), Shape::Ring) << "an ice buoy: no symbol of its own";
+    EXPECT_EQ(shape(u"BOYLAT"_s, {{u"BOYSHP"_s, u"nonsense"_s}}), Shape::Ring);
+    EXPECT_EQ(shape(u"BCNLAT"_s, {{u"BCNSHP"_s, u"1"_s}}), Shape::Stake);
+    EXPECT_EQ(shape(u"BCNLAT"_s, {{u"BCNSHP"_s, u"2"_s}}), Shape::Stake) << "a withy";
+    EXPECT_EQ(shape(u"BCNLAT"_s, {{u"BCNSHP"_s, u"3"_s}}), Shape::Tower);
+    EXPECT_EQ(shape(u"BCNSPP"_s, {{u"BCNSHP"_s, u"4"_s}}), Shape::Lattice);
+    EXPECT_EQ(shape(u"BCNSPP"_s, {{u"BCNSHP"_s, u"5"_s}}), Shape::Pile);
+    EXPECT_EQ(shape(u"BCNSPP"_s, {{u"BCNSHP"_s, u"6"_s}}), Shape::Cairn);
+    EXPECT_EQ(shape(u"BCNLAT"_s, {{u"BCNSHP"_s, u"7"_s}}), Shape::Triangle) << "a buoyant beacon: no symbol of its own";
+    EXPECT_EQ(shape(u"BCNLAT"_s), Shape::Triangle);
+    EXPECT_EQ(shape(u"WRECKS"_s), Shape::Cross);
+    EXPECT_EQ(shape(u"LIGHTS"_s), Shape::Flare);
+    EXPECT_EQ(shape(u"SEAARE"_s), Shape::Nothing);
+    EXPECT_EQ(shapeName(Shape::Conical), u"conical"_s);
+    EXPECT_EQ(shapeName(Shape::SuperBuoy), u"super-buoy"_s);
+}

@@ -410,6 +410,19 @@ TEST_F(Server, DrawsTheConsolesChartLayer)
         if (m[u"kind"_s].toString() == u"buoy"_s)
             colours.insert(m[u"colour"_s].toString());
     EXPECT_TRUE(colours.contains(u"red"_s) && colours.contains(u"green"_s)) << colours.values().join(u',').toStdString();
+    // And in their charted shapes: the cell's red nuns conical, green cans square, lit pillars, stake beacons.
+    QSet<QString> shapes;
+    for (const QJsonValue &m : chart.value(u"marks"_s).toArray()) {
+        shapes.insert(m[u"shape"_s].toString());
+        if (m[u"name"_s].toString() == u"Philpots Island Buoy 2"_s) {
+            EXPECT_EQ(m[u"shape"_s].toString(), u"conical"_s);
+        }
+        if (m[u"name"_s].toString() == u"Greenwood Creek Buoy 3"_s) {
+            EXPECT_EQ(m[u"shape"_s].toString(), u"can"_s);
+        }
+    }
+    for (const char *shape : {"conical", "can", "pillar", "stake", "cross", "flare"})
+        EXPECT_TRUE(shapes.contains(QLatin1StringView(shape))) << shape << ": " << shapes.values().join(u',').toStdString();
     // A deeper safety depth moves the safety contour and the shades with it.
     const QJsonObject deeper = QJsonDocument::fromJson(fetch(QUrl(base + u"/api/chart?bbox=-76.60,38.35,-76.00,39.05&safety=12"_s)).body).object();
     EXPECT_GT(deeper.value(u"safetyContour"_s).toDouble(), safety);
