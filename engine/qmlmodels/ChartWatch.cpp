@@ -30,6 +30,7 @@ void ChartWatch::setCharts(const QString &path)
         return;
     m_path = path;
     m_cells.reset();
+    m_verdicts.clear(); // (the maps ask again on the chartsChanged below)
     m_timer.stop();
     m_error.clear();
     if (m_vehicles.vehicles.isEmpty())
@@ -104,8 +105,10 @@ void ChartWatch::check()
 {
     if (!m_cells)
         return;
+    m_verdicts.clear();
     for (const QString &system : m_tracks->systems()) {
         const Verdict v = judge(system);
+        m_verdicts.insert(system, v);
         const QString message = v.level == alarms::Normal ? QString() : v.text;
         if (v.level == alarms::Unknown || m_raised.value(system) == std::pair{v.level, message})
             continue;
@@ -113,11 +116,14 @@ void ChartWatch::check()
         m_raised.insert(system, {v.level, message});
         m_alarms->raise(m_alarms->ensure(u"systems/%1/chart"_s.arg(system)), alarms::Level(v.level), message);
     }
+    ++m_revision;
+    emit judged();
 }
 
 QVariantMap ChartWatch::under(const QString &system) const
 {
-    const Verdict v = judge(system);
+    const auto looked = m_verdicts.constFind(system);
+    const Verdict v = looked != m_verdicts.cend() ? *looked : judge(system);
     if (v.level == alarms::Unknown)
         return {};
     return {{u"covered"_s, v.report.covered}, {u"land"_s, v.report.land},

@@ -462,7 +462,7 @@ Rectangle {
             required property real lon
             at: root.screenPoint(marker.lat, marker.lon)
             fromOwnShip: root.fromOwnShip(marker.lat, marker.lon)
-            charted: root.chartedUnder(marker.system, marker.lat, marker.lon)
+            charted: root.chartedUnder(marker.system, Session.session ? Session.session.charts.revision : 0)
             mapBearing: root.bearing
             tint: root.colorOf(marker.system)
             shape: root.markShape(marker.kind)
@@ -789,7 +789,8 @@ Rectangle {
         }
     }
     // What the charts say under a system (its position as arguments: a binding follows it), {} without charts.
-    function chartedUnder(system: string, lat: real, lon: real): var {
+    // (`revision`: the chart watch's looks, once a second, so that a binding asks again then.)
+    function chartedUnder(system: string, revision: int): var {
         return root.charts !== "" && Session.session && !Session.session.charts.loading ? Session.session.charts.under(system) : ({})
     }
     // Range and bearing from own ship ("1.24 km 045°"), for a system's label.

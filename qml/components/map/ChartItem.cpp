@@ -657,7 +657,7 @@ QVariantMap ChartItem::featureAt(double lat, double lon, double radius) const
 {
     if (!m_read || !m_read->cells)
         return {};
-    const PointReport r = reportAt(*m_read->cells, lon, lat, radius);
+    const PointReport r = reportAt(*m_read->cells, lon, lat, radius, false); // (no sounding said: none looked for)
     if (!r.covered)
         return {};
     QVariantList features;

@@ -115,3 +115,22 @@ TEST_F(Watching, AircraftAndSystemsWithNoDefinitionAreNotJudged)
     EXPECT_EQ(alarm(u"0x4001"_s).first, alarms::Unknown);
     EXPECT_TRUE(watch.under(u"plane"_s).isEmpty());
 }
+
+// A label asks under() as often as it is drawn; the charts are looked up
+// once a look (a second), and under() says what that look found.
+TEST_F(Watching, UnderSaysWhatTheLastLookFoundAndEachLookCounts)
+{
+    const int before = watch.revision();
+    at(u"boat"_s, -8.72);
+    EXPECT_EQ(watch.revision(), before + 1);
+    EXPECT_EQ(watch.under(u"boat"_s).value(u"text"_s).toString(), u"charted 10.0–20.0 m"_s);
+    geo::Tracks::Fix fix;
+    fix.time = 5000;
+    fix.lat = geo::radians(41.15);
+    fix.lon = geo::radians(-8.755);
+    tracks.append(u"boat"_s, fix); // over the shoal, not looked at yet
+    EXPECT_EQ(watch.under(u"boat"_s).value(u"text"_s).toString(), u"charted 10.0–20.0 m"_s);
+    watch.check();
+    EXPECT_EQ(watch.revision(), before + 2);
+    EXPECT_EQ(watch.under(u"boat"_s).value(u"safe"_s).toBool(), false);
+}
