@@ -41,6 +41,8 @@ public:
     QString missionName() const;
     QString missionPath() const { return m_desk->missionPath(); }
     QStringList missionProblems() const { return m_desk->problems(); }
+    // The vehicle definitions read for the mission open (PlanDesk::definitions).
+    const neptus::mission::VehicleCatalog &definitions() const { return m_desk->definitions(); }
     QVariantList features() const { return m_features; }
     QVariantMap home() const;
     bool sharing() const { return m_share && m_share->sharing(); }

@@ -45,7 +45,17 @@ QString severityName(PlanProblem::Severity s) { return s == PlanProblem::Severit
 
 } // namespace
 
-PlanEditorModel::PlanEditorModel(QObject *parent) : QObject(parent), m_vehicles(loadVehicles(vehicleFolders())) {}
+PlanEditorModel::PlanEditorModel(QObject *parent) : QObject(parent) {}
+
+const VehicleCatalog &PlanEditorModel::vehicles() const
+{
+    // The console's, read once per mission by its plan desk; its own only without one (a test, a tool).
+    if (m_desk && !m_desk->definitions().vehicles.isEmpty())
+        return m_desk->definitions();
+    if (!m_ownVehicles)
+        m_ownVehicles = loadVehicles(vehicleFolders());
+    return *m_ownVehicles;
+}
 
 void PlanEditorModel::fail(const QString &why)
 {
@@ -116,7 +126,7 @@ QString PlanEditorModel::vehicle() const { return plan() ? plan()->vehicle : QSt
 
 QStringList PlanEditorModel::maneuverTypes() const
 {
-    const VehicleDefinition *v = m_vehicles.find(vehicle());
+    const VehicleDefinition *v = vehicles().find(vehicle());
     if (!v)
         return knownTypes;
     QStringList types;
@@ -189,7 +199,7 @@ void PlanEditorModel::changed()
     m_problems.clear();
     m_geometry = {};
     if (const Plan *p = plan()) {
-        const VehicleDefinition *v = m_vehicles.find(p->vehicle);
+        const VehicleDefinition *v = vehicles().find(p->vehicle);
         m_geometry = planGeometry(*p, v ? v->speeds() : SpeedModel{});
         m_problems = checkPlan(*p, m_mission, m_geometry, v);
         if (m_charts && m_charts->cells()) {
@@ -391,7 +401,7 @@ void PlanEditorModel::otherPlansAgain()
     for (const Plan &p : m_mission.plans) {
         if (p.id == m_planId)
             continue;
-        const VehicleDefinition *v = m_vehicles.find(p.vehicle);
+        const VehicleDefinition *v = vehicles().find(p.vehicle);
         QVariantList path;
         for (const ManeuverGeometry &g : planGeometry(p, v ? v->speeds() : SpeedModel{}).maneuvers)
             for (const Waypoint &w : g.points)
@@ -728,7 +738,7 @@ QString PlanEditorModel::addManeuver(const QString &type, double lat, double lon
     const QMap<QString, QString> fallback{{u"z"_s, u"2"_s}, {u"z_units"_s, u"DEPTH"_s}, {u"speed"_s, u"1.5"_s}, {u"speed_units"_s, u"METERS_PS"_s}};
     for (auto it = fallback.cbegin(); it != fallback.cend(); ++it)
         m.parameters.insert(it.key(), it.value());
-    if (const VehicleDefinition *v = m_vehicles.find(p->vehicle)) {
+    if (const VehicleDefinition *v = vehicles().find(p->vehicle)) {
         if (const ManeuverSpec *spec = v->maneuver(type)) {
             for (const ParameterSpec &ps : spec->parameters)
                 if (!ps.defaultValue.isEmpty())
@@ -822,7 +832,7 @@ QVariantList PlanEditorModel::parametersOf(const QString &id) const
     const Maneuver *m = p ? p->maneuver(id) : nullptr;
     if (!m)
         return list;
-    const VehicleDefinition *v = m_vehicles.find(p->vehicle);
+    const VehicleDefinition *v = vehicles().find(p->vehicle);
     const ManeuverSpec *spec = v ? v->maneuver(m->type) : nullptr;
     const QStringList problems = v ? v->checkManeuver(*m) : QStringList();
     const double none = std::numeric_limits<double>::quiet_NaN();
@@ -1124,7 +1134,7 @@ bool PlanEditorModel::removeChecklistItem(int list, int group, int item)
 QVariantList PlanEditorModel::exportTargets() const
 {
     QVariantList list;
-    if (const VehicleDefinition *v = m_vehicles.find(vehicle()))
+    if (const VehicleDefinition *v = vehicles().find(vehicle()))
         for (const Translation &t : v->translations)
             list.append(QVariantMap{{u"target"_s, t.target}, {u"name"_s, t.name}, {u"extension"_s, t.extension}});
     return list;
@@ -1133,7 +1143,7 @@ QVariantList PlanEditorModel::exportTargets() const
 bool PlanEditorModel::exportPlan(const QString &target)
 {
     const Plan *p = plan();
-    const VehicleDefinition *v = p ? m_vehicles.find(p->vehicle) : nullptr;
+    const VehicleDefinition *v = p ? vehicles().find(p->vehicle) : nullptr;
     const Translation *t = v ? v->translation(target) : nullptr;
     if (!t) {
         fail(u"%1 has no translation to '%2'"_s.arg(p ? p->vehicle : u"no plan"_s, target));
@@ -1247,7 +1257,7 @@ bool PlanEditorModel::saveAs(const QString &path)
 QStringList PlanEditorModel::knownVehicles() const
 {
     QStringList ids;
-    for (const VehicleDefinition &v : m_vehicles.vehicles)
+    for (const VehicleDefinition &v : vehicles().vehicles)
         ids << v.id;
     std::sort(ids.begin(), ids.end());
     return ids;

@@ -225,7 +225,9 @@ private:
 
     QString m_path, m_planId, m_error;
     neptus::mission::Mission m_mission;
-    neptus::mission::VehicleCatalog m_vehicles;
+    // The vehicle definitions the checks use: the plan desk's (vehicles()), else read here once.
+    const neptus::mission::VehicleCatalog &vehicles() const;
+    mutable std::optional<neptus::mission::VehicleCatalog> m_ownVehicles;
     QList<neptus::mission::Mission> m_undo, m_redo; // implicitly shared: a copy is cheap
     bool m_modified = false;
     neptus::mission::PlanGeometry m_geometry;
