@@ -32,6 +32,12 @@ Rectangle {
     property string mbtiles: ""
     // The system the map keeps centred: a name, "$main", or "" for none.
     property string follow: "$main"
+    // A few seconds after the first system is heard (so that the others are too), the map zooms
+    // out until every system is within 70 % of the view around its centre, unless the view was
+    // zoomed meanwhile: a newcomer sees the whole team, not one vehicle at street level. Never
+    // zooms in. (The shipped consoles turn it on.)
+    property bool showTeamOnStart: false
+    property int teamDelay: 3000
     property bool showGrid: true
     // The world coastline (GSHHG, installed with Neptus-Qt) where no tiles are.
     property bool showCoastline: true
@@ -229,6 +235,36 @@ Rectangle {
         }
     }
 
+    Timer {
+        id: teamTimer
+        objectName: "teamTimer"
+        property real zoomAtStart: NaN
+        property bool done: false
+        interval: root.teamDelay
+        onTriggered: {
+            done = true
+            if (root.zoomLevel === zoomAtStart)
+                root.zoomOutToShow(root.systems.map(name => root.tracks.latest(name)).filter(st => st.lat !== undefined))
+        }
+    }
+    onSystemsChanged: lookForTheTeam()
+    function lookForTheTeam() {
+        if (showTeamOnStart && !teamTimer.done && !teamTimer.running && systems.length > 0) {
+            teamTimer.zoomAtStart = zoomLevel
+            teamTimer.start()
+        }
+    }
+    // Zooms out (keeping the centre) until the positions are within 70 % of the view (their labels too).
+    function zoomOutToShow(positions: var) {
+        let farthest = 0
+        for (const p of positions) {
+            const at = screenPoint(p.lat, p.lon)
+            farthest = Math.max(farthest, Math.abs(at.x - width / 2) / (width / 2), Math.abs(at.y - height / 2) / (height / 2))
+        }
+        if (farthest > 0.7)
+            setZoom(zoomLevel + Math.log2(0.7 / farthest))
+    }
+
     // First view: home, once it is known (a vehicle was heard or it was set).
     Connections {
         target: root.tracks
@@ -248,7 +284,10 @@ Rectangle {
         centreAt(at.lat, at.lon)
         placed = true
     }
-    Component.onCompleted: placeAtHome()
+    Component.onCompleted: {
+        placeAtHome()
+        lookForTheTeam()
+    }
 
     // The world coastline where there are no tiles: land filled (a Shape,
     // placed by the coastline item's transform, so moving the view moves it
@@ -382,6 +421,7 @@ Rectangle {
                 .arg(root.home.lon !== undefined ? root.home.lon.toFixed(5) : "–")
         color: Theme.textDim
         font.pixelSize: Theme.smallFontPixelSize
+        Backdrop {}
     }
     // Where the mouse is (a desk console; a finger does not hover) and, over a chart, the charted
     // depth there, as a tap would say it.
@@ -402,6 +442,7 @@ Rectangle {
                                           + (charted.depth !== undefined ? " · " + charted.depth : "")
         color: Theme.textDim
         font.pixelSize: Theme.smallFontPixelSize
+        Backdrop {}
     }
     // Past tracks.maxDrawn systems the rest are counted, not drawn.
     Text {
@@ -859,6 +900,13 @@ Rectangle {
         }
         onTurnNorthUp: root.bearing = 0
     }
+    // Behind the map's own words: readable over whatever the map draws there.
+    component Backdrop: Rectangle {
+        z: -1
+        anchors { fill: parent; margins: -Math.max(1, Theme.spacing / 4) }
+        radius: Theme.spacing / 2
+        color: Qt.alpha(Theme.surface, 0.75)
+    }
     Text {
         objectName: "noTiles"
         visible: !root.tilesShown
@@ -879,6 +927,7 @@ Rectangle {
                  : qsTr(" · chart %1 · safety contour %2 m · not for navigation · tap to see it").arg(chart.cells.join(", ")).arg(chart.safetyContour))
         color: Theme.textDim
         font.pixelSize: Theme.smallFontPixelSize
+        Backdrop {}
         // A tap on it shows the charts read, whole.
         TapHandler { enabled: root.charts !== "" && !chart.loading; gesturePolicy: TapHandler.WithinBounds; onTapped: root.fitCharts() }
     }

@@ -19,6 +19,7 @@ Console {
         width: 624
         height: 440
         initialZoomLevel: 16.5
+        showTeamOnStart: true
     }
 
     Scene3D {

@@ -559,6 +559,27 @@ TestCase {
         Session.mainSystem = ""
     }
 
+    // A newcomer's first view: once the systems have been heard a moment, the map zooms out
+    // until all of them are in view around the one it follows; not when the view was zoomed
+    // meanwhile, and never in.
+    function test_5b_theFirstViewShowsTheWholeTeam() {
+        const team = createTemporaryObject(tiledMap, test, { showTeamOnStart: true, teamDelay: 200, initialZoomLevel: 18, follow: "" })
+        team.centreOn("bravo")
+        tryVerify(() => !findChild(team, "teamTimer").running && findChild(team, "teamTimer").done, 3000)
+        verify(team.zoomLevel < 18, "zoomed out: " + team.zoomLevel)
+        for (const name of ["alpha", "bravo"]) {
+            const s = Fixtures.tracks.latest(name), at = team.screenPoint(s.lat, s.lon)
+            verify(at.x >= 0 && at.x <= team.width && at.y >= 0 && at.y <= team.height, name + " in view at " + at)
+        }
+        const zoomed = createTemporaryObject(tiledMap, test, { showTeamOnStart: true, teamDelay: 200, initialZoomLevel: 18, follow: "" })
+        zoomed.setZoom(18.5) // the operator zoomed in meanwhile
+        tryVerify(() => findChild(zoomed, "teamTimer").done, 3000)
+        compare(zoomed.zoomLevel, 18.5, "left as the operator set it")
+        const near = createTemporaryObject(tiledMap, test, { showTeamOnStart: true, teamDelay: 200, initialZoomLevel: 10, follow: "" })
+        tryVerify(() => findChild(near, "teamTimer").done, 3000)
+        compare(near.zoomLevel, 10, "all in view already: not zoomed in")
+    }
+
     function test_6_measureDistanceAndBearingBetweenTwoTaps() {
         map2d.following = false
         mouseClick(findChild(map2d, "measureButton"))
