@@ -144,6 +144,11 @@ nq_enter() {
          --setenv CCACHE_COMPILERCHECK content
          --setenv NEPTUS_CHECKOUT "$NQ_CHECKOUT"
          --setenv NEPTUS_BUILD_DIR "$NQ_BUILD_DIR")
+  # Small filesystems of their own (2 MiB tmpfs each) for the tests of a full disk (ENOSPC): one
+  # per kind of writer, so that tests running side by side do not fill each other's.
+  local disk
+  for disk in recorder spool saves; do args+=(--size 2097152 --tmpfs "/tmp/small-disks/$disk"); done
+  args+=(--setenv NEPTUS_SMALL_DISKS /tmp/small-disks)
   [ -d "$NQ_SHARED" ] && args+=(--ro-bind "$NQ_SHARED" "$NQ_SHARED")
   # The install test's clean root, read only (it installs into an overlay).
   local install_root

@@ -5,15 +5,34 @@
 
 namespace neptus {
 
+namespace {
+
+// Written whole to the temporary file (opened unbuffered), so that a full disk
+// is said as such: a short write sets no error, the next one does (ENOSPC);
+// a buffered file's flush, or commit(), reports a short write as an unknown error.
+bool writeWhole(QSaveFile &file, const QByteArray &bytes)
+{
+    for (qint64 at = 0; at < bytes.size();) {
+        const qint64 written = file.write(bytes.constData() + at, bytes.size() - at);
+        if (written <= 0)
+            return false;
+        at += written;
+    }
+    return true;
+}
+
+} // namespace
+
 std::expected<void, QString> saveFileKeepingPrevious(const QString &path, const QByteArray &bytes,
                                                      const std::function<void()> &beforeReplace)
 {
     QSaveFile file(path);
-    if (!file.open(QIODevice::WriteOnly))
+    if (!file.open(QIODevice::WriteOnly | QIODevice::Unbuffered))
         return std::unexpected(QStringLiteral("%1: %2").arg(path, file.errorString()));
-    if (file.write(bytes) != bytes.size()) {
+    if (!writeWhole(file, bytes)) {
+        const QString why = file.errorString(); // (cancelWriting() says only that it was cancelled)
         file.cancelWriting();
-        return std::unexpected(QStringLiteral("%1: %2").arg(path, file.errorString()));
+        return std::unexpected(QStringLiteral("%1: %2").arg(path, why));
     }
     if (beforeReplace)
         beforeReplace();
@@ -23,7 +42,7 @@ std::expected<void, QString> saveFileKeepingPrevious(const QString &path, const 
             return std::unexpected(QStringLiteral("%1: cannot read the previous version: %2").arg(path, previous.errorString()));
         const QByteArray old = previous.readAll();
         QSaveFile backup(path + QStringLiteral(".bak"));
-        if (!backup.open(QIODevice::WriteOnly) || backup.write(old) != old.size() || !backup.commit())
+        if (!backup.open(QIODevice::WriteOnly | QIODevice::Unbuffered) || !writeWhole(backup, old) || !backup.commit())
             return std::unexpected(QStringLiteral("%1.bak: %2").arg(path, backup.errorString()));
     }
     if (!file.commit())

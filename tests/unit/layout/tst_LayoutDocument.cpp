@@ -1,5 +1,6 @@
 // Console layout files as the designer reads, edits and writes them.
 #include "Paths.h"
+#include "SmallDisk.h"
 #include "LayoutDocument.h"
 #include "QtPrinters.h"
 
@@ -321,4 +322,31 @@ TEST(LayoutDocumentDeathTest, ACrashMidSaveLeavesTheOldFileIntact)
     EXPECT_EXIT(document.save(path, [] { std::raise(SIGKILL); }), testing::KilledBySignal(SIGKILL), "");
     EXPECT_EQ(readFile(path), saved);
     EXPECT_TRUE(LayoutDocument::load(path));
+}
+
+// A layout saved on a full filesystem (ENOSPC, the sandbox's small disk for
+// saves): an error that says so, the layout on disk as it was; saved once
+// there is room.
+TEST(LayoutDocument, ASaveOnAFullDiskFailsSayingSoAndLeavesTheLayoutAsItWas)
+{
+    const QString disk = neptus::test::smallDisk(u"saves"_s);
+    if (disk.isEmpty())
+        GTEST_SKIP() << "no small filesystem to fill: run inside the sandbox (tools/test mounts one)";
+    QTemporaryDir dir(disk + u"/layout-XXXXXX"_s);
+    ASSERT_TRUE(dir.isValid());
+    const QString path = dir.filePath(u"Ops.qml"_s);
+    LayoutDocument document = parsed(handWritten);
+    ASSERT_TRUE(document.save(path));
+    const QString first = readFile(path);
+    document.setProperties(u"frame"_s, {{u"x"_s, 5}});
+    neptus::test::DiskFiller filler(disk);
+    filler.fill(0);
+    const auto full = document.save(path);
+    ASSERT_FALSE(full);
+    EXPECT_TRUE(full.error().contains(u"No space left on device"_s)) << full.error().toStdString();
+    EXPECT_EQ(readFile(path), first);
+    EXPECT_EQ(QDir(dir.path()).entryList(QDir::Files), QStringList{u"Ops.qml"_s}) << "no temporary left behind";
+    filler.free();
+    ASSERT_TRUE(document.save(path));
+    EXPECT_EQ(readFile(path), document.text());
 }

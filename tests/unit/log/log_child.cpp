@@ -1,8 +1,8 @@
 // A recording console stand-in for the log tests: records EstimatedState
 // packets stamped with the wall clock at a steady rate until killed or done,
-// and says how it goes on stdout. With --fsize-limit the file size limit
-// (RLIMIT_FSIZE) makes the disk "full" for the log for --full-ms, then lifts.
-//   log-child ROOT RATE SECONDS [--fsize-limit BYTES --full-ms MS]
+// and says how it goes on stdout (the full-disk test fills ROOT's filesystem
+// under it and frees it again).
+//   log-child ROOT RATE SECONDS
 
 #include "Schemas.h"
 #include "core/Clock.h"
@@ -13,32 +13,18 @@
 #include <QDateTime>
 #include <QThread>
 
-#include <csignal>
 #include <cstdio>
-#include <sys/resource.h>
 
 int main(int argc, char **argv)
 {
     QCoreApplication app(argc, argv);
     const QStringList args = app.arguments();
     if (args.size() < 4) {
-        std::fprintf(stderr, "usage: log-child ROOT RATE SECONDS [--fsize-limit BYTES --full-ms MS]\n");
+        std::fprintf(stderr, "usage: log-child ROOT RATE SECONDS\n");
         return 2;
     }
     const int rate = args[2].toInt();
     const double seconds = args[3].toDouble();
-    const qsizetype limitAt = args.indexOf(QStringLiteral("--fsize-limit"));
-    const qsizetype fullAt = args.indexOf(QStringLiteral("--full-ms"));
-    rlim_t limit = RLIM_INFINITY;
-    if (limitAt > 0) {
-        std::signal(SIGXFSZ, SIG_IGN); // a write past the limit fails with EFBIG instead of killing
-        limit = rlim_t(args.value(limitAt + 1).toLongLong());
-        rlimit l{};
-        getrlimit(RLIMIT_FSIZE, &l);
-        l.rlim_cur = limit;
-        setrlimit(RLIMIT_FSIZE, &l);
-    }
-    const qint64 fullMs = fullAt > 0 ? args.value(fullAt + 1).toLongLong() : 0;
 
     auto schema = neptus::test::shippedSchema();
     neptus::log::RecorderConfig config;
@@ -63,19 +49,10 @@ int main(int argc, char **argv)
     const qint64 start = neptus::monotonicMs();
     qint64 sent = 0;
     qint64 lastSay = 0;
-    bool lifted = false;
     for (;;) {
         const qint64 elapsed = neptus::monotonicMs() - start;
         if (elapsed >= qint64(seconds * 1000))
             break;
-        if (limitAt > 0 && !lifted && elapsed >= fullMs) {
-            rlimit l{};
-            getrlimit(RLIMIT_FSIZE, &l);
-            l.rlim_cur = l.rlim_max;
-            setrlimit(RLIMIT_FSIZE, &l);
-            lifted = true;
-            std::printf("lifted\n");
-        }
         const qint64 due = elapsed * rate / 1000;
         for (; sent < due; ++sent) {
             state.header.timestamp = QDateTime::currentMSecsSinceEpoch() / 1000.0;

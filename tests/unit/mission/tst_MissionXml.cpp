@@ -5,6 +5,7 @@
 #include <QTemporaryDir>
 
 #include "Missions.h"
+#include "SmallDisk.h"
 
 #include <gtest/gtest.h>
 
@@ -188,4 +189,45 @@ TEST(MissionXml, SavingIsAtomicAndKeepsThePreviousVersion)
     const auto missing = loadMission(dir.filePath(u"none.xml"_s));
     ASSERT_FALSE(missing);
     EXPECT_EQ(missing.error().first().file, dir.filePath(u"none.xml"_s));
+}
+
+// A save on a full filesystem (ENOSPC, the sandbox's small disk for saves):
+// an error that says so, the mission on disk as it was and no temporary left;
+// once there is room the same save goes through. Also when the new version
+// fits but the copy of the previous one (.bak) does not.
+TEST(MissionXml, ASaveOnAFullDiskFailsSayingSoAndLeavesTheMissionAsItWas)
+{
+    const QString disk = neptus::test::smallDisk(u"saves"_s);
+    if (disk.isEmpty())
+        GTEST_SKIP() << "no small filesystem to fill: run inside the sandbox (tools/test mounts one)";
+    QTemporaryDir dir(disk + u"/mission-XXXXXX"_s);
+    ASSERT_TRUE(dir.isValid());
+    const QString path = dir.filePath(u"m.xml"_s);
+    auto mission = read(everything);
+    ASSERT_TRUE(mission);
+    ASSERT_TRUE(saveMission(*mission, path));
+    const QByteArray saved = [&] { QFile f(path); f.open(QIODevice::ReadOnly); return f.readAll(); }();
+    mission->name = u"Renamed"_s;
+    const auto unchanged = [&] {
+        QFile f(path);
+        return f.open(QIODevice::ReadOnly) && f.readAll() == saved && QDir(dir.path()).entryList(QDir::Files) == QStringList{u"m.xml"_s};
+    };
+    neptus::test::DiskFiller filler(disk);
+    filler.fill(0);
+    auto full = saveMission(*mission, path);
+    ASSERT_FALSE(full);
+    EXPECT_TRUE(full.error().contains(u"No space left on device"_s)) << full.error().toStdString();
+    EXPECT_TRUE(full.error().contains(path)) << full.error().toStdString();
+    EXPECT_TRUE(unchanged()) << "the mission on disk was touched";
+    // Room for the new version, not for the copy of the old one beside it.
+    filler.free();
+    filler.fill(saved.size() + 2048);
+    full = saveMission(*mission, path);
+    ASSERT_FALSE(full) << "room was left for " << saved.size() + 2048 << " bytes";
+    EXPECT_TRUE(full.error().contains(u"No space left on device"_s)) << full.error().toStdString();
+    EXPECT_TRUE(unchanged());
+    filler.free();
+    ASSERT_TRUE(saveMission(*mission, path));
+    EXPECT_EQ(loadMission(path)->name, u"Renamed"_s);
+    EXPECT_EQ(loadMission(path + u".bak"_s)->name, u"Harbour survey"_s);
 }
