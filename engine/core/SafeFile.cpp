@@ -23,6 +23,21 @@ bool writeWhole(QSaveFile &file, const QByteArray &bytes)
 
 } // namespace
 
+std::expected<void, QString> saveFileAtomically(const QString &path, const QByteArray &bytes)
+{
+    QSaveFile file(path);
+    if (!file.open(QIODevice::WriteOnly | QIODevice::Unbuffered))
+        return std::unexpected(QStringLiteral("%1: %2").arg(path, file.errorString()));
+    if (!writeWhole(file, bytes)) {
+        const QString why = file.errorString(); // (cancelWriting() says only that it was cancelled)
+        file.cancelWriting();
+        return std::unexpected(QStringLiteral("%1: %2").arg(path, why));
+    }
+    if (!file.commit())
+        return std::unexpected(QStringLiteral("%1: %2").arg(path, file.errorString()));
+    return {};
+}
+
 std::expected<void, QString> saveFileKeepingPrevious(const QString &path, const QByteArray &bytes,
                                                      const std::function<void()> &beforeReplace)
 {

@@ -1,5 +1,7 @@
 #include "database/Database.h"
 
+#include "core/SafeFile.h"
+
 #include <QDataStream>
 #include <QDateTime>
 #include <QDir>
@@ -7,7 +9,6 @@
 #include <QFile>
 #include <QLockFile>
 #include <QMutex>
-#include <QSaveFile>
 #include <QSqlDatabase>
 #include <QSqlError>
 #include <QSqlQuery>
@@ -280,17 +281,16 @@ struct Queued
 // A batch on disk while the server is away: who wrote it, and its rows.
 constexpr quint32 spoolMagic = 0x4e515350; // "NQSP"
 
-bool writeSpool(const QString &path, const QString &session, const std::vector<Queued> &rows)
+// A spool file, whole or not at all; an error says why (a full disk: "No space left on device").
+std::expected<void, QString> writeSpool(const QString &path, const QString &session, const std::vector<Queued> &rows)
 {
-    QSaveFile file(path);
-    if (!file.open(QIODevice::WriteOnly))
-        return false;
-    QDataStream out(&file);
+    QByteArray bytes;
+    QDataStream out(&bytes, QIODevice::WriteOnly);
     out.setVersion(QDataStream::Qt_6_8);
     out << spoolMagic << session << quint32(rows.size());
     for (const Queued &row : rows)
         out << quint8(row.table) << row.seq << row.values;
-    return out.status() == QDataStream::Ok && file.commit();
+    return saveFileAtomically(path, bytes);
 }
 
 std::expected<std::pair<QString, std::vector<Queued>>, QString> readSpool(const QString &path)
@@ -596,10 +596,10 @@ struct Writer::Worker : QObject
         QDir().mkpath(spoolDir);
         spoolDrained = false;
         const QString path = u"%1/%2-%3.spool"_s.arg(spoolDir).arg(++spoolIndex, 10, 10, QLatin1Char('0')).arg(rows.size());
-        if (!writeSpool(path, session, rows)) {
+        if (const auto written = writeSpool(path, session, rows); !written) {
             QMutexLocker lock(&mutex);
             status.lost += qint64(rows.size());
-            status.problem = u"cannot write the spool file %1: %2 rows lost"_s.arg(path).arg(status.lost);
+            status.problem = u"cannot write the spool file %1; %2 rows lost so far"_s.arg(written.error()).arg(status.lost);
             return;
         }
         // Bounded: past the limit the oldest batches go, counted.

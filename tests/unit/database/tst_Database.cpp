@@ -6,6 +6,7 @@
 #include "database/Database.h"
 
 #include "PgServer.h"
+#include "SmallDisk.h"
 
 #include <QMutex>
 #include <QSqlDatabase>
@@ -297,6 +298,46 @@ TEST(DatabasePostgres, ASpoolPastItsLimitDropsTheOldestAndSaysHowMany)
     EXPECT_LE(status.spoolBytes, o.spoolLimitBytes);
     EXPECT_EQ(status.lost + status.spooled, 20 * 200 + 1); // + the session row
     EXPECT_NE(status.problem.indexOf(u"spool is full"_s), -1) << status.problem.toStdString();
+}
+
+// The spool on a full filesystem (ENOSPC, the sandbox's small disk for the
+// spool) while the server is down: the problem says so and counts what could
+// not be kept; nothing spooled before is damaged; once there is room rows are
+// spooled again, and all that was spooled reaches the server when it is back.
+TEST(DatabasePostgres, ASpoolOnAFullDiskSaysSoKeepsWhatItHadAndCarriesOnWhenThereIsRoom)
+{
+    const QString disk = test::smallDisk(u"spool"_s);
+    if (disk.isEmpty())
+        GTEST_SKIP() << "no small filesystem to fill: run inside the sandbox (tools/test mounts one)";
+    test::PgServer server;
+    ASSERT_TRUE(server.ok()) << server.error().toStdString();
+    const Location location = *Location::parse(server.url());
+    ASSERT_TRUE(server.stop());
+    QTemporaryDir dir(disk + u"/spool-XXXXXX"_s);
+    ASSERT_TRUE(dir.isValid());
+    Writer writer(location, options(dir.filePath(u"spool"_s)));
+    writer.write(positions(u"auv"_s, 0, 100));
+    writer.flush(0);
+    ASSERT_EQ(writer.status().spooled, 100 + 1) << writer.status().problem.toStdString(); // + the session row
+    test::DiskFiller filler(disk);
+    filler.fill(0);
+    writer.write(positions(u"auv"_s, 1'000'000, 200));
+    writer.flush(0);
+    Status full = writer.status();
+    EXPECT_EQ(full.lost, 200);
+    EXPECT_EQ(full.spooled, 101) << "what was spooled before is kept";
+    EXPECT_TRUE(full.problem.contains(u"No space left on device"_s)) << full.problem.toStdString();
+    EXPECT_TRUE(full.problem.contains(u"200 rows lost"_s)) << full.problem.toStdString();
+    filler.free();
+    writer.write(positions(u"auv"_s, 2'000'000, 50));
+    writer.flush(0);
+    EXPECT_EQ(writer.status().spooled, 101 + 50);
+    ASSERT_TRUE(server.start()) << server.log().toStdString();
+    ASSERT_TRUE(writer.flush(15000)) << writer.status().problem.toStdString();
+    EXPECT_TRUE(writer.status().problem.isEmpty()) << writer.status().problem.toStdString();
+    auto reader = Reader::open(location);
+    ASSERT_TRUE(reader.has_value()) << reader.error().toStdString();
+    EXPECT_EQ(*(*reader)->count(Table::Position), 100 + 50) << "every row spooled arrives, none damaged";
 }
 
 TEST(DatabasePostgres, TimeSeriesAreHypertablesWhenTimescaleDbIsThere)
