@@ -110,6 +110,9 @@ QString LiveServer::url() const
 
 std::expected<quint16, QString> LiveServer::start()
 {
+    // (A null address, from a --web-bind or web/bind that is not one, would listen on every interface.)
+    if (m_config.address.isNull())
+        return std::unexpected(u"the web page's address (--web-bind, or web/bind in the settings) is not an address"_s);
     if (!m_config.address.isLoopback() && m_config.token.isEmpty())
         return std::unexpected(u"the web page on %1 (beyond this computer) needs an access token (--web-token)"_s.arg(m_config.address.toString()));
     if (m_config.token.size() > 0 && m_config.token.size() < 16)

@@ -192,6 +192,13 @@ TEST_F(Server, BeyondLoopbackItNeedsATokenAndThenAsksForIt)
     const auto started = refused.start();
     ASSERT_FALSE(started.has_value());
     EXPECT_NE(started.error().indexOf(u"needs an access token"_s), -1) << started.error().toStdString();
+    // A bind that is not an address (a typo in --web-bind or the settings) never means every interface.
+    web::WebConfig typo = open;
+    typo.address = QHostAddress(u"127.0.0.l"_s);
+    typo.token = u"0123456789abcdef-token"_s;
+    const auto refusedTypo = web::LiveServer(feed, typo).start();
+    ASSERT_FALSE(refusedTypo.has_value());
+    EXPECT_NE(refusedTypo.error().indexOf(u"is not an address"_s), -1) << refusedTypo.error().toStdString();
     web::WebConfig shortToken = open;
     shortToken.token = u"abc"_s;
     EXPECT_NE(web::LiveServer(feed, shortToken).start().error().indexOf(u"at least 16"_s), -1);
