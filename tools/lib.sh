@@ -145,10 +145,13 @@ nq_enter() {
          --setenv NEPTUS_CHECKOUT "$NQ_CHECKOUT"
          --setenv NEPTUS_BUILD_DIR "$NQ_BUILD_DIR")
   # Small filesystems of their own (2 MiB tmpfs each) for the tests of a full disk (ENOSPC): one
-  # per kind of writer, so that tests running side by side do not fill each other's.
-  local disk
-  for disk in recorder spool saves; do args+=(--size 2097152 --tmpfs "/tmp/small-disks/$disk"); done
-  args+=(--setenv NEPTUS_SMALL_DISKS /tmp/small-disks)
+  # per test, so that tests running side by side do not fill each other's. (bubblewrap 0.7 and
+  # newer, not setuid; without --size the tests say they are skipped.)
+  if bwrap --help 2>&1 | grep -q -- '--size'; then
+    local disk
+    for disk in recorder spool mission-saves layout-saves; do args+=(--size 2097152 --tmpfs "/tmp/small-disks/$disk"); done
+    args+=(--setenv NEPTUS_SMALL_DISKS /tmp/small-disks)
+  fi
   [ -d "$NQ_SHARED" ] && args+=(--ro-bind "$NQ_SHARED" "$NQ_SHARED")
   # The install test's clean root, read only (it installs into an overlay).
   local install_root

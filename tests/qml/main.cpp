@@ -405,7 +405,13 @@ public:
             while (QTcpSocket *socket = s->nextPendingConnection()) {
                 QObject::connect(socket, &QTcpSocket::disconnected, socket, &QObject::deleteLater);
                 QObject::connect(socket, &QTcpSocket::readyRead, socket, [socket, folder] {
-                    const QByteArray request = socket->readAll();
+                    // The whole request first: on a busy machine it may come in pieces (a path cut short
+                    // was answered 404, and the map showed no tile).
+                    const QByteArray request = socket->property("request").toByteArray() + socket->readAll();
+                    if (!request.contains("\r\n\r\n")) {
+                        socket->setProperty("request", request);
+                        return;
+                    }
                     const QByteArray path = request.split(' ').value(1);
                     QFile file(folder + QString::fromUtf8(path));
                     if (!path.contains("..") && file.open(QIODevice::ReadOnly)) {

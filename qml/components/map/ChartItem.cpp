@@ -246,6 +246,12 @@ ChartItem::ChartItem(QQuickItem *parent) : MapOverlayItem(parent)
     setFlag(ItemHasContents);
     connect(&m_watcher, &QFutureWatcherBase::finished, this, &ChartItem::finished);
     connect(&m_painter, &QFutureWatcherBase::finished, this, &ChartItem::areasPainted);
+    m_settle.setSingleShot(true);
+    m_settle.setInterval(300);
+    connect(&m_settle, &QTimer::timeout, this, [this] {
+        if (m_read && m_areas.zoom != projection().zoom)
+            paintAreas();
+    });
     // A colour, or showing the areas at all, changed: painted again.
     connect(this, &ChartItem::styleChanged, this, [this] {
         m_wantedZoom = -1;
@@ -446,7 +452,7 @@ void ChartItem::paintAreas()
         layers.push_back(std::move(painted));
     }
     m_painter.setFuture(QtConcurrent::run([read = m_read, layers = std::move(layers), fills, region = m_wantedRegion, size, scale,
-                                           generation = m_generation] {
+                                           zoom = view.zoom, generation = m_generation] {
         QImage image(size, QImage::Format_ARGB32_Premultiplied);
         image.fill(Qt::transparent);
         QPainter painter(&image);
@@ -497,7 +503,7 @@ void ChartItem::paintAreas()
         painter.end();
         // Cut in tiles: those wholly painted opaque (drawn without blending, which costs the software
         // renderer several ms a frame), those partly (blended), and none where nothing is painted.
-        Areas areas{{}, region, scale, generation};
+        Areas areas{{}, region, scale, zoom, generation};
         for (int y = 0; y < size.height(); y += tileSide)
             for (int x = 0; x < size.width(); x += tileSide) {
                 const QRect cut = QRect(x, y, tileSide, tileSide) & image.rect();
@@ -541,6 +547,12 @@ void ChartItem::viewUpdated()
     if (m_wantedZoom != int(std::floor(projection().zoom * 2))
         || !m_wantedRegion.contains(m_transform.inverted().mapRect(QRectF(0, 0, width(), height()))))
         paintAreas();
+    // Shown scaled (a zoom within half a level of the painted one, as a pinch or a wheel leaves it):
+    // painted again at this zoom once the view has rested a moment, so that at rest it is sharp.
+    if (!m_areas.tiles.empty() && m_areas.zoom != projection().zoom)
+        m_settle.start();
+    else
+        m_settle.stop();
     update(); // the symbols are drawn in the item's own units
 }
 
@@ -570,7 +582,8 @@ QSGNode *ChartItem::updatePaintNode(QSGNode *old, UpdatePaintNodeData *)
         // sampling it. Else it is scaled smoothly (and turned) until painted again.
         const MapProjection view = projection();
         const double pixelsPerUnit = view.worldSize() / m_read->unitsPerWorld;
-        const bool copied = view.bearing == 0 && std::abs(pixelsPerUnit / m_areas.scale - 1) < 1e-9;
+        const bool copied = view.bearing == 0 && std::abs(pixelsPerUnit / m_areas.scale - 1) < 1e-9
+                            && window()->effectiveDevicePixelRatio() == 1; // (else painted pixels are not the screen's)
         const Eigen::Vector2d offset = (m_read->origin - view.centerMercator()) * m_read->unitsPerWorld;
         const QPointF topLeft(std::round(width() / 2 + pixelsPerUnit * (m_areas.region.left() + offset.x())),
                               std::round(height() / 2 + pixelsPerUnit * (m_areas.region.top() + offset.y())));

@@ -8,6 +8,7 @@
 #include <QImage>
 #include <QMatrix4x4>
 #include <QPolygonF>
+#include <QTimer>
 #include <QtQml/qqmlregistration.h>
 
 #include <array>
@@ -56,6 +57,8 @@ class ChartItem : public MapOverlayItem
     Q_PROPERTY(bool imageShown MEMBER m_imageShown NOTIFY styleChanged)
     // While the image is being painted for a new place or zoom (the last one is shown meanwhile).
     Q_PROPERTY(bool painting READ painting NOTIFY paintingChanged)
+    // The zoom the image shown was painted for (-1: none yet); at rest it is the view's.
+    Q_PROPERTY(double paintedZoom READ paintedZoom NOTIFY paintingChanged)
     Q_PROPERTY(bool loading READ loading NOTIFY loadingChanged)
     // While loading: the cell being read and how far ("US4MD81M.000, 1 of 3"), "" else.
     Q_PROPERTY(QString progress READ progress NOTIFY loadingChanged)
@@ -78,6 +81,7 @@ public:
     void setSafetyDepth(double metres);
     bool loading() const { return m_loading; }
     bool painting() const { return m_painter.isRunning(); }
+    double paintedZoom() const { return m_areas.zoom; }
     QString progress() const { return m_loading ? m_progress : QString(); }
     QString error() const { return m_error; }
     QStringList cells() const;
@@ -152,6 +156,7 @@ private:
         std::vector<Tile> tiles; // where anything is painted
         QRectF region;     // local units the image covers
         double scale = 1;  // its pixels per local unit
+        double zoom = -1;  // the view's zoom it was painted for
         quint64 generation = 0; // band()'s, when it was asked for
     };
     quint64 m_generation = 0;          // band(): the areas or their shades changed
@@ -161,6 +166,7 @@ private:
     bool m_areasChanged = false;       // a new image for the paint node
     bool m_repaintAreas = false;       // asked again while painting
     QFutureWatcher<Areas> m_painter;
+    QTimer m_settle; // the view rested at a zoom other than the painted one
     QString m_error;
     QMatrix4x4 m_transform;
     QFutureWatcher<std::shared_ptr<Loaded>> m_watcher;

@@ -238,6 +238,11 @@ TestCase {
         verify(near(shot, at.x, at.y - 1.05 * r, Theme.chart.red), "a nun's tip")
         verify(!near(shot, at.x - 0.75 * r, at.y - 0.75 * r, Theme.chart.red) && !near(shot, at.x + 0.75 * r, at.y - 0.75 * r, Theme.chart.red),
                "and no flat top")
+        // A zoom within half a level of the painted one (where a pinch or the wheel may leave it) is
+        // shown scaled at first, and painted again at that zoom once the view rests.
+        tryCompare(findChild(m, "chart"), "paintedZoom", 16, 5000)
+        m.zoomLevel = 16.3
+        tryCompare(findChild(m, "chart"), "paintedZoom", 16.3, 5000, "painted again at the zoom the view rests at")
         m.zoomLevel = zoom
         // Far from the charts, a tap on the status line shows them whole.
         m.centreAt(41.15, -8.66)

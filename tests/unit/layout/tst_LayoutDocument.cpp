@@ -329,7 +329,7 @@ TEST(LayoutDocumentDeathTest, ACrashMidSaveLeavesTheOldFileIntact)
 // there is room.
 TEST(LayoutDocument, ASaveOnAFullDiskFailsSayingSoAndLeavesTheLayoutAsItWas)
 {
-    const QString disk = neptus::test::smallDisk(u"saves"_s);
+    const QString disk = neptus::test::smallDisk(u"layout-saves"_s);
     if (disk.isEmpty())
         GTEST_SKIP() << "no small filesystem to fill: run inside the sandbox (tools/test mounts one)";
     QTemporaryDir dir(disk + u"/layout-XXXXXX"_s);

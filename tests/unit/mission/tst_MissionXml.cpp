@@ -197,7 +197,7 @@ TEST(MissionXml, SavingIsAtomicAndKeepsThePreviousVersion)
 // fits but the copy of the previous one (.bak) does not.
 TEST(MissionXml, ASaveOnAFullDiskFailsSayingSoAndLeavesTheMissionAsItWas)
 {
-    const QString disk = neptus::test::smallDisk(u"saves"_s);
+    const QString disk = neptus::test::smallDisk(u"mission-saves"_s);
     if (disk.isEmpty())
         GTEST_SKIP() << "no small filesystem to fill: run inside the sandbox (tools/test mounts one)";
     QTemporaryDir dir(disk + u"/mission-XXXXXX"_s);
