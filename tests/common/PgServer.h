@@ -19,7 +19,14 @@ namespace neptus::test {
 class PgServer
 {
 public:
-    PgServer()
+    // Fast: fsync off, in /tmp (the sandbox's tmpfs; the tests).
+    // Durable: the server's defaults, fsync and synchronous commit on, with its data in /var/tmp,
+    // on a disk (a syncing server on a tmpfs would sync nothing): a benchmark of what an
+    // operation's server does.
+    enum class Durability { Fast, Durable };
+    explicit PgServer(Durability durability = Durability::Fast)
+        : m_durability(durability),
+          m_dir((durability == Durability::Durable ? QStringLiteral("/var/tmp") : QDir::tempPath()) + QStringLiteral("/pg-XXXXXX"))
     {
         const QStringList versions = QDir(QStringLiteral("/usr/lib/postgresql")).entryList(QDir::Dirs | QDir::NoDotAndDotDot, QDir::Name);
         for (const QString &v : versions)
@@ -64,7 +71,9 @@ public:
 
     bool start()
     {
-        QString options = QStringLiteral("-k %1 -c listen_addresses= -c fsync=off -c max_connections=50").arg(m_dir.path());
+        QString options = QStringLiteral("-k %1 -c listen_addresses= -c max_connections=50").arg(m_dir.path());
+        if (m_durability == Durability::Fast)
+            options += QStringLiteral(" -c fsync=off");
         if (timescale())
             options += QStringLiteral(" -c shared_preload_libraries=timescaledb -c timescaledb.telemetry_level=off");
         m_running = run(QStringLiteral("pg_ctl"), {QStringLiteral("-D"), dataDir(), QStringLiteral("-l"), logFile(),
@@ -87,6 +96,8 @@ public:
     }
 
 private:
+    Durability m_durability = Durability::Fast;
+    QTemporaryDir m_dir;
     QString dataDir() const { return m_dir.path() + QStringLiteral("/data"); }
     QString logFile() const { return m_dir.path() + QStringLiteral("/server.log"); }
     QString version() const { return m_bin.section(u'/', 4, 4); } // /usr/lib/postgresql/VERSION/bin/
@@ -106,7 +117,6 @@ private:
     }
 
     QString m_bin;
-    QTemporaryDir m_dir;
     QString m_error;
     QString m_lastOutput;
     bool m_running = false;
