@@ -189,22 +189,20 @@ int main(int argc, char *argv[])
     }
     std::unique_ptr<neptus::web::LiveServer> web;
     if (webPort >= 0) {
-        neptus::web::WebConfig config;
-        const QString bind = commandLine->webBind.isEmpty() ? QSettings().value(QStringLiteral("web/bind")).toString() : commandLine->webBind;
-        if (!bind.isEmpty())
-            config.address = QHostAddress(bind);
-        config.port = quint16(webPort);
-        config.token = commandLine->webToken.isEmpty() ? QSettings().value(QStringLiteral("web/token")).toString() : commandLine->webToken;
-        config.certificate = commandLine->webCertificate;
-        config.key = commandLine->webKey;
-        config.tiles = commandLine->webTiles;
-        config.charts = charts; // the chart layer the console's maps draw
-        config.safetyDepth = commandLine->safetyDepth;
-        config.title = commandLine->name.isEmpty() ? QFileInfo(commandLine->consoleFile).completeBaseName() : commandLine->name;
-        config.pageDir = neptus::dataPath(QStringLiteral("web"));
-        config.history = databaseLocation;
-        web = std::make_unique<neptus::web::LiveServer>(*feed, config);
-        if (auto started = web->start(); !started) {
+        auto config = neptus::web::pageConfig(
+            {commandLine->webBind.isEmpty() ? QSettings().value(QStringLiteral("web/bind")).toString() : commandLine->webBind, webPort,
+             commandLine->webToken.isEmpty() ? QSettings().value(QStringLiteral("web/token")).toString() : commandLine->webToken,
+             commandLine->webCertificate, commandLine->webKey, commandLine->webTiles,
+             commandLine->name.isEmpty() ? QFileInfo(commandLine->consoleFile).completeBaseName() : commandLine->name});
+        std::expected<quint16, QString> started = std::unexpected(config ? QString() : config.error());
+        if (config) {
+            config->charts = charts; // the chart layer the console's maps draw
+            config->safetyDepth = commandLine->safetyDepth;
+            config->history = databaseLocation;
+            web = std::make_unique<neptus::web::LiveServer>(*feed, *config);
+            started = web->start();
+        }
+        if (!started) {
             std::fprintf(stderr, "neptus: %s; no web page\n", qPrintable(started.error()));
             auto &graph = session.console().alarmGraph();
             graph.raise(graph.ensure(QStringLiteral("web page")), neptus::alarms::Warning, started.error());

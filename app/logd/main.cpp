@@ -158,23 +158,16 @@ int main(int argc, char *argv[])
     }
     std::unique_ptr<neptus::web::LiveServer> web;
     if (parser.isSet(webPort)) {
-        neptus::web::WebConfig config;
-        config.address = QHostAddress(parser.value(webBind));
-        if (config.address.isNull())
-            return fail(u"--web-bind: '%1' is not an address"_s.arg(parser.value(webBind)));
         bool ok = false;
         const uint port = parser.value(webPort).toUInt(&ok);
         if (!ok || port > 65535)
             return fail(u"--web-port: '%1' is not a port"_s.arg(parser.value(webPort)));
-        config.port = quint16(port);
-        config.token = parser.value(webToken);
-        config.certificate = parser.value(webCert);
-        config.key = parser.value(webKey);
-        config.tiles = parser.value(webTiles);
-        config.title = parser.value(name);
-        config.pageDir = neptus::dataPath(u"web"_s);
-        config.history = *location;
-        web = std::make_unique<neptus::web::LiveServer>(feed, config);
+        auto config = neptus::web::pageConfig({parser.value(webBind), int(port), parser.value(webToken), parser.value(webCert),
+                                               parser.value(webKey), parser.value(webTiles), parser.value(name)});
+        if (!config)
+            return fail(config.error());
+        config->history = *location;
+        web = std::make_unique<neptus::web::LiveServer>(feed, *config);
         auto started = web->start();
         if (!started)
             return fail(started.error());

@@ -1,6 +1,7 @@
 #include "web/LiveServer.h"
 
 #include "charts/ChartFiles.h"
+#include "core/DataFiles.h"
 #include "geo/Coastline.h"
 #include "session/Console.h"
 #include "web/ChartLayer.h"
@@ -106,6 +107,26 @@ QString LiveServer::url() const
     const QString host = m_config.address.protocol() == QAbstractSocket::IPv6Protocol ? u'[' + m_config.address.toString() + u']'
                                                                                        : m_config.address.toString();
     return u"%1://%2:%3/"_s.arg(tls ? u"https"_s : u"http"_s, host).arg(m_tcp ? m_tcp->serverPort() : 0);
+}
+
+std::expected<WebConfig, QString> pageConfig(const PageOptions &options)
+{
+    WebConfig config;
+    if (!options.bind.isEmpty())
+        config.address = QHostAddress(options.bind);
+    if (config.address.isNull())
+        return std::unexpected(u"--web-bind: '%1' is not an address"_s.arg(options.bind));
+    if (options.port < 0 || options.port > 65535)
+        return std::unexpected(u"--web-port: %1 is not a port"_s.arg(options.port));
+    config.port = quint16(options.port);
+    config.token = options.token;
+    config.certificate = options.certificate;
+    config.key = options.key;
+    config.tiles = options.tiles;
+    if (!options.title.isEmpty())
+        config.title = options.title;
+    config.pageDir = dataPath(u"web"_s);
+    return config;
 }
 
 std::expected<quint16, QString> LiveServer::start()

@@ -39,6 +39,19 @@ struct WebConfig
     std::optional<db::Location> history; // where tracks and alarms of the past come from
 };
 
+// The page's settings from what a program that serves it was told (neptus and
+// neptus-logd take the same options), with the page's files where the
+// installed program finds them: an empty bind is 127.0.0.1; an error names
+// the option that is wrong. The program adds what only it has (history,
+// charts).
+struct PageOptions
+{
+    QString bind;
+    int port = 8080;
+    QString token, certificate, key, tiles, title;
+};
+std::expected<WebConfig, QString> pageConfig(const PageOptions &options);
+
 // The live web page for people ashore, served by a console or neptus-logd
 // (Qt HttpServer, Qt WebSockets): a map with every system's position,
 // heading and track, the systems with their health, the active alarms and

@@ -441,6 +441,33 @@ TEST_F(Server, DrawsTheConsolesChartLayer)
     qunsetenv("XDG_CACHE_HOME");
 }
 
+// The page's settings as both programs that serve it make them (web::pageConfig).
+TEST(WebRequests, ThePagesSettingsAreMadeOneWayForBothPrograms)
+{
+    const auto plain = web::pageConfig({});
+    ASSERT_TRUE(plain.has_value());
+    EXPECT_EQ(plain->address, QHostAddress(QHostAddress::LocalHost)) << "nothing said: this computer only";
+    EXPECT_EQ(plain->port, 8080);
+    EXPECT_TRUE(QFile::exists(plain->pageDir + u"/index.html"_s)) << plain->pageDir.toStdString();
+    const auto given = web::pageConfig({u"0.0.0.0"_s, 0, u"0123456789abcdef-token"_s, u"c.pem"_s, u"k.pem"_s, u"t/{z}"_s, u"Ops"_s});
+    ASSERT_TRUE(given.has_value());
+    EXPECT_EQ(given->address, QHostAddress(u"0.0.0.0"_s));
+    EXPECT_EQ(given->port, 0);
+    EXPECT_EQ(given->token, u"0123456789abcdef-token"_s);
+    EXPECT_EQ(given->certificate, u"c.pem"_s);
+    EXPECT_EQ(given->key, u"k.pem"_s);
+    EXPECT_EQ(given->tiles, u"t/{z}"_s);
+    EXPECT_EQ(given->title, u"Ops"_s);
+    web::PageOptions typoOptions;
+    typoOptions.bind = u"127.0.0.l"_s;
+    const auto typo = web::pageConfig(typoOptions);
+    ASSERT_FALSE(typo.has_value());
+    EXPECT_EQ(typo.error(), u"--web-bind: '127.0.0.l' is not an address"_s);
+    web::PageOptions far;
+    far.port = 70000;
+    EXPECT_EQ(web::pageConfig(far).error(), u"--web-port: 70000 is not a port"_s);
+}
+
 // Where cells overlap, the page draws usage band after usage band, overview
 // first, so that the best band covers the rest; a symbol of the lesser cell
 // where the better one covers is left out (its own are drawn).
