@@ -21,11 +21,9 @@ bool writeWhole(QSaveFile &file, const QByteArray &bytes)
     return true;
 }
 
-} // namespace
-
-std::expected<void, QString> saveFileAtomically(const QString &path, const QByteArray &bytes)
+// `bytes` in `file`'s temporary file (not yet in place); an error names `path` and why.
+std::expected<void, QString> writeTemporary(QSaveFile &file, const QString &path, const QByteArray &bytes)
 {
-    QSaveFile file(path);
     if (!file.open(QIODevice::WriteOnly | QIODevice::Unbuffered))
         return std::unexpected(QStringLiteral("%1: %2").arg(path, file.errorString()));
     if (!writeWhole(file, bytes)) {
@@ -33,6 +31,16 @@ std::expected<void, QString> saveFileAtomically(const QString &path, const QByte
         file.cancelWriting();
         return std::unexpected(QStringLiteral("%1: %2").arg(path, why));
     }
+    return {};
+}
+
+} // namespace
+
+std::expected<void, QString> saveFileAtomically(const QString &path, const QByteArray &bytes)
+{
+    QSaveFile file(path);
+    if (auto written = writeTemporary(file, path, bytes); !written)
+        return written;
     if (!file.commit())
         return std::unexpected(QStringLiteral("%1: %2").arg(path, file.errorString()));
     return {};
@@ -42,13 +50,8 @@ std::expected<void, QString> saveFileKeepingPrevious(const QString &path, const 
                                                      const std::function<void()> &beforeReplace)
 {
     QSaveFile file(path);
-    if (!file.open(QIODevice::WriteOnly | QIODevice::Unbuffered))
-        return std::unexpected(QStringLiteral("%1: %2").arg(path, file.errorString()));
-    if (!writeWhole(file, bytes)) {
-        const QString why = file.errorString(); // (cancelWriting() says only that it was cancelled)
-        file.cancelWriting();
-        return std::unexpected(QStringLiteral("%1: %2").arg(path, why));
-    }
+    if (auto written = writeTemporary(file, path, bytes); !written)
+        return written;
     if (beforeReplace)
         beforeReplace();
     QFile previous(path);
