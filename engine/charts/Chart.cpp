@@ -538,11 +538,7 @@ bool Cell::covers(double lon, double lat) const
                 return true;
         return false;
     }
-    const Grid &g = *grid;
-    const int x = int(std::floor((lon - g.west) / g.dx)), y = int(std::floor((lat - g.south) / g.dy));
-    if (x < 0 || y < 0 || x >= g.nx || y >= g.ny)
-        return false;
-    for (const Grid::Candidate &k : g.buckets[std::size_t(y * g.nx + x)])
+    for (const Grid::Candidate &k : grid->at(lon, lat))
         if (k.role == Feature::Role::Coverage && lon >= k.west && lon <= k.east && lat >= k.south && lat <= k.north
             && inside(features[k.feature], lon, lat))
             return true;
@@ -596,11 +592,7 @@ PointReport reportAt(const std::vector<Cell> &cells, double lon, double lat, dou
             }
             return;
         }
-        const Cell::Grid &g = *c.grid;
-        const int x = int(std::floor((lon - g.west) / g.dx)), y = int(std::floor((lat - g.south) / g.dy));
-        if (x < 0 || y < 0 || x >= g.nx || y >= g.ny)
-            return;
-        for (const Cell::Grid::Candidate &k : g.buckets[std::size_t(y * g.nx + x)])
+        for (const Cell::Grid::Candidate &k : c.grid->at(lon, lat))
             if (wanted(k.role) && lon >= k.west - gLon && lon <= k.east + gLon && lat >= k.south - gLat && lat <= k.north + gLat)
                 visit(c.features[k.feature], k.role, std::size_t(k.feature));
     };

@@ -6,6 +6,7 @@
 #include <QString>
 #include <QStringList>
 
+#include <cmath>
 #include <expected>
 #include <memory>
 #include <optional>
@@ -109,6 +110,13 @@ struct Cell
             Feature::Role role;
         };
         std::vector<std::vector<Candidate>> buckets; // nx × ny; features of role Other left out
+        // The candidates near a point (empty outside the grid).
+        const std::vector<Candidate> &at(double lon, double lat) const
+        {
+            static const std::vector<Candidate> none;
+            const int x = int(std::floor((lon - west) / dx)), y = int(std::floor((lat - south) / dy));
+            return x < 0 || y < 0 || x >= nx || y >= ny ? none : buckets[std::size_t(y * nx + x)];
+        }
     };
     std::shared_ptr<const Grid> grid;
 };

@@ -24,6 +24,9 @@ inline QString smallDisk(const QString &name)
     return !root.isEmpty() && QDir(path).exists() ? path : QString();
 }
 
+// Why a full-disk test is skipped when smallDisk() is empty.
+inline constexpr const char *noSmallDisk = "no small filesystem to fill: run inside the sandbox (tools/test mounts one, with bubblewrap 0.7 or newer)";
+
 inline qint64 freeBytes(const QString &path)
 {
     struct statvfs s {};

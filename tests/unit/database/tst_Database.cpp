@@ -308,7 +308,7 @@ TEST(DatabasePostgres, ASpoolOnAFullDiskSaysSoKeepsWhatItHadAndCarriesOnWhenTher
 {
     const QString disk = test::smallDisk(u"spool"_s);
     if (disk.isEmpty())
-        GTEST_SKIP() << "no small filesystem to fill: run inside the sandbox (tools/test mounts one)";
+        GTEST_SKIP() << neptus::test::noSmallDisk;
     test::PgServer server;
     ASSERT_TRUE(server.ok()) << server.error().toStdString();
     const Location location = *Location::parse(server.url());

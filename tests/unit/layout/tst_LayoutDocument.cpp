@@ -331,7 +331,7 @@ TEST(LayoutDocument, ASaveOnAFullDiskFailsSayingSoAndLeavesTheLayoutAsItWas)
 {
     const QString disk = neptus::test::smallDisk(u"layout-saves"_s);
     if (disk.isEmpty())
-        GTEST_SKIP() << "no small filesystem to fill: run inside the sandbox (tools/test mounts one)";
+        GTEST_SKIP() << neptus::test::noSmallDisk;
     QTemporaryDir dir(disk + u"/layout-XXXXXX"_s);
     ASSERT_TRUE(dir.isValid());
     const QString path = dir.filePath(u"Ops.qml"_s);

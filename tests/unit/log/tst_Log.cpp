@@ -342,7 +342,7 @@ TEST(Log, AFullDiskRaisesAProblemLosesOnlyWhatDidNotFitAndRecordingCarriesOn)
     // 300 kB before recording starts, and freed half a second after the recorder says so.
     const QString disk = test::smallDisk(QStringLiteral("recorder"));
     if (disk.isEmpty())
-        GTEST_SKIP() << "no small filesystem to fill: run inside the sandbox (tools/test mounts one)";
+        GTEST_SKIP() << neptus::test::noSmallDisk;
     QTemporaryDir root(disk + QStringLiteral("/log-XXXXXX"));
     ASSERT_TRUE(root.isValid());
     test::DiskFiller filler(disk);

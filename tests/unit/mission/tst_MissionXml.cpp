@@ -199,7 +199,7 @@ TEST(MissionXml, ASaveOnAFullDiskFailsSayingSoAndLeavesTheMissionAsItWas)
 {
     const QString disk = neptus::test::smallDisk(u"mission-saves"_s);
     if (disk.isEmpty())
-        GTEST_SKIP() << "no small filesystem to fill: run inside the sandbox (tools/test mounts one)";
+        GTEST_SKIP() << neptus::test::noSmallDisk;
     QTemporaryDir dir(disk + u"/mission-XXXXXX"_s);
     ASSERT_TRUE(dir.isValid());
     const QString path = dir.filePath(u"m.xml"_s);
