@@ -106,6 +106,10 @@ std::expected<CommandLine, QString> CommandLine::parse(const QStringList &argume
     const QCommandLineOption displayRate(QStringLiteral("display-rate"),
         QStringLiteral("Vehicle data shown at most this many times a second while it keeps changing (default 10; 0: every frame)."),
         QStringLiteral("hz"));
+    const QCommandLineOption restingRate(QStringLiteral("resting-rate"),
+        QStringLiteral("The same after %1 s without a touch, click or key, until the next (default 3; 0: as the display rate). "
+                       "Saves a tablet's battery.").arg(CommandLine::restAfterS),
+        QStringLiteral("hz"));
     const QCommandLineOption size(QStringLiteral("size"),
         QStringLiteral("Window size, e.g. 1280x800."), QStringLiteral("WxH"));
     const QCommandLineOption selfTest(QStringLiteral("self-test"),
@@ -210,7 +214,7 @@ std::expected<CommandLine, QString> CommandLine::parse(const QStringList &argume
         QStringLiteral("Map tiles for the web page: a URL with {z}/{x}/{y} (default: the offline coastline only)."), QStringLiteral("url"));
     parser.addOptions({mavlink, mavlinkPeer, mavlinkKey, mavlinkRequireSigning, mavlinkDialect});
     parser.addOptions({logDir, noRecord, database, replay, replaySession, replayFrom, replayPlay, webPort, webBind, webToken, webCert, webKey, webTiles});
-    parser.addOptions({charts, safetyDepth, displayRate});
+    parser.addOptions({charts, safetyDepth, displayRate, restingRate});
     parser.addOptions({console, screenshot, screenshotDelay, components, edit, select, system, palette, uiScale, gps, size, selfTest,
                        imcPort, imcBind, imcPeer, ddsDomain, ddsConfig, ddsKeys, ddsIdentity, defs, defsFor, imcDiscovery, dumpTree, quitAfter, forgetAfter, mission, share, name});
     // "--defs-for SYSTEM FILE" (two words, as the documentation writes it) is
@@ -264,6 +268,13 @@ std::expected<CommandLine, QString> CommandLine::parse(const QStringList &argume
         if (!ok || !(result.displayRate >= 0 && result.displayRate <= 1000))
             return std::unexpected(QStringLiteral("--display-rate must be updates a second (0 to 1000; 0: every frame), not '%1'")
                                        .arg(parser.value(displayRate)));
+    }
+    if (parser.isSet(restingRate)) {
+        bool ok = false;
+        result.restingRate = parser.value(restingRate).toDouble(&ok);
+        if (!ok || !(result.restingRate >= 0 && result.restingRate <= 1000))
+            return std::unexpected(QStringLiteral("--resting-rate must be updates a second (0 to 1000; 0: as the display rate), not '%1'")
+                                       .arg(parser.value(restingRate)));
     }
     result.logDirectory = parser.isSet(logDir) ? QFileInfo(parser.value(logDir)).absoluteFilePath() : QString();
     result.record = !parser.isSet(noRecord);

@@ -29,6 +29,8 @@ struct CommandLine
     QString charts;                     // S-57 charts for the maps (absolute path)
     double safetyDepth = 5;             // metres
     double displayRate = 10;            // vehicle data shown a second at most (0: every frame)
+    double restingRate = 3;             // the same after restAfterS without input (0: never rests)
+    static constexpr int restAfterS = 20;
     QSize windowSize{1280, 800};
     QStringList definitionFiles;        // --defs: instead of msgdefs/
     QList<std::pair<QString, QString>> definitionsFor; // --defs-for SYSTEM=FILE

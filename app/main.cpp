@@ -8,6 +8,7 @@
 #include "ComponentPalette.h"
 #include "ConsoleCatalog.h"
 #include "JsWatchdog.h"
+#include "RestWatch.h"
 #include "log/Recorder.h"
 #include "qmlmodels/ConsoleSession.h"
 #include "SelfTest.h"
@@ -330,6 +331,10 @@ int main(int argc, char *argv[])
     // The charted water under each vehicle, with its alarm (the maps draw the same charts).
     session.chartWatch()->setCharts(charts);
     session.treeModel()->setDisplayRate(commandLine->displayRate);
+    session.treeModel()->setRestingRate(commandLine->restingRate);
+    // Nobody touching the console: vehicles are shown at the resting rate.
+    RestWatch restWatch(std::chrono::seconds(CommandLine::restAfterS));
+    QObject::connect(&restWatch, &RestWatch::restingChanged, session.treeModel(), &neptus::tree::VariableTreeModel::setResting);
     QQmlApplicationEngine engine;
     engine.setInitialProperties({
         {QStringLiteral("session"), QVariant::fromValue(&session)},

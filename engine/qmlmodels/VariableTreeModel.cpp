@@ -2,6 +2,7 @@
 
 #include "qmlmodels/Variable.h"
 
+#include <QDateTime>
 #include <QSet>
 
 #include <algorithm>
@@ -14,21 +15,35 @@ VariableTreeModel::VariableTreeModel(VariableTree *tree, QObject *parent)
     , m_consumer(tree->addConsumer())
 {
     m_knownChildren.assign(1, 0);
-    m_frame.setInterval(16);
-    // A coarse timer may fire up to 5 % late: 0.8 ms more on a value's way
-    // to the screen, every time it happens to land on a late tick.
+    // Frames are looked for on the wall clock's 20-ms marks, which fall on
+    // every whole second and quarter: the first turn of a second then refreshes
+    // the ages too, and comes within a millisecond of the title bar's clock
+    // (ticking on the second), close enough for both to make one frame
+    // (a window gathers what changes in the 5 ms after the first request).
+    // The timer is set again at every mark, so it never drifts off them.
+    m_frame.setSingleShot(true);
     m_frame.setTimerType(Qt::PreciseTimer);
     connect(&m_frame, &QTimer::timeout, this, [this] {
-        // Within the display rate: changes made since wait for the next turn.
-        // (Half a frame early counts as on time, or 10 Hz would become 7.5.)
-        if (m_displayRate > 0 && m_sinceShown.isValid() && m_sinceShown.elapsed() + 8 < 1000 / m_displayRate)
+        const qint64 now = QDateTime::currentMSecsSinceEpoch();
+        m_frame.start(int(frameMs - now % frameMs));
+        if (now / 1000 != m_ageSecond) {
+            m_ageSecond = now / 1000;
+            refreshAges(); // syncs first
+            return;
+        }
+        // Within the turn something was shown in: changes wait for the next.
+        if (const double rate = shownRate(); rate > 0 && turnAt(now, rate) == m_shownTurn)
             return;
         sync();
     });
-    m_frame.start();
-    m_ageTimer.setInterval(1000);
-    connect(&m_ageTimer, &QTimer::timeout, this, &VariableTreeModel::refreshAges);
-    m_ageTimer.start();
+    m_frame.start(int(frameMs - QDateTime::currentMSecsSinceEpoch() % frameMs));
+}
+
+double VariableTreeModel::shownRate() const
+{
+    if (!m_resting || m_restingRate <= 0)
+        return m_displayRate;
+    return m_displayRate > 0 ? std::min(m_displayRate, m_restingRate) : m_restingRate;
 }
 
 void VariableTreeModel::setDisplayRate(double perSecond)
@@ -37,6 +52,23 @@ void VariableTreeModel::setDisplayRate(double perSecond)
     if (perSecond == m_displayRate)
         return;
     m_displayRate = perSecond;
+    emit displayRateChanged();
+}
+
+void VariableTreeModel::setRestingRate(double perSecond)
+{
+    perSecond = std::max(0.0, perSecond);
+    if (perSecond == m_restingRate)
+        return;
+    m_restingRate = perSecond;
+    emit displayRateChanged();
+}
+
+void VariableTreeModel::setResting(bool resting)
+{
+    if (resting == m_resting)
+        return;
+    m_resting = resting;
     emit displayRateChanged();
 }
 
@@ -110,7 +142,8 @@ void VariableTreeModel::sync()
     VariableTree::Changes changes = m_tree->takeChanges(m_consumer);
     if (changes.isEmpty())
         return;
-    m_sinceShown.start();
+    if (const double rate = shownRate(); rate > 0)
+        m_shownTurn = turnAt(QDateTime::currentMSecsSinceEpoch(), rate);
 
     // Forgotten systems go first (nothing below names their nodes), in runs
     // of neighbouring rows from the last: a thousand forged ids are one removal.

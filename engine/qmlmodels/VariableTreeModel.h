@@ -3,7 +3,6 @@
 #include "tree/VariableTree.h"
 
 #include <QAbstractItemModel>
-#include <QElapsedTimer>
 #include <QPointer>
 #include <QTimer>
 #include <QtQml/qqmlregistration.h>
@@ -25,7 +24,10 @@ class Variable;
 // but while values keep changing they are shown at most `displayRate` times
 // a second, every system's changes in the same frame. Vehicles streaming at
 // 10 Hz each, out of step, otherwise make a frame for every message, and on a
-// tablet drawing in software each frame is battery (issue #39).
+// tablet drawing in software each frame is battery (issue #39). While the
+// console `resting` (nobody has touched it for a while: the program says so)
+// the rate is `restingRate`. The rate's turns start on whole seconds of the
+// wall clock, as the ages' refresh and the title bar's clock do.
 class VariableTreeModel : public QAbstractItemModel
 {
     Q_OBJECT
@@ -34,6 +36,9 @@ class VariableTreeModel : public QAbstractItemModel
     Q_PROPERTY(double staleAfter READ staleAfter WRITE setStaleAfter NOTIFY staleAfterChanged)
     // Updates shown a second at most while values keep changing (0: every frame).
     Q_PROPERTY(double displayRate READ displayRate WRITE setDisplayRate NOTIFY displayRateChanged)
+    // The same while nobody uses the console (0: as displayRate), and whether nobody does.
+    Q_PROPERTY(double restingRate READ restingRate WRITE setRestingRate NOTIFY displayRateChanged)
+    Q_PROPERTY(bool resting READ resting WRITE setResting NOTIFY displayRateChanged)
     Q_PROPERTY(int nodeCount READ nodeCount NOTIFY synced)
     // The systems heard so far, by the names they are shown by.
     Q_PROPERTY(QStringList systems READ systems NOTIFY systemsChanged)
@@ -64,6 +69,13 @@ public:
     // 10 by default: the rate vehicles report their state at.
     double displayRate() const { return m_displayRate; }
     void setDisplayRate(double perSecond);
+    // 3 by default.
+    double restingRate() const { return m_restingRate; }
+    void setRestingRate(double perSecond);
+    bool resting() const { return m_resting; }
+    void setResting(bool resting);
+    // The rate in force now (0: every frame).
+    double shownRate() const;
 
     int nodeCount() const { return m_tree->nodeCount(); }
     QStringList systems() const { return m_tree->childNames(u""); }
@@ -82,12 +94,12 @@ public:
     void unlisten(int id);
 
     // Takes the tree's changes and notifies views, Variables and listeners.
-    // Runs by itself every frame (16 ms) within the display rate; tests call
-    // it directly.
+    // Runs by itself every 20 ms within the display rate; tests call it
+    // directly.
     Q_INVOKABLE void sync();
     // Recomputes ages and staleness of the rows views showed since the last
-    // time (and of every Variable); runs by itself every second (tests call
-    // it after moving their clock).
+    // time (and of every Variable); runs by itself on every whole second
+    // (tests call it after moving their clock).
     Q_INVOKABLE void refreshAges();
 
     // Used by Variable.
@@ -129,10 +141,16 @@ private:
     // (every row of 1,000 systems, every second, was most of a core).
     mutable std::vector<quint32> m_readAt;
     quint32 m_ageTick = 2; // 0 in m_readAt: never read
+    static constexpr int frameMs = 20; // how often changes are looked for
+    // The turn of the display rate `ms` (since the epoch) falls in.
+    static qint64 turnAt(qint64 ms, double rate) { return qint64(double(ms) * rate / 1000); }
+
     QTimer m_frame;
     double m_displayRate = 10;
-    QElapsedTimer m_sinceShown; // since the last sync that had changes
-    QTimer m_ageTimer;
+    double m_restingRate = 3;
+    bool m_resting = false;
+    qint64 m_shownTurn = -1; // the turn of the last sync that had changes
+    qint64 m_ageSecond = 0;  // the wall clock's second of the last refresh of ages
 
     struct Listener
     {

@@ -353,11 +353,15 @@ Rectangle {
     // Soundings, in metres (one decimal under 31 m, as charts write them):
     // shallower than the safety depth in the text's colour, deeper dimmed.
     // Chosen again once the view settles; meanwhile those shown move with it.
+    // Without a chart nothing is chosen: a map following a vehicle would
+    // otherwise draw a second frame after every step (issue #39).
     property var soundingView: null
     readonly property var viewKey: [centerLatitude, centerLongitude, zoomLevel, bearing, width, height]
-    onViewKeyChanged: soundingTimer.restart()
+    onViewKeyChanged: if (root.charts !== "") soundingTimer.restart()
+    onChartsChanged: soundingTimer.restart()
     Timer {
         id: soundingTimer
+        objectName: "soundingTimer"
         interval: 150
         onTriggered: root.soundingView = Object.assign(root.viewBounds(root.centerLatitude, root.centerLongitude, root.zoomLevel,
                                                                        root.bearing, root.width, root.height),

@@ -139,7 +139,12 @@ Rectangle {
                 id: trail
                 required property string system
                 objectName: "trail:" + system
-                geometry: TrailGeometry { tracks: root.tracks; system: trail.system }
+                // Growth every second; every 5 s while nobody uses the console (each upload is a frame).
+                geometry: TrailGeometry {
+                    tracks: root.tracks
+                    system: trail.system
+                    uploadInterval: Session.tree && Session.tree.resting ? 5000 : 1000
+                }
                 materials: PrincipledMaterial {
                     lighting: PrincipledMaterial.NoLighting
                     baseColor: root.colorOf(trail.system)

@@ -6,8 +6,11 @@
 // thread: the rasteriser threads, the render thread, the GUI thread, the
 // rest) and the frames it drew (the scene graph's own timing log).
 //
-//   bench_power [SECONDS=30] [--vehicles N=2] [--display-rate HZ] [--idle]
+//   bench_power [SECONDS=30] [--vehicles N=2] [--display-rate HZ] [--resting-rate HZ] [--idle]
 //
+// Nobody touches the console here, so it rests (20 s after start) and shows
+// vehicles at its resting rate: the figure is a tablet on a boat nobody
+// touches. `--resting-rate 0` is a console in use (the display rate).
 // --idle: no vehicles at all (goal: no frames).
 #include "Paths.h"
 
@@ -74,6 +77,8 @@ int main(int argc, char **argv)
     };
     const int vehicles = idle ? 0 : option(u"--vehicles"_s, u"2"_s).toInt();
     const QString displayRate = option(u"--display-rate"_s, QString());
+    const QString restingRate = option(u"--resting-rate"_s, QString());
+    const bool rests = restingRate.isEmpty() || restingRate.toDouble() > 0;
     double seconds = 30;
     for (qsizetype i = 1; i < args.size(); ++i)
         if (bool ok = false; !args[i - 1].startsWith(u"--") && (args[i].toDouble(&ok), ok))
@@ -106,6 +111,8 @@ int main(int argc, char **argv)
         arguments << u"--system"_s << u"power-1"_s;
     if (!displayRate.isEmpty())
         arguments << u"--display-rate"_s << displayRate;
+    if (!restingRate.isEmpty())
+        arguments << u"--resting-rate"_s << restingRate;
     QProcess console;
     QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
     env.insert(u"QT_LOGGING_RULES"_s, u"qt.scenegraph.time.renderloop=true"_s); // a line for every frame drawn
@@ -122,7 +129,8 @@ int main(int argc, char **argv)
         std::fprintf(stderr, "bench_power: cannot start neptus or neptus-sim\n");
         return 1;
     }
-    QTest::qWait(10000); // started, vehicles heard, first frames drawn
+    // Started, vehicles heard, first frames drawn; resting (20 s without input) when it rests.
+    QTest::qWait(rests ? 22000 : 10000);
     const auto before = ticksByThread(console.processId());
     counting = true;
     QElapsedTimer clock;
@@ -148,8 +156,10 @@ int main(int argc, char **argv)
         total += used;
     }
     std::printf("bench_power: the default console at 1280x800 (software OpenGL), %d simulated vehicle%s at 10 Hz over IMC, "
-                "display rate %s, %.0f s\n",
-                vehicles, vehicles == 1 ? "" : "s", displayRate.isEmpty() ? "default" : qPrintable(displayRate), elapsed);
+                "display rate %s, %s, %.0f s\n",
+                vehicles, vehicles == 1 ? "" : "s", displayRate.isEmpty() ? "default" : qPrintable(displayRate),
+                rests ? qPrintable(u"resting (rate %1)"_s.arg(restingRate.isEmpty() ? u"default"_s : restingRate)) : "in use",
+                elapsed);
     std::printf("  CPU: %.1f %% of one core; %.1f frames a second; %s\n", 100 * total / elapsed, double(frames) / elapsed,
                 rss.simplified().constData());
     for (const auto &[group, used] : groups)

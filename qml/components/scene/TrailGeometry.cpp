@@ -4,12 +4,24 @@
 
 #include <QVector3D>
 
+#include <algorithm>
+
 TrailGeometry::TrailGeometry(QQuick3DObject *parent)
     : QQuick3DGeometry(parent)
 {
     m_uploadTimer.setSingleShot(true);
-    m_uploadTimer.setInterval(2 * uploadEvery);
+    m_uploadTimer.setInterval(2 * m_uploadInterval);
     connect(&m_uploadTimer, &QTimer::timeout, this, &TrailGeometry::upload);
+}
+
+void TrailGeometry::setUploadInterval(int ms)
+{
+    ms = std::max(ms, 100);
+    if (ms == m_uploadInterval)
+        return;
+    m_uploadInterval = ms;
+    m_uploadTimer.setInterval(2 * ms);
+    emit uploadIntervalChanged();
 }
 
 void TrailGeometry::setTracks(neptus::geo::Tracks *tracks)
@@ -79,11 +91,11 @@ void TrailGeometry::rebuild()
         m_pointCount = count;
         emit pointCountChanged();
     }
-    // A new or restarted trail shows at once; growth at most every second,
+    // A new or restarted trail shows at once; growth at most every interval,
     // in a frame the tracks' update makes anyway (a timer of its own would
     // draw frames of their own). The timer only
     // catches the last fixes of a trail that stopped growing.
-    if (restart || !m_sinceUpload.isValid() || m_sinceUpload.elapsed() >= uploadEvery)
+    if (restart || !m_sinceUpload.isValid() || m_sinceUpload.elapsed() >= m_uploadInterval)
         upload();
     else if (!m_uploadTimer.isActive())
         m_uploadTimer.start();

@@ -561,6 +561,14 @@ TestCase {
         mouseClick(findChild(map2d, "followButton"))
         verify(map2d.following)
         fuzzyCompare(map2d.centerLatitude, s.lat, 1e-9, "and the button centres it again")
+        // Without a chart, following draws nothing after each step: the soundings' timer
+        // (150 ms after the view moves) made a second frame for every one (issue #39).
+        const soundingTimer = findChild(map2d, "soundingTimer")
+        verify(soundingTimer)
+        Fixtures.ingest("EstimatedState", 71, { lat: rad(homeLat), lon: rad(homeLon), x: 950, y: 0, psi: 0 })
+        Fixtures.treeModel.sync()
+        fuzzyCompare(map2d.centerLatitude, Fixtures.tracks.latest("alpha").lat, 1e-9, "followed a step")
+        verify(!soundingTimer.running, "no soundings to choose without a chart")
         Session.mainSystem = ""
     }
 

@@ -73,6 +73,19 @@ TestCase {
         feed(81, { x: 60, y: 0, z: 2, depth: 2 })
         compare(trail.geometry.pointCount, 7)
         tryCompare(trail.geometry, "uploadedCount", 7, 3000, "the GPU copy catches up within 2 s")
+
+        // Nobody using the console: growth goes up every 5 s (each upload is a frame, issue #39).
+        compare(trail.geometry.uploadInterval, 1000)
+        Session.tree.resting = true
+        compare(trail.geometry.uploadInterval, 5000)
+        wait(1100) // past the interval in use
+        feed(81, { x: 70, y: 0, z: 2, depth: 2 })
+        compare(trail.geometry.pointCount, 8)
+        wait(1500)
+        compare(trail.geometry.uploadedCount, 7, "not uploaded again within 5 s while resting")
+        Session.tree.resting = false
+        feed(81, { x: 80, y: 0, z: 2, depth: 2 })
+        tryCompare(trail.geometry, "uploadedCount", 9, 3000, "in use again: within the second")
     }
 
     function test_4_somethingIsDrawnWhereAVehicleIs() {

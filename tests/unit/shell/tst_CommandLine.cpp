@@ -107,6 +107,19 @@ TEST(CommandLine, NamesWhatIsWrong)
     line = parse({QStringLiteral("stray")});
     ASSERT_FALSE(line);
     EXPECT_TRUE(line.error().contains(QStringLiteral("stray")));
+
+    line = parse({});
+    ASSERT_TRUE(line);
+    EXPECT_EQ(line->displayRate, 10.0);
+    EXPECT_EQ(line->restingRate, 3.0);
+    line = parse({QStringLiteral("--resting-rate"), QStringLiteral("2"), QStringLiteral("--display-rate"), QStringLiteral("20")});
+    ASSERT_TRUE(line);
+    EXPECT_EQ(line->restingRate, 2.0);
+    EXPECT_EQ(line->displayRate, 20.0);
+    line = parse({QStringLiteral("--resting-rate"), QStringLiteral("slow")});
+    ASSERT_FALSE(line);
+    EXPECT_TRUE(line.error().contains(QStringLiteral("--resting-rate"))) << line.error().toStdString();
+    EXPECT_TRUE(line.error().contains(QStringLiteral("slow"))) << line.error().toStdString();
 }
 
 TEST(CommandLine, DefinitionsPerSystemInBothSpellings)

@@ -5,6 +5,7 @@
 #include "messages/Schema.h"
 
 #include <QAbstractItemModelTester>
+#include <QDateTime>
 #include <QDir>
 #include <QElapsedTimer>
 #include <QSignalSpy>
@@ -407,4 +408,51 @@ TEST(VariableTreeModelDisplayRate, ValuesThatKeepChangingAreShownAtTheDisplayRat
     synced.clear();
     changeFor(1000);
     EXPECT_GT(synced.count(), 11) << "0: every frame (16 ms)";
+}
+
+// While nobody touches the console (the program says when), values that keep
+// changing are shown at the resting rate; the first change after a quiet
+// spell still at once, and the display rate again as soon as it is used.
+// The rate's turns are cut from the wall clock's seconds, and the ages are
+// refreshed on whole seconds in the same turn: a frame for each turn, not an
+// extra one a second (issue #39: each frame is battery on a tablet).
+TEST(VariableTreeModelDisplayRate, ARestingConsoleShowsChangesAtTheRestingRateInTurnsOfTheWallClock)
+{
+    VariableTree tree;
+    VariableTreeModel model(&tree);
+    EXPECT_EQ(model.restingRate(), 3.0);
+    EXPECT_FALSE(model.resting()) << "in use until the program says otherwise";
+    EXPECT_EQ(model.shownRate(), 10.0);
+    model.setRestingRate(4); // quarters of a second, below
+    model.setResting(true);
+    EXPECT_EQ(model.shownRate(), 4.0);
+
+    std::vector<qint64> shownAt; // wall-clock ms of each sync that showed something
+    QObject::connect(&model, &VariableTreeModel::synced, [&] { shownAt.push_back(QDateTime::currentMSecsSinceEpoch()); });
+    int depth = 0;
+    QElapsedTimer clock;
+    clock.start();
+    while (clock.elapsed() < 2500) {
+        tree.ingest(state(0x1f, ++depth));
+        QTest::qWait(5);
+    }
+    ASSERT_GE(shownAt.size(), 8u) << "still shown while they keep changing";
+    EXPECT_LE(qint64(shownAt.size()), 2 + clock.elapsed() / 250) << "4 a second, the ages' refresh included";
+    for (size_t i = 1; i < shownAt.size(); ++i)
+        EXPECT_NE(shownAt[i] / 250, shownAt[i - 1] / 250) << "one sync a quarter of a wall-clock second, at " << shownAt[i];
+
+    // In use again: the display rate at once.
+    model.setResting(false);
+    shownAt.clear();
+    clock.restart();
+    while (clock.elapsed() < 1000) {
+        tree.ingest(state(0x1f, ++depth));
+        QTest::qWait(5);
+    }
+    EXPECT_GE(shownAt.size(), 8u) << "10 a second while the console is used";
+
+    // 0: the display rate even while resting.
+    model.setRestingRate(0);
+    model.setResting(true);
+    EXPECT_EQ(model.shownRate(), 10.0);
 }

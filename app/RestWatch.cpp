@@ -1,0 +1,42 @@
+#include "RestWatch.h"
+
+#include <QEvent>
+#include <QCoreApplication>
+
+RestWatch::RestWatch(std::chrono::milliseconds restAfter, QObject *parent)
+    : QObject(parent)
+{
+    m_rest.setSingleShot(true);
+    m_rest.setInterval(restAfter);
+    connect(&m_rest, &QTimer::timeout, this, [this] { setResting(true); });
+    m_rest.start();
+    // Every window's input passes the application first (dialogs, pop-outs).
+    QCoreApplication::instance()->installEventFilter(this);
+}
+
+bool RestWatch::eventFilter(QObject *watched, QEvent *event)
+{
+    switch (event->type()) {
+    case QEvent::MouseButtonPress:
+    case QEvent::MouseMove:
+    case QEvent::Wheel:
+    case QEvent::TouchBegin:
+    case QEvent::TouchUpdate:
+    case QEvent::KeyPress:
+    case QEvent::TabletPress:
+        setResting(false);
+        m_rest.start();
+        break;
+    default:
+        break;
+    }
+    return QObject::eventFilter(watched, event);
+}
+
+void RestWatch::setResting(bool resting)
+{
+    if (resting == m_resting)
+        return;
+    m_resting = resting;
+    emit restingChanged(resting);
+}
