@@ -1,26 +1,36 @@
-// neptus-xslt: applies one stylesheet in a process of its own, for the
-// mission processor (engine/processor/Translator). XSLT is Turing-complete:
-// a stylesheet users dropped in may run for ever or fill memory, so it runs
+// neptus-xslt: applies stylesheets in a process of its own, for the mission
+// processor (engine/processor/Translator). XSLT is Turing-complete: a
+// stylesheet users dropped in may run for ever or fill memory, so it runs
 // here under an address-space cap (MEMORY-MB more than it has mapped at
-// start) and a CPU-time limit, and the console
-// kills it past its wall-clock limit.
+// start) and, per translation, a CPU-time limit; the console kills it past
+// its wall-clock limit and starts another for the next translation.
 //
-//   neptus-xslt STYLESHEET INPUT-NAME MEMORY-MB CPU-SECONDS [NAME=VALUE...]
+//   neptus-xslt MEMORY-MB
 //
-// The input XML comes on standard input; the output goes to standard output.
-// On failure: exit 1 and "file:line:column: message" on standard error.
+// It lives as long as the program that started it and keeps the stylesheets
+// it compiled (compiled again when their folder changes), so a translation
+// pays neither the start nor the compile. Requests come on standard input and
+// answers go to standard output, one after the other, in the framing of
+// processor/TranslatorProtocol.h. At the end of its input it ends.
 #include "processor/Stylesheet.h"
+#include "processor/TranslatorProtocol.h"
 
 #include <QByteArray>
 #include <QCoreApplication>
-#include <QFile>
+#include <QDateTime>
+#include <QDir>
+#include <QFileInfo>
+#include <QHash>
 
 #include <cstdio>
+#include <algorithm>
+#include <optional>
 
 #include <sys/resource.h>
 #include <unistd.h>
 
 using namespace neptus;
+namespace wire = processor::wire;
 
 namespace {
 
@@ -36,55 +46,167 @@ rlim_t mappedBytes()
     return rlim_t(pages) * rlim_t(sysconf(_SC_PAGESIZE));
 }
 
-int fail(const QString &why)
+// CPU seconds used so far (user and system), rounded up.
+rlim_t cpuSecondsUsed()
 {
-    std::fprintf(stderr, "%s\n", qPrintable(why));
-    return 1;
+    rusage usage{};
+    getrusage(RUSAGE_SELF, &usage);
+    const double s = double(usage.ru_utime.tv_sec + usage.ru_stime.tv_sec)
+                     + double(usage.ru_utime.tv_usec + usage.ru_stime.tv_usec) / 1e6;
+    return rlim_t(s) + 1;
 }
+
+bool readExactly(char *to, size_t size)
+{
+    while (size > 0) {
+        const ssize_t n = ::read(STDIN_FILENO, to, size);
+        if (n <= 0)
+            return false;
+        to += n;
+        size -= size_t(n);
+    }
+    return true;
+}
+
+std::optional<QByteArray> readString(quint32 most)
+{
+    char length[4];
+    if (!readExactly(length, 4))
+        return std::nullopt;
+    const quint32 size = wire::lengthOf(length);
+    if (size > most)
+        return std::nullopt;
+    QByteArray text(qsizetype(size), Qt::Uninitialized);
+    if (!readExactly(text.data(), size))
+        return std::nullopt;
+    return text;
+}
+
+bool writeAll(const QByteArray &bytes)
+{
+    for (qsizetype written = 0; written < bytes.size();) {
+        const ssize_t n = ::write(STDOUT_FILENO, bytes.constData() + written, size_t(bytes.size() - written));
+        if (n <= 0)
+            return false;
+        written += n;
+    }
+    return true;
+}
+
+// What a compiled stylesheet was compiled from: its folder's files (imports
+// are read from beside it only) and when each last changed.
+QString editionOf(const QString &stylesheet)
+{
+    QString edition;
+    const QFileInfo info(stylesheet);
+    for (const QFileInfo &file : info.dir().entryInfoList(QDir::Files, QDir::Name))
+        edition += file.fileName() + u' ' + QString::number(file.lastModified().toMSecsSinceEpoch()) + u' '
+                   + QString::number(file.size()) + u'\n';
+    return edition;
+}
+
+struct Compiled
+{
+    QString edition;
+    processor::Stylesheet stylesheet;
+};
 
 } // namespace
 
 int main(int argc, char **argv)
 {
+    // Gone with the program that started it, whatever way it ends: its end of
+    // the socket closes, and the next read here ends the loop below. (Not
+    // PR_SET_PDEATHSIG: that fires when the *thread* that started it ends,
+    // and any of the program's threads may be the first to translate.)
     QCoreApplication app(argc, argv);
     const QStringList args = app.arguments();
-    if (args.size() < 5)
-        return fail(QStringLiteral("usage: neptus-xslt STYLESHEET INPUT-NAME MEMORY-MB CPU-SECONDS [NAME=VALUE...]"));
-    const rlim_t memory = rlim_t(args[3].toULongLong()) * 1024 * 1024;
-    const rlim_t cpu = rlim_t(args[4].toULongLong());
+    if (args.size() != 2) {
+        std::fprintf(stderr, "usage: neptus-xslt MEMORY-MB (requests on standard input: processor/TranslatorProtocol.h)\n");
+        return 2;
+    }
+    const rlim_t memory = rlim_t(args[1].toULongLong()) * 1024 * 1024;
     if (memory > 0) {
         // On top of what is mapped already (sanitizers reserve terabytes at start).
         const rlim_t cap = mappedBytes() + memory;
         const rlimit limit{cap, cap};
         setrlimit(RLIMIT_AS, &limit);
     }
-    if (cpu > 0) {
-        const rlimit limit{cpu, cpu + 1};
-        setrlimit(RLIMIT_CPU, &limit);
+    rlimit cpu{};
+    getrlimit(RLIMIT_CPU, &cpu);
+
+    QHash<QString, Compiled> compiled;
+    for (;;) {
+        // The request: the stylesheet, the input's name, CPU seconds, NAME=VALUE parameters, the input.
+        char count[4];
+        if (!readExactly(count, 4))
+            return 0; // the program closed its end
+        const quint32 fields = wire::lengthOf(count);
+        if (fields < 4 || fields > 1000)
+            return 1;
+        const auto stylesheet = readString(wire::maxFieldBytes);
+        if (!stylesheet)
+            return 1;
+        // Compiled (or found compiled) while the program still makes the input.
+        const QString path = QString::fromUtf8(*stylesheet);
+        const QString edition = editionOf(path);
+        bool cached = true;
+        QByteArray loadError;
+        if (auto it = compiled.constFind(path); it == compiled.constEnd() || it->edition != edition) {
+            cached = false;
+            compiled.remove(path);
+            if (auto style = processor::Stylesheet::load(path))
+                compiled.insert(path, Compiled{edition, std::move(*style)});
+            else
+                loadError = style.error().toString().toUtf8();
+        }
+        QList<QByteArray> rest; // input name, CPU seconds, parameters..., input
+        for (quint32 i = 1; i < fields; ++i) {
+            auto field = readString(i + 1 == fields ? wire::maxInputBytes : wire::maxFieldBytes);
+            if (!field)
+                return 1;
+            rest.append(std::move(*field));
+        }
+        const auto answer = [&](wire::Status status, const QByteArray &payload) {
+            return writeAll(wire::answer(status, cached, payload));
+        };
+        if (!loadError.isEmpty()) {
+            if (!answer(wire::Status::Failed, loadError))
+                return 1;
+            continue;
+        }
+        QList<std::pair<QByteArray, QString>> parameters;
+        QByteArray bad;
+        for (qsizetype i = 2; i + 1 < rest.size(); ++i) {
+            const qsizetype equals = rest[i].indexOf('=');
+            if (equals <= 0)
+                bad = "a parameter is NAME=VALUE, not '" + rest[i] + "'";
+            else
+                parameters.append({rest[i].left(equals), QString::fromUtf8(rest[i].mid(equals + 1))});
+        }
+        if (!bad.isEmpty()) {
+            if (!answer(wire::Status::Failed, bad))
+                return 1;
+            continue;
+        }
+        // This translation's CPU time from now: past it the kernel ends the process.
+        if (const rlim_t seconds = rlim_t(rest[1].toULongLong()); seconds > 0) {
+            rlim_t soft = cpuSecondsUsed() + seconds;
+            if (cpu.rlim_max != RLIM_INFINITY)
+                soft = std::min(soft, cpu.rlim_max);
+            const rlimit limit{soft, cpu.rlim_max};
+            setrlimit(RLIMIT_CPU, &limit);
+        }
+        const auto output = compiled[path].stylesheet.apply(rest.last(), QString::fromUtf8(rest[0]), parameters);
+        if (!output) {
+            const QString why = output.error().toString();
+            // Out of memory: said, and then a fresh process for the next one.
+            const bool spent = why.contains(QStringLiteral("memory"), Qt::CaseInsensitive);
+            if (!answer(spent ? wire::Status::FailedAndEnding : wire::Status::Failed, why.toUtf8()) || spent)
+                return 1;
+            continue;
+        }
+        if (!answer(wire::Status::Done, *output))
+            return 1;
     }
-    QList<std::pair<QByteArray, QString>> parameters;
-    for (qsizetype i = 5; i < args.size(); ++i) {
-        const qsizetype equals = args[i].indexOf(u'=');
-        if (equals <= 0)
-            return fail(QStringLiteral("a parameter is NAME=VALUE, not '%1'").arg(args[i]));
-        parameters.append({args[i].left(equals).toUtf8(), args[i].mid(equals + 1)});
-    }
-    // Compiled while the console still makes the input.
-    const auto style = processor::Stylesheet::load(args[1]);
-    if (!style)
-        return fail(style.error().toString());
-    QFile in;
-    if (!in.open(stdin, QIODevice::ReadOnly))
-        return fail(QStringLiteral("cannot read standard input"));
-    const QByteArray input = in.readAll();
-    const auto output = style->apply(input, args[2], parameters);
-    if (!output)
-        return fail(output.error().toString());
-    for (qsizetype written = 0; written < output->size();) {
-        const ssize_t n = ::write(STDOUT_FILENO, output->constData() + written, size_t(output->size() - written));
-        if (n <= 0)
-            return fail(QStringLiteral("cannot write the output"));
-        written += n;
-    }
-    return 0;
 }

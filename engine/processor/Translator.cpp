@@ -1,10 +1,26 @@
 #include "processor/Translator.h"
 
+#include "processor/TranslatorProtocol.h"
+
 #include <QCoreApplication>
 #include <QDir>
+#include <QFile>
 #include <QElapsedTimer>
-#include <QProcess>
 #include <QRegularExpression>
+
+#include <algorithm>
+#include <cerrno>
+#include <cstring>
+#include <mutex>
+
+#include <poll.h>
+#include <signal.h>
+#include <spawn.h>
+#include <sys/socket.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+extern char **environ;
 
 namespace neptus::processor {
 
@@ -12,6 +28,216 @@ QString translatorHelper()
 {
     return QDir(QCoreApplication::applicationDirPath()).filePath(QStringLiteral("neptus-xslt"));
 }
+
+namespace {
+
+// The one neptus-xslt helper of this program, talked to over a socket pair
+// (a helper that died makes a send fail, not a SIGPIPE). Callers take the
+// mutex: one translation at a time, from any thread.
+class Helper
+{
+public:
+    ~Helper() { stop(false); }
+
+    std::mutex mutex;
+    TranslatorStatus status;
+
+    std::expected<QByteArray, xml::XmlError> translate(const QString &stylesheet, const std::function<QByteArray()> &makeInput,
+                                                       const QString &inputName,
+                                                       const QList<std::pair<QByteArray, QString>> &parameters,
+                                                       TranslateLimits limits);
+
+private:
+    std::expected<void, QString> start(int megabytes);
+    void stop(bool kill);
+    bool send(const QByteArray &bytes);
+    // Reads `size` bytes before the deadline: false when the helper ended or the deadline passed.
+    enum class Read { Done, Ended, Late };
+    Read receive(char *to, size_t size, const QElapsedTimer &clock, qint64 deadlineMs);
+    // Why a helper that ended mid-translation ended (it is reaped here).
+    QString whyEnded(const QElapsedTimer &clock, TranslateLimits limits);
+
+    pid_t m_pid = -1;
+    int m_socket = -1;
+    int m_megabytes = -1;
+};
+
+Helper &helper()
+{
+    static Helper one;
+    return one;
+}
+
+std::expected<void, QString> Helper::start(int megabytes)
+{
+    if (m_pid > 0 && megabytes == m_megabytes)
+        return {};
+    stop(false);
+    int ends[2];
+    if (::socketpair(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0, ends) != 0)
+        return std::unexpected(QStringLiteral("cannot make a socket pair: %1").arg(QString::fromLocal8Bit(strerror(errno))));
+    posix_spawn_file_actions_t actions;
+    posix_spawn_file_actions_init(&actions);
+    posix_spawn_file_actions_adddup2(&actions, ends[1], STDIN_FILENO);
+    posix_spawn_file_actions_adddup2(&actions, ends[1], STDOUT_FILENO);
+    const QByteArray program = QFile::encodeName(translatorHelper());
+    const QByteArray memory = QByteArray::number(megabytes);
+    char *argv[] = {const_cast<char *>(program.constData()), const_cast<char *>(memory.constData()), nullptr};
+    pid_t pid = -1;
+    const int failed = posix_spawn(&pid, program.constData(), &actions, nullptr, argv, environ);
+    posix_spawn_file_actions_destroy(&actions);
+    ::close(ends[1]);
+    if (failed != 0) {
+        ::close(ends[0]);
+        return std::unexpected(QStringLiteral("cannot start %1: %2").arg(translatorHelper(), QString::fromLocal8Bit(strerror(failed))));
+    }
+    m_pid = pid;
+    m_socket = ends[0];
+    m_megabytes = megabytes;
+    status.pid = pid;
+    ++status.started;
+    return {};
+}
+
+void Helper::stop(bool kill)
+{
+    if (m_socket >= 0)
+        ::close(m_socket); // the helper reads the end of its input and ends
+    m_socket = -1;
+    if (m_pid > 0) {
+        if (kill)
+            ::kill(m_pid, SIGKILL);
+        int code = 0;
+        for (int waited = 0; ::waitpid(m_pid, &code, WNOHANG) == 0; ++waited) {
+            if (waited == 100)
+                ::kill(m_pid, SIGKILL);
+            ::usleep(waited < 100 ? 2000 : 10000);
+        }
+    }
+    m_pid = -1;
+    status.pid = 0;
+}
+
+bool Helper::send(const QByteArray &bytes)
+{
+    for (qsizetype sent = 0; sent < bytes.size();) {
+        const ssize_t n = ::send(m_socket, bytes.constData() + sent, size_t(bytes.size() - sent), MSG_NOSIGNAL);
+        if (n < 0 && errno == EINTR)
+            continue;
+        if (n <= 0)
+            return false;
+        sent += n;
+    }
+    return true;
+}
+
+Helper::Read Helper::receive(char *to, size_t size, const QElapsedTimer &clock, qint64 deadlineMs)
+{
+    while (size > 0) {
+        const qint64 left = deadlineMs - clock.elapsed();
+        if (left <= 0)
+            return Read::Late;
+        pollfd p{m_socket, POLLIN, 0};
+        const int ready = ::poll(&p, 1, int(std::min<qint64>(left, 1000)));
+        if (ready < 0 && errno != EINTR)
+            return Read::Ended;
+        if (ready <= 0)
+            continue;
+        const ssize_t n = ::recv(m_socket, to, size, 0);
+        if (n < 0 && errno == EINTR)
+            continue;
+        if (n <= 0)
+            return Read::Ended;
+        to += n;
+        size -= size_t(n);
+    }
+    return Read::Done;
+}
+
+QString Helper::whyEnded(const QElapsedTimer &clock, TranslateLimits limits)
+{
+    int code = 0;
+    ::close(m_socket);
+    m_socket = -1;
+    const bool reaped = ::waitpid(m_pid, &code, 0) == m_pid;
+    m_pid = -1;
+    status.pid = 0;
+    // Killed by its CPU-time limit (SIGXCPU), or ended when memory ran out.
+    if ((reaped && WIFSIGNALED(code) && WTERMSIG(code) == SIGXCPU) || clock.elapsed() >= qint64(limits.seconds) * 1000 - 100)
+        return QStringLiteral("stopped: it ran longer than its %1 s limit").arg(limits.seconds);
+    return QStringLiteral("stopped: it used more than its %1 MB of memory").arg(limits.megabytes);
+}
+
+std::expected<QByteArray, xml::XmlError> Helper::translate(const QString &stylesheet, const std::function<QByteArray()> &makeInput,
+                                                           const QString &inputName,
+                                                           const QList<std::pair<QByteArray, QString>> &parameters,
+                                                           TranslateLimits limits)
+{
+    const auto failure = [&](const QString &why) { return std::unexpected(xml::XmlError{stylesheet, 0, 0, why}); };
+    QElapsedTimer clock;
+    clock.start();
+    // The stylesheet first: the helper compiles it (or finds it compiled) while the input is made.
+    QByteArray head;
+    wire::appendLength(head, quint32(4 + parameters.size()));
+    head += wire::field(stylesheet.toUtf8());
+    bool sent = false;
+    for (int attempt = 0; attempt < 2 && !sent; ++attempt) {
+        if (auto started = start(limits.megabytes); !started)
+            return failure(started.error());
+        sent = send(head);
+        if (!sent)
+            stop(true); // it had ended since the last translation: another
+    }
+    if (!sent)
+        return failure(QStringLiteral("%1 ended before it was given the translation").arg(translatorHelper()));
+    QByteArray rest = wire::field(inputName.toUtf8()) + wire::field(QByteArray::number(limits.seconds));
+    for (const auto &[name, value] : parameters)
+        rest += wire::field(name + '=' + value.toUtf8());
+    rest += wire::field(makeInput());
+    const qint64 deadlineMs = qint64(limits.seconds) * 1000 + 500;
+    char header[6];
+    Read read = send(rest) ? receive(header, sizeof header, clock, deadlineMs) : Read::Ended;
+    if (read == Read::Late) {
+        stop(true);
+        return failure(QStringLiteral("stopped: it ran longer than its %1 s limit").arg(limits.seconds));
+    }
+    if (read == Read::Ended)
+        return failure(whyEnded(clock, limits));
+    const auto answered = wire::Status(header[0]);
+    if (header[1] == 0)
+        ++status.compiled;
+    const quint32 length = wire::lengthOf(header + 2);
+    if (length > quint32(limits.megabytes) * 1024u * 1024u) {
+        stop(true);
+        return failure(QStringLiteral("stopped: its output passed %1 MB").arg(limits.megabytes));
+    }
+    QByteArray payload(qsizetype(length), Qt::Uninitialized);
+    read = receive(payload.data(), length, clock, deadlineMs);
+    if (read == Read::Late) {
+        stop(true);
+        return failure(QStringLiteral("stopped: it ran longer than its %1 s limit").arg(limits.seconds));
+    }
+    if (read == Read::Ended)
+        return failure(whyEnded(clock, limits));
+    ++status.translations;
+    if (answered == wire::Status::Done)
+        return payload;
+    if (answered == wire::Status::FailedAndEnding)
+        stop(false);
+    const QString errors = QString::fromUtf8(payload).trimmed();
+    if (answered == wire::Status::FailedAndEnding || errors.contains(QStringLiteral("out of memory"), Qt::CaseInsensitive))
+        return failure(QStringLiteral("stopped: it used more than its %1 MB of memory (%2)").arg(limits.megabytes).arg(errors));
+    // "file:line:column: message" or "file: message", as Stylesheet reports it.
+    static const QRegularExpression located(QStringLiteral(R"(^(.*?)(?::(\d+))?(?::(\d+))?: (.*)$)"),
+                                            QRegularExpression::DotMatchesEverythingOption);
+    const auto match = located.match(errors);
+    if (match.hasMatch())
+        return std::unexpected(xml::XmlError{match.captured(1), match.captured(2).toInt(), match.captured(3).toInt(),
+                                             match.captured(4)});
+    return failure(errors);
+}
+
+} // namespace
 
 std::expected<QByteArray, xml::XmlError> translate(const QString &stylesheet, QByteArrayView input,
                                                    const QString &inputName,
@@ -26,56 +252,16 @@ std::expected<QByteArray, xml::XmlError> translate(const QString &stylesheet, co
                                                    const QList<std::pair<QByteArray, QString>> &parameters,
                                                    TranslateLimits limits)
 {
-    const auto failure = [&](const QString &why) { return std::unexpected(xml::XmlError{stylesheet, 0, 0, why}); };
-    QStringList args{stylesheet, inputName, QString::number(limits.megabytes), QString::number(limits.seconds)};
-    for (const auto &[name, value] : parameters)
-        args << QString::fromUtf8(name) + u'=' + value;
-    QProcess helper;
-    helper.start(translatorHelper(), args);
-    if (!helper.waitForStarted(5000))
-        return failure(QStringLiteral("cannot start %1: %2").arg(translatorHelper(), helper.errorString()));
-    // The helper compiles the stylesheet while the input is made.
-    helper.write(makeInput());
-    helper.closeWriteChannel();
-    QByteArray output;
-    QElapsedTimer clock;
-    clock.start();
-    const qint64 limitMs = qint64(limits.seconds) * 1000 + 500;
-    while (helper.state() != QProcess::NotRunning && clock.elapsed() < limitMs) {
-        helper.waitForReadyRead(50);
-        output += helper.readAllStandardOutput();
-        if (output.size() > qsizetype(limits.megabytes) * 1024 * 1024) {
-            helper.kill();
-            helper.waitForFinished(5000);
-            return failure(QStringLiteral("stopped: its output passed %1 MB").arg(limits.megabytes));
-        }
-    }
-    if (helper.state() != QProcess::NotRunning) {
-        helper.kill();
-        helper.waitForFinished(5000);
-        return failure(QStringLiteral("stopped: it ran longer than its %1 s limit").arg(limits.seconds));
-    }
-    output += helper.readAllStandardOutput();
-    const QString errors = QString::fromUtf8(helper.readAllStandardError()).trimmed();
-    if (helper.exitStatus() == QProcess::CrashExit || (helper.exitCode() != 0 && errors.isEmpty())) {
-        // Killed by its CPU-time limit (SIGXCPU), or ended when memory ran out.
-        if (clock.elapsed() >= qint64(limits.seconds) * 1000 - 100)
-            return failure(QStringLiteral("stopped: it ran longer than its %1 s limit").arg(limits.seconds));
-        return failure(QStringLiteral("stopped: it used more than its %1 MB of memory").arg(limits.megabytes));
-    }
-    if (helper.exitCode() != 0) {
-        // "file:line:column: message" or "file: message", as Stylesheet reports it.
-        static const QRegularExpression located(QStringLiteral(R"(^(.*?)(?::(\d+))?(?::(\d+))?: (.*)$)"),
-                                                QRegularExpression::DotMatchesEverythingOption);
-        const auto match = located.match(errors);
-        if (match.hasMatch())
-            return std::unexpected(xml::XmlError{match.captured(1), match.captured(2).toInt(), match.captured(3).toInt(),
-                                                 match.captured(4)});
-        return failure(errors.contains(QStringLiteral("out of memory"), Qt::CaseInsensitive)
-                           ? QStringLiteral("stopped: it used more than its %1 MB of memory (%2)").arg(limits.megabytes).arg(errors)
-                           : errors);
-    }
-    return output;
+    Helper &h = helper();
+    const std::lock_guard lock(h.mutex);
+    return h.translate(stylesheet, makeInput, inputName, parameters, limits);
+}
+
+TranslatorStatus translatorStatus()
+{
+    Helper &h = helper();
+    const std::lock_guard lock(h.mutex);
+    return h.status;
 }
 
 } // namespace neptus::processor

@@ -1,14 +1,22 @@
-// Translation in neptus-xslt, a process of its own: the same output as in
-// process, errors with file and line, and a stylesheet that would run for
-// ever or fill memory is stopped at its limit while the caller goes on.
+// Translation in neptus-xslt, a process of its own kept for the program's
+// life: the same output as in process, errors with file and line, and a
+// stylesheet that would run for ever or fill memory is stopped at its limit
+// while the caller goes on.
 #include "processor/Stylesheet.h"
 #include "processor/Translator.h"
 
 #include <QElapsedTimer>
 #include <QFile>
 #include <QTemporaryDir>
+#include <QTest>
 
 #include <gtest/gtest.h>
+
+#include <atomic>
+#include <thread>
+#include <vector>
+
+#include <signal.h>
 
 using namespace neptus::processor;
 
@@ -85,4 +93,106 @@ TEST(Translator, AStylesheetThatRunsOnIsStoppedAtItsLimit)
         std::printf("doubling(40), limits %d s / %d MB: stopped after %lld ms: %s\n", limits.seconds, limits.megabytes,
                     static_cast<long long>(elapsed), qPrintable(out.error().message));
     }
+}
+
+// One helper serves the program's translations (issue #39: starting a process
+// and compiling the stylesheet was 14-18 ms of every translation): the same
+// process, the stylesheet compiled once, and again when its file changes.
+TEST(Translator, OneHelperServesEveryTranslationAndKeepsItsStylesheetsCompiled)
+{
+    QTemporaryDir dir;
+    const QString path = writeStylesheet(dir, QStringLiteral("id.xsl"), R"X(<xsl:output method="text"/><xsl:param name="n"/>
+<xsl:template match="/plan"><xsl:value-of select="concat('v1 ', @id, ' ', $n)"/></xsl:template>)X");
+    ASSERT_TRUE(translate(path, plan, QStringLiteral("plan.xml"), {{"n", QStringLiteral("0")}}));
+    const TranslatorStatus first = translatorStatus();
+    ASSERT_GT(first.pid, 0) << "the helper stays";
+    for (int i = 1; i <= 5; ++i) {
+        const auto out = translate(path, plan, QStringLiteral("plan.xml"), {{"n", QString::number(i)}});
+        ASSERT_TRUE(out) << out.error().toString().toStdString();
+        EXPECT_EQ(*out, QByteArray("v1 survey ") + QByteArray::number(i)) << "each with its own parameters";
+    }
+    const TranslatorStatus after = translatorStatus();
+    EXPECT_EQ(after.pid, first.pid) << "the same process";
+    EXPECT_EQ(after.started, first.started);
+    EXPECT_EQ(after.compiled, first.compiled) << "found compiled five times";
+    EXPECT_EQ(after.translations, first.translations + 5);
+
+    // A stylesheet edited on disk is compiled again (and so is one whose import changed: same folder).
+    ASSERT_TRUE(writeStylesheet(dir, QStringLiteral("id.xsl"), R"X(<xsl:output method="text"/>
+<xsl:template match="/plan"><xsl:value-of select="concat('version two of ', @id)"/></xsl:template>)X") == path);
+    const auto edited = translate(path, plan, QStringLiteral("plan.xml"));
+    ASSERT_TRUE(edited) << edited.error().toString().toStdString();
+    EXPECT_EQ(*edited, QByteArray("version two of survey"));
+    EXPECT_EQ(translatorStatus().compiled, first.compiled + 1);
+    EXPECT_EQ(translatorStatus().pid, first.pid);
+}
+
+// A helper that died (killed, crashed, or stopped at a limit) is replaced at
+// the next translation, which is not lost.
+TEST(Translator, AHelperThatDiedIsReplacedAtTheNextTranslation)
+{
+    QTemporaryDir dir;
+    const QString path = writeStylesheet(dir, QStringLiteral("wp.xsl"), R"X(<xsl:output method="text"/>
+<xsl:template match="/plan"><xsl:value-of select="@id"/></xsl:template>)X");
+    ASSERT_TRUE(translate(path, plan, QStringLiteral("plan.xml")));
+    const TranslatorStatus before = translatorStatus();
+    ASSERT_GT(before.pid, 0);
+    ASSERT_EQ(::kill(pid_t(before.pid), SIGKILL), 0);
+    QTest::qWait(50);
+    const auto out = translate(path, plan, QStringLiteral("plan.xml"));
+    ASSERT_TRUE(out) << out.error().toString().toStdString();
+    EXPECT_EQ(*out, QByteArray("survey"));
+    EXPECT_NE(translatorStatus().pid, before.pid);
+    EXPECT_EQ(translatorStatus().started, before.started + 1);
+
+    // Stopped at its time limit mid-translation: the next one works.
+    const QString bomb = writeStylesheet(dir, QStringLiteral("bomb.xsl"), doubling(40));
+    ASSERT_FALSE(translate(bomb, plan, QStringLiteral("plan.xml"), {}, TranslateLimits{1, 1024}));
+    const auto again = translate(path, plan, QStringLiteral("plan.xml"));
+    ASSERT_TRUE(again) << again.error().toString().toStdString();
+    EXPECT_EQ(*again, QByteArray("survey"));
+}
+
+// The CPU limit is each translation's own, not the long-lived helper's whole
+// life: translations that together take many times the limit all succeed.
+TEST(Translator, TheTimeLimitIsEachTranslationsOwn)
+{
+    QTemporaryDir dir;
+    const QString path = writeStylesheet(dir, QStringLiteral("work.xsl"), doubling(16));
+    QElapsedTimer clock;
+    clock.start();
+    int done = 0;
+    while (clock.elapsed() < 2500 && done < 200) {
+        const auto out = translate(path, plan, QStringLiteral("plan.xml"), {}, TranslateLimits{1, 1024});
+        ASSERT_TRUE(out) << "translation " << done << " after " << clock.elapsed() << " ms: " << out.error().toString().toStdString();
+        ++done;
+    }
+    EXPECT_GE(clock.elapsed(), 2500) << "more than twice the 1 s limit in all";
+    std::printf("%d translations of 2^16 elements in %lld ms, each within its 1 s\n", done, static_cast<long long>(clock.elapsed()));
+}
+
+// Translations come from the GUI thread, the plan editor's workers and the
+// command line: any number of threads at once, each gets its own answer.
+TEST(Translator, ManyThreadsAtOnceEachGetTheirOwnAnswer)
+{
+    QTemporaryDir dir;
+    const QString path = writeStylesheet(dir, QStringLiteral("echo.xsl"), R"X(<xsl:output method="text"/><xsl:param name="who"/>
+<xsl:template match="/plan"><xsl:value-of select="concat($who, ' ', @id)"/></xsl:template>)X");
+    std::vector<std::thread> threads;
+    std::atomic<int> right = 0;
+    for (int t = 0; t < 4; ++t) {
+        threads.emplace_back([&, t] {
+            for (int i = 0; i < 10; ++i) {
+                const QString who = QStringLiteral("t%1-%2").arg(t).arg(i);
+                const auto out = translate(path, plan, QStringLiteral("plan.xml"), {{"who", who}});
+                if (out && *out == who.toUtf8() + " survey")
+                    ++right;
+                else
+                    std::printf("%s: %s\n", qPrintable(who), out ? out->constData() : qPrintable(out.error().toString()));
+            }
+        });
+    }
+    for (auto &thread : threads)
+        thread.join();
+    EXPECT_EQ(right.load(), 40);
 }
