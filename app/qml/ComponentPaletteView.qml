@@ -21,11 +21,7 @@ Rectangle {
     radius: Theme.radius
 
     // Touches on the panel stay on the panel (not the console under it).
-    MouseArea {
-        anchors.fill: parent
-        acceptedButtons: Qt.AllButtons
-        onWheel: wheel => wheel.accepted = true
-    }
+    PointerStop {}
 
     Text {
         id: heading

@@ -385,7 +385,7 @@ Item {
         color: Theme.surface
         border.color: Theme.border
         radius: Theme.radius
-        MouseArea { anchors.fill: parent; acceptedButtons: Qt.AllButtons }
+        PointerStop {}
         readonly property string root: designer.editor.text !== "" ? designer.editor.rootId() : ""
         Column {
             id: consoleColumn
@@ -500,7 +500,7 @@ Item {
         border.color: Theme.border
         radius: Theme.radius
         // Touches on the panel stay on the panel.
-        MouseArea { anchors.fill: parent; acceptedButtons: Qt.AllButtons; onWheel: wheel => wheel.accepted = true }
+        PointerStop {}
         VariableTreeView {
             id: variableTree
             objectName: "designerTree"

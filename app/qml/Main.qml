@@ -217,7 +217,7 @@ ApplicationWindow {
         color: Theme.surface
         border.color: Theme.border
         radius: Theme.radius
-        MouseArea { anchors.fill: parent; acceptedButtons: Qt.AllButtons }
+        PointerStop {}
         Flickable {
             anchors { fill: parent; margins: Theme.spacing }
             contentHeight: switcherColumn.implicitHeight

@@ -41,7 +41,7 @@ Rectangle {
     color: Theme.surface
     border.color: Theme.border
     radius: Theme.radius
-    MouseArea { anchors.fill: parent; acceptedButtons: Qt.AllButtons }
+    PointerStop {} // what lands on it stays on it
     Keys.onEscapePressed: { close(); cancelled() }
 
     Column {

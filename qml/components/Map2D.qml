@@ -548,7 +548,7 @@ Rectangle {
         readonly property var area: visible ? root.viewBounds(root.centerLatitude, root.centerLongitude, root.zoomLevel, root.bearing, root.width, root.height) : null
         readonly property var plan: area && !downloader.running
             ? downloader.plan(area.north, area.south, area.west, area.east, fromZoom, toZoom) : null
-        TapHandler {} // touches stay on the panel
+        PointerStop {} // what lands on the panel stays there
         Column {
             id: downloadColumn
             anchors { left: parent.left; right: parent.right; top: parent.top; margins: Theme.spacing }
@@ -688,7 +688,7 @@ Rectangle {
         // The cell a first tap on its Remove asked about (a second removes it).
         property string removing: ""
         onVisibleChanged: removing = ""
-        MouseArea { anchors.fill: parent; acceptedButtons: Qt.AllButtons; onWheel: (w) => w.accepted = true } // touches stay on the panel
+        PointerStop {} // what lands on the panel stays there
         Flickable {
             anchors { fill: parent; margins: Theme.spacing }
             contentHeight: chartColumn.implicitHeight

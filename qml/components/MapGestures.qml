@@ -34,6 +34,10 @@ Item {
         onWheel: (event) => gestures.wheeled(event.angleDelta.y / 120, wheel.point.position)
     }
     TapHandler {
-        onTapped: (eventPoint) => gestures.tapped(eventPoint.position)
+        // Not a tap on a panel over the map (its lists, its margins).
+        onTapped: (eventPoint) => {
+            if (!Session.onPanel(gestures, eventPoint.position.x, eventPoint.position.y))
+                gestures.tapped(eventPoint.position)
+        }
     }
 }

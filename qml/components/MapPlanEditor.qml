@@ -60,11 +60,7 @@ Item {
     // A tap on the map: select the maneuver under it, else add one there or
     // a corner of the area.
     function tapped(at: point): void {
-        // The map's tap handler sees taps on the panels too (pointer
-        // handlers under them still get the event): those are not the map's.
-        for (const over of [panel, graphLoader, missionChooser])
-            if (over.visible && over.contains(over.mapFromItem(editor, at.x, at.y)))
-                return
+        // (Taps on the panels stay there: PointerStop.)
         if (mode === "checks")
             return
         const c = map.toCoordinate(at.x, at.y)
@@ -271,7 +267,7 @@ Item {
         border.color: Theme.border
         radius: Theme.radius
         // Taps on the panel are the panel's, not the map's.
-        MouseArea { anchors.fill: parent; acceptedButtons: Qt.AllButtons; onWheel: (w) => w.accepted = true }
+        PointerStop {}
         Flickable {
             id: panelFlick
             objectName: "planEditorFlick"

@@ -74,7 +74,7 @@ Rectangle {
     }
 
     // Taps and wheels on the view are the view's, not the map's under it.
-    MouseArea { anchors.fill: parent; acceptedButtons: Qt.AllButtons; onWheel: (w) => w.accepted = true }
+    PointerStop {}
 
     // Tools along the top.
     Row {

@@ -38,6 +38,20 @@ QtObject {
     // depth shallower than which the chart's water stands out (--safety-depth, metres).
     property string charts: ""
     property real safetyDepth: 5
+
+    // Every PointerStop (the panels floating over maps and the console), so
+    // that pointer handlers under a panel can tell a point on a panel: Qt
+    // hands a press to the handlers of every item under it, even after an
+    // item on top took it.
+    property var pointerStops: []
+    // Whether a point of `item` is on a panel (a visible PointerStop in its window).
+    function onPanel(item: Item, x: real, y: real): bool {
+        const scene = item.mapToItem(null, x, y)
+        for (const stop of pointerStops)
+            if (stop.visible && stop.Window.window === item.Window.window && stop.contains(stop.mapFromItem(null, scene.x, scene.y)))
+                return true
+        return false
+    }
     // A path or system name with "$main" made the followed system's; "" while
     // none is followed (no component shows or sends to "$main" itself).
     function resolve(path) {

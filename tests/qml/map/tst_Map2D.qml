@@ -614,6 +614,42 @@ TestCase {
         verify(!map2d.measuring)
     }
 
+    // A panel over the map keeps what lands on it: a tap, a finger, a drag or the
+    // wheel on its empty parts never reaches the map under it (issue #38: taps
+    // went through and each user of the map had to filter them by position).
+    function test_6b_panelsOverTheMapKeepTheirTouches() {
+        map2d.following = false
+        map2d.measuring = true
+        map2d.measurePoints = []
+        for (const name of ["chartManager", "tileDownloadPanel"]) {
+            const panel = findChild(map2d, name)
+            panel.visible = true
+            // An empty spot of the panel: its bottom-right corner, inside the border.
+            const x = panel.width - 4, y = panel.height - 4
+            const zoom = map2d.zoomLevel, lat = map2d.centerLatitude
+            mouseClick(panel, x, y)
+            compare(map2d.measurePoints.length, 0, name + ": a click stays on the panel")
+            const touch = touchEvent(panel)
+            touch.press(0, panel, x, y).commit()
+            touch.release(0, panel, x, y).commit()
+            wait(50)
+            compare(map2d.measurePoints.length, 0, name + ": a finger's tap stays on the panel")
+            touch.press(0, panel, x, y).commit()
+            for (let i = 1; i <= 10; ++i)
+                touch.move(0, panel, x - i * 8, y - i * 3).commit()
+            touch.release(0, panel, x - 80, y - 30).commit()
+            fuzzyCompare(map2d.centerLatitude, lat, 1e-12, name + ": a finger's drag does not pan the map")
+            mouseWheel(panel, x, y, 0, 240)
+            compare(map2d.zoomLevel, zoom, name + ": the wheel does not zoom the map")
+            panel.visible = false
+        }
+        // Beside the panels the map still takes them.
+        mouseClick(map2d, 400, 100)
+        compare(map2d.measurePoints.length, 1, "a click on the map")
+        map2d.measuring = false
+        map2d.measurePoints = []
+    }
+
     function test_7_scaleBarIsARoundLengthOfTheRightWidth() {
         const bar = findChild(map2d, "scaleBar")
         for (const zoom of [8, 12.5, 15, 18]) {
