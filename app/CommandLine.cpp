@@ -98,6 +98,9 @@ std::expected<CommandLine, QString> CommandLine::parse(const QStringList &argume
     const QCommandLineOption uiScale(QStringLiteral("ui-scale"),
         QStringLiteral("Size of text and controls, 0.75 to 2 (touch targets never under 9 mm); default as last time."),
         QStringLiteral("factor"));
+    const QCommandLineOption screenInches(QStringLiteral("screen-inches"),
+        QStringLiteral("The screen's diagonal in inches, for a screen that does not report its size (controls are sized in mm from it)."),
+        QStringLiteral("inches"));
     const QCommandLineOption charts(QStringLiteral("charts"),
         QStringLiteral("Nautical charts (S-57 ENC) for the maps: a cell (.000), an exchange set or a folder of cells (docs/charts.md)."),
         QStringLiteral("path"));
@@ -214,7 +217,7 @@ std::expected<CommandLine, QString> CommandLine::parse(const QStringList &argume
         QStringLiteral("Map tiles for the web page: a URL with {z}/{x}/{y} (default: the offline coastline only)."), QStringLiteral("url"));
     parser.addOptions({mavlink, mavlinkPeer, mavlinkKey, mavlinkRequireSigning, mavlinkDialect});
     parser.addOptions({logDir, noRecord, database, replay, replaySession, replayFrom, replayPlay, webPort, webBind, webToken, webCert, webKey, webTiles});
-    parser.addOptions({charts, safetyDepth, displayRate, restingRate});
+    parser.addOptions({charts, safetyDepth, displayRate, restingRate, screenInches});
     parser.addOptions({console, screenshot, screenshotDelay, components, edit, select, system, palette, uiScale, gps, size, selfTest,
                        imcPort, imcBind, imcPeer, ddsDomain, ddsConfig, ddsKeys, ddsIdentity, defs, defsFor, imcDiscovery, dumpTree, quitAfter, forgetAfter, mission, share, name});
     // "--defs-for SYSTEM FILE" (two words, as the documentation writes it) is
@@ -346,6 +349,13 @@ std::expected<CommandLine, QString> CommandLine::parse(const QStringList &argume
         result.uiScale = parser.value(uiScale).toDouble(&ok);
         if (!ok || result.uiScale < 0.75 || result.uiScale > 2)
             return std::unexpected(QStringLiteral("--ui-scale must be a number from 0.75 to 2, not '%1'").arg(parser.value(uiScale)));
+    }
+    if (parser.isSet(screenInches)) {
+        bool ok = false;
+        result.screenInches = parser.value(screenInches).toDouble(&ok);
+        if (!ok || result.screenInches < 3 || result.screenInches > 120)
+            return std::unexpected(QStringLiteral("--screen-inches must be a screen's diagonal, 3 to 120 inches, not '%1'")
+                                       .arg(parser.value(screenInches)));
     }
     if (parser.isSet(size)) {
         static const QRegularExpression format(QStringLiteral("^(\\d{2,5})x(\\d{2,5})$"));

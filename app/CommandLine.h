@@ -21,6 +21,7 @@ struct CommandLine
     int screenshotDelayMs = 0; // wait this long after the first frame
     QString palette;         // day, dusk or night; empty = as last time
     double uiScale = 0;      // 0.75 to 2; 0 = as last time
+    double screenInches = 0; // the screen's diagonal when it reports no size of its own; 0 = as reported
     QString gps;             // own ship's NMEA source: serial:…, socket://…, or a file's absolute path
     QStringList componentDirectories;   // --components, before the standard ones
     bool edit = false;                  // start in edit mode

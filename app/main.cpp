@@ -341,6 +341,7 @@ int main(int argc, char *argv[])
         {QStringLiteral("consoleUrl"), QUrl::fromLocalFile(commandLine->consoleFile)},
         {QStringLiteral("initialPalette"), commandLine->palette},
         {QStringLiteral("initialScale"), commandLine->uiScale},
+        {QStringLiteral("screenInches"), commandLine->screenInches},
         {QStringLiteral("gpsSource"), commandLine->gps},
         {QStringLiteral("componentDirectories"), componentDirectories},
         {QStringLiteral("consoleDirectories"), ConsoleCatalog::standardDirectories()},

@@ -15,6 +15,8 @@ ApplicationWindow {
     property string initialPalette: ""
     // From the command line (--ui-scale); 0 = as the user left it.
     property real initialScale: 0
+    // The screen's diagonal (--screen-inches) when it does not report its size: 0 = as reported.
+    property real screenInches: 0
     // Own ship's NMEA source (--gps): serial:…, socket://… or a file; "" = none.
     property string gpsSource: ""
     // Where drop-in components are looked for, first wins.
@@ -74,6 +76,8 @@ ApplicationWindow {
         const requested = Theme.paletteNames.map(name => name.toLowerCase()).indexOf(initialPalette)
         Theme.palette = requested >= 0 ? requested : settings.palette
         Theme.uiScale = initialScale > 0 ? initialScale : settings.uiScale
+        if (screenInches > 0)
+            Theme.knownPixelsPerMm = Theme.densityOf(screenInches, Screen.width, Screen.height)
     }
     // The operator's UI scale, kept for next time.
     function setUiScale(scale) {

@@ -74,9 +74,21 @@ Rectangle {
     Variable { id: lastOutcome; tree: Session.tree; path: panel.target + "/PlanControlState/last_outcome" }
     readonly property bool executing: state.present && state.text === "EXECUTING"
 
+    // The plans, the state and the checklist scroll when the panel is short
+    // (a small screen at its real density); Start and Abort below them are
+    // always wholly in view.
+    Flickable {
+        id: upper
+        objectName: "planPanelScroll"
+        anchors { left: parent.left; right: parent.right; top: parent.top; margins: Theme.spacing * 1.5 }
+        height: Math.max(0, Math.min(content.implicitHeight, panel.height - commands.implicitHeight - Theme.spacing * 4.5))
+        contentHeight: content.implicitHeight
+        interactive: contentHeight > height
+        boundsBehavior: Flickable.StopAtBounds
+        clip: true
     Column {
         id: content
-        anchors { left: parent.left; right: parent.right; top: parent.top; margins: Theme.spacing * 1.5 }
+        width: upper.width
         spacing: Theme.spacing
 
         Row {
@@ -402,6 +414,12 @@ Rectangle {
                 onClicked: checklist.overridden = true
             }
         }
+    }
+    }
+    Column {
+        id: commands
+        anchors { left: parent.left; right: parent.right; top: upper.bottom; topMargin: Theme.spacing; leftMargin: Theme.spacing * 1.5; rightMargin: Theme.spacing * 1.5 }
+        spacing: Theme.spacing
         SlideToConfirm {
             id: startSlide
             objectName: "start"
@@ -437,7 +455,7 @@ Rectangle {
     // The vehicle's plan log, newest last.
     ListView {
         objectName: "log"
-        anchors { left: parent.left; right: parent.right; top: content.bottom; bottom: parent.bottom; margins: Theme.spacing * 1.5 }
+        anchors { left: parent.left; right: parent.right; top: commands.bottom; bottom: parent.bottom; margins: Theme.spacing * 1.5 }
         clip: true
         model: panel.log
         onCountChanged: positionViewAtEnd()

@@ -19,8 +19,16 @@ QtObject {
             return 0
         return screens[0].pixelDensity / Math.max(screens[0].devicePixelRatio, 1)
     }
-    readonly property real pixelsPerMm: reportedPixelsPerMm >= 2 && reportedPixelsPerMm <= 30
+    // The screen's real density when it is known better than the screen says
+    // (a tablet without EDID; the layout test's physical screens): pixels per mm, 0 = as reported.
+    property real knownPixelsPerMm: 0
+    readonly property real pixelsPerMm: knownPixelsPerMm > 0 ? knownPixelsPerMm
+                                        : reportedPixelsPerMm >= 2 && reportedPixelsPerMm <= 30
                                         ? reportedPixelsPerMm : 96 / 25.4
+    // Pixels per mm of a screen of `inches` diagonal showing width x height pixels.
+    function densityOf(inches: real, width: real, height: real): real {
+        return Math.hypot(width, height) / (inches * 25.4)
+    }
 
     // The operator's own scale (0.75 to 2; Ctrl+= and Ctrl+- in the shell):
     // text, spacing and controls grow or shrink with it, but a touch target

@@ -148,7 +148,9 @@ Rectangle {
         // follows no values: each one changed would still make a frame.
         model: view.visible ? Session.tree : null
         flickableDirection: view.dragLeaves ? Flickable.VerticalFlick : Flickable.AutoFlickDirection
-        columnWidthProvider: column => [tree.width * 0.4, tree.width * 0.3, tree.width * 0.1, tree.width * 0.2][column]
+        // Shares of the width, none narrower than a finger (every cell is tapped to choose its row;
+        // a narrow view scrolls sideways instead).
+        columnWidthProvider: column => Math.max(Theme.touchTarget, tree.width * [0.4, 0.3, 0.1, 0.2][column])
         delegate: Item {
             id: cell
             required property TreeView treeView

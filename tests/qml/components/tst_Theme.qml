@@ -24,6 +24,20 @@ TestCase {
         compare(Theme.mm(10), Math.round(10 * pxPerMm))
     }
 
+    // A screen's real density from its size: what 96 dpi calls 9 mm (34 px) is 5.8 mm
+    // on a 10.1-inch 1280x800 tablet, and the touch target follows the real density.
+    function test_theRealDensityOfAScreenOfKnownSize() {
+        const tablet = Theme.densityOf(10.1, 1280, 800)
+        fuzzyCompare(tablet * 25.4, 149.4, 0.1, "ppi of a 10.1-inch 1280x800 screen")
+        fuzzyCompare(34 / tablet, 5.8, 0.05, "a 34-pixel button there, in mm")
+        Theme.knownPixelsPerMm = tablet
+        compare(Theme.pixelsPerMm, tablet)
+        compare(Theme.touchTarget, Math.ceil(9 * tablet))
+        verify(Theme.touchTarget >= 53, Theme.touchTarget + " px")
+        Theme.knownPixelsPerMm = 0
+        compare(Theme.pixelsPerMm, Screen.pixelDensity / Math.max(Screen.devicePixelRatio, 1), "as the screen says again")
+    }
+
     function test_paletteSwitchesEveryColour() {
         Theme.palette = Theme.Day
         const day = { bg: String(Theme.background), text: String(Theme.text), normal: String(Theme.levelColor(1)) }

@@ -7,7 +7,8 @@ import Neptus.Testing
 
 // Every shipped console in the real shell window at the screens it is made
 // for, landscape and portrait: every component wholly inside the window and
-// every interactive item at least 9 mm both ways at this screen's density.
+// every interactive item at least 9 mm both ways at this screen's density,
+// and wholly in view (or in a list or pane that scrolls it into view).
 TestCase {
     id: test
     name: "ConsoleSizes"
@@ -15,8 +16,17 @@ TestCase {
 
     Component { id: mainComponent; Main { visible: true } }
 
-    readonly property var consoles: ["Default.qml", "AUV.qml", "Inspector.qml"]
-    readonly property var sizes: [Qt.size(1024, 600), Qt.size(1280, 800), Qt.size(1920, 1080), Qt.size(800, 1280)]
+    readonly property var consoles: ["Default.qml", "AUV.qml", "Inspector.qml", "Review.qml"]
+    // The screens the consoles ship for, at their physical size: the window's
+    // density is the screen's (a 34-pixel control is 9 mm at 96 dpi, 5.8 mm on a 10.1" tablet).
+    readonly property var screens: [
+        { name: "8-inch tablet, upright", inches: 8, size: Qt.size(800, 1280) },
+        { name: "10.1-inch tablet", inches: 10.1, size: Qt.size(1280, 800) },
+        { name: "13.3-inch laptop", inches: 13.3, size: Qt.size(1920, 1080) },
+        { name: "24-inch monitor", inches: 24, size: Qt.size(1920, 1080) },
+        { name: "27-inch 4K monitor", inches: 27, size: Qt.size(3840, 2160) },
+    ]
+    function cleanup() { Theme.knownPixelsPerMm = 0 }
 
     // Whether an item takes touches: a tap or drag handler of its own, a
     // MouseArea, or a control (button, switch, slider, field, combo box),
@@ -37,7 +47,8 @@ TestCase {
                 return true
         return false
     }
-    // The part of an item that can be seen: inside every clipping ancestor and the window.
+    // The part of an item that can be seen: inside every clipping ancestor and the window
+    // (scene coordinates: the whole window, title bar included).
     function visibleRect(item, window) {
         let r = item.mapToItem(null, 0, 0, item.width, item.height)
         let left = Math.max(0, r.x), top = Math.max(0, r.y)
@@ -53,6 +64,12 @@ TestCase {
         }
         return right > left && bottom > top ? Qt.rect(left, top, right - left, bottom - top) : null
     }
+    function scrolls(item) {
+        for (let p = item.parent; p; p = p.parent)
+            if (typeof p.contentY === "number" && typeof p.flick === "function")
+                return true
+        return false
+    }
     function walk(item, visit) {
         visit(item)
         for (const child of item.children)
@@ -62,8 +79,9 @@ TestCase {
     function test_everyShippedConsoleFitsEveryScreen_data() {
         const rows = []
         for (const file of consoles)
-            for (const size of sizes)
-                rows.push({ tag: file + " " + size.width + "x" + size.height, file: file, size: size })
+            for (const screen of screens)
+                rows.push({ tag: file + " " + screen.name + " " + screen.size.width + "x" + screen.size.height,
+                            file: file, size: screen.size, inches: screen.inches })
         return rows
     }
     function initTestCase() {
@@ -75,6 +93,7 @@ TestCase {
         Fixtures.treeModel.sync()
     }
     function test_everyShippedConsoleFitsEveryScreen(row) {
+        Theme.knownPixelsPerMm = Theme.densityOf(row.inches, row.size.width, row.size.height)
         const window = createTemporaryObject(mainComponent, test, {
             consoleUrl: "file://" + Fixtures.sourceDir() + "/qml/consoles/" + row.file,
             session: Fixtures.session, width: row.size.width, height: row.size.height })
@@ -92,9 +111,15 @@ TestCase {
             if (r.x < -0.5 || r.y < -0.5 || r.x + r.width > row.size.width + 0.5 || r.y + r.height > row.size.height + 0.5)
                 problems.push(String(component).split("(")[0] + " at " + r + " leaves the window")
             walk(component, item => {
-                if (!interactive(item) || !visibleRect(item, window.contentItem))
+                const seen = interactive(item) ? visibleRect(item, window) : null
+                if (!seen)
                     return
                 ++checked
+                // Wholly in view, unless it scrolls into view (inside a Flickable or a list).
+                if ((seen.width < item.width - 1 || seen.height < item.height - 1) && !scrolls(item))
+                    problems.push(String(item).split("(")[0] + " '" + (item.objectName || item.text || "") + "' in "
+                                  + String(component).split("(")[0] + " is cut: " + seen.width.toFixed(0) + " × "
+                                  + seen.height.toFixed(0) + " of " + item.width.toFixed(0) + " × " + item.height.toFixed(0) + " px seen")
                 if (item.width < min || item.height < min)
                     problems.push(String(item).split("(")[0] + " '" + (item.objectName || item.text || "") + "' in "
                                   + String(component).split("(")[0] + " is " + (item.width / Theme.pixelsPerMm).toFixed(1)

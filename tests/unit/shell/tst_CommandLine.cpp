@@ -116,6 +116,12 @@ TEST(CommandLine, NamesWhatIsWrong)
     ASSERT_TRUE(line);
     EXPECT_EQ(line->restingRate, 2.0);
     EXPECT_EQ(line->displayRate, 20.0);
+    line = parse({QStringLiteral("--screen-inches"), QStringLiteral("10.1")});
+    ASSERT_TRUE(line);
+    EXPECT_EQ(line->screenInches, 10.1);
+    line = parse({QStringLiteral("--screen-inches"), QStringLiteral("0.5")});
+    ASSERT_FALSE(line);
+    EXPECT_TRUE(line.error().contains(QStringLiteral("--screen-inches"))) << line.error().toStdString();
     line = parse({QStringLiteral("--resting-rate"), QStringLiteral("slow")});
     ASSERT_FALSE(line);
     EXPECT_TRUE(line.error().contains(QStringLiteral("--resting-rate"))) << line.error().toStdString();
