@@ -164,6 +164,8 @@ void PlanEditorModel::setDesk(PlanDeskModel *desk)
     if (desk)
         connect(desk, &PlanDeskModel::sharedChange, this, &PlanEditorModel::adoptShared);
     emit deskChanged();
+    if (!m_path.isEmpty())
+        changed(); // the mission came first: checked again against the desk's vehicle definitions
 }
 
 void PlanEditorModel::adoptShared()

@@ -315,7 +315,14 @@ TEST(Log, AKilledRecorderLosesAtMostTheLastSecondAndItsLogOpens)
         const QString folder = QDir(root.path()).filePath(QString::number(round));
         Child child;
         child.start({folder, QStringLiteral("20000"), QStringLiteral("30")});
-        QThread::msleep(300 + random->bounded(1200));
+        // Killed at a random moment once it records (on a busy machine starting
+        // can take longer than the shortest wait: nothing was written yet).
+        QElapsedTimer starting;
+        starting.start();
+        while (child.lastStatus().value(2).toLongLong() == 0 && starting.elapsed() < 20000) {
+        }
+        ASSERT_GT(child.lastStatus().value(2).toLongLong(), 0) << "round " << round << ": the recorder wrote nothing in 20 s";
+        QThread::msleep(random->bounded(1200));
         const double killedAt = QDateTime::currentMSecsSinceEpoch() / 1000.0;
         child.process.kill(); // SIGKILL
         child.process.waitForFinished();
