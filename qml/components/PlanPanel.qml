@@ -416,6 +416,25 @@ Rectangle {
         }
     }
     }
+    // Said when part of it is below (Send and Stop may be): a tap shows the rest.
+    Rectangle {
+        objectName: "moreBelow"
+        visible: upper.contentY + upper.height < upper.contentHeight - 1
+        anchors { horizontalCenter: upper.horizontalCenter; bottom: upper.bottom }
+        height: Theme.touchTarget
+        width: Math.min(upper.width, moreText.implicitWidth + Theme.spacing * 4)
+        radius: height / 2
+        color: Theme.accent
+        Text {
+            id: moreText
+            anchors.centerIn: parent
+            text: qsTr("▼ more")
+            color: Theme.background
+            font.pixelSize: Theme.smallFontPixelSize
+            font.bold: true
+        }
+        TapHandler { onTapped: upper.contentY = upper.contentHeight - upper.height }
+    }
     Column {
         id: commands
         anchors { left: parent.left; right: parent.right; top: upper.bottom; topMargin: Theme.spacing; leftMargin: Theme.spacing * 1.5; rightMargin: Theme.spacing * 1.5 }

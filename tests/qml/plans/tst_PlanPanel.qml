@@ -98,6 +98,29 @@ TestCase {
     // A console opened for a vehicle not heard yet asks it for its plans
     // once it is heard (the first look used to ask too early, and never again).
     Component { id: latePanel; PlanPanel { width: 420; height: 640; system: "lauv-sim-2" } }
+    // On a short panel (a small screen at its real density) Start and Abort stay wholly in view;
+    // the plans and their buttons scroll above them, and a cue says there is more.
+    Component { id: shortPanel; PlanPanel { width: 420; height: 260; system: "lauv-sim-1" } }
+    function test_2b_aShortPanelKeepsStartAndAbortInView() {
+        const p = createTemporaryObject(shortPanel, test)
+        const abort = findChild(p, "abort"), start = findChild(p, "start"), send = findChild(p, "send")
+        tryVerify(() => p.plans.length > 0, 3000)
+        waitForRendering(p)
+        for (const slide of [start, abort]) {
+            const r = slide.mapToItem(p, 0, 0, slide.width, slide.height)
+            verify(r.y >= 0 && r.y + r.height <= p.height, slide.objectName + " wholly in the panel: " + r)
+        }
+        const scroll = findChild(p, "planPanelScroll")
+        const more = findChild(p, "moreBelow")
+        verify(scroll.contentHeight > scroll.height, "the upper part scrolls: " + scroll.contentHeight + " in " + scroll.height)
+        verify(more.visible, "and says so")
+        const inView = () => { const r = send.mapToItem(scroll, 0, 0, send.width, send.height); return r.y >= 0 && r.y + r.height <= scroll.height + 0.5 }
+        verify(!inView(), "Send is below")
+        mouseClick(more)
+        tryVerify(inView, 2000, "a tap on the cue shows Send")
+        verify(!more.visible, "nothing more below")
+    }
+
     function test_3_aVehicleHeardLaterIsAskedThen() {
         const late = createTemporaryObject(latePanel, test)
         const empty = () => findChild(late, "plans").count === 0
