@@ -56,6 +56,15 @@ rlim_t cpuSecondsUsed()
     return rlim_t(s) + 1;
 }
 
+// The soft CPU-time limit, within the hard one.
+void setCpuLimit(rlim_t soft, rlim_t hard)
+{
+    if (hard != RLIM_INFINITY)
+        soft = std::min(soft, hard);
+    const rlimit limit{soft, hard};
+    setrlimit(RLIMIT_CPU, &limit);
+}
+
 bool readExactly(char *to, size_t size)
 {
     while (size > 0) {
@@ -99,7 +108,7 @@ QString editionOf(const QString &stylesheet)
 {
     QString edition;
     const QFileInfo info(stylesheet);
-    for (const QFileInfo &file : info.dir().entryInfoList(QDir::Files, QDir::Name))
+    for (const QFileInfo &file : info.dir().entryInfoList(QDir::Files | QDir::Hidden, QDir::Name))
         edition += file.fileName() + u' ' + QString::number(file.lastModified().toMSecsSinceEpoch()) + u' '
                    + QString::number(file.size()) + u'\n';
     return edition;
@@ -137,13 +146,19 @@ int main(int argc, char **argv)
 
     QHash<QString, Compiled> compiled;
     for (;;) {
-        // The request: the stylesheet, the input's name, CPU seconds, NAME=VALUE parameters, the input.
+        // The request: CPU seconds, the stylesheet, the input's name, NAME=VALUE parameters, the input.
         char count[4];
         if (!readExactly(count, 4))
             return 0; // the program closed its end
         const quint32 fields = wire::lengthOf(count);
         if (fields < 4 || fields > 1000)
             return 1;
+        // This translation's CPU time, its compile included: past it the kernel ends the process.
+        const auto seconds = readString(wire::maxFieldBytes);
+        if (!seconds)
+            return 1;
+        if (const rlim_t limit = rlim_t(seconds->toULongLong()); limit > 0)
+            setCpuLimit(cpuSecondsUsed() + limit, cpu.rlim_max);
         const auto stylesheet = readString(wire::maxFieldBytes);
         if (!stylesheet)
             return 1;
@@ -160,14 +175,16 @@ int main(int argc, char **argv)
             else
                 loadError = style.error().toString().toUtf8();
         }
-        QList<QByteArray> rest; // input name, CPU seconds, parameters..., input
-        for (quint32 i = 1; i < fields; ++i) {
+        QList<QByteArray> rest; // input name, parameters..., input
+        for (quint32 i = 2; i < fields; ++i) {
             auto field = readString(i + 1 == fields ? wire::maxInputBytes : wire::maxFieldBytes);
             if (!field)
                 return 1;
             rest.append(std::move(*field));
         }
         const auto answer = [&](wire::Status status, const QByteArray &payload) {
+            // No limit between translations (the next one sets its own).
+            setCpuLimit(cpu.rlim_max, cpu.rlim_max);
             return writeAll(wire::answer(status, cached, payload));
         };
         if (!loadError.isEmpty()) {
@@ -177,7 +194,7 @@ int main(int argc, char **argv)
         }
         QList<std::pair<QByteArray, QString>> parameters;
         QByteArray bad;
-        for (qsizetype i = 2; i + 1 < rest.size(); ++i) {
+        for (qsizetype i = 1; i + 1 < rest.size(); ++i) {
             const qsizetype equals = rest[i].indexOf('=');
             if (equals <= 0)
                 bad = "a parameter is NAME=VALUE, not '" + rest[i] + "'";
@@ -189,20 +206,12 @@ int main(int argc, char **argv)
                 return 1;
             continue;
         }
-        // This translation's CPU time from now: past it the kernel ends the process.
-        if (const rlim_t seconds = rlim_t(rest[1].toULongLong()); seconds > 0) {
-            rlim_t soft = cpuSecondsUsed() + seconds;
-            if (cpu.rlim_max != RLIM_INFINITY)
-                soft = std::min(soft, cpu.rlim_max);
-            const rlimit limit{soft, cpu.rlim_max};
-            setrlimit(RLIMIT_CPU, &limit);
-        }
         const auto output = compiled[path].stylesheet.apply(rest.last(), QString::fromUtf8(rest[0]), parameters);
         if (!output) {
-            const QString why = output.error().toString();
+            const QByteArray why = output.error().toString().toUtf8();
             // Out of memory: said, and then a fresh process for the next one.
-            const bool spent = why.contains(QStringLiteral("memory"), Qt::CaseInsensitive);
-            if (!answer(spent ? wire::Status::FailedAndEnding : wire::Status::Failed, why.toUtf8()) || spent)
+            const bool spent = wire::outOfMemory(why);
+            if (!answer(spent ? wire::Status::FailedAndEnding : wire::Status::Failed, why) || spent)
                 return 1;
             continue;
         }

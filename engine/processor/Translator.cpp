@@ -9,6 +9,7 @@
 #include <QRegularExpression>
 
 #include <algorithm>
+#include <array>
 #include <cerrno>
 #include <cstring>
 #include <mutex>
@@ -31,9 +32,9 @@ QString translatorHelper()
 
 namespace {
 
-// The one neptus-xslt helper of this program, talked to over a socket pair
-// (a helper that died makes a send fail, not a SIGPIPE). Callers take the
-// mutex: one translation at a time, from any thread.
+// A neptus-xslt helper of this program, talked to over a socket pair (a
+// helper that died makes a send fail, not a SIGPIPE). Callers take its
+// mutex: one translation at a time in it, from any thread.
 class Helper
 {
 public:
@@ -50,7 +51,8 @@ public:
 private:
     std::expected<void, QString> start(int megabytes);
     void stop(bool kill);
-    bool send(const QByteArray &bytes);
+    // Sends before the deadline: false when the helper ended or the deadline passed.
+    bool send(const QByteArray &bytes, const QElapsedTimer &clock, qint64 deadlineMs);
     // Reads `size` bytes before the deadline: false when the helper ended or the deadline passed.
     enum class Read { Done, Ended, Late };
     Read receive(char *to, size_t size, const QElapsedTimer &clock, qint64 deadlineMs);
@@ -62,10 +64,12 @@ private:
     int m_megabytes = -1;
 };
 
-Helper &helper()
+// Two, so that a translation on the GUI thread (a MAVLink plan sent) does not
+// wait behind an export on a worker; a third caller waits for the first free.
+std::array<Helper, 2> &helpers()
 {
-    static Helper one;
-    return one;
+    static std::array<Helper, 2> two;
+    return two;
 }
 
 std::expected<void, QString> Helper::start(int megabytes)
@@ -118,11 +122,20 @@ void Helper::stop(bool kill)
     status.pid = 0;
 }
 
-bool Helper::send(const QByteArray &bytes)
+bool Helper::send(const QByteArray &bytes, const QElapsedTimer &clock, qint64 deadlineMs)
 {
     for (qsizetype sent = 0; sent < bytes.size();) {
-        const ssize_t n = ::send(m_socket, bytes.constData() + sent, size_t(bytes.size() - sent), MSG_NOSIGNAL);
-        if (n < 0 && errno == EINTR)
+        const qint64 left = deadlineMs - clock.elapsed();
+        if (left <= 0)
+            return false;
+        pollfd p{m_socket, POLLOUT, 0};
+        const int ready = ::poll(&p, 1, int(std::min<qint64>(left, 1000)));
+        if (ready < 0 && errno != EINTR)
+            return false;
+        if (ready <= 0)
+            continue;
+        const ssize_t n = ::send(m_socket, bytes.constData() + sent, size_t(bytes.size() - sent), MSG_NOSIGNAL | MSG_DONTWAIT);
+        if (n < 0 && (errno == EINTR || errno == EAGAIN))
             continue;
         if (n <= 0)
             return false;
@@ -176,27 +189,35 @@ std::expected<QByteArray, xml::XmlError> Helper::translate(const QString &styles
     const auto failure = [&](const QString &why) { return std::unexpected(xml::XmlError{stylesheet, 0, 0, why}); };
     QElapsedTimer clock;
     clock.start();
-    // The stylesheet first: the helper compiles it (or finds it compiled) while the input is made.
+    const qint64 deadlineMs = qint64(limits.seconds) * 1000 + 500;
+    // The time limit and the stylesheet first: the helper compiles it (or
+    // finds it compiled), within the limit, while the input is made.
     QByteArray head;
     wire::appendLength(head, quint32(4 + parameters.size()));
-    head += wire::field(stylesheet.toUtf8());
+    head += wire::field(QByteArray::number(limits.seconds)) + wire::field(stylesheet.toUtf8());
     bool sent = false;
     for (int attempt = 0; attempt < 2 && !sent; ++attempt) {
         if (auto started = start(limits.megabytes); !started)
             return failure(started.error());
-        sent = send(head);
+        sent = send(head, clock, deadlineMs);
         if (!sent)
             stop(true); // it had ended since the last translation: another
     }
     if (!sent)
         return failure(QStringLiteral("%1 ended before it was given the translation").arg(translatorHelper()));
-    QByteArray rest = wire::field(inputName.toUtf8()) + wire::field(QByteArray::number(limits.seconds));
+    // Whatever leaves this exchange half done (an exception making the input) ends the helper with it.
+    struct Unfinished
+    {
+        Helper *helper;
+        ~Unfinished() { if (helper) helper->stop(true); }
+    } unfinished{this};
+    QByteArray rest = wire::field(inputName.toUtf8());
     for (const auto &[name, value] : parameters)
         rest += wire::field(name + '=' + value.toUtf8());
     rest += wire::field(makeInput());
-    const qint64 deadlineMs = qint64(limits.seconds) * 1000 + 500;
     char header[6];
-    Read read = send(rest) ? receive(header, sizeof header, clock, deadlineMs) : Read::Ended;
+    Read read = send(rest, clock, deadlineMs) ? receive(header, sizeof header, clock, deadlineMs)
+                                              : clock.elapsed() >= deadlineMs ? Read::Late : Read::Ended;
     if (read == Read::Late) {
         stop(true);
         return failure(QStringLiteral("stopped: it ran longer than its %1 s limit").arg(limits.seconds));
@@ -207,7 +228,7 @@ std::expected<QByteArray, xml::XmlError> Helper::translate(const QString &styles
     if (header[1] == 0)
         ++status.compiled;
     const quint32 length = wire::lengthOf(header + 2);
-    if (length > quint32(limits.megabytes) * 1024u * 1024u) {
+    if (qint64(length) > qint64(limits.megabytes) * 1024 * 1024) {
         stop(true);
         return failure(QStringLiteral("stopped: its output passed %1 MB").arg(limits.megabytes));
     }
@@ -219,13 +240,14 @@ std::expected<QByteArray, xml::XmlError> Helper::translate(const QString &styles
     }
     if (read == Read::Ended)
         return failure(whyEnded(clock, limits));
+    unfinished.helper = nullptr;
     ++status.translations;
     if (answered == wire::Status::Done)
         return payload;
     if (answered == wire::Status::FailedAndEnding)
         stop(false);
     const QString errors = QString::fromUtf8(payload).trimmed();
-    if (answered == wire::Status::FailedAndEnding || errors.contains(QStringLiteral("out of memory"), Qt::CaseInsensitive))
+    if (answered == wire::Status::FailedAndEnding)
         return failure(QStringLiteral("stopped: it used more than its %1 MB of memory (%2)").arg(limits.megabytes).arg(errors));
     // "file:line:column: message" or "file: message", as Stylesheet reports it.
     static const QRegularExpression located(QStringLiteral(R"(^(.*?)(?::(\d+))?(?::(\d+))?: (.*)$)"),
@@ -252,16 +274,29 @@ std::expected<QByteArray, xml::XmlError> translate(const QString &stylesheet, co
                                                    const QList<std::pair<QByteArray, QString>> &parameters,
                                                    TranslateLimits limits)
 {
-    Helper &h = helper();
-    const std::lock_guard lock(h.mutex);
-    return h.translate(stylesheet, makeInput, inputName, parameters, limits);
+    // The first free helper; all busy: wait for the first.
+    for (Helper &h : helpers()) {
+        std::unique_lock lock(h.mutex, std::try_to_lock);
+        if (lock.owns_lock())
+            return h.translate(stylesheet, makeInput, inputName, parameters, limits);
+    }
+    Helper &first = helpers().front();
+    const std::lock_guard lock(first.mutex);
+    return first.translate(stylesheet, makeInput, inputName, parameters, limits);
 }
 
 TranslatorStatus translatorStatus()
 {
-    Helper &h = helper();
-    const std::lock_guard lock(h.mutex);
-    return h.status;
+    TranslatorStatus all;
+    for (Helper &h : helpers()) {
+        const std::lock_guard lock(h.mutex);
+        if (&h == &helpers().front())
+            all.pid = h.status.pid;
+        all.started += h.status.started;
+        all.compiled += h.status.compiled;
+        all.translations += h.status.translations;
+    }
+    return all;
 }
 
 } // namespace neptus::processor

@@ -18,8 +18,9 @@ namespace neptus::processor {
 // it. Past `seconds` (wall clock, and as much CPU time) or `megabytes` of
 // address space the helper is stopped and the error says which limit.
 //
-// The helper is started at the first translation and kept (one for the
-// whole program, translations one after the other), with the stylesheets it
+// The helper is started at the first translation and kept for the whole
+// program (two, so a translation on the GUI thread does not wait behind an
+// export; translations one after the other in each), with the stylesheets it
 // compiled: a translation pays neither the start nor the compile (14-18 ms
 // each, issue #39). A stylesheet is compiled again when a file of its folder
 // changes. A helper that was stopped, crashed or ended is replaced at the
@@ -48,8 +49,8 @@ QString translatorHelper();
 // What the helper did so far (for tests and benchmarks).
 struct TranslatorStatus
 {
-    qint64 pid = 0;        // the helper running now (0: none)
-    int started = 0;       // helpers started
+    qint64 pid = 0;        // the first helper, the one used when none is busy (0: not running)
+    int started = 0;       // helpers started (these counts: both helpers')
     int compiled = 0;      // stylesheets compiled (not found compiled)
     int translations = 0;  // answers received
 };

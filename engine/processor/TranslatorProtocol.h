@@ -8,8 +8,9 @@
 // helper say to each other over the helper's standard input and output.
 //
 // A request: a 4-byte count of fields, then each field as a 4-byte length
-// and its bytes: the stylesheet's path, the input's name (for errors), the
-// CPU seconds the translation may take, NAME=VALUE parameters, the input.
+// and its bytes: the CPU seconds the translation may take (its compile
+// included), the stylesheet's path, the input's name (for errors),
+// NAME=VALUE parameters, the input.
 // An answer: a status byte, a byte that is 1 when the stylesheet was found
 // compiled, a 4-byte length and the output or the error's text.
 // Lengths are big-endian.
@@ -20,6 +21,12 @@ enum class Status : quint8 {
     Failed = 1,          // the error's text follows; the helper goes on
     FailedAndEnding = 2, // the same, and the helper ends (out of memory)
 };
+
+// How libxml2 and libxslt say that an allocation failed (xmlMemoryError, xsltTransformError).
+inline bool outOfMemory(const QByteArray &error)
+{
+    return error.contains("Memory allocation failed") || error.contains("out of memory");
+}
 
 constexpr quint32 maxFieldBytes = 1024 * 1024;
 constexpr quint32 maxInputBytes = 1024u * 1024 * 1024;

@@ -196,3 +196,28 @@ TEST(Translator, ManyThreadsAtOnceEachGetTheirOwnAnswer)
         thread.join();
     EXPECT_EQ(right.load(), 40);
 }
+
+// A translation on the GUI thread (a MAVLink plan sent) does not wait behind
+// a long one on a worker (an export): the second goes to the second helper.
+TEST(Translator, AShortTranslationDoesNotWaitBehindALongOne)
+{
+    QTemporaryDir dir;
+    const QString spin = writeStylesheet(dir, QStringLiteral("spin.xsl"), R"X(<xsl:template match="/"><done><xsl:call-template name="t"><xsl:with-param name="n" select="22"/></xsl:call-template></done></xsl:template>
+<xsl:template name="t"><xsl:param name="n"/><xsl:if test="$n &gt; 0"><xsl:call-template name="t"><xsl:with-param name="n" select="$n - 1"/></xsl:call-template><xsl:call-template name="t"><xsl:with-param name="n" select="$n - 1"/></xsl:call-template></xsl:if></xsl:template>)X");
+    const QString quick = writeStylesheet(dir, QStringLiteral("quick.xsl"), R"X(<xsl:output method="text"/>
+<xsl:template match="/plan"><xsl:value-of select="@id"/></xsl:template>)X");
+    std::atomic<bool> longDone = false;
+    std::thread worker([&] {
+        const auto out = translate(spin, plan, QStringLiteral("plan.xml"), {}, TranslateLimits{30, 1024});
+        EXPECT_TRUE(out) << out.error().toString().toStdString();
+        longDone = true;
+    });
+    QTest::qWait(300); // the long one is under way
+    ASSERT_FALSE(longDone.load()) << "2^22 template calls take longer than 300 ms";
+    const auto out = translate(quick, plan, QStringLiteral("plan.xml"));
+    const bool longWasStillRunning = !longDone.load();
+    worker.join();
+    ASSERT_TRUE(out) << out.error().toString().toStdString();
+    EXPECT_EQ(*out, QByteArray("survey"));
+    EXPECT_TRUE(longWasStillRunning) << "the short translation was answered while the long one ran";
+}
