@@ -81,7 +81,10 @@ Rectangle {
         id: upper
         objectName: "planPanelScroll"
         anchors { left: parent.left; right: parent.right; top: parent.top; margins: Theme.spacing * 1.5 }
-        height: Math.max(0, Math.min(content.implicitHeight, panel.height - commands.implicitHeight - Theme.spacing * 4.5))
+        // When it does not all fit, the cue below says so (it covers nothing).
+        readonly property real room: Math.max(0, panel.height - commands.implicitHeight - Theme.spacing * 4.5)
+        readonly property bool overflowing: content.implicitHeight > room
+        height: overflowing ? Math.max(0, room - Theme.touchTarget - Theme.spacing) : content.implicitHeight
         contentHeight: content.implicitHeight
         interactive: contentHeight > height
         boundsBehavior: Flickable.StopAtBounds
@@ -416,11 +419,12 @@ Rectangle {
         }
     }
     }
-    // Said when part of it is below (Send and Stop may be): a tap shows the rest.
+    // Said when part of it is out of view (Send and Stop may be): a tap shows the rest, or the top again.
     Rectangle {
         objectName: "moreBelow"
-        visible: upper.contentY + upper.height < upper.contentHeight - 1
-        anchors { horizontalCenter: upper.horizontalCenter; bottom: upper.bottom }
+        visible: upper.overflowing
+        readonly property bool atEnd: upper.contentY + upper.height >= upper.contentHeight - 1
+        anchors { horizontalCenter: upper.horizontalCenter; top: upper.bottom; topMargin: Theme.spacing / 2 }
         height: Theme.touchTarget
         width: Math.min(upper.width, moreText.implicitWidth + Theme.spacing * 4)
         radius: height / 2
@@ -428,16 +432,17 @@ Rectangle {
         Text {
             id: moreText
             anchors.centerIn: parent
-            text: qsTr("▼ more")
+            text: parent.atEnd ? qsTr("▲ top") : qsTr("▼ more")
             color: Theme.background
             font.pixelSize: Theme.smallFontPixelSize
             font.bold: true
         }
-        TapHandler { onTapped: upper.contentY = upper.contentHeight - upper.height }
+        TapHandler { onTapped: upper.contentY = parent.atEnd ? 0 : upper.contentHeight - upper.height }
     }
     Column {
         id: commands
-        anchors { left: parent.left; right: parent.right; top: upper.bottom; topMargin: Theme.spacing; leftMargin: Theme.spacing * 1.5; rightMargin: Theme.spacing * 1.5 }
+        anchors { left: parent.left; right: parent.right; top: upper.bottom; leftMargin: Theme.spacing * 1.5; rightMargin: Theme.spacing * 1.5
+                  topMargin: upper.overflowing ? Theme.touchTarget + Theme.spacing * 1.5 : Theme.spacing }
         spacing: Theme.spacing
         SlideToConfirm {
             id: startSlide

@@ -61,13 +61,13 @@ TestCase {
     function test_1_sendThenStartThenAbort() {
         panel.revision++ // the first look asks the vehicle
         tryVerify(() => syncOf("survey") === "absent", 2000, "the mission's plan, not on the vehicle: " + syncOf("survey"))
-        mouseClick(findChild(panel, "plan-survey"))
+        mouseClick(reveal(findChild(panel, "plan-survey")))
         compare(panel.selected, "survey")
         const start = findChild(panel, "start")
         verify(!start.enabled, "not startable before it is sent")
         verify(start.text.indexOf("Send survey before starting it") >= 0, start.text)
 
-        mouseClick(findChild(panel, "send"))
+        mouseClick(reveal(findChild(panel, "send")))
         tryVerify(() => syncOf("survey") === "same", 2000, syncOf("survey"))
         verify(start.enabled)
 
@@ -98,6 +98,22 @@ TestCase {
     // A console opened for a vehicle not heard yet asks it for its plans
     // once it is heard (the first look used to ask too early, and never again).
     Component { id: latePanel; PlanPanel { width: 420; height: 640; system: "lauv-sim-2" } }
+    // Scrolls the panel's upper part until `item` is wholly in view, as a finger would.
+    function reveal(item) {
+        let scroll = item.parent
+        while (scroll && scroll.objectName !== "planPanelScroll")
+            scroll = scroll.parent
+        if (scroll) {
+            const r = item.mapToItem(scroll.contentItem, 0, 0, item.width, item.height)
+            if (r.y < scroll.contentY)
+                scroll.contentY = r.y
+            else if (r.y + r.height > scroll.contentY + scroll.height)
+                scroll.contentY = r.y + r.height - scroll.height
+            waitForRendering(scroll)
+        }
+        return item
+    }
+
     // On a short panel (a small screen at its real density) Start and Abort stay wholly in view;
     // the plans and their buttons scroll above them, and a cue says there is more.
     Component { id: shortPanel; PlanPanel { width: 420; height: 260; system: "lauv-sim-1" } }
@@ -116,9 +132,13 @@ TestCase {
         verify(more.visible, "and says so")
         const inView = () => { const r = send.mapToItem(scroll, 0, 0, send.width, send.height); return r.y >= 0 && r.y + r.height <= scroll.height + 0.5 }
         verify(!inView(), "Send is below")
+        const moreRect = more.mapToItem(p, 0, 0, more.width, more.height), scrollRect = scroll.mapToItem(p, 0, 0, scroll.width, scroll.height)
+        verify(moreRect.y >= scrollRect.y + scrollRect.height, "the cue covers nothing of what scrolls")
         mouseClick(more)
         tryVerify(inView, 2000, "a tap on the cue shows Send")
-        verify(!more.visible, "nothing more below")
+        verify(more.atEnd, "nothing more below")
+        mouseClick(more)
+        tryCompare(scroll, "contentY", 0, 2000, "and a tap goes back to the top")
     }
 
     function test_3_aVehicleHeardLaterIsAskedThen() {
@@ -158,9 +178,9 @@ TestCase {
         Fixtures.ingest("Voltage", 0x1f, { value: 23 })
         panel.revision++
         tryVerify(() => syncOf("survey") !== "", 2000)
-        mouseClick(findChild(panel, "plan-survey"))
+        mouseClick(reveal(findChild(panel, "plan-survey")))
         if (syncOf("survey") !== "same") {
-            mouseClick(findChild(panel, "send"))
+            mouseClick(reveal(findChild(panel, "send")))
             tryVerify(() => syncOf("survey") === "same", 2000, syncOf("survey"))
         }
         const list = findChild(panel, "checklist")
@@ -176,13 +196,13 @@ TestCase {
         tryVerify(() => battery.isChecked, 2000, "ticked by itself: " + battery.value)
         compare(list.done, 1)
         verify(!start.enabled)
-        mouseClick(findChild(panel, "checkItem:Hull closed"))
+        mouseClick(reveal(findChild(panel, "checkItem:Hull closed")))
         compare(list.done, 2)
         verify(start.enabled, "every item ticked")
         Fixtures.ingest("Voltage", 0x1f, { value: 31 })
         tryVerify(() => !battery.isChecked, 2000, "unticked when it leaves the range")
         verify(!start.enabled)
-        mouseClick(findChild(panel, "startAnyway"))
+        mouseClick(reveal(findChild(panel, "startAnyway")))
         verify(start.enabled)
         verify(start.text.indexOf("Start survey") === 0, start.text)
         // Another plan: the ticks by hand start again.
