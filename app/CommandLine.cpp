@@ -259,26 +259,25 @@ std::expected<CommandLine, QString> CommandLine::parse(const QStringList &argume
         if (!QFileInfo::exists(result.charts))
             return std::unexpected(QStringLiteral("--charts: '%1' does not exist").arg(parser.value(charts)));
     }
-    if (parser.isSet(safetyDepth)) {
+    // A number option within [lowest, highest] read into `to` (left as it is when not given), or why not.
+    const auto readNumber = [&parser](const QCommandLineOption &option, double lowest, double highest, const QString &what,
+                                      double &to) -> std::expected<void, QString> {
+        if (!parser.isSet(option))
+            return {};
         bool ok = false;
-        result.safetyDepth = parser.value(safetyDepth).toDouble(&ok);
-        if (!ok || !(result.safetyDepth >= 0 && result.safetyDepth <= 1000))
-            return std::unexpected(QStringLiteral("--safety-depth must be metres (0 to 1000), not '%1'").arg(parser.value(safetyDepth)));
-    }
-    if (parser.isSet(displayRate)) {
-        bool ok = false;
-        result.displayRate = parser.value(displayRate).toDouble(&ok);
-        if (!ok || !(result.displayRate >= 0 && result.displayRate <= 1000))
-            return std::unexpected(QStringLiteral("--display-rate must be updates a second (0 to 1000; 0: every frame), not '%1'")
-                                       .arg(parser.value(displayRate)));
-    }
-    if (parser.isSet(restingRate)) {
-        bool ok = false;
-        result.restingRate = parser.value(restingRate).toDouble(&ok);
-        if (!ok || !(result.restingRate >= 0 && result.restingRate <= 1000))
-            return std::unexpected(QStringLiteral("--resting-rate must be updates a second (0 to 1000; 0: as the display rate), not '%1'")
-                                       .arg(parser.value(restingRate)));
-    }
+        const double value = parser.value(option).toDouble(&ok);
+        if (!ok || !(value >= lowest && value <= highest))
+            return std::unexpected(QStringLiteral("--%1 must be %2, not '%3'").arg(option.names().constFirst(), what, parser.value(option)));
+        to = value;
+        return {};
+    };
+    for (const auto &read : {readNumber(safetyDepth, 0, 1000, QStringLiteral("metres (0 to 1000)"), result.safetyDepth),
+                             readNumber(displayRate, 0, 1000, QStringLiteral("updates a second (0 to 1000; 0: every frame)"), result.displayRate),
+                             readNumber(restingRate, 0, 1000, QStringLiteral("updates a second (0 to 1000; 0: as the display rate)"), result.restingRate),
+                             readNumber(screenInches, 3, 120, QStringLiteral("a screen's diagonal, 3 to 120 inches"), result.screenInches),
+                             readNumber(uiScale, 0.75, 2, QStringLiteral("a number from 0.75 to 2"), result.uiScale)})
+        if (!read)
+            return std::unexpected(read.error());
     result.logDirectory = parser.isSet(logDir) ? QFileInfo(parser.value(logDir)).absoluteFilePath() : QString();
     result.record = !parser.isSet(noRecord);
     if (parser.isSet(webPort)) {
@@ -343,19 +342,6 @@ std::expected<CommandLine, QString> CommandLine::parse(const QStringList &argume
         if (!file.isFile() || !file.isReadable())
             return std::unexpected(QStringLiteral("--gps: %1 is not a readable NMEA file (or serial:DEVICE, socket://HOST:PORT)").arg(result.gps));
         result.gps = file.absoluteFilePath();
-    }
-    if (parser.isSet(uiScale)) {
-        bool ok = false;
-        result.uiScale = parser.value(uiScale).toDouble(&ok);
-        if (!ok || result.uiScale < 0.75 || result.uiScale > 2)
-            return std::unexpected(QStringLiteral("--ui-scale must be a number from 0.75 to 2, not '%1'").arg(parser.value(uiScale)));
-    }
-    if (parser.isSet(screenInches)) {
-        bool ok = false;
-        result.screenInches = parser.value(screenInches).toDouble(&ok);
-        if (!ok || result.screenInches < 3 || result.screenInches > 120)
-            return std::unexpected(QStringLiteral("--screen-inches must be a screen's diagonal, 3 to 120 inches, not '%1'")
-                                       .arg(parser.value(screenInches)));
     }
     if (parser.isSet(size)) {
         static const QRegularExpression format(QStringLiteral("^(\\d{2,5})x(\\d{2,5})$"));
