@@ -312,13 +312,28 @@ ManeuverGeometry maneuverGeometry(const Maneuver &m, const Waypoint *previous, c
     return g;
 }
 
-PlanGeometry planGeometry(const Plan &plan, const SpeedModel &speeds)
+PlanGeometry planGeometry(const Plan &plan, const SpeedModel &speeds, PlanGeometryCache *cache)
 {
     PlanGeometry result;
     result.duration = 0.0;
     const Waypoint *previous = nullptr;
+    QHash<QString, PlanGeometryCache::Entry> kept; // what the cache holds after this plan
+    const bool sameSpeeds = cache && cache->m_speeds.metresPerSecondPerRpm == speeds.metresPerSecondPerRpm
+                            && cache->m_speeds.maxSpeed == speeds.maxSpeed && cache->m_speeds.defaultSpeed == speeds.defaultSpeed;
     for (const Maneuver *m : plan.executionOrder()) {
-        result.maneuvers.append(maneuverGeometry(*m, previous, speeds));
+        if (cache) {
+            const std::optional<std::pair<double, double>> from =
+                previous ? std::optional(std::pair(previous->lat, previous->lon)) : std::nullopt;
+            const auto found = cache->m_entries.constFind(m->id);
+            if (sameSpeeds && found != cache->m_entries.cend() && found->type == m->type && found->from == from
+                && found->parameters.isSharedWith(m->parameters) && found->points.isSharedWith(m->points))
+                result.maneuvers.append(found->geometry);
+            else
+                result.maneuvers.append(maneuverGeometry(*m, previous, speeds));
+            kept.insert(m->id, {m->type, m->parameters, m->points, from, result.maneuvers.last()});
+        } else {
+            result.maneuvers.append(maneuverGeometry(*m, previous, speeds));
+        }
         const ManeuverGeometry &g = result.maneuvers.last();
         if (!g.points.isEmpty())
             previous = &g.points.last();
@@ -334,6 +349,10 @@ PlanGeometry planGeometry(const Plan &plan, const SpeedModel &speeds)
             raise(result.maxAltitude);
         else if (g.zUnits == u"HEIGHT")
             raise(result.maxHeight);
+    }
+    if (cache) {
+        cache->m_entries = std::move(kept);
+        cache->m_speeds = speeds;
     }
     return result;
 }

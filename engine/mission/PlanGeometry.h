@@ -2,7 +2,9 @@
 
 #include "mission/Mission.h"
 
+#include <QHash>
 #include <QList>
+#include <QMap>
 #include <QString>
 
 #include <optional>
@@ -67,7 +69,27 @@ struct PlanGeometry
 // there); none for the first.
 ManeuverGeometry maneuverGeometry(const Maneuver &maneuver, const Waypoint *previous = nullptr,
                                   const SpeedModel &speeds = {});
-PlanGeometry planGeometry(const Plan &plan, const SpeedModel &speeds = {});
+// What planGeometry worked out for each maneuver the last time, for a plan
+// edited a maneuver at a time (the plan editor: a drag moves one of a
+// thousand). A maneuver whose parameters and points are still the very ones
+// it was worked out from (implicitly shared: a pointer test, no comparing),
+// entered from the same point at the same speeds, is not worked out again.
+class PlanGeometryCache
+{
+    friend PlanGeometry planGeometry(const Plan &, const SpeedModel &, PlanGeometryCache *);
+    struct Entry
+    {
+        QString type;
+        QMap<QString, QString> parameters;
+        QList<PathPoint> points;
+        std::optional<std::pair<double, double>> from; // the previous maneuver's end (lat, lon)
+        ManeuverGeometry geometry;
+    };
+    QHash<QString, Entry> m_entries; // by maneuver id
+    SpeedModel m_speeds;
+};
+
+PlanGeometry planGeometry(const Plan &plan, const SpeedModel &speeds = {}, PlanGeometryCache *cache = nullptr);
 
 // Patterns IMC has no maneuver for: their points are worked out here, metres
 // north (x) and east (y) of the maneuver's position, and the IMC translation

@@ -45,7 +45,12 @@ QString severityName(PlanProblem::Severity s) { return s == PlanProblem::Severit
 
 } // namespace
 
-PlanEditorModel::PlanEditorModel(QObject *parent) : QObject(parent) {}
+PlanEditorModel::PlanEditorModel(QObject *parent)
+    : QObject(parent),
+      m_maneuverRows(new RowModel({u"maneuver"_s, u"type"_s, u"lat"_s, u"lon"_s, u"severity"_s, u"arrival"_s}, this)),
+      m_parameters(new RowModel({u"name"_s, u"value"_s, u"unit"_s, u"type"_s, u"min"_s, u"max"_s, u"values"_s, u"problem"_s}, this))
+{
+}
 
 const VehicleCatalog &PlanEditorModel::vehicles() const
 {
@@ -198,11 +203,14 @@ void PlanEditorModel::setCharts(ChartWatch *charts)
 void PlanEditorModel::changed()
 {
     m_pathPoints.clear();
+    m_profileRuns.clear();
+    m_profileTop.clear();
+    m_profileLength = 1;
     m_problems.clear();
     m_geometry = {};
     if (const Plan *p = plan()) {
         const VehicleDefinition *v = vehicles().find(p->vehicle);
-        m_geometry = planGeometry(*p, v ? v->speeds() : SpeedModel{});
+        m_geometry = planGeometry(*p, v ? v->speeds() : SpeedModel{}, &m_geometryCache);
         m_problems = checkPlan(*p, m_mission, m_geometry, v);
         if (m_charts && m_charts->cells()) {
             m_problems += neptus::charts::checkAgainstCharts(m_geometry, v, *m_charts->cells());
@@ -222,15 +230,25 @@ void PlanEditorModel::changed()
             }
         }
         double along = 0;
+        QString unit;
         for (const ManeuverGeometry &g : m_geometry.maneuvers) {
             for (const Waypoint &w : g.points) {
                 along += w.leg;
                 m_pathPoints.append(QVariantMap{{u"lat"_s, w.lat}, {u"lon"_s, w.lon}, {u"maneuver"_s, g.id},
                                                 {u"distance"_s, along}, {u"z"_s, w.z}, {u"zUnits"_s, w.zUnits}});
+                // The profile: a new run where the units change.
+                QList<QList<QPointF>> &runs = m_profileRuns[w.zUnits];
+                if (w.zUnits != unit || runs.isEmpty())
+                    runs.append(QList<QPointF>());
+                unit = w.zUnits;
+                runs.last().append(QPointF(along, w.z));
+                m_profileTop[w.zUnits] = std::max(m_profileTop.value(w.zUnits, 1.0), w.z);
             }
         }
+        m_profileLength = std::max(1.0, along);
     }
-    m_maneuverList = maneuverList();
+    m_maneuverRows->setRows(maneuverRowsNow());
+    m_parameters->setRows(parameterRows(m_selected));
     const auto same = [](const PlanProblem &a, const PlanProblem &b) {
         return a.severity == b.severity && a.kind == b.kind && a.maneuver == b.maneuver && a.message == b.message && a.lat == b.lat
             && a.lon == b.lon;
@@ -247,12 +265,12 @@ void PlanEditorModel::changed()
         emit problemsChanged();
 }
 
-QVariantList PlanEditorModel::maneuverList() const
+QList<RowModel::Row> PlanEditorModel::maneuverRowsNow() const
 {
-    QVariantList list;
+    QList<RowModel::Row> rows;
     const Plan *p = plan();
     if (!p)
-        return list;
+        return rows;
     QHash<QString, QString> worst;
     for (const PlanProblem &problem : m_problems) {
         if (!problem.maneuver.isEmpty() && !worst.contains(problem.maneuver))
@@ -269,12 +287,79 @@ QVariantList PlanEditorModel::maneuverList() const
         arrival.insert(g.id, elapsed + transit);
         elapsed = g.duration ? elapsed + *g.duration : -1;
     }
-    for (qsizetype i = 0; i < p->maneuvers.size(); ++i) {
-        const Maneuver &m = p->maneuvers[i];
-        list.append(QVariantMap{{u"id"_s, m.id}, {u"type"_s, m.type}, {u"lat"_s, m.number(u"lat"_s)}, {u"lon"_s, m.number(u"lon"_s)},
-                                {u"index"_s, int(i)}, {u"severity"_s, worst.value(m.id)}, {u"arrival"_s, arrival.value(m.id, -1)}});
+    rows.reserve(p->maneuvers.size());
+    for (const Maneuver &m : p->maneuvers) {
+        // In the order of the roles.
+        rows.append(RowModel::Row{m.id, m.type, m.number(u"lat"_s), m.number(u"lon"_s), worst.value(m.id), arrival.value(m.id, -1)});
+    }
+    return rows;
+}
+
+QVariantMap PlanEditorModel::profile() const
+{
+    QStringList units;
+    QVariantMap top;
+    for (const QString &unit : {u"DEPTH"_s, u"ALTITUDE"_s, u"HEIGHT"_s}) {
+        if (m_profileRuns.contains(unit)) {
+            units << unit;
+            top.insert(unit, m_profileTop.value(unit, 1.0));
+        }
+    }
+    return {{u"units"_s, units}, {u"top"_s, top}};
+}
+
+QVariant PlanEditorModel::profileLines(const QString &unit) const
+{
+    QList<QList<QPointF>> lines = m_profileRuns.value(unit);
+    const double top = m_profileTop.value(unit, 1.0);
+    const bool down = unit == u"DEPTH"_s;
+    for (QList<QPointF> &line : lines) {
+        for (QPointF &p : line) {
+            const double f = std::max(0.0, p.y()) / top;
+            p = QPointF(p.x() / m_profileLength, down ? f : 1 - f);
+        }
+    }
+    return QVariant::fromValue(lines);
+}
+
+QVariantList PlanEditorModel::maneuvers() const
+{
+    QVariantList list;
+    for (int i = 0; i < m_maneuverRows->count(); ++i) {
+        QVariantMap m = m_maneuverRows->get(i);
+        m.insert(u"id"_s, m.take(u"maneuver"_s));
+        m.insert(u"index"_s, int(i));
+        list.append(m);
     }
     return list;
+}
+
+void PlanEditorModel::setSelected(const QString &id)
+{
+    if (id == m_selected)
+        return;
+    m_selected = id;
+    m_parameters->setRows(parameterRows(id));
+    emit selectedChanged();
+}
+
+QString PlanEditorModel::maneuverNear(double lat, double lon, double metres) const
+{
+    // Metres on a plane at this latitude (taps are a few metres across).
+    using neptus::geo::radians;
+    constexpr double earth = 6371000;
+    const double east = earth * std::cos(radians(lat));
+    QString nearest;
+    double best = metres;
+    const int latColumn = m_maneuverRows->column(u"lat"_s), lonColumn = m_maneuverRows->column(u"lon"_s);
+    for (const RowModel::Row &row : m_maneuverRows->rows()) {
+        const double d = std::hypot(radians(row[latColumn].toDouble() - lat) * earth, radians(row[lonColumn].toDouble() - lon) * east);
+        if (d <= best) {
+            best = d;
+            nearest = row.first().toString();
+        }
+    }
+    return nearest;
 }
 
 QVariantList PlanEditorModel::problemList() const
@@ -830,6 +915,18 @@ bool PlanEditorModel::setParameter(const QString &id, const QString &name, const
 QVariantList PlanEditorModel::parametersOf(const QString &id) const
 {
     QVariantList list;
+    for (const RowModel::Row &row : parameterRows(id)) {
+        QVariantMap map;
+        for (const QString &role : {u"name"_s, u"value"_s, u"unit"_s, u"type"_s, u"min"_s, u"max"_s, u"values"_s, u"problem"_s})
+            map.insert(role, row.value(m_parameters->column(role)));
+        list.append(map);
+    }
+    return list;
+}
+
+QList<RowModel::Row> PlanEditorModel::parameterRows(const QString &id) const
+{
+    QList<RowModel::Row> list;
     const Plan *p = plan();
     const Maneuver *m = p ? p->maneuver(id) : nullptr;
     if (!m)
@@ -847,17 +944,15 @@ QVariantList PlanEditorModel::parametersOf(const QString &id) const
     QStringList listed;
     if (spec) {
         for (const ParameterSpec &ps : spec->parameters) {
-            list.append(QVariantMap{{u"name"_s, ps.name}, {u"value"_s, m->text(ps.name, ps.defaultValue)}, {u"unit"_s, ps.unit},
-                                    {u"type"_s, ps.type}, {u"min"_s, ps.min.value_or(none)}, {u"max"_s, ps.max.value_or(none)},
-                                    {u"values"_s, ps.values}, {u"problem"_s, problemOf(ps.name)}});
+            list.append(RowModel::Row{ps.name, m->text(ps.name, ps.defaultValue), ps.unit, ps.type, ps.min.value_or(none),
+                                      ps.max.value_or(none), ps.values, problemOf(ps.name)});
             listed << ps.name;
         }
     }
     for (auto it = m->parameters.cbegin(); it != m->parameters.cend(); ++it) {
         if (listed.contains(it.key()))
             continue;
-        list.append(QVariantMap{{u"name"_s, it.key()}, {u"value"_s, it.value()}, {u"unit"_s, QString()}, {u"type"_s, u"text"_s},
-                                {u"min"_s, none}, {u"max"_s, none}, {u"values"_s, QStringList()}, {u"problem"_s, problemOf(it.key())}});
+        list.append(RowModel::Row{it.key(), it.value(), QString(), u"text"_s, none, none, QStringList(), problemOf(it.key())});
     }
     return list;
 }
@@ -951,7 +1046,7 @@ QVariantList PlanEditorModel::nodes() const
         if (!column.contains(m.id))
             walk(m.id);
     QHash<int, int> rows;
-    for (const QVariant &v : m_maneuverList) {
+    for (const QVariant &v : maneuvers()) {
         QVariantMap node = v.toMap();
         const QString id = node.value(u"id"_s).toString();
         const int c = column.value(id);

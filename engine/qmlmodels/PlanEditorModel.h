@@ -6,12 +6,14 @@
 #include "mission/Vehicle.h"
 #include "qmlmodels/ChartWatch.h"
 #include "qmlmodels/PlanDeskModel.h"
+#include "qmlmodels/RowModel.h"
 #include "models/ModelImport.h"
 #include "models/Seabed.h"
 #include "scripting/ScriptRunner.h"
 
 #include <QObject>
 #include <QPointer>
+#include <QPointF>
 
 #include <memory>
 #include <optional>
@@ -37,12 +39,25 @@ class PlanEditorModel : public QObject
     Q_PROPERTY(QString vehicle READ vehicle NOTIFY planChanged)
     // The maneuvers its vehicle can do (its definition's; every known type without one).
     Q_PROPERTY(QStringList maneuverTypes READ maneuverTypes NOTIFY planChanged)
-    // [{id, type, lat, lon, index, severity: "error" | "warning" | "", arrival
-    // (seconds from the start when the vehicle gets there; -1: never)}], in plan order.
+    // The maneuvers in plan order, for views (rows told by the row, so a
+    // view of a thousand keeps its delegates through an edit): roles
+    // maneuver (its id), type, lat, lon, severity ("error" | "warning" | ""),
+    // arrival (seconds from the start when the vehicle gets there; -1: never).
+    Q_PROPERTY(RowModel *maneuverRows READ maneuverRows CONSTANT)
+    // The same as a list, made when read (tests, scripts):
+    // [{id, type, lat, lon, index, severity, arrival}].
     Q_PROPERTY(QVariantList maneuvers READ maneuvers NOTIFY edited)
+    // The maneuver the operator works on ("": none) and its parameters, by the row:
+    // roles name, value, unit, type, min, max (NaN: none), values, problem.
+    Q_PROPERTY(QString selected READ selected WRITE setSelected NOTIFY selectedChanged)
+    Q_PROPERTY(RowModel *parameters READ parameters CONSTANT)
     // Every point the vehicle will pass, transits included, in execution
     // order: [{lat, lon, maneuver, distance (m along the plan), z, zUnits}].
     Q_PROPERTY(QVariantList path READ path NOTIFY edited)
+    // The profile along the path: {units: the z units it uses, of DEPTH,
+    // ALTITUDE, HEIGHT; top: {unit: its highest z (at least 1 m)}}; each
+    // unit's lines by profileLines().
+    Q_PROPERTY(QVariantMap profile READ profile NOTIFY edited)
     // [{severity: "error" | "warning", kind, maneuver, message, lat, lon (NaN: none)}], worst first.
     // Said changed only when it is (a list views rebuild whole: an edit that
     // left the problems as they were recreated the rows under the finger).
@@ -100,8 +115,21 @@ public:
     void setPlanId(const QString &id);
     QString vehicle() const;
     QStringList maneuverTypes() const;
-    QVariantList maneuvers() const { return m_maneuverList; }
+    RowModel *maneuverRows() const { return m_maneuverRows; }
+    QVariantList maneuvers() const;
+    QString selected() const { return m_selected; }
+    void setSelected(const QString &id);
+    RowModel *parameters() const { return m_parameters; }
+    // The maneuver drawn nearest to lat/lon within `metres` ("" when none is).
+    Q_INVOKABLE QString maneuverNear(double lat, double lon, double metres) const;
     QVariantList path() const { return m_pathPoints; }
+    QVariantMap profile() const;
+    // One unit's stretches of the profile (broken where the plan changes
+    // units), as polygons in [0, 1] × [0, 1]: x the distance along the plan
+    // over its length, y the z over the unit's top (DEPTH drawn down from the
+    // top: y = z / top; ALTITUDE and HEIGHT up from the bottom: 1 - z / top).
+    // A QList<QList<QPointF>>, for a PathMultiline scaled to its Shape (no JavaScript per point).
+    Q_INVOKABLE QVariant profileLines(const QString &unit) const;
     QVariantList problems() const { return m_problemList; }
     QVariantList nodes() const;
     QVariantList transitions() const;
@@ -205,6 +233,7 @@ signals:
     void edited();
     void problemsChanged();
     void errorChanged();
+    void selectedChanged();
 
 private:
     neptus::mission::Plan *editable();
@@ -220,7 +249,8 @@ private:
     void checklistsEdited(); // told and shared; nothing else depends on them
     void missionReplaced();  // opened, or another console's: everything again
     void restore(neptus::mission::Mission mission); // undo, redo
-    QVariantList maneuverList() const;
+    QList<RowModel::Row> maneuverRowsNow() const;
+    QList<RowModel::Row> parameterRows(const QString &id) const;
     QVariantList problemList() const;
 
     QString m_path, m_planId, m_error;
@@ -231,12 +261,19 @@ private:
     QList<neptus::mission::Mission> m_undo, m_redo; // implicitly shared: a copy is cheap
     bool m_modified = false;
     neptus::mission::PlanGeometry m_geometry;
+    neptus::mission::PlanGeometryCache m_geometryCache; // a drag works out one maneuver again, not a thousand
     QList<neptus::mission::PlanProblem> m_problems;
     QList<neptus::mission::PlanProblem> m_shownProblems; // what m_problemList says
     // Conditions checked so far: compiling one takes milliseconds, a plan is checked on every edit.
     mutable QHash<QString, std::optional<neptus::scripting::CompileError>> m_conditionChecks;
     const std::optional<neptus::scripting::CompileError> &conditionProblem(const QString &condition) const;
-    QVariantList m_pathPoints, m_maneuverList, m_problemList, m_featureList; // made once per edit, read by every view
+    QVariantList m_pathPoints, m_problemList, m_featureList; // made once per edit, read by every view
+    RowModel *m_maneuverRows, *m_parameters;
+    // The profile: each unit's runs of (distance, z), made with the path.
+    QHash<QString, QList<QList<QPointF>>> m_profileRuns;
+    QHash<QString, double> m_profileTop;
+    double m_profileLength = 1;
+    QString m_selected;
     QVariantList m_otherPlans; // when the mission or the plan being edited changes
     QPointer<PlanDeskModel> m_desk;
     QPointer<ChartWatch> m_charts;

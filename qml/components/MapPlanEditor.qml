@@ -45,9 +45,12 @@ Item {
         }
     }
 
-    // The model's lists, read once per edit (each read of a C++ list makes a new JS array).
-    readonly property var maneuverList: planModel.maneuvers
+    // The maneuvers (an item model told by the row) and the problems (a
+    // list, read once per change: each read of a C++ list makes a new JS array).
+    readonly property RowModel maneuverRows: planModel.maneuverRows
     readonly property var problemList: planModel.problems
+    // A big plan is drawn as dots, with a marker for the selected maneuver only.
+    readonly property bool bigPlan: maneuverRows.count > markerLimit
 
     PlanEditorModel {
         id: planModel
@@ -55,6 +58,7 @@ Item {
         missionPath: Session.session ? Session.session.plans.missionPath : ""
         desk: Session.session ? Session.session.plans : null
         charts: Session.session ? Session.session.charts : null
+        selected: editor.selected
     }
 
     // A tap on the map: select the maneuver under it, else add one there or
@@ -77,12 +81,10 @@ Item {
             }
             return
         }
-        for (const m of maneuverList) {
-            const p = map.screenPoint(m.lat, m.lon)
-            if (Math.hypot(p.x - at.x, p.y - at.y) <= Theme.touchTarget / 2) {
-                selected = m.id
-                return
-            }
+        const near = planModel.maneuverNear(c.lat, c.lon, Theme.touchTarget / 2 * map.metresPerPixel)
+        if (near !== "") {
+            selected = near
+            return
         }
         if (tool === "area" || tool === "line") {
             area = area.concat([{ lat: c.lat, lon: c.lon }])
@@ -177,7 +179,7 @@ Item {
         zoomLevel: editor.map.zoomLevel
         bearing: editor.map.bearing
         path: planModel.path
-        maneuvers: editor.maneuverList.length > editor.markerLimit ? editor.maneuverList : []
+        maneuvers: editor.bigPlan ? editor.maneuverRows : null
         lineColor: editor.vehicleColour(planModel.vehicle)
         lineWidth: Math.max(2, Theme.mm(0.5))
         dotRadius: Theme.mm(1.6)
@@ -217,41 +219,64 @@ Item {
     }
     // A marker per maneuver: its number, coloured by its worst problem; drag
     // to move. A bigger plan has dots, and a marker for the selected one (a
-    // tap selects the maneuver under it either way).
-    Repeater {
-        model: editor.maneuverList.length > editor.markerLimit ? editor.maneuverList.filter(m => m.id === editor.selected)
-                                                                : editor.maneuverList
-        delegate: Rectangle {
-            id: marker
-            required property var modelData
-            readonly property point at: editor.map.screenPoint(modelData.lat, modelData.lon)
-            objectName: "maneuver:" + modelData.id
-            width: Theme.touchTarget * 0.8
-            height: width
-            radius: width / 2
-            x: at.x - width / 2
-            y: at.y - height / 2
-            color: modelData.severity === "error" ? Theme.levelColor(4) : modelData.severity === "warning" ? Theme.levelColor(3) : Theme.surface
-            border.color: editor.selected === modelData.id ? Theme.accent : Theme.text
-            border.width: editor.selected === modelData.id ? Theme.mm(0.8) : Theme.mm(0.3)
-            Text {
-                anchors.centerIn: parent
-                text: marker.modelData.index + 1
-                color: marker.modelData.severity !== "" ? Theme.background : Theme.text
-                font.pixelSize: Theme.smallFontPixelSize
-                font.bold: true
-            }
-            DragHandler {
-                target: marker
-                onActiveChanged: {
-                    if (active) {
-                        editor.selected = marker.modelData.id
-                        return
-                    }
-                    const c = editor.map.toCoordinate(marker.x + marker.width / 2, marker.y + marker.height / 2)
-                    planModel.moveManeuver(marker.modelData.id, c.lat, c.lon)
+    // tap selects the maneuver under it either way). A marker follows its
+    // row: an edit of another maneuver leaves it as it is.
+    component Marker: Rectangle {
+        id: marker
+        required property string maneuver
+        required property int index
+        required property real lat
+        required property real lon
+        required property string severity
+        readonly property point at: editor.map.screenPoint(lat, lon)
+        objectName: "maneuver:" + maneuver
+        width: Theme.touchTarget * 0.8
+        height: width
+        radius: width / 2
+        // Where the row says; a drag moves the marker, and the drop puts it back under the row's place.
+        function place(): void {
+            x = Qt.binding(() => at.x - width / 2)
+            y = Qt.binding(() => at.y - height / 2)
+        }
+        Component.onCompleted: place()
+        color: severity === "error" ? Theme.levelColor(4) : severity === "warning" ? Theme.levelColor(3) : Theme.surface
+        border.color: editor.selected === maneuver ? Theme.accent : Theme.text
+        border.width: editor.selected === maneuver ? Theme.mm(0.8) : Theme.mm(0.3)
+        Text {
+            anchors.centerIn: parent
+            text: marker.index + 1
+            color: marker.severity !== "" ? Theme.background : Theme.text
+            font.pixelSize: Theme.smallFontPixelSize
+            font.bold: true
+        }
+        DragHandler {
+            onActiveChanged: {
+                if (active) {
+                    editor.selected = marker.maneuver
+                    return
                 }
+                const c = editor.map.toCoordinate(marker.x + marker.width / 2, marker.y + marker.height / 2)
+                planModel.moveManeuver(marker.maneuver, c.lat, c.lon)
+                marker.place()
             }
+        }
+    }
+    Repeater {
+        model: editor.bigPlan ? null : editor.maneuverRows
+        delegate: Marker {}
+    }
+    // A big plan's selected maneuver (its row again after every change of rows).
+    Loader {
+        id: selectedMarker
+        readonly property int row: { editor.maneuverRows.revision; return editor.maneuverRows.indexOf(editor.selected) }
+        readonly property var values: { editor.maneuverRows.revision; return editor.maneuverRows.get(row) }
+        active: editor.bigPlan && row >= 0
+        sourceComponent: Marker {
+            maneuver: selectedMarker.values.maneuver
+            index: selectedMarker.row
+            lat: selectedMarker.values.lat
+            lon: selectedMarker.values.lon
+            severity: selectedMarker.values.severity
         }
     }
 
@@ -266,6 +291,9 @@ Item {
         color: Theme.surface
         border.color: Theme.border
         radius: Theme.radius
+        // Drawn once into a texture and reused while the map moves under it
+        // (the software renderer spent 5 ms a frame drawing its text again).
+        layer.enabled: true
         // Taps on the panel are the panel's, not the map's.
         PointerStop {}
         Flickable {
@@ -434,29 +462,13 @@ Item {
                 Item {
                     id: profile
                     objectName: "depthProfile"
-                    readonly property var path: editor.model.path
-                    readonly property real length: Math.max(1, path.length ? path[path.length - 1].distance : 1)
-                    // One pass over the path per edit: each unit's runs and highest z.
-                    readonly property var series: {
-                        const runs = {}, top = {}
-                        let unit = "", run = null
-                        for (const p of path) {
-                            if (p.zUnits !== unit || run === null) {
-                                unit = p.zUnits
-                                run = []
-                                ;(runs[unit] = runs[unit] || []).push(run)
-                            }
-                            run.push(p)
-                            top[unit] = Math.max(top[unit] || 1, p.z)
-                        }
-                        return { runs: runs, top: top }
-                    }
-                    readonly property var units: ["DEPTH", "ALTITUDE", "HEIGHT"].filter(u => series.runs[u] !== undefined)
-                    function runsOf(unit: string): var { return series.runs[unit] || [] }
-                    function highest(unit: string): real { return series.top[unit] || 1 }
+                    // Worked out in C++ with the path (a thousand points are no JavaScript).
+                    readonly property var summary: planModel.profile
+                    readonly property var units: summary.units
+                    function highest(unit: string): real { return summary.top[unit] || 1 }
                     width: parent.width
                     height: Theme.mm(12)
-                    visible: path.length >= 2 && units.length > 0 && editor.mode === "plan"
+                    visible: planModel.statistics.maneuvers > 0 && units.length > 0 && editor.mode === "plan"
                     Rectangle { anchors.fill: parent; color: Theme.water; radius: Theme.radius }
                     Repeater {
                         model: profile.units
@@ -464,19 +476,19 @@ Item {
                             id: series
                             required property string modelData
                             required property int index
-                            readonly property real highest: profile.highest(modelData)
                             objectName: "profile:" + modelData
-                            anchors.fill: parent
+                            x: 0
+                            y: 2
+                            width: parent.width
+                            height: parent.height - 4
                             ShapePath {
                                 strokeColor: series.modelData === "DEPTH" ? Theme.accent : Theme.traceColor(series.index + 1)
                                 strokeWidth: 2
                                 fillColor: "transparent"
+                                // The lines are in [0, 1]: scaled to the Shape.
+                                scale: Qt.size(series.width, series.height)
                                 PathMultiline {
-                                    paths: profile.runsOf(series.modelData).map(run => run.map(p => {
-                                        const f = Math.max(0, p.z) / series.highest * (profile.height - 4)
-                                        return Qt.point(p.distance / profile.length * profile.width,
-                                                        series.modelData === "DEPTH" ? f + 2 : profile.height - 2 - f)
-                                    }))
+                                    paths: { profile.summary; return planModel.profileLines(series.modelData) }
                                 }
                             }
                         }
@@ -953,42 +965,52 @@ Item {
                 Text {
                     objectName: "selectedManeuver"
                     visible: editor.selected !== "" && editor.mode === "plan"
-                    readonly property var maneuver: editor.maneuverList.find(m => m.id === editor.selected)
+                    readonly property var maneuver: { editor.maneuverRows.revision; const row = editor.maneuverRows.indexOf(editor.selected); return row >= 0 ? editor.maneuverRows.get(row) : null }
                     text: editor.selected + (maneuver && maneuver.arrival >= 0 ? qsTr(" · reached after %1").arg(editor.formatDuration(maneuver.arrival))
                                            : maneuver ? qsTr(" · not reached (a maneuver before it never ends)") : "")
                     color: Theme.text
                     font.pixelSize: Theme.fontPixelSize
                     font.bold: true
                 }
+                // By the row: an edit changes the fields whose values it changed.
                 Repeater {
-                    model: editor.mode === "plan" && editor.selected !== "" && editor.maneuverList.length >= 0 ? planModel.parametersOf(editor.selected) : []
+                    model: editor.mode === "plan" ? planModel.parameters : null
                     delegate: Column {
                         id: parameter
-                        required property var modelData
+                        required property string name
+                        required property string value
+                        required property string unit
+                        required property string type
+                        required property real min
+                        required property real max
+                        required property string problem
                         width: column.width
+                        // Typed or keyed values replace the field's text; the row's value wins when it changes.
+                        onValueChanged: field.text = value
                         Text {
-                            text: parameter.modelData.name + (parameter.modelData.unit !== "" ? " (" + parameter.modelData.unit + ")" : "")
-                                  + (!isNaN(parameter.modelData.min) || !isNaN(parameter.modelData.max)
-                                     ? "  " + (isNaN(parameter.modelData.min) ? "…" : parameter.modelData.min) + " – "
-                                       + (isNaN(parameter.modelData.max) ? "…" : parameter.modelData.max) : "")
+                            text: parameter.name + (parameter.unit !== "" ? " (" + parameter.unit + ")" : "")
+                                  + (!isNaN(parameter.min) || !isNaN(parameter.max)
+                                     ? "  " + (isNaN(parameter.min) ? "…" : parameter.min) + " – "
+                                       + (isNaN(parameter.max) ? "…" : parameter.max) : "")
                             color: Theme.textDim
                             font.pixelSize: Theme.smallFontPixelSize
                         }
                         FormField {
-                            objectName: "parameter:" + parameter.modelData.name
+                            id: field
+                            objectName: "parameter:" + parameter.name
                             width: parent.width
-                            text: parameter.modelData.value
-                            color: parameter.modelData.problem !== "" ? Theme.levelColor(4) : Theme.text
-                            inputMethodHints: parameter.modelData.type === "number" || parameter.modelData.type === "integer"
+                            text: parameter.value
+                            color: parameter.problem !== "" ? Theme.levelColor(4) : Theme.text
+                            inputMethodHints: parameter.type === "number" || parameter.type === "integer"
                                               ? Qt.ImhFormattedNumbersOnly : Qt.ImhNone
-                            onCommitted: planModel.setParameter(editor.selected, parameter.modelData.name, text)
+                            onCommitted: planModel.setParameter(editor.selected, parameter.name, text)
                         }
                         Text {
                             objectName: "parameterProblem"
-                            visible: parameter.modelData.problem !== ""
+                            visible: parameter.problem !== ""
                             width: parent.width
                             wrapMode: Text.Wrap
-                            text: parameter.modelData.problem
+                            text: parameter.problem
                             color: Theme.levelColor(4)
                             font.pixelSize: Theme.smallFontPixelSize
                         }

@@ -4,7 +4,7 @@
 // moves it) and while the map pans, against the same map with the editor
 // closed; and what a drop costs (the model moved, checked, and every marker
 // and leg drawn again). Issue "Drawing the environment and planning on the
-// map". Run: tools/bench editor
+// map". Run: tools/bench editor [--drops N] [--shot FILE]
 #include "FrameTimes.h"
 #include "qmlmodels/ConsoleSession.h"
 #include "Schemas.h"
@@ -16,10 +16,13 @@
 #include <QQuickItem>
 #include <QQuickWindow>
 #include <QTemporaryDir>
+#include <QTimer>
+#include <QEventLoop>
 #include <QtQml/qqmlextensionplugin.h>
 
 #include <algorithm>
 #include <cstdio>
+#include <ctime>
 
 Q_IMPORT_QML_PLUGIN(Neptus_EnginePlugin)
 Q_IMPORT_QML_PLUGIN(Neptus_ComponentsPlugin)
@@ -110,6 +113,17 @@ int main(int argc, char **argv)
     std::printf("  (editor opened with %d markers in %lld ms)\n", count, static_cast<long long>(opened.elapsed()));
     neptus::test::measureFrames(window, smoke ? 2 : 20, pan);
     print("editor open, panning", neptus::test::measureFrames(window, frames, pan));
+    // Where an open editor's frame goes: the same without its panel, without the plan.
+    for (const char *part : {"planEditorPanel", "planOverlay"}) {
+        QQuickItem *item = map->findChild<QQuickItem *>(QString::fromLatin1(part));
+        if (!item)
+            continue;
+        item->setVisible(false);
+        neptus::test::measureFrames(window, 2, pan);
+        print(qPrintable(QStringLiteral("  (the same without %1)").arg(QString::fromLatin1(part))),
+              neptus::test::measureFrames(window, frames / 2, pan));
+        item->setVisible(true);
+    }
 
     // The middle maneuver, selected (a big plan has dots, and a draggable
     // marker for the selected maneuver), and its marker.
@@ -133,18 +147,56 @@ int main(int argc, char **argv)
     }
     print("editor open, dragging a marker", neptus::test::measureFrames(window, frames, [&] { marker->setX(marker->x() + 1); }));
 
-    // A drop: the model moved and checked, then every marker and leg again.
-    std::vector<double> drops;
-    for (int i = 0; i < (smoke ? 2 : 10); ++i) {
+    // (--shot FILE: the window as it is now, the editor open with a maneuver selected.)
+    if (const int shot = int(app.arguments().indexOf(QStringLiteral("--shot"))); shot > 0 && shot + 1 < app.arguments().size())
+        window.grabWindow().save(app.arguments()[shot + 1]);
+
+    // Nothing changing, nothing drawn (frames in a second with the editor open and idle).
+    {
+        neptus::test::nextFrame(window);
+        int idle = 0;
+        auto counting = QObject::connect(&window, &QQuickWindow::frameSwapped, &window, [&] { ++idle; });
+        QEventLoop loop;
+        QTimer::singleShot(1000, &loop, &QEventLoop::quit);
+        loop.exec();
+        QObject::disconnect(counting);
+        std::printf("%-48s %d\n", "  (frames drawn in an idle second)", idle);
+    }
+
+    // A drop: the model moved and checked, then the frame that shows it
+    // (its leg, its marker, the problems and statistics) on screen.
+    // (Of which the model and the QML bound to it: the move's call itself.)
+    std::vector<double> drops, calls, cpu;
+    const auto threadCpuMs = [] {
+        timespec t{};
+        clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+        return t.tv_sec * 1e3 + t.tv_nsec / 1e6;
+    };
+    // (--drops N: more of them, to profile.)
+    const int dropArg = int(app.arguments().indexOf(QStringLiteral("--drops")));
+    const int dropCount = dropArg > 0 && dropArg + 1 < app.arguments().size() ? app.arguments()[dropArg + 1].toInt() : smoke ? 2 : 10;
+    for (int i = 0; i < dropCount; ++i) {
+        neptus::test::nextFrame(window); // nothing else under way
         QElapsedTimer t;
         t.start();
+        const double cpuBefore = threadCpuMs();
         QMetaObject::invokeMethod(model, "moveManeuver", Q_ARG(QString, QStringLiteral("m%1").arg(count / 2)),
                                   Q_ARG(double, 41.1430 + i * 1e-5), Q_ARG(double, -8.6100));
-        neptus::test::measureFrames(window, 1, [] {});
+        calls.push_back(double(t.nsecsElapsed()) / 1e6);
+        cpu.push_back(threadCpuMs() - cpuBefore);
+        neptus::test::nextFrame(window);
         drops.push_back(double(t.nsecsElapsed()) / 1e6);
     }
+    if (qEnvironmentVariableIsSet("NEPTUS_BENCH_EACH")) {
+        for (size_t i = 0; i < drops.size(); ++i)
+            std::printf("  drop %zu: %.1f ms, call %.1f ms, cpu %.1f ms\n", i, drops[i], calls[i], cpu[i]);
+    }
     std::sort(drops.begin(), drops.end());
-    std::printf("%-48s median %6.1f ms  max %6.1f ms  (%zu drops)\n", "a drop (move, check, redraw)", drops[drops.size() / 2],
+    std::sort(calls.begin(), calls.end());
+    std::sort(cpu.begin(), cpu.end());
+    std::printf("%-48s median %6.1f ms  max %6.1f ms  (%zu drops)\n", "a drop (move, check, its frame on screen)", drops[drops.size() / 2],
                 drops.back(), drops.size());
+    std::printf("%-48s median %6.1f ms  max %6.1f ms\n", "  (of which the model and its bindings)", calls[calls.size() / 2], calls.back());
+    std::printf("%-48s median %6.1f ms  max %6.1f ms\n", "  (the same, CPU time of the GUI thread)", cpu[cpu.size() / 2], cpu.back());
     return 0;
 }

@@ -5,10 +5,12 @@
 // redraws) and the window is asked for another frame, `frames` times.
 #include <QCoreApplication>
 #include <QElapsedTimer>
+#include <QEventLoop>
 #include <QQmlComponent>
 #include <QQmlEngine>
 #include <QQuickItem>
 #include <QQuickWindow>
+#include <QTimer>
 
 #include <cstdio>
 #include <memory>
@@ -43,26 +45,44 @@ inline std::unique_ptr<QQuickItem> showInWindow(QQmlEngine &engine, QQuickWindow
 }
 
 // The frame-to-frame times (ms) of `frames` frames, `step` run after each.
+// The GUI thread sleeps between frames as the console's does (an event loop
+// that waits): a loop polling for events would take a core from the render
+// and rasteriser threads and slow the very frames it measures.
 inline std::vector<double> frameTimes(QQuickWindow &window, int frames, const std::function<void()> &step)
 {
     std::vector<double> ms;
     QElapsedTimer frame;
+    QEventLoop loop;
     bool started = false;
     auto connection = QObject::connect(&window, &QQuickWindow::frameSwapped, &window, [&] {
         if (started)
             ms.push_back(frame.nsecsElapsed() / 1e6);
+        if (static_cast<int>(ms.size()) >= frames) {
+            loop.quit();
+            return;
+        }
         started = true;
         frame.start();
         step();
         window.update();
     });
     window.update();
-    QElapsedTimer total;
-    total.start();
-    while (static_cast<int>(ms.size()) < frames && total.elapsed() < 120000)
-        QCoreApplication::processEvents(QEventLoop::AllEvents, 5);
+    QTimer::singleShot(120000, &loop, &QEventLoop::quit);
+    loop.exec();
     QObject::disconnect(connection);
     return ms;
+}
+
+// Asks the window for a frame and waits (the GUI thread asleep) until it is
+// on screen: after a change, the frame that shows it.
+inline void nextFrame(QQuickWindow &window, int timeoutMs = 10000)
+{
+    QEventLoop loop;
+    auto connection = QObject::connect(&window, &QQuickWindow::frameSwapped, &loop, &QEventLoop::quit);
+    QTimer::singleShot(timeoutMs, &loop, &QEventLoop::quit);
+    window.update();
+    loop.exec();
+    QObject::disconnect(connection);
 }
 
 inline FrameTimes summary(std::vector<double> ms)

@@ -1,19 +1,30 @@
 #include "PlanOverlayItem.h"
 
+#include <QPainter>
+#include <QQuickWindow>
 #include <QSGGeometryNode>
+#include <QSGTextureMaterial>
+#include <QSGTransformNode>
 
 #include <cmath>
-#include <numbers>
+#include <memory>
 
 namespace {
 
-constexpr int sides = 12; // a dot's polygon
+Eigen::Vector2d mercatorOf(const QVariantMap &p)
+{
+    using neptus::geo::radians;
+    return neptus::geo::toMercator(radians(p.value(QStringLiteral("lat")).toDouble()), radians(p.value(QStringLiteral("lon")).toDouble()));
+}
 
 } // namespace
 
 PlanOverlayItem::PlanOverlayItem(QQuickItem *parent) : MapOverlayItem(parent)
 {
-    connect(this, &PlanOverlayItem::changed, this, &QQuickItem::update);
+    connect(this, &PlanOverlayItem::changed, this, [this] {
+        m_stale = m_styleStale = true;
+        update();
+    });
 }
 
 void PlanOverlayItem::setPath(const QVariantList &path)
@@ -21,101 +32,169 @@ void PlanOverlayItem::setPath(const QVariantList &path)
     m_pathList = path;
     m_path.clear();
     m_path.reserve(size_t(path.size()));
-    for (const QVariant &v : path) {
-        const QVariantMap p = v.toMap();
-        m_path.emplace_back(neptus::geo::radians(p.value(QStringLiteral("lat")).toDouble()),
-                            neptus::geo::radians(p.value(QStringLiteral("lon")).toDouble()));
-    }
-    emit changed();
+    for (const QVariant &v : path)
+        m_path.push_back(mercatorOf(v.toMap()));
+    m_stale = true;
+    update();
+    emit pathChanged();
 }
 
-void PlanOverlayItem::setManeuvers(const QVariantList &maneuvers)
+void PlanOverlayItem::setManeuvers(QAbstractItemModel *maneuvers)
 {
-    m_maneuverList = maneuvers;
-    m_dots.clear();
-    m_dots.reserve(size_t(maneuvers.size()));
-    for (const QVariant &v : maneuvers) {
-        const QVariantMap m = v.toMap();
-        const QString severity = m.value(QStringLiteral("severity")).toString();
-        m_dots.push_back({neptus::geo::radians(m.value(QStringLiteral("lat")).toDouble()),
-                          neptus::geo::radians(m.value(QStringLiteral("lon")).toDouble()),
-                          severity == QLatin1String("error") ? 2 : severity == QLatin1String("warning") ? 1 : 0});
+    if (maneuvers == m_maneuvers)
+        return;
+    if (m_maneuvers)
+        m_maneuvers->disconnect(this);
+    m_maneuvers = maneuvers;
+    if (maneuvers) {
+        // Any change of rows: the dots again (a few microseconds a thousand).
+        connect(maneuvers, &QAbstractItemModel::rowsInserted, this, &PlanOverlayItem::readDots);
+        connect(maneuvers, &QAbstractItemModel::rowsRemoved, this, &PlanOverlayItem::readDots);
+        connect(maneuvers, &QAbstractItemModel::rowsMoved, this, &PlanOverlayItem::readDots);
+        connect(maneuvers, &QAbstractItemModel::dataChanged, this, &PlanOverlayItem::readDots);
+        connect(maneuvers, &QAbstractItemModel::modelReset, this, &PlanOverlayItem::readDots);
     }
-    emit changed();
+    readDots();
+    emit maneuversChanged();
 }
+
+void PlanOverlayItem::readDots()
+{
+    m_dots.clear();
+    if (QAbstractItemModel *model = m_maneuvers.data()) {
+        const QHash<int, QByteArray> names = model->roleNames();
+        const int lat = names.key("lat", -1), lon = names.key("lon", -1), severity = names.key("severity", -1);
+        const int rows = model->rowCount();
+        m_dots.reserve(size_t(rows));
+        for (int r = 0; r < rows; ++r) {
+            const QModelIndex i = model->index(r, 0);
+            const QString s = model->data(i, severity).toString();
+            m_dots.push_back({neptus::geo::toMercator(neptus::geo::radians(model->data(i, lat).toDouble()),
+                                                      neptus::geo::radians(model->data(i, lon).toDouble())),
+                              s == QLatin1String("error") ? 2 : s == QLatin1String("warning") ? 1 : 0});
+        }
+    }
+    m_stale = true;
+    update();
+}
+
+namespace {
+
+// The dots: a textured square per maneuver (two triangles, where a drawn
+// circle took 24), cut from a strip of three dot images (plain, warning, error).
+struct DotsNode : QSGGeometryNode
+{
+    QSGGeometry geometry{QSGGeometry::defaultAttributes_TexturedPoint2D(), 0};
+    QSGTextureMaterial material;
+    std::unique_ptr<QSGTexture> texture;
+    DotsNode()
+    {
+        geometry.setDrawingMode(QSGGeometry::DrawTriangles);
+        setGeometry(&geometry);
+        setMaterial(&material);
+    }
+};
+
+} // namespace
 
 QSGNode *PlanOverlayItem::updatePaintNode(QSGNode *old, UpdatePaintNodeData *)
 {
-    QSGNode *root = old ? old : new QSGNode;
+    auto *root = static_cast<QSGTransformNode *>(old);
+    if (!root) { // the legs, the dots, the arrowheads, in that order
+        root = new QSGTransformNode;
+        flatNode(root, 0, QSGGeometry::DrawLineStrip);
+        root->appendChildNode(new DotsNode);
+        root->lastChild()->setFlag(QSGNode::OwnedByParent);
+        flatNode(root, 2, QSGGeometry::DrawTriangles);
+    }
+    auto *legs = static_cast<QSGGeometryNode *>(root->firstChild());
+    auto *dots = static_cast<DotsNode *>(legs->nextSibling());
+    auto *arrows = static_cast<QSGGeometryNode *>(dots->nextSibling());
     const MapProjection view = projection();
+    // Made in pixels of the zoom they are made for: at that zoom the
+    // transform only moves and turns them.
+    if (m_stale || view.zoom != m_madeAtZoom) {
+        m_stale = false;
+        m_madeAtZoom = view.zoom;
+        ++m_builds;
+        m_origin = !m_path.empty() ? m_path.front() : !m_dots.empty() ? m_dots.front().at : Eigen::Vector2d(0, 0);
+        const double k = view.worldSize();
+        const auto local = [&](const Eigen::Vector2d &m) {
+            const Eigen::Vector2d p = (m - m_origin) * k;
+            return QPointF(p.x(), p.y());
+        };
 
-    // The legs.
-    QSGGeometryNode *legs = flatNode(root, 0, QSGGeometry::DrawLineStrip);
-    std::vector<QPointF> points;
-    points.reserve(m_path.size());
-    for (const auto &[lat, lon] : m_path)
-        points.push_back(view.project(lat, lon));
-    setNodePoints(legs, points, m_lineWidth);
-    setNodeColor(legs, m_lineColor);
+        // The legs.
+        std::vector<QPointF> points;
+        points.reserve(m_path.size());
+        for (const Eigen::Vector2d &m : m_path)
+            points.push_back(local(m));
+        setNodePoints(legs, points, m_lineWidth);
 
-    // The dots: an outline under a fill, the fill by severity.
-    const auto fan = [&](QSGGeometryNode *node, double radius, int severity) {
-        int count = 0;
-        for (const Dot &d : m_dots)
-            count += severity < 0 || d.severity == severity;
-        QSGGeometry *geometry = node->geometry();
-        geometry->allocate(count * sides * 3);
-        auto *out = geometry->vertexDataAsPoint2D();
-        int k = 0;
-        for (const Dot &d : m_dots) {
-            if (severity >= 0 && d.severity != severity)
-                continue;
-            const QPointF c = view.project(d.lat, d.lon);
-            for (int s = 0; s < sides; ++s) {
-                const double a0 = 2 * std::numbers::pi * s / sides, a1 = 2 * std::numbers::pi * (s + 1) / sides;
-                out[k++].set(float(c.x()), float(c.y()));
-                out[k++].set(float(c.x() + radius * std::cos(a0)), float(c.y() + radius * std::sin(a0)));
-                out[k++].set(float(c.x() + radius * std::cos(a1)), float(c.y() + radius * std::sin(a1)));
+        // The dot images: an outline around a fill, the fill by severity.
+        const qreal ratio = window() ? window()->effectiveDevicePixelRatio() : 1;
+        const int cell = int(std::ceil((m_dotRadius + 1) * 2 * ratio));
+        if ((m_styleStale || !dots->texture) && window()) {
+            m_styleStale = false;
+            QImage strip(cell * 3, cell, QImage::Format_ARGB32_Premultiplied);
+            strip.fill(Qt::transparent);
+            QPainter painter(&strip);
+            painter.setRenderHint(QPainter::Antialiasing);
+            painter.setPen(Qt::NoPen);
+            const QColor fills[3] = {m_dotColor, m_warningColor, m_errorColor};
+            const double outer = m_dotRadius * ratio, inner = std::max(1.0, m_dotRadius - 2) * ratio;
+            for (int s = 0; s < 3; ++s) {
+                const QPointF c(cell * (s + 0.5), cell * 0.5);
+                painter.setBrush(m_outlineColor);
+                painter.drawEllipse(c, outer, outer);
+                painter.setBrush(fills[s]);
+                painter.drawEllipse(c, inner, inner);
             }
+            painter.end();
+            dots->texture.reset(window()->createTextureFromImage(strip));
+            dots->texture->setFiltering(QSGTexture::Linear);
+            dots->material.setTexture(dots->texture.get());
+            dots->markDirty(QSGNode::DirtyMaterial);
         }
-        node->markDirty(QSGNode::DirtyGeometry);
-    };
-    QSGGeometryNode *outline = flatNode(root, 1, QSGGeometry::DrawTriangles);
-    fan(outline, m_dotRadius, -1);
-    setNodeColor(outline, m_outlineColor);
-    const QColor fills[3] = {m_dotColor, m_warningColor, m_errorColor};
-    for (int s = 0; s < 3; ++s) {
-        QSGGeometryNode *fill = flatNode(root, 2 + s, QSGGeometry::DrawTriangles);
-        fan(fill, std::max(1.0, m_dotRadius - 2), s);
-        setNodeColor(fill, fills[s]);
-    }
+        const float half = float(cell / ratio / 2);
+        dots->geometry.allocate(int(m_dots.size()) * 6);
+        auto *v = dots->geometry.vertexDataAsTexturedPoint2D();
+        for (const Dot &d : m_dots) {
+            const QPointF c = local(d.at);
+            const float x0 = float(c.x()) - half, x1 = float(c.x()) + half, y0 = float(c.y()) - half, y1 = float(c.y()) + half;
+            const float u0 = d.severity / 3.0f, u1 = (d.severity + 1) / 3.0f;
+            (v++)->set(x0, y0, u0, 0);
+            (v++)->set(x1, y0, u1, 0);
+            (v++)->set(x0, y1, u0, 1);
+            (v++)->set(x1, y0, u1, 0);
+            (v++)->set(x1, y1, u1, 1);
+            (v++)->set(x0, y1, u0, 1);
+        }
+        dots->markDirty(QSGNode::DirtyGeometry);
 
-    // Which way the vehicle goes: an arrowhead every so many pixels along the
-    // legs (node 5: the nodes are found by their order).
-    QSGGeometryNode *arrows = flatNode(root, 5, QSGGeometry::DrawTriangles);
-    const double every = 140, size = std::max(7.0, m_lineWidth * 4);
-    std::vector<QPointF> heads; // tip, then the two back corners
-    double along = every / 2;
-    for (size_t i = 1; i < points.size() && heads.size() < 3 * 4000; ++i) {
-        const QPointF a = points[i - 1], b = points[i];
-        const double length = std::hypot(b.x() - a.x(), b.y() - a.y());
-        if (length <= 0)
-            continue;
-        const QPointF unit((b.x() - a.x()) / length, (b.y() - a.y()) / length), normal(-unit.y(), unit.x());
-        for (; along <= length; along += every) {
-            const QPointF tip = a + unit * (along + size / 2);
-            heads.push_back(tip);
-            heads.push_back(tip - unit * size + normal * (size / 2));
-            heads.push_back(tip - unit * size - normal * (size / 2));
+        // Which way the vehicle goes: an arrowhead every so many pixels along the legs.
+        const double every = 140, size = std::max(7.0, m_lineWidth * 4);
+        std::vector<QPointF> heads; // tip, then the two back corners
+        double along = every / 2;
+        for (size_t i = 1; i < points.size() && heads.size() < 3 * 4000; ++i) {
+            const QPointF a = points[i - 1], b = points[i];
+            const double length = std::hypot(b.x() - a.x(), b.y() - a.y());
+            if (length <= 0)
+                continue;
+            const QPointF unit((b.x() - a.x()) / length, (b.y() - a.y()) / length), normal(-unit.y(), unit.x());
+            for (; along <= length; along += every) {
+                const QPointF tip = a + unit * (along + size / 2);
+                heads.push_back(tip);
+                heads.push_back(tip - unit * size + normal * (size / 2));
+                heads.push_back(tip - unit * size - normal * (size / 2));
+            }
+            along -= length;
         }
-        along -= length;
+        setNodePoints(arrows, heads);
     }
-    QSGGeometry *headGeometry = arrows->geometry();
-    headGeometry->allocate(int(heads.size()));
-    auto *out = headGeometry->vertexDataAsPoint2D();
-    for (size_t i = 0; i < heads.size(); ++i)
-        out[i].set(float(heads[i].x()), float(heads[i].y()));
-    arrows->markDirty(QSGNode::DirtyGeometry);
+    setNodeColor(legs, m_lineColor);
     setNodeColor(arrows, m_lineColor);
+    root->setMatrix(localToItem(m_origin, 256 * std::exp2(m_madeAtZoom)));
+    root->markDirty(QSGNode::DirtyMatrix);
     return root;
 }

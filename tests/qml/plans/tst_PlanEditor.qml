@@ -121,6 +121,34 @@ TestCase {
         tryVerify(() => Math.abs(model().maneuvers[2].lon - map2d.toCoordinate(from.x + 60, from.y).lon) < 2e-6, 3000,
                   "moved to " + model().maneuvers[2].lon)
         verify(model().canUndo)
+        // The dropped marker still follows the map (the drag left its place bound to its row).
+        const dragged = marker("goto1")
+        map2d.pan(25, 10)
+        const there = map2d.screenPoint(model().maneuvers[2].lat, model().maneuvers[2].lon)
+        fuzzyCompare(centre(dragged).x, there.x, 1)
+        fuzzyCompare(centre(dragged).y, there.y, 1)
+        map2d.pan(-25, -10)
+        // Another maneuver's edit keeps this marker: the views are told by the row.
+        verify(model().moveManeuver("goto2", 41.1419, -8.6101))
+        verify(marker("goto1") === dragged, "the marker was made again")
+        verify(model().undo())
+    }
+
+    // A big plan is one scene-graph item: panning moves it by its transform,
+    // without making its vertices again; zooming makes them again.
+    function test_2b_panningMovesThePlanWithoutRedrawingIt() {
+        const overlay = findChild(map2d, "planOverlay")
+        waitForRendering(map2d)
+        const builds = overlay.geometryBuilds()
+        for (let i = 0; i < 5; ++i) {
+            map2d.pan(3, 1)
+            waitForRendering(map2d)
+        }
+        compare(overlay.geometryBuilds(), builds, "panning made the plan's vertices again")
+        map2d.setZoom(map2d.zoomLevel - 0.5)
+        tryVerify(() => overlay.geometryBuilds() > builds)
+        map2d.setZoom(map2d.zoomLevel + 0.5)
+        map2d.centreAt(41.1405, -8.6105)
     }
 
     function test_3_aDepthPastTheVehiclesRangeIsShownEverywhere() {

@@ -515,3 +515,125 @@ TEST(PlanEditor, ChecksEveryEditAgainstTheConsolesCharts)
     editor.undo();
     EXPECT_EQ(editor.errorCount(), 0);
 }
+
+// The rows views draw from are told only what changed: a moved maneuver is
+// one changed row (and those whose arrival time moved with it), an added one
+// one inserted row, a removed one one removed row; nothing is reset, so a
+// view of 1,000 maneuvers keeps 999 delegates as they were.
+TEST(PlanEditor, ViewsAreToldOnlyTheRowsAnEditChanged)
+{
+    QTemporaryDir dir;
+    PlanEditorModel editor;
+    editor.setMissionPath(exampleCopy(dir));
+    RowModel *rows = editor.maneuverRows();
+    ASSERT_EQ(rows->count(), 4);
+    QSignalSpy reset(rows, &QAbstractItemModel::modelReset), inserted(rows, &QAbstractItemModel::rowsInserted),
+        removed(rows, &QAbstractItemModel::rowsRemoved), changed(rows, &QAbstractItemModel::dataChanged);
+
+    // The last one moved: its row alone (nothing comes after it).
+    ASSERT_TRUE(editor.moveManeuver(u"surface"_s, 41.1722, -8.7130));
+    ASSERT_EQ(changed.size(), 1);
+    EXPECT_EQ(changed[0][0].toModelIndex().row(), 3);
+    EXPECT_EQ(changed[0][1].toModelIndex().row(), 3);
+    EXPECT_DOUBLE_EQ(rows->get(3).value(u"lat"_s).toDouble(), 41.1722);
+    EXPECT_EQ(rows->get(3).value(u"maneuver"_s), u"surface"_s);
+
+    // One added at the end: one row inserted there.
+    changed.clear();
+    const QString added = editor.addManeuver(u"Goto"_s, 41.1725, -8.7140);
+    ASSERT_EQ(inserted.size(), 1);
+    EXPECT_EQ(inserted[0][1].toInt(), 4);
+    EXPECT_EQ(inserted[0][2].toInt(), 4);
+    EXPECT_EQ(rows->get(4).value(u"maneuver"_s), added);
+    EXPECT_TRUE(changed.isEmpty()) << "the rows before it are as they were";
+
+    // The first one moved: its row, and the later ones' arrival times.
+    ASSERT_TRUE(editor.moveManeuver(u"go"_s, 41.1700, -8.7100));
+    ASSERT_GE(changed.size(), 1);
+    EXPECT_EQ(changed[0][0].toModelIndex().row(), 0);
+
+    // One removed from the middle: that row removed, the others kept.
+    ASSERT_TRUE(editor.removeManeuver(u"wait"_s));
+    ASSERT_EQ(removed.size(), 1);
+    EXPECT_EQ(removed[0][1].toInt(), 1);
+    EXPECT_EQ(removed[0][2].toInt(), 1);
+    EXPECT_EQ(rows->count(), 4);
+    EXPECT_EQ(reset.size(), 0);
+    // The list the tests and scripts read says the same.
+    EXPECT_EQ(editor.maneuvers().size(), 4);
+    EXPECT_EQ(editor.maneuvers()[1].toMap().value(u"id"_s), u"rows"_s);
+    EXPECT_EQ(editor.maneuvers()[1].toMap().value(u"index"_s), 1);
+
+    // Undo puts it back in its place: one row inserted.
+    inserted.clear();
+    ASSERT_TRUE(editor.undo());
+    ASSERT_EQ(inserted.size(), 1);
+    EXPECT_EQ(inserted[0][1].toInt(), 1);
+    EXPECT_EQ(rows->get(1).value(u"maneuver"_s), u"wait"_s);
+    EXPECT_EQ(reset.size(), 0);
+}
+
+// The selected maneuver's parameters, by row: a change of one parameter is
+// that row; another maneuver's edit leaves the form alone.
+TEST(PlanEditor, TheSelectedManeuversParametersChangeByTheRow)
+{
+    QTemporaryDir dir;
+    PlanEditorModel editor;
+    editor.setMissionPath(exampleCopy(dir));
+    editor.setSelected(u"go"_s);
+    RowModel *form = editor.parameters();
+    ASSERT_GT(form->count(), 3);
+    const int speed = form->indexOf(u"speed"_s);
+    ASSERT_GE(speed, 0);
+    QSignalSpy inserted(form, &QAbstractItemModel::rowsInserted), removed(form, &QAbstractItemModel::rowsRemoved),
+        changed(form, &QAbstractItemModel::dataChanged);
+
+    ASSERT_TRUE(editor.setParameter(u"go"_s, u"speed"_s, u"1.2"_s));
+    ASSERT_EQ(changed.size(), 1);
+    EXPECT_EQ(changed[0][0].toModelIndex().row(), speed);
+    EXPECT_EQ(form->get(speed).value(u"value"_s), u"1.2"_s);
+    // Out of the vehicle's range: the row says why.
+    ASSERT_TRUE(editor.setParameter(u"go"_s, u"speed"_s, u"99"_s));
+    EXPECT_FALSE(form->get(speed).value(u"problem"_s).toString().isEmpty());
+
+    changed.clear();
+    ASSERT_TRUE(editor.moveManeuver(u"surface"_s, 41.1722, -8.7130));
+    EXPECT_TRUE(changed.isEmpty());
+    EXPECT_TRUE(inserted.isEmpty());
+    EXPECT_TRUE(removed.isEmpty());
+
+    editor.setSelected(QString());
+    EXPECT_EQ(form->count(), 0);
+}
+
+TEST(RowModelTest, KeepsTheRowsBothListsShareAndTellsTheRest)
+{
+    RowModel model({u"name"_s, u"value"_s});
+    const auto row = [](const char *name, double value) { return RowModel::Row{QString::fromLatin1(name), value}; };
+    model.setRows({row("a", 1), row("b", 2), row("c", 3)});
+    QSignalSpy inserted(&model, &QAbstractItemModel::rowsInserted), removed(&model, &QAbstractItemModel::rowsRemoved),
+        changed(&model, &QAbstractItemModel::dataChanged), reset(&model, &QAbstractItemModel::modelReset);
+    const double none = std::numeric_limits<double>::quiet_NaN();
+
+    model.setRows({row("a", 1), row("b", none), row("c", 3)});
+    ASSERT_EQ(changed.size(), 1);
+    EXPECT_EQ(changed[0][0].toModelIndex().row(), 1);
+    model.setRows({row("a", 1), row("b", none), row("c", 3)});
+    EXPECT_EQ(changed.size(), 1) << "no value (NaN) is the same as no value";
+    const int revision = model.revision();
+
+    model.setRows({row("a", 1), row("x", 9), row("b", none), row("c", 3)});
+    ASSERT_EQ(inserted.size(), 1);
+    EXPECT_EQ(inserted[0][1].toInt(), 1);
+    EXPECT_EQ(model.indexOf(u"b"_s), 2);
+    EXPECT_GT(model.revision(), revision);
+
+    model.setRows({row("c", 3)});
+    ASSERT_EQ(removed.size(), 1);
+    EXPECT_EQ(removed[0][1].toInt(), 0);
+    EXPECT_EQ(removed[0][2].toInt(), 2);
+    EXPECT_EQ(model.count(), 1);
+    EXPECT_EQ(model.data(model.index(0), Qt::UserRole + 2).toDouble(), 3);
+    EXPECT_EQ(model.roleNames().value(Qt::UserRole + 1), "name");
+    EXPECT_EQ(reset.size(), 0);
+}

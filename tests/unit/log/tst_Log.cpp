@@ -11,6 +11,7 @@
 #include "log/LogFile.h"
 #include "log/Recorder.h"
 #include "log/Replay.h"
+#include "xml/XmlSchema.h"
 #include "messages/Codec.h"
 #include "qmlmodels/ReplayModel.h"
 #include "session/ConsoleReplay.h"
@@ -32,10 +33,14 @@
 #include <QTemporaryDir>
 #include <QTest>
 #include <QThread>
+#include <QScopeGuard>
+
+#include <libxml/parserInternals.h>
 
 #include <gtest/gtest.h>
 
 using namespace neptus;
+using namespace Qt::StringLiterals;
 
 namespace {
 
@@ -532,6 +537,49 @@ TEST(Log, ExportsOfTheDuneLogReadBackInTheirFormats)
         EXPECT_TRUE(contents.error.isEmpty()) << qPrintable(contents.error);
         EXPECT_EQ(contents.rootNamespace, namespaceUri);
         EXPECT_EQ(contents.points, 2755) << qPrintable(name);
+    }
+}
+
+// The track exports against the schemas users' tools follow: GPX 1.1 as
+// TopoGrafix publishes it and OGC KML 2.2 with its Atom and OASIS xAL imports,
+// unmodified, from ../shared/fixtures/schemas (not our reading of the standards).
+TEST(Log, TrackExportsPassTheOfficialGpxAndKmlSchemas)
+{
+    NEPTUS_REQUIRE_FIXTURE(folder, "dune-log");
+    NEPTUS_REQUIRE_FIXTURE(schemas, "schemas");
+    // ogckml22.xsd imports xAL by its absolute URL: the test's entity loader
+    // gives libxml2 the copy beside it for that URL (nothing is fetched).
+    static QByteArray xal;
+    xal = QDir(schemas).filePath(u"kml-2.2/xAL.xsd"_s).toUtf8();
+    static xmlExternalEntityLoader previous = xmlGetExternalEntityLoader();
+    xmlSetExternalEntityLoader([](const char *url, const char *id, xmlParserCtxtPtr context) -> xmlParserInputPtr {
+        if (url && QByteArrayView(url) == "http://docs.oasis-open.org/election/external/xAL.xsd")
+            return xmlNewInputFromFile(context, xal.constData());
+        return previous(url, id, context);
+    });
+    const auto restore = qScopeGuard([] { xmlSetExternalEntityLoader(previous); });
+
+    auto log = openLog(folder);
+    ASSERT_TRUE(log);
+    const log::LogSet logs(std::vector{log});
+    QTemporaryDir out;
+    const QDir dir(out.path());
+    for (const auto &[format, name, schema, bad] :
+         {std::tuple{log::TrackFormat::Gpx, u"t.gpx"_s, u"gpx-1.1/gpx.xsd"_s,
+                     QByteArray(R"(<gpx xmlns="http://www.topografix.com/GPX/1/1" version="1.1" creator="t"><trk><trkseg><trkpt lat="91" lon="0"/></trkseg></trk></gpx>)")},
+          std::tuple{log::TrackFormat::Kml, u"t.kml"_s, u"kml-2.2/ogckml22.xsd"_s,
+                     QByteArray(R"(<kml xmlns="http://www.opengis.net/kml/2.2"><Document><Placemark><LineString><coordinates>0,0</coordinates><altitudeMode>underwater</altitudeMode></LineString></Placemark></Document></kml>)")}}) {
+        const auto official = xml::XmlSchema::load(QDir(schemas).filePath(schema));
+        ASSERT_TRUE(official.has_value()) << qPrintable(schema) << ": " << official.error().toString().toStdString();
+        ASSERT_TRUE(log::exportTracks(logs, format, dir.filePath(name)).has_value());
+        const auto document = xml::XmlDocument::load(dir.filePath(name));
+        ASSERT_TRUE(document.has_value());
+        for (const xml::XmlError &problem : official->validate(*document))
+            ADD_FAILURE() << qPrintable(name) << ": " << problem.toString().toStdString();
+        // The schema bites: a latitude out of range; an altitude mode KML has not.
+        const auto wrong = xml::XmlDocument::parse(QByteArrayView(bad), u"bad"_s);
+        ASSERT_TRUE(wrong.has_value());
+        EXPECT_FALSE(official->validate(*wrong).isEmpty()) << bad.constData();
     }
 }
 

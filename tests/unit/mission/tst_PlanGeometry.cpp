@@ -288,3 +288,51 @@ TEST(PlanGeometry, RowsAlternationIsDunes)
     EXPECT_EQ(across(rows(50)), (QList<double>{0, 5, 20, 25, 40}));
     EXPECT_EQ(across(rows(0)), (QList<double>{0, 0, 20, 20, 40}));
 }
+
+// The editor's cache: after each edit the plan worked out with it is the plan
+// worked out from scratch, and a maneuver nobody touched is not worked out again.
+TEST(PlanGeometry, TheCacheGivesWhatAFreshWorkingOutGives)
+{
+    Plan plan;
+    plan.id = u"p"_s;
+    for (int i = 0; i < 5; ++i) {
+        Maneuver m = maneuver(u"Goto"_s, {{"speed", 1.5}, {"z", 2}}, {{"z_units", "DEPTH"}});
+        m.id = u"m%1"_s.arg(i);
+        m.set(u"lat"_s, 41.0 + i * 0.001);
+        plan.maneuvers.append(m);
+        if (i > 0)
+            plan.transitions.append(Transition{u"m%1"_s.arg(i - 1), m.id, u"ManeuverIsDone"_s, {}, {}});
+    }
+    plan.start = u"m0"_s;
+    const auto same = [](const PlanGeometry &a, const PlanGeometry &b) {
+        if (a.maneuvers.size() != b.maneuvers.size() || a.length != b.length || a.duration != b.duration)
+            return false;
+        for (qsizetype i = 0; i < a.maneuvers.size(); ++i) {
+            const ManeuverGeometry &x = a.maneuvers[i], &y = b.maneuvers[i];
+            if (x.id != y.id || x.transit != y.transit || x.points.size() != y.points.size() || x.points.first().lat != y.points.first().lat
+                || x.points.first().heading != y.points.first().heading || x.duration != y.duration)
+                return false;
+        }
+        return true;
+    };
+    PlanGeometryCache cache;
+    SpeedModel speeds;
+    EXPECT_TRUE(same(planGeometry(plan, speeds, &cache), planGeometry(plan, speeds)));
+    // One moved: it and the transit of the one after change.
+    plan.maneuvers[2].set(u"lon"_s, -8.001);
+    const PlanGeometry edited = planGeometry(plan, speeds, &cache);
+    EXPECT_TRUE(same(edited, planGeometry(plan, speeds)));
+    // Untouched maneuvers came from the cache: their paths are the cached lists themselves.
+    const PlanGeometry again = planGeometry(plan, speeds, &cache);
+    EXPECT_TRUE(again.maneuvers[0].points.isSharedWith(edited.maneuvers[0].points));
+    EXPECT_TRUE(again.maneuvers[4].points.isSharedWith(edited.maneuvers[4].points));
+    // Other speeds: everything again.
+    speeds.defaultSpeed = 0.5;
+    plan.maneuvers[1].parameters.remove(u"speed"_s);
+    EXPECT_TRUE(same(planGeometry(plan, speeds, &cache), planGeometry(plan, speeds)));
+    // Removed and reordered maneuvers.
+    plan.maneuvers.removeAt(1);
+    plan.transitions = {Transition{u"m0"_s, u"m3"_s, u"ManeuverIsDone"_s, {}, {}}, Transition{u"m3"_s, u"m2"_s, u"ManeuverIsDone"_s, {}, {}},
+                        Transition{u"m2"_s, u"m4"_s, u"ManeuverIsDone"_s, {}, {}}};
+    EXPECT_TRUE(same(planGeometry(plan, speeds, &cache), planGeometry(plan, speeds)));
+}
