@@ -148,8 +148,11 @@ int main(int argc, char **argv)
     print("editor open, dragging a marker", neptus::test::measureFrames(window, frames, [&] { marker->setX(marker->x() + 1); }));
 
     // (--shot FILE: the window as it is now, the editor open with a maneuver selected.)
-    if (const int shot = int(app.arguments().indexOf(QStringLiteral("--shot"))); shot > 0 && shot + 1 < app.arguments().size())
+    if (const int shot = int(app.arguments().indexOf(QStringLiteral("--shot"))); shot > 0 && shot + 1 < app.arguments().size()) {
+        QMetaObject::invokeMethod(map.get(), "centreAt", Q_ARG(double, 41.1425), Q_ARG(double, -8.6130));
+        neptus::test::nextFrame(window);
         window.grabWindow().save(app.arguments()[shot + 1]);
+    }
 
     // Nothing changing, nothing drawn (frames in a second with the editor open and idle).
     {
