@@ -318,8 +318,7 @@ PlanGeometry planGeometry(const Plan &plan, const SpeedModel &speeds, PlanGeomet
     result.duration = 0.0;
     const Waypoint *previous = nullptr;
     QHash<QString, PlanGeometryCache::Entry> kept; // what the cache holds after this plan
-    const bool sameSpeeds = cache && cache->m_speeds.metresPerSecondPerRpm == speeds.metresPerSecondPerRpm
-                            && cache->m_speeds.maxSpeed == speeds.maxSpeed && cache->m_speeds.defaultSpeed == speeds.defaultSpeed;
+    const bool sameSpeeds = cache && cache->m_speeds == speeds;
     for (const Maneuver *m : plan.executionOrder()) {
         if (cache) {
             const std::optional<std::pair<double, double>> from =

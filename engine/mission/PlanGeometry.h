@@ -24,6 +24,7 @@ struct SpeedModel
     double metresPerSecondPerRpm = 1.0 / 1000; // 1000 RPM ≈ 1 m/s, as LSTS's AUVs
     double maxSpeed = 2.0;                      // what 100 % means, m/s
     double defaultSpeed = 1.0;                  // for maneuvers that give no speed
+    friend bool operator==(const SpeedModel &, const SpeedModel &) = default;
 };
 
 struct Waypoint

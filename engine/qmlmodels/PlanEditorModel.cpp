@@ -345,15 +345,12 @@ void PlanEditorModel::setSelected(const QString &id)
 
 QString PlanEditorModel::maneuverNear(double lat, double lon, double metres) const
 {
-    // Metres on a plane at this latitude (taps are a few metres across).
-    using neptus::geo::radians;
-    constexpr double earth = 6371000;
-    const double east = earth * std::cos(radians(lat));
+    const Waypoint at{lat, lon, 0, {}, 0, 0};
     QString nearest;
     double best = metres;
     const int latColumn = m_maneuverRows->column(u"lat"_s), lonColumn = m_maneuverRows->column(u"lon"_s);
     for (const RowModel::Row &row : m_maneuverRows->rows()) {
-        const double d = std::hypot(radians(row[latColumn].toDouble() - lat) * earth, radians(row[lonColumn].toDouble() - lon) * east);
+        const double d = distance(at, Waypoint{row[latColumn].toDouble(), row[lonColumn].toDouble(), 0, {}, 0, 0});
         if (d <= best) {
             best = d;
             nearest = row.first().toString();
@@ -915,12 +912,8 @@ bool PlanEditorModel::setParameter(const QString &id, const QString &name, const
 QVariantList PlanEditorModel::parametersOf(const QString &id) const
 {
     QVariantList list;
-    for (const RowModel::Row &row : parameterRows(id)) {
-        QVariantMap map;
-        for (const QString &role : {u"name"_s, u"value"_s, u"unit"_s, u"type"_s, u"min"_s, u"max"_s, u"values"_s, u"problem"_s})
-            map.insert(role, row.value(m_parameters->column(role)));
-        list.append(map);
-    }
+    for (const RowModel::Row &row : parameterRows(id))
+        list.append(m_parameters->map(row));
     return list;
 }
 

@@ -25,14 +25,12 @@ QVariant keyOf(const RowModel::Row &row) { return row.isEmpty() ? QVariant() : r
 
 RowModel::RowModel(const QStringList &roles, QObject *parent) : QAbstractListModel(parent), m_roles(roles) {}
 
-QVariantMap RowModel::get(int row) const
+QVariantMap RowModel::map(const Row &row) const
 {
-    QVariantMap map;
-    if (row < 0 || row >= m_rows.size())
-        return map;
-    for (qsizetype i = 0; i < m_roles.size() && i < m_rows[row].size(); ++i)
-        map.insert(m_roles[i], m_rows[row][i]);
-    return map;
+    QVariantMap values;
+    for (qsizetype i = 0; i < m_roles.size() && i < row.size(); ++i)
+        values.insert(m_roles[i], row[i]);
+    return values;
 }
 
 int RowModel::indexOf(const QVariant &key) const
@@ -47,8 +45,8 @@ QVariantList RowModel::list() const
 {
     QVariantList all;
     all.reserve(m_rows.size());
-    for (qsizetype i = 0; i < m_rows.size(); ++i)
-        all.append(get(int(i)));
+    for (const Row &row : m_rows)
+        all.append(map(row));
     return all;
 }
 

@@ -32,8 +32,10 @@ public:
     int revision() const { return m_revision; }
     // Where a role's value is in a row.
     int column(const QString &role) const { return int(m_roles.indexOf(role)); }
+    // A row's values by role name.
+    QVariantMap map(const Row &row) const;
     // A row as {role: value} ({} past the end), the row whose key is `key` (-1: none), every row.
-    Q_INVOKABLE QVariantMap get(int row) const;
+    Q_INVOKABLE QVariantMap get(int row) const { return row >= 0 && row < m_rows.size() ? map(m_rows[row]) : QVariantMap(); }
     Q_INVOKABLE int indexOf(const QVariant &key) const;
     Q_INVOKABLE QVariantList list() const;
 

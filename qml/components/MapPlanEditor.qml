@@ -17,7 +17,7 @@ Item {
     readonly property PlanEditorModel model: planModel
     property string tool: "add" // "add" or "area"
     property string addType: planModel.maneuverTypes.indexOf("Goto") >= 0 ? "Goto" : (planModel.maneuverTypes[0] || "")
-    property string selected: ""
+    property alias selected: planModel.selected // the model shows its parameters
     property var area: []       // corners drawn so far: [{lat, lon}]
     property real rowSpacing: 20
     property real rowAngle: 0       // the rows' direction, degrees from north
@@ -58,7 +58,6 @@ Item {
         missionPath: Session.session ? Session.session.plans.missionPath : ""
         desk: Session.session ? Session.session.plans : null
         charts: Session.session ? Session.session.charts : null
-        selected: editor.selected
     }
 
     // A tap on the map: select the maneuver under it, else add one there or

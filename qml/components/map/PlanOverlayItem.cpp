@@ -11,10 +11,10 @@
 
 namespace {
 
-Eigen::Vector2d mercatorOf(const QVariantMap &p)
+Eigen::Vector2d mercatorOf(const QVariant &lat, const QVariant &lon)
 {
     using neptus::geo::radians;
-    return neptus::geo::toMercator(radians(p.value(QStringLiteral("lat")).toDouble()), radians(p.value(QStringLiteral("lon")).toDouble()));
+    return neptus::geo::toMercator(radians(lat.toDouble()), radians(lon.toDouble()));
 }
 
 } // namespace
@@ -32,8 +32,10 @@ void PlanOverlayItem::setPath(const QVariantList &path)
     m_pathList = path;
     m_path.clear();
     m_path.reserve(size_t(path.size()));
-    for (const QVariant &v : path)
-        m_path.push_back(mercatorOf(v.toMap()));
+    for (const QVariant &v : path) {
+        const QVariantMap p = v.toMap();
+        m_path.push_back(mercatorOf(p.value(QStringLiteral("lat")), p.value(QStringLiteral("lon"))));
+    }
     m_stale = true;
     update();
     emit pathChanged();
@@ -47,19 +49,29 @@ void PlanOverlayItem::setManeuvers(QAbstractItemModel *maneuvers)
         m_maneuvers->disconnect(this);
     m_maneuvers = maneuvers;
     if (maneuvers) {
-        // Any change of rows: the dots again (a few microseconds a thousand).
-        connect(maneuvers, &QAbstractItemModel::rowsInserted, this, &PlanOverlayItem::readDots);
-        connect(maneuvers, &QAbstractItemModel::rowsRemoved, this, &PlanOverlayItem::readDots);
-        connect(maneuvers, &QAbstractItemModel::rowsMoved, this, &PlanOverlayItem::readDots);
-        connect(maneuvers, &QAbstractItemModel::dataChanged, this, &PlanOverlayItem::readDots);
-        connect(maneuvers, &QAbstractItemModel::modelReset, this, &PlanOverlayItem::readDots);
+        // Any change of rows: the dots again, once before the next frame
+        // however many signals an edit sends (a few microseconds a thousand).
+        for (auto signal : {&QAbstractItemModel::rowsInserted, &QAbstractItemModel::rowsRemoved})
+            connect(maneuvers, signal, this, &PlanOverlayItem::dotsChanged);
+        connect(maneuvers, &QAbstractItemModel::rowsMoved, this, &PlanOverlayItem::dotsChanged);
+        connect(maneuvers, &QAbstractItemModel::dataChanged, this, &PlanOverlayItem::dotsChanged);
+        connect(maneuvers, &QAbstractItemModel::modelReset, this, &PlanOverlayItem::dotsChanged);
     }
-    readDots();
+    dotsChanged();
     emit maneuversChanged();
 }
 
-void PlanOverlayItem::readDots()
+void PlanOverlayItem::dotsChanged()
 {
+    m_dotsStale = true;
+    polish();
+}
+
+void PlanOverlayItem::updatePolish()
+{
+    if (!m_dotsStale)
+        return;
+    m_dotsStale = false;
     m_dots.clear();
     if (QAbstractItemModel *model = m_maneuvers.data()) {
         const QHash<int, QByteArray> names = model->roleNames();
@@ -69,8 +81,7 @@ void PlanOverlayItem::readDots()
         for (int r = 0; r < rows; ++r) {
             const QModelIndex i = model->index(r, 0);
             const QString s = model->data(i, severity).toString();
-            m_dots.push_back({neptus::geo::toMercator(neptus::geo::radians(model->data(i, lat).toDouble()),
-                                                      neptus::geo::radians(model->data(i, lon).toDouble())),
+            m_dots.push_back({mercatorOf(model->data(i, lat), model->data(i, lon)),
                               s == QLatin1String("error") ? 2 : s == QLatin1String("warning") ? 1 : 0});
         }
     }

@@ -52,6 +52,7 @@ signals:
 
 protected:
     QSGNode *updatePaintNode(QSGNode *old, UpdatePaintNodeData *) override;
+    void updatePolish() override; // the dots read again from the model
 
 private:
     struct Dot
@@ -59,7 +60,8 @@ private:
         Eigen::Vector2d at; // Mercator
         int severity;       // 0 none, 1 warning, 2 error
     };
-    void readDots(); // the model's rows again
+    void dotsChanged(); // read again before the next frame
+    bool m_dotsStale = false;
     QVariantList m_pathList;
     QPointer<QAbstractItemModel> m_maneuvers;
     std::vector<Eigen::Vector2d> m_path; // Mercator
