@@ -3,6 +3,21 @@
 #include <QEvent>
 #include <QCoreApplication>
 
+#if defined(__GLIBC__)
+#include <malloc.h>
+#endif
+
+namespace {
+
+void trimHeap()
+{
+#if defined(__GLIBC__)
+    malloc_trim(0);
+#endif
+}
+
+} // namespace
+
 RestWatch::RestWatch(std::chrono::milliseconds restAfter, QObject *parent)
     : QObject(parent)
 {
@@ -10,6 +25,8 @@ RestWatch::RestWatch(std::chrono::milliseconds restAfter, QObject *parent)
     m_rest.setInterval(restAfter);
     connect(&m_rest, &QTimer::timeout, this, [this] { setResting(true); });
     m_rest.start();
+    m_trim.setInterval(std::chrono::minutes(1));
+    connect(&m_trim, &QTimer::timeout, this, &trimHeap);
     // Every window's input passes the application first (dialogs, pop-outs).
     QCoreApplication::instance()->installEventFilter(this);
 }
@@ -38,5 +55,11 @@ void RestWatch::setResting(bool resting)
     if (resting == m_resting)
         return;
     m_resting = resting;
+    if (resting) {
+        trimHeap();
+        m_trim.start();
+    } else {
+        m_trim.stop();
+    }
     emit restingChanged(resting);
 }
