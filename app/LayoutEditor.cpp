@@ -1,5 +1,7 @@
 #include "LayoutEditor.h"
 
+#include "qmlmodels/LayoutIds.h"
+
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
@@ -256,18 +258,10 @@ QString LayoutEditor::expression(const QString &id, const QString &name) const
 
 QString LayoutEditor::idOf(QObject *object)
 {
-    const QQmlContext *context = object ? qmlContext(object) : nullptr;
-    return context ? context->nameForObject(object) : QString();
+    return LayoutIds::idOf(object);
 }
 
 QObject *LayoutEditor::itemWithId(QObject *console, const QString &id)
 {
-    // By the layout file's ids (a hash), not by asking each child its id
-    // (a scan of the ids for every child): big layouts open in linear time.
-    const auto *root = qobject_cast<QQuickItem *>(console);
-    const QQmlContext *context = root ? qmlContext(root) : nullptr;
-    if (!context || id.isEmpty())
-        return nullptr;
-    auto *item = qobject_cast<QQuickItem *>(context->objectForName(id));
-    return item && item->parentItem() == root ? item : nullptr;
+    return LayoutIds::child(console, id);
 }

@@ -19,6 +19,7 @@
 #include <QDir>
 #include <QFile>
 #include <QGuiApplication>
+#include <QProcess>
 #include <QQmlApplicationEngine>
 #include <QQuickStyle>
 #include <QQuickWindow>
@@ -332,6 +333,23 @@ int main(int argc, char *argv[])
     session.chartWatch()->setCharts(charts);
     session.treeModel()->setDisplayRate(commandLine->displayRate);
     session.treeModel()->setRestingRate(commandLine->restingRate);
+    // The operation's sessions, for review: one opens in a review window of its own (a live
+    // console keeps watching its vehicles).
+    const QString operationDatabase = commandLine->databaseUrl(true);
+    session.sessions()->setDatabase(operationDatabase);
+    if (database)
+        session.sessions()->setOwnSession(database->session());
+    QObject::connect(session.sessions(), &SessionsModel::openRequested, &app, [operationDatabase](const QString &id, const QStringList &logs) {
+        QStringList arguments{QStringLiteral("--console"), QDir(neptus::dataPath(QStringLiteral("consoles"))).filePath(QStringLiteral("Review.qml")),
+                              QStringLiteral("--database"), operationDatabase};
+        for (const QString &log : logs)
+            arguments << QStringLiteral("--replay") << log;
+        qint64 pid = 0;
+        if (QProcess::startDetached(QCoreApplication::applicationFilePath(), arguments, {}, &pid))
+            std::printf("neptus: session %s opened for review (process %lld)\n", qPrintable(id), pid);
+        else
+            std::fprintf(stderr, "neptus: session %s: the review could not be started\n", qPrintable(id));
+    });
     // Nobody touching the console: vehicles are shown at the resting rate.
     RestWatch restWatch(std::chrono::seconds(CommandLine::restAfterS));
     QObject::connect(&restWatch, &RestWatch::restingChanged, session.treeModel(), &neptus::tree::VariableTreeModel::setResting);

@@ -88,9 +88,27 @@ Item {
         const left = snap(r.x), top = snap(r.y)
         return Qt.rect(left, top, Math.max(grid, snap(r.x + r.width) - left), Math.max(grid, snap(r.y + r.height) - top))
     }
+    // A console held upright shows its portrait arrangement (Console.portrait):
+    // what is placed there is placed in it, landscape stays as it was.
+    function portraitShown() { return loader && loader.item ? loader.item.portraitShown === true : false }
+    function portraitEntry(id) {
+        const list = editor.value(editor.rootId(), "portrait") || []
+        for (const entry of list) {
+            if (entry[0] === id)
+                return entry
+        }
+        return null
+    }
+    function placeGeometry(id, x, y, w, h) {
+        if (!portraitShown())
+            return editor.setGeometry(id, x, y, w, h)
+        const list = (editor.value(editor.rootId(), "portrait") || []).filter(entry => entry[0] !== id)
+        list.push([id, x, y, w, h])
+        return editor.setValue(editor.rootId(), "portrait", list)
+    }
     function setGeometry(id, item) {
         const r = toLayout(item.x, item.y, item.width, item.height)
-        editor.setGeometry(id, r.x, r.y, r.width, r.height)
+        placeGeometry(id, r.x, r.y, r.width, r.height)
     }
     function itemFor(id) { return loader && loader.item ? editor.itemWithId(loader.item, id) : null }
     function movable(id) {
@@ -108,7 +126,18 @@ Item {
         const r = console_ && console_.proportional
             ? toLayout(Math.max(0, x - w / 2), Math.max(0, y - h / 2), w, h)
             : Qt.rect(snap(Math.max(0, x - w / 2)), snap(Math.max(0, y - h / 2)), w, h)
-        const id = editor.add(entry.name, entry.module, r.x, r.y, r.width, r.height)
+        let id
+        if (portraitShown()) {
+            // Placed in the portrait arrangement; its landscape place the same part of the console.
+            const c = loader.item
+            const kx = c.designWidth / c.portraitWidth, ky = c.designHeight / c.portraitHeight
+            id = editor.add(entry.name, entry.module, Math.round(r.x * kx), Math.round(r.y * ky),
+                            Math.round(r.width * kx), Math.round(r.height * ky))
+            if (id !== "")
+                placeGeometry(id, r.x, r.y, r.width, r.height)
+        } else {
+            id = editor.add(entry.name, entry.module, r.x, r.y, r.width, r.height)
+        }
         placing = ""
         selected = id
         return id
@@ -149,6 +178,16 @@ Item {
         if (!item || !movable(selected))
             return
         // In the layout's own units (design pixels for a proportional layout).
+        const placed = portraitShown() ? portraitEntry(selected) : null
+        if (placed) {
+            placeGeometry(selected, placed[1] + dx, placed[2] + dy, placed[3], placed[4])
+            return
+        }
+        if (portraitShown()) {
+            const r = toLayout(item.x, item.y, item.width, item.height)
+            placeGeometry(selected, r.x + dx, r.y + dy, r.width, r.height)
+            return
+        }
         const value = (name, fallback) => editor.value(selected, name) !== undefined ? editor.value(selected, name) : fallback
         editor.setGeometry(selected, value("x", 0) + dx, value("y", 0) + dy, value("width", item.width), value("height", item.height))
     }

@@ -929,6 +929,47 @@ std::expected<std::vector<Reader::LogRecord>, QString> Reader::logs()
                              });
 }
 
+std::expected<std::vector<Reader::SessionSummary>, QString> Reader::sessionSummaries()
+{
+    auto sessions = this->sessions();
+    auto logs = this->logs();
+    if (!sessions || !logs)
+        return std::unexpected(sessions ? logs.error() : sessions.error());
+    std::vector<SessionSummary> summaries;
+    summaries.reserve(sessions->size());
+    for (SessionRecord &record : *sessions) {
+        SessionSummary summary{std::move(record), {}, {}, {}};
+        const QString &id = summary.session.session;
+        // The positions' and plan events' keys start with the session: these read its rows only.
+        auto systems = select<QString>(m_connection, u"SELECT DISTINCT system FROM positions WHERE session = ? ORDER BY system"_s, {id},
+                                       [](const QSqlQuery &q) { return q.value(0).toString(); });
+        if (!systems)
+            return std::unexpected(systems.error());
+        summary.systems = QStringList(systems->begin(), systems->end());
+        // A run is a "started" row, then the row that ends it (see OperationsFeed).
+        auto events = select<std::pair<QString, QString>>(
+            m_connection, u"SELECT system, plan, event FROM plan_events WHERE session = ? ORDER BY t, seq"_s, {id},
+            [](const QSqlQuery &q) { return std::pair{q.value(0).toString() + u'\n' + q.value(1).toString(), q.value(2).toString()}; });
+        if (!events)
+            return std::unexpected(events.error());
+        QHash<QString, qsizetype> open; // system + plan → its run in `runs`
+        static const QStringList ends = {u"completed"_s, u"failed"_s, u"stopped"_s, u"replaced"_s, u"ended"_s};
+        for (const auto &[key, event] : *events) {
+            if (event == u"started") {
+                open.insert(key, summary.runs.size());
+                summary.runs << key.section(u'\n', 1) + u": running"_s;
+            } else if (ends.contains(event) && open.contains(key)) {
+                summary.runs[open.take(key)] = key.section(u'\n', 1) + u": "_s + event;
+            }
+        }
+        for (const LogRecord &log : *logs)
+            if (log.session == id)
+                summary.logs.push_back(log);
+        summaries.push_back(std::move(summary));
+    }
+    return summaries;
+}
+
 std::expected<qint64, QString> Reader::count(Table table, const QString &session)
 {
     const QString sql = u"SELECT COUNT(*) FROM %1"_s.arg(QLatin1StringView(info(table).name));

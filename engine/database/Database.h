@@ -2,6 +2,7 @@
 
 #include <QObject>
 #include <QString>
+#include <QStringList>
 #include <QVariantList>
 
 #include <array>
@@ -128,6 +129,16 @@ public:
     std::expected<std::vector<LogBookRecord>, QString> logBook(qint64 fromMs, qint64 toMs);
     std::expected<std::vector<SessionRecord>, QString> sessions();
     std::expected<std::vector<LogRecord>, QString> logs();
+    // Each session with what it did, oldest first: the systems whose positions it
+    // kept, its plan runs as "plan: how it ended" ("survey: completed", "survey:
+    // running" while no end is known) in order, and its logs.
+    struct SessionSummary
+    {
+        SessionRecord session;
+        QStringList systems, runs;
+        std::vector<LogRecord> logs;
+    };
+    std::expected<std::vector<SessionSummary>, QString> sessionSummaries();
     // Rows in a table, or of one writer's session in it.
     std::expected<qint64, QString> count(Table table, const QString &session = {});
 

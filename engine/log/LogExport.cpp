@@ -119,39 +119,50 @@ std::map<quint16, std::vector<TrackPoint>> tracks(const LogSet &logs)
     return *tracksOf(logs, {});
 }
 
+std::vector<plans::PlanRuns::Event> planEvents(const LogSet &logs)
+{
+    std::vector<plans::PlanRuns::Event> events;
+    if (logs.logs().empty())
+        return events;
+    const msg::Schema &schema = logs.logs().front()->schemas().defaultSchema();
+    const msg::MessageDef *state = schema.byAbbrev(u"PlanControlState"), *control = schema.byAbbrev(u"PlanControl");
+    if (!state || !control)
+        return events;
+    const auto ms = [](double t) { return qint64(std::llround(t * 1000)); };
+    plans::PlanRuns runs;
+    const auto add = [&events](std::vector<plans::PlanRuns::Event> more) {
+        std::move(more.begin(), more.end(), std::back_inserter(events));
+    };
+    for (qsizetype k = 0; k < logs.count(); ++k) {
+        const LogFile &log = logs.logOf(k);
+        const quint16 id = log.messageId(logs.indexInLog(k));
+        if (id != state->id && id != control->id)
+            continue;
+        if (const auto m = logs.decode(k); m && m->def()) {
+            add(runs.poll(ms(logs.time(k))));
+            add(runs.observe(*m, ms(logs.time(k))));
+        }
+    }
+    add(runs.finish(ms(logs.end())));
+    // An end told after its reason came keeps its own moment.
+    std::stable_sort(events.begin(), events.end(), [](const auto &a, const auto &b) { return a.ms < b.ms; });
+    return events;
+}
+
 std::vector<PlanRun> planRuns(const LogSet &logs, const std::map<quint16, std::vector<TrackPoint>> &all)
 {
     std::vector<PlanRun> runs;
-    if (logs.logs().empty())
-        return runs;
-    const msg::MessageDef *stateDef = logs.logs().front()->schemas().defaultSchema().byAbbrev(u"PlanControlState");
-    if (!stateDef)
-        return runs;
     QHash<quint16, size_t> open; // system → its run in `runs`
-    for (qsizetype k = 0; k < logs.count(); ++k) {
-        const LogFile &log = logs.logOf(k);
-        const qsizetype i = logs.indexInLog(k);
-        if (log.messageId(i) != stateDef->id)
-            continue;
-        const auto m = logs.decode(k);
-        if (!m || !m->def())
-            continue;
-        const quint16 system = m->header.src;
-        const bool executing = m->integer(u"state") == 3;
-        const QString plan = m->text(u"plan_id");
-        const auto current = open.constFind(system);
-        if (current != open.cend() && (!executing || runs[*current].plan != plan)) {
-            PlanRun &run = runs[*current];
-            run.end = logs.time(k);
-            if (!executing)
-                run.outcome = m->enumText(m->def()->fieldIndex.value(QStringLiteral("last_outcome")));
-            open.remove(system);
-        }
-        if (executing && !open.contains(system)) {
-            runs.push_back({system, logs.systemName(system), plan, {}, logs.time(k), logs.time(k), 0, 0});
-            open.insert(system, runs.size() - 1);
-        } else if (executing) {
-            runs[open.value(system)].end = logs.time(k);
+    for (const plans::PlanRuns::Event &e : planEvents(logs)) {
+        const double t = e.ms / 1000.0;
+        if (e.kind == plans::PlanRuns::Event::Kind::Started) {
+            runs.push_back({e.system, logs.systemName(e.system), e.plan, {}, {}, t, t, 0, 0});
+            open.insert(e.system, runs.size() - 1);
+        } else if (e.kind == plans::PlanRuns::Event::Kind::Ended && open.contains(e.system)) {
+            PlanRun &run = runs[open.take(e.system)];
+            run.end = t;
+            run.outcome = plans::PlanRuns::outcomeName(e.outcome);
+            run.reason = e.reason;
         }
     }
     // What the tracks say of each run.
@@ -286,16 +297,13 @@ std::vector<LogMarker> markersOf(const LogSet &logs)
         const msg::MessageDef *def = schema.byAbbrev(abbrev);
         return def ? def->id : msg::Schema::noMessage;
     };
-    const quint16 logBook = idOf(u"LogBookEntry"), entityState = idOf(u"EntityState"),
-                  planState = idOf(u"PlanControlState"), planControl = idOf(u"PlanControl");
+    const quint16 logBook = idOf(u"LogBookEntry"), entityState = idOf(u"EntityState");
     QHash<quint32, qint64> entityLevels; // (system, entity) → last state
-    QHash<quint16, std::pair<QString, double>> executing; // system → the plan it runs, since when
-    QHash<quint16, QString> finished; // a plan said over while its state still says EXECUTING
     for (qsizetype k = 0; k < logs.count(); ++k) {
         const LogFile &log = logs.logOf(k);
         const qsizetype i = logs.indexInLog(k);
         const quint16 id = log.messageId(i);
-        if (id != logBook && id != entityState && id != planState && id != planControl)
+        if (id != logBook && id != entityState)
             continue;
         const auto m = logs.decode(k);
         if (!m || !m->def())
@@ -308,7 +316,7 @@ std::vector<LogMarker> markersOf(const LogSet &logs)
                 continue;
             markers.push_back({t, type >= 2 ? LogMarker::Alarm : LogMarker::Note,
                                QStringLiteral("%1 %2: %3").arg(who, m->text(u"context"), m->text(u"text"))});
-        } else if (id == entityState) {
+        } else {
             const quint32 key = (quint32(m->header.src) << 8) | m->header.srcEnt;
             const qint64 state = m->integer(u"state"); // BOOT, NORMAL, FAULT, ERROR, FAILURE
             const qint64 before = entityLevels.value(key, 1);
@@ -318,40 +326,34 @@ std::vector<LogMarker> markersOf(const LogSet &logs)
                                                             .arg(who).arg(m->header.srcEnt)
                                                             .arg(m->enumText(m->def()->fieldIndex.value(QStringLiteral("state"))),
                                                                  m->text(u"description"))});
-        } else if (id == planControl) {
-            // A vehicle's final reply to START (SUCCESS or FAILURE) for the plan it runs, after
-            // its first reply (the start): the plan is over. DUNE's logs end there.
-            const qint64 type = m->integer(u"type"), op = m->integer(u"op");
-            const auto running = executing.constFind(m->header.src);
-            if (op != 0 || (type != 1 && type != 2) || running == executing.cend()
-                || running->first != m->text(u"plan_id") || t - running->second < 1.0)
-                continue;
-            markers.push_back({t, type == 2 ? LogMarker::Alarm : LogMarker::PlanEnd,
-                               QStringLiteral("%1: plan %2 ended (%3): %4")
-                                   .arg(who, running->first, type == 2 ? QStringLiteral("FAILURE") : QStringLiteral("SUCCESS"),
-                                        m->text(u"info"))});
-            finished.insert(m->header.src, running->first);
-            executing.remove(m->header.src);
-        } else {
-            const bool running = m->integer(u"state") == 3; // EXECUTING
-            const QString plan = m->text(u"plan_id");
-            const QString was = executing.value(m->header.src).first;
-            if (!running)
-                finished.remove(m->header.src);
-            else if (finished.value(m->header.src) == plan)
-                continue;
-            if (running && was != plan) {
-                if (!was.isEmpty())
-                    markers.push_back({t, LogMarker::PlanEnd, QStringLiteral("%1: plan %2 ended").arg(who, was)});
-                markers.push_back({t, LogMarker::PlanStart, QStringLiteral("%1: plan %2 started").arg(who, plan)});
-                executing.insert(m->header.src, {plan, t});
-            } else if (!running && !was.isEmpty()) {
-                markers.push_back({t, LogMarker::PlanEnd, QStringLiteral("%1: plan %2 ended (%3)")
-                                                             .arg(who, was, m->enumText(m->def()->fieldIndex.value(QStringLiteral("last_outcome"))))});
-                executing.remove(m->header.src);
-            }
         }
     }
+    using Run = plans::PlanRuns;
+    for (const Run::Event &e : planEvents(logs)) {
+        const QString who = logs.systemName(e.system);
+        const double t = e.ms / 1000.0;
+        switch (e.kind) {
+        case Run::Event::Kind::Started:
+            markers.push_back({t, LogMarker::PlanStart, e.joined ? QStringLiteral("%1: plan %2 running as the log begins").arg(who, e.plan)
+                                                                 : QStringLiteral("%1: plan %2 started").arg(who, e.plan)});
+            break;
+        case Run::Event::Kind::Maneuver:
+            break;
+        case Run::Event::Kind::Ended: {
+            QString text = QStringLiteral("%1: plan %2 %3").arg(who, e.plan, Run::outcomeName(e.outcome));
+            if (e.outcome == Run::Outcome::Replaced)
+                text += QStringLiteral(": %1 started in its place").arg(e.reason);
+            else if (e.outcome == Run::Outcome::StillRunning)
+                text = QStringLiteral("%1: plan %2 running when the log ends%3")
+                           .arg(who, e.plan, e.reason.isEmpty() ? QString() : QStringLiteral(" (last said: %1)").arg(e.reason));
+            else if (!e.reason.isEmpty())
+                text += QStringLiteral(": ") + e.reason;
+            markers.push_back({t, e.outcome == Run::Outcome::Failed ? LogMarker::Alarm : LogMarker::PlanEnd, text});
+            break;
+        }
+        }
+    }
+    std::stable_sort(markers.begin(), markers.end(), [](const LogMarker &a, const LogMarker &b) { return a.time < b.time; });
     return markers;
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "log/Replay.h"
+#include "plans/PlanRuns.h"
 
 #include <QHash>
 #include <QString>
@@ -32,9 +33,16 @@ struct LogSummary
 };
 LogSummary summarize(const LogSet &logs);
 
+// What the plans in the log did, in time order, as the console tells them
+// live (plans::PlanRuns: each run's start, maneuvers and end from the
+// vehicles' PlanControlState, the words from their replies); a run still
+// open when the log ends is told there as StillRunning. Times (`ms`) are log
+// times in milliseconds.
+std::vector<plans::PlanRuns::Event> planEvents(const LogSet &logs);
+
 // What a review's timeline marks: the vehicles' log-book entries (errors
 // and critical ones as alarms), entities going to fault, error or failure,
-// and plans starting and ending (PlanControlState), in time order.
+// and plans starting and ending (planEvents), in time order.
 struct LogMarker
 {
     enum Kind { Note, Alarm, PlanStart, PlanEnd };
@@ -57,12 +65,14 @@ struct TrackPoint
 };
 std::map<quint16, std::vector<TrackPoint>> tracks(const LogSet &logs);
 
-// The plans the vehicles ran (from PlanControlState: executing from … to),
-// with what their tracks say of them.
+// The plans the vehicles ran (planEvents: executing from … to), with what
+// their tracks say of them.
 struct PlanRun
 {
     quint16 system = 0;
-    QString systemName, plan, outcome; // outcome: SUCCESS, FAILURE, … or "" if the log ends first
+    QString systemName, plan;
+    QString outcome;                   // PlanRuns::outcomeName: completed, failed, …, "still running" when the log ends
+    QString reason;                    // the vehicle's words, or the plan that replaced it
     double begin = 0, end = 0;         // log times (LogSet::time)
     double distance = 0;               // metres along the track
     double maxDepth = 0;

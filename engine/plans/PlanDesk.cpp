@@ -516,6 +516,7 @@ void PlanDesk::told(const PlanRuns::Event &e)
         m_graph.notify(node, u"plan %1 ended: %2 started in its place"_s.arg(plan, e.reason));
         return;
     case PlanRuns::Outcome::Unreported:
+    case PlanRuns::Outcome::StillRunning: // only at the end of a log
         note(e.system, u"%1 ended%2 (the vehicle did not say how)%3"_s.arg(plan, supervised,
                                                                           e.reason.isEmpty() ? QString() : u": "_s + e.reason));
         m_graph.notify(node, u"plan %1 ended"_s.arg(plan));

@@ -1,5 +1,7 @@
 #include "plans/PlanRuns.h"
 
+#include <limits>
+
 namespace neptus::plans {
 
 using namespace Qt::StringLiterals;
@@ -21,6 +23,7 @@ QString PlanRuns::outcomeName(Outcome outcome)
     case Outcome::Failed: return u"failed"_s;
     case Outcome::Stopped: return u"stopped"_s;
     case Outcome::Replaced: return u"replaced"_s;
+    case Outcome::StillRunning: return u"still running"_s;
     case Outcome::Unreported: break;
     }
     return u"ended"_s;
@@ -78,13 +81,14 @@ void PlanRuns::state(Vehicle &v, const msg::Message &m, qint64 nowMs, std::vecto
         }
         v.run = Run{plan, maneuver, nowMs, first};
         v.failure.clear();
+        v.said.clear();
         v.stopAnswered = false;
-        out.push_back(Event{Event::Kind::Started, 0, plan, maneuver, first, Outcome::Unreported, {}});
+        out.push_back(Event{Event::Kind::Started, 0, plan, maneuver, first, Outcome::Unreported, {}, nowMs});
         return;
     }
     if (!maneuver.isEmpty() && maneuver != v.run->maneuver) {
         v.run->maneuver = maneuver;
-        out.push_back(Event{Event::Kind::Maneuver, 0, plan, maneuver, false, Outcome::Unreported, {}});
+        out.push_back(Event{Event::Kind::Maneuver, 0, plan, maneuver, false, Outcome::Unreported, {}, nowMs});
     }
 }
 
@@ -92,6 +96,8 @@ void PlanRuns::reply(Vehicle &v, const msg::Message &m, qint64 nowMs, std::vecto
 {
     const QString type = enumOf(m, u"type");
     const bool stopDone = type == u"SUCCESS" && enumOf(m, u"op") == u"STOP";
+    if (v.run && (type == u"SUCCESS" || type == u"FAILURE") && !m.text(u"info").isEmpty())
+        v.said = m.text(u"info");
     if (type == u"FAILURE") {
         if (v.pending) { // the end came first (another topic, over DDS): these are its words
             v.pending->reason = m.text(u"info");
@@ -128,7 +134,7 @@ std::vector<PlanRuns::Event> PlanRuns::stopAnswered(quint16 system)
 
 void PlanRuns::end(Vehicle &v, quint16 system, Outcome outcome, QString reason, qint64 nowMs, std::vector<Event> &out)
 {
-    Event e{Event::Kind::Ended, system, v.run->plan, v.run->maneuver, v.run->joined, outcome, std::move(reason)};
+    Event e{Event::Kind::Ended, system, v.run->plan, v.run->maneuver, v.run->joined, outcome, std::move(reason), nowMs};
     v.run.reset();
     if (outcome == Outcome::Failed && e.reason.isEmpty()) {
         v.pending = std::move(e);
@@ -147,6 +153,15 @@ std::vector<PlanRuns::Event> PlanRuns::poll(qint64 nowMs)
             it->pending.reset();
         }
     }
+    return out;
+}
+
+std::vector<PlanRuns::Event> PlanRuns::finish(qint64 nowMs)
+{
+    std::vector<Event> out = poll(std::numeric_limits<qint64>::max());
+    for (auto it = m_vehicles.begin(); it != m_vehicles.end(); ++it)
+        if (it->run)
+            end(*it, it.key(), Outcome::StillRunning, it->said, nowMs, out);
     return out;
 }
 

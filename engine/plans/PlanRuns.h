@@ -33,7 +33,7 @@ namespace neptus::plans {
 class PlanRuns
 {
 public:
-    enum class Outcome { Completed, Failed, Stopped, Replaced, Unreported };
+    enum class Outcome { Completed, Failed, Stopped, Replaced, Unreported, StillRunning /* when the stream ended: finish() */ };
     struct Event
     {
         enum class Kind { Started, Maneuver, Ended };
@@ -44,6 +44,7 @@ public:
         bool joined = false;           // Started: it was running before this console heard the vehicle
         Outcome outcome = Outcome::Unreported; // Ended
         QString reason;                // Ended: the vehicle's words, or what replaced it
+        qint64 ms = 0;                 // when the vehicle's state said it (an end told later keeps its moment)
     };
     struct Run
     {
@@ -63,6 +64,11 @@ public:
     std::vector<Event> stopAnswered(quint16 system);
     // Ends whose reason did not come in time, told without it.
     std::vector<Event> poll(qint64 nowMs);
+    // The stream ends (a log's last packet): every end still waiting is told,
+    // and every run still open is told as StillRunning here, with the last
+    // words the vehicle said during it (DUNE closes its log as a plan ends,
+    // after its last reply "plan completed" and before the state says so).
+    std::vector<Event> finish(qint64 nowMs);
     bool waiting() const;
     // The run a vehicle is in, if any.
     std::optional<Run> running(quint16 system) const;
@@ -71,7 +77,7 @@ public:
     // vehicle's mission, recognised as the plan it came from): no new run.
     void relabel(quint16 system, const QString &plan);
 
-    // "completed", "failed", "stopped", "replaced", "ended".
+    // "completed", "failed", "stopped", "replaced", "ended", "still running".
     static QString outcomeName(Outcome outcome);
 
 private:
@@ -79,6 +85,7 @@ private:
     {
         bool heard = false; // a state was heard before
         std::optional<Run> run;
+        QString said;       // the last words of any reply during this run
         QString failure;    // the last FAILURE reply's words during this run, and when
         qint64 failureMs = 0;
         bool stopAnswered = false;

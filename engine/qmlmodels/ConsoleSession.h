@@ -5,6 +5,7 @@
 #include "qmlmodels/LinkStatisticsModel.h"
 #include "qmlmodels/PlanDeskModel.h"
 #include "qmlmodels/ReplayModel.h"
+#include "qmlmodels/SessionsModel.h"
 #include "qmlmodels/Tracks.h"
 #include "qmlmodels/VariableTreeModel.h"
 #include "session/Console.h"
@@ -31,6 +32,8 @@ class ConsoleSession : public QObject
     Q_PROPERTY(ChartWatch *charts READ chartWatch CONSTANT)
     // The replay when this console is fed from a log (--replay), else null: nothing is sent then.
     Q_PROPERTY(ReplayModel *replay READ replay CONSTANT)
+    // The operation's sessions from its database, for review (the program names the database).
+    Q_PROPERTY(SessionsModel *sessions READ sessions CONSTANT)
 
 public:
     explicit ConsoleSession(std::shared_ptr<const neptus::msg::Schema> schema,
@@ -48,6 +51,7 @@ public:
     PlanDeskModel *plansModel() { return &m_plansModel; }
     ChartWatch *chartWatch() { return &m_chartWatch; }
     ReplayModel *replay() const { return m_replay; }
+    SessionsModel *sessions() { return &m_sessions; }
     // Before QML sees the session: this console replays `replay` (kept by the caller).
     void setReplay(ReplayModel *replay);
 
@@ -85,4 +89,5 @@ private:
     PlanDeskModel m_plansModel{&m_planDesk, &m_share};
     ChartWatch m_chartWatch{&m_tracks, &m_console.alarmGraph()};
     ReplayModel *m_replay = nullptr;
+    SessionsModel m_sessions;
 };

@@ -49,7 +49,7 @@ ReplayModel::ReplayModel(std::shared_ptr<const log::LogSet> logs, log::ReplayTar
     });
     for (const log::PlanRun &run : log::planRuns(*logs, m_logTracks))
         m_plans.append(QVariantMap{{QStringLiteral("system"), run.systemName}, {QStringLiteral("plan"), run.plan},
-                                   {QStringLiteral("outcome"), run.outcome}, {QStringLiteral("begin"), run.begin},
+                                   {QStringLiteral("outcome"), run.outcome}, {QStringLiteral("reason"), run.reason}, {QStringLiteral("begin"), run.begin},
                                    {QStringLiteral("end"), run.end}, {QStringLiteral("duration"), run.end - run.begin},
                                    {QStringLiteral("distance"), run.distance}, {QStringLiteral("maxDepth"), run.maxDepth}});
     connect(&m_player, &log::Player::positionChanged, this, &ReplayModel::positionChanged);

@@ -18,8 +18,6 @@ QString enumOf(const msg::Message &m, const QString &field)
     return index < 0 ? QString() : m.enumText(index);
 }
 
-constexpr int executing = 3; // PlanControlState.state EXECUTING
-
 } // namespace
 
 OperationsFeed::OperationsFeed(Console &console, db::Writer *writer, const Clock *clock, QObject *parent)
@@ -31,6 +29,9 @@ OperationsFeed::OperationsFeed(Console &console, db::Writer *writer, const Clock
     connect(&m_timer, &QTimer::timeout, this, [this] {
         noteLog();
         checkAlarms();
+        QMutexLocker lock(&m_mutex);
+        if (m_runs.waiting())
+            planEvents(m_runs.poll(m_clock->now().toMSecsSinceEpoch()));
     });
     m_timer.start(250);
     m_console.setFeed(this);
@@ -146,43 +147,42 @@ void OperationsFeed::observe(const msg::Message &m, bool sent)
         put(db::Row{db::Table::Position, {now, nameOf(source), int(source), point.lat, point.lon, point.depth, point.altitude,
                                           point.heading, point.speed}});
     } else if (!sent && def->abbrev == u"PlanControlState") {
-        planState(m, now);
+        LiveSystem &live = m_systems[source].live;
+        live.planState = enumOf(m, u"state"_s);
+        live.plan = m.text(u"plan_id");
+        live.maneuver = m.text(u"man_id");
+        live.progress = m.number(u"plan_progress");
+        planEvents(m_runs.observe(m, now), live.progress);
     } else if (def->abbrev == u"PlanControl") {
         planControl(m, sent, now);
+        if (!sent)
+            planEvents(m_runs.observe(m, now));
     } else if (!sent && def->abbrev == u"LogBookEntry") {
         put(db::Row{db::Table::LogBook, {now, nameOf(source), enumOf(m, u"type"_s), m.text(u"context"), m.text(u"text")}});
     }
 }
 
-void OperationsFeed::planState(const msg::Message &m, qint64 now)
+void OperationsFeed::planEvents(const std::vector<plans::PlanRuns::Event> &events, double progress)
 {
-    SystemState &s = m_systems[m.header.src];
-    const int state = int(m.integer(u"state"));
-    const QString plan = m.text(u"plan_id"), maneuver = m.text(u"man_id"), who = nameOf(m.header.src);
-    auto event = [&](const QString &planId, const QString &what, const QString &man, const QString &detail) {
-        put(db::Row{db::Table::PlanEvent, {now, who, planId, what, man, detail}});
-    };
-    const bool wasRunning = s.planState == executing;
-    if (state == executing) {
-        if (!wasRunning || plan != s.plan) {
-            if (wasRunning)
-                event(s.plan, u"ended"_s, s.maneuver, u"another plan started"_s);
-            event(plan, u"started"_s, maneuver, QString());
-        } else if (maneuver != s.maneuver && !maneuver.isEmpty()) {
-            event(plan, u"maneuver"_s, maneuver, u"%1 %"_s.arg(m.number(u"plan_progress"), 0, 'f', 0));
+    using Kind = plans::PlanRuns::Event::Kind;
+    for (const plans::PlanRuns::Event &e : events) {
+        QString what, detail;
+        switch (e.kind) {
+        case Kind::Started:
+            what = u"started"_s;
+            detail = e.joined ? u"running when first heard"_s : QString();
+            break;
+        case Kind::Maneuver:
+            what = u"maneuver"_s;
+            detail = u"%1 %"_s.arg(progress, 0, 'f', 0);
+            break;
+        case Kind::Ended:
+            what = plans::PlanRuns::outcomeName(e.outcome);
+            detail = e.reason;
+            break;
         }
-    } else if (wasRunning) {
-        const QString outcome = enumOf(m, u"last_outcome"_s).toLower();
-        event(s.plan, outcome.isEmpty() || outcome == u"none"_s ? u"stopped"_s : outcome, s.maneuver,
-              u"state %1"_s.arg(enumOf(m, u"state"_s)));
+        put(db::Row{db::Table::PlanEvent, {e.ms, nameOf(e.system), e.plan, what, e.maneuver, detail}});
     }
-    s.planState = state;
-    s.plan = plan;
-    s.maneuver = maneuver;
-    s.live.planState = enumOf(m, u"state"_s);
-    s.live.plan = plan;
-    s.live.maneuver = maneuver;
-    s.live.progress = m.number(u"plan_progress");
 }
 
 void OperationsFeed::planControl(const msg::Message &m, bool sent, qint64 now)

@@ -4,6 +4,7 @@
 #include "core/Clock.h"
 #include "database/Database.h"
 #include "messages/Message.h"
+#include "plans/PlanRuns.h"
 
 #include <QHash>
 #include <QMutex>
@@ -64,8 +65,9 @@ private:
     // The log being recorded, in the catalogue: its folder, span and counts, every 5 s.
     void noteLog();
     QString nameOf(quint16 id) const;
-    void planState(const msg::Message &m, qint64 now);
     void planControl(const msg::Message &m, bool sent, qint64 now);
+    // Plan starts, maneuvers and ends as the plan desk tells them (the one tracker, plans::PlanRuns).
+    void planEvents(const std::vector<plans::PlanRuns::Event> &events, double progress = 0);
 
     void put(db::Row row);
 
@@ -80,12 +82,11 @@ private:
     {
         QString name, kind;
         qint64 firstMs = 0, writtenMs = 0, lastMs = 0, positionMs = 0;
-        int planState = -1;
-        QString plan, maneuver;
         LiveSystem live;
         std::vector<db::TrackPoint> recent; // the last 10 minutes, a point a second
     };
     QHash<quint16, SystemState> m_systems;
+    plans::PlanRuns m_runs;
 
     struct AlarmState
     {

@@ -9,6 +9,12 @@ import Neptus.Engine
 // and are stretched with the console, so it fills any screen (1024×600 to
 // 3840×2160, landscape or portrait) with nothing cut off. Without one (older
 // files) the numbers are screen pixels, as they always were.
+//
+// A layout may also have a portrait arrangement of its own, used when the
+// console is taller than it is wide (a tablet held upright): `portrait`
+// places components by id, [[id, x, y, width, height], ...], in pixels of
+// portraitWidth × portraitHeight. A component it does not place keeps its
+// landscape place, stretched.
 Item {
     id: console_
     // Layout format, so that a newer Neptus-Qt can read older files.
@@ -27,8 +33,15 @@ Item {
     property real designWidth: 0
     property real designHeight: 0
     readonly property bool proportional: designWidth > 0 && designHeight > 0
-    readonly property real scaleX: proportional && width > 0 ? width / designWidth : 1
-    readonly property real scaleY: proportional && height > 0 ? height / designHeight : 1
+    // The portrait arrangement: its design size and [[id, x, y, width, height], ...].
+    property real portraitWidth: 0
+    property real portraitHeight: 0
+    property var portrait: []
+    // Whether the portrait arrangement is the one shown (chosen by the aspect ratio).
+    readonly property bool portraitShown: proportional && portraitWidth > 0 && portraitHeight > 0
+                                          && portrait.length > 0 && height > width
+    readonly property real scaleX: proportional && width > 0 ? width / (portraitShown ? portraitWidth : designWidth) : 1
+    readonly property real scaleY: proportional && height > 0 ? height / (portraitShown ? portraitHeight : designHeight) : 1
 
     // A rectangle of the screen (the console's own coordinates) in the
     // layout's units, rounded: what the designer writes.
@@ -41,12 +54,24 @@ Item {
     function relayout() {
         if (!proportional)
             return
+        const placed = new Map()
+        if (portraitShown) {
+            for (const p of portrait) {
+                const item = p.length === 5 ? LayoutIds.child(console_, p[0]) : null
+                if (item)
+                    placed.set(item, Qt.rect(p[1], p[2], p[3], p[4]))
+            }
+        }
         for (const entry of designRects) {
-            const r = entry.rect
-            entry.item.x = Math.round(r.x * scaleX)
-            entry.item.y = Math.round(r.y * scaleY)
-            entry.item.width = Math.round((r.x + r.width) * scaleX) - entry.item.x
-            entry.item.height = Math.round((r.y + r.height) * scaleY) - entry.item.y
+            const landscape = !placed.has(entry.item)
+            const r = landscape ? entry.rect : placed.get(entry.item)
+            // A component the portrait arrangement leaves out: its landscape place, stretched.
+            const sx = landscape && portraitShown ? width / designWidth : scaleX
+            const sy = landscape && portraitShown ? height / designHeight : scaleY
+            entry.item.x = Math.round(r.x * sx)
+            entry.item.y = Math.round(r.y * sy)
+            entry.item.width = Math.round((r.x + r.width) * sx) - entry.item.x
+            entry.item.height = Math.round((r.y + r.height) * sy) - entry.item.y
         }
     }
     Component.onCompleted: {
@@ -60,4 +85,6 @@ Item {
     }
     onScaleXChanged: relayout()
     onScaleYChanged: relayout()
+    onPortraitShownChanged: relayout()
+    onPortraitChanged: relayout()
 }

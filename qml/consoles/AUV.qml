@@ -10,6 +10,9 @@ Console {
     designHeight: 752
     designWidth: 1280
     formatVersion: 1
+    portrait: [["compass1", 12, 12, 248, 248], ["attitudeIndicator1", 272, 12, 248, 248], ["rpm", 532, 12, 256, 248], ["depthAltitudeBar1", 12, 272, 96, 420], ["battery1", 120, 272, 320, 80], ["depth", 120, 364, 320, 104], ["battery", 120, 480, 320, 104], ["altitude", 120, 596, 320, 96], ["alarmList1", 452, 272, 336, 420], ["systemsList1", 12, 704, 776, 136], ["abort", 12, 852, 776, 72], ["variableTreeView1", 12, 936, 776, 284]]
+    portraitHeight: 1232
+    portraitWidth: 800
     title: "AUV console"
     vehicleKinds: ["UUV"]
 

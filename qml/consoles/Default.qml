@@ -10,6 +10,9 @@ Console {
     designHeight: 752
     designWidth: 1280
     formatVersion: 1
+    portrait: [["map2D1", 8, 8, 784, 380], ["planPanel1", 8, 396, 388, 400], ["scene3D1", 404, 396, 388, 400], ["compass1", 8, 804, 144, 144], ["attitudeIndicator1", 160, 804, 144, 144], ["battery1", 8, 956, 296, 96], ["systemsList1", 8, 1060, 296, 164], ["depthAltitudeBar1", 312, 804, 64, 420], ["plot1", 384, 804, 408, 268], ["alarmList1", 384, 1080, 408, 144]]
+    portraitHeight: 1232
+    portraitWidth: 800
     title: "Generic console"
 
     Map2D {

@@ -9,6 +9,9 @@ Console {
     designHeight: 752
     designWidth: 1280
     formatVersion: 1
+    portrait: [["healthStrip1", 12, 12, 776, 72], ["systemsList1", 12, 96, 380, 220], ["alarmList1", 408, 96, 380, 220], ["linkStatistics1", 12, 328, 776, 292], ["variableTreeView1", 12, 632, 776, 588]]
+    portraitHeight: 1232
+    portraitWidth: 800
     title: "Inspector"
 
     SystemsList {

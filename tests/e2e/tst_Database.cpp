@@ -167,7 +167,7 @@ TEST(Database, TwoConsolesWriteToOnePostgresServerAndA60sOutageLosesNothing)
     EXPECT_TRUE(plan.contains(u"started go"_s)) << plan.join(u", "_s).toStdString();
     EXPECT_TRUE(plan.contains(u"maneuver circle"_s)) << plan.join(u", "_s).toStdString();
     EXPECT_TRUE(plan.contains(u"maneuver rows"_s)) << plan.join(u", "_s).toStdString();
-    EXPECT_TRUE(plan.contains(u"success rows"_s)) << plan.join(u", "_s).toStdString();
+    EXPECT_TRUE(plan.contains(u"completed rows"_s)) << plan.join(u", "_s).toStdString();
     QStringList operatorAlarm, battery;
     const auto alarms = r.alarms(outageFrom - 60000, QDateTime::currentMSecsSinceEpoch());
     ASSERT_TRUE(alarms.has_value());

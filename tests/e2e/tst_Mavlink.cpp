@@ -295,7 +295,7 @@ TEST(Mavlink, AMixedTeamRunsItsPlansAtOnceAndTheDatabaseAndWebPageShowAllThree)
         })) << vehicle << " " << plan;
     }
     EXPECT_TRUE(std::any_of(events->begin(), events->end(), [](const auto &e) {
-        return e.system == u"ardurover-1"_s && e.plan == u"harbour-loop"_s && e.event == u"success"_s; // as for an IMC vehicle
+        return e.system == u"ardurover-1"_s && e.plan == u"harbour-loop"_s && e.event == u"completed"_s; // as for an IMC vehicle
     }));
 
     // The web page's state: the three, each with a position.

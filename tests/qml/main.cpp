@@ -8,6 +8,7 @@
 #include "messages/Codec.h"
 #include "messages/MessageJson.h"
 #include "messages/Schema.h"
+#include "database/Database.h"
 #include "log/LogFile.h"
 #include "qmlmodels/ConsoleSession.h"
 #include "session/ConsoleReplay.h"
@@ -30,6 +31,7 @@
 #include <QMediaCaptureSession>
 #include <QMediaFormat>
 #include <QMediaRecorder>
+#include <QThread>
 #include <QTimer>
 #include <QVideoFrame>
 #include <QVideoFrameInput>
@@ -247,6 +249,40 @@ public:
         QFile file(path);
         return file.open(QIODevice::ReadOnly) ? QString::fromUtf8(file.readAll()) : QString();
     }
+    // An operation's database in `folder` (operation.db) with three sessions, one after the
+    // other: "ops-a" heard lauv-sim-1, whose plan survey completed, and recorded <folder>/logs/a
+    // (made here); "ops-b" heard boat-1, whose survey has no end, and recorded <folder>/gone (not
+    // on this machine); "ops-c" is the console's own. The console session's list reads it.
+    // Returns ops-a's session id.
+    Q_INVOKABLE QString writeOperation(const QString &folder)
+    {
+        const QString file = QDir(folder).filePath(u"operation.db"_s);
+        const auto location = db::Location::parse(file);
+        QStringList ids;
+        for (const QString &console : {u"ops-a"_s, u"ops-b"_s, u"ops-c"_s}) {
+            db::Writer::Options options;
+            options.spoolFolder = QDir(folder).filePath(u"spool-"_s + console);
+            options.console = console;
+            options.host = u"deck"_s;
+            db::Writer writer(*location, options);
+            ids << writer.session();
+            const QString system = console == u"ops-a" ? u"lauv-sim-1"_s : u"boat-1"_s;
+            writer.write(db::Row{db::Table::Position, {1000, system, 0x1f, 41.18, -8.7, 2.0, 10.0, 0.0, 1.0}});
+            writer.write(db::Row{db::Table::PlanEvent, {1100, system, u"survey"_s, u"started"_s, u"goto1"_s, QString()}});
+            if (console == u"ops-a")
+                writer.write(db::Row{db::Table::PlanEvent, {1200, system, u"survey"_s, u"completed"_s, u"goto1"_s, QString()}});
+            if (console != u"ops-c")
+                writer.write(db::Row{db::Table::Log, {QDir(folder).filePath(console == u"ops-a" ? u"logs/a"_s : u"gone"_s), 1000, 2000, 300, 12000}});
+            if (!writer.flush(5000))
+                return {};
+            QThread::msleep(5); // the next session starts after this one
+        }
+        QDir(folder).mkpath(u"logs/a"_s);
+        m_session.sessions()->setDatabase(file);
+        m_session.sessions()->setOwnSession(ids.back());
+        return ids.front();
+    }
+    Q_INVOKABLE void useDatabase(const QString &url) { m_session.sessions()->setDatabase(url); }
     Q_INVOKABLE bool makeDir(const QString &path) const { return QDir().mkpath(path); }
     Q_INVOKABLE bool fileExists(const QString &path) const { return QFileInfo::exists(path); }
     // The console program in a process of its own, as a restart would start

@@ -331,6 +331,53 @@ TestCase {
         compare(editor.value("depth", "width"), 200)
     }
 
+    // Issue #38: upright, a console shows its portrait arrangement (chosen by the aspect ratio),
+    // and what the designer moves there is written there; the landscape layout stays as it was.
+    function test_anUprightConsoleShowsAndEditsItsPortraitArrangement() {
+        const layout = "import QtQuick\nimport Neptus.Components\n\nConsole {\n    id: layout\n    designHeight: 400\n"
+                     + "    designWidth: 640\n    portrait: [[\"depth\", 16, 32, 200, 96]]\n    portraitHeight: 640\n    portraitWidth: 400\n"
+                     + "    title: \"Half\"\n\n    Readout {\n        id: depth\n        x: 96\n        y: 48\n"
+                     + "        width: 200\n        height: 96\n    }\n\n    Readout {\n        id: speed\n        x: 320\n        y: 48\n"
+                     + "        width: 200\n        height: 96\n    }\n}\n"
+        const shell = openShell(layout)
+        const editor = shell.loader.editor
+        const console_ = shell.loader.item
+        const landscape = Qt.size(shell.width, shell.height)
+        verify(!console_.portraitShown)
+        compare(liveItem(shell, "depth").x, 96 * console_.scaleX, "landscape: its landscape place")
+
+        shell.width = 800
+        shell.height = 1400
+        tryVerify(() => console_.portraitShown, 2000, "upright: the portrait arrangement")
+        const sx = console_.width / 400, sy = console_.height / 640
+        compare(console_.scaleX, sx)
+        tryCompare(liveItem(shell, "depth"), "x", Math.round(16 * sx))
+        compare(liveItem(shell, "depth").y, Math.round(32 * sy))
+        compare(liveItem(shell, "speed").x, Math.round(320 * console_.width / 640), "not placed there: its landscape place, stretched")
+
+        // Nudged upright: the portrait arrangement changes, the landscape layout does not.
+        shell.designer.selected = "depth"
+        shell.designer.nudge(8, 0)
+        compare(editor.value(editor.rootId(), "portrait"), [["depth", 24, 32, 200, 96]])
+        compare(editor.value("depth", "x"), 96)
+        // A component it did not place is placed there by the first move.
+        shell.designer.selected = "speed"
+        shell.designer.nudge(0, 8)
+        const entries = editor.value(editor.rootId(), "portrait")
+        compare(entries.length, 2)
+        compare(entries[1][0], "speed")
+        compare(editor.value("speed", "y"), 48)
+        verify(editor.save())
+        const saved = Fixtures.readFile(shell.file)
+        verify(saved.indexOf("portrait: [[\"depth\", 24, 32, 200, 96], [\"speed\", ") > 0, saved)
+
+        // Back to landscape: as it was.
+        shell.width = landscape.width
+        shell.height = landscape.height
+        tryVerify(() => !shell.loader.item.portraitShown)
+        tryCompare(liveItem(shell, "depth"), "x", Math.round(96 * shell.loader.item.scaleX))
+    }
+
     // A shipped console saved as one of the user's own (the shipped file
     // untouched), its title and vehicle kinds edited in the designer, and a
     // new empty console started.

@@ -126,6 +126,24 @@ TestCase {
                                   + " × " + (item.height / Theme.pixelsPerMm).toFixed(1) + " mm")
             })
         }
+        // Upright, the console's own portrait arrangement places every component (issue #38:
+        // not the landscape layout stretched); either way no two components overlap.
+        const upright = row.size.height > row.size.width
+        compare(console_.portraitShown, upright, "the arrangement follows the aspect ratio")
+        const placed = console_.portrait.map(entry => entry[0])
+        const rects = []
+        for (const component of console_.children) {
+            if (upright && placed.indexOf(LayoutIds.idOf(component)) < 0)
+                problems.push(LayoutIds.idOf(component) + " is not placed by the portrait arrangement")
+            const r = Qt.rect(component.x, component.y, component.width, component.height)
+            for (const other of rects) {
+                const w = Math.min(r.x + r.width, other.r.x + other.r.width) - Math.max(r.x, other.r.x)
+                const h = Math.min(r.y + r.height, other.r.y + other.r.height) - Math.max(r.y, other.r.y)
+                if (w > 1 && h > 1)
+                    problems.push(LayoutIds.idOf(component) + " overlaps " + other.id)
+            }
+            rects.push({ id: LayoutIds.idOf(component), r: r })
+        }
         verify(checked >= 2, checked + " interactive items found: the walk sees them")
         console.log(row.tag + ": " + console_.children.length + " components, " + checked + " interactive items checked")
         compare(problems.length, 0, problems.join("\n"))

@@ -113,7 +113,8 @@ TestCase {
         compare(replay.plans.length, 1)
         const run = replay.plans[0]
         compare(run.plan, "goto-and-wait")
-        compare(run.outcome, "")  // DUNE's log ends with the plan still EXECUTING in PlanControlState
+        compare(run.outcome, "still running")  // DUNE's log ends with the plan still EXECUTING in PlanControlState
+        compare(run.reason, "plan completed")  // what DUNE said last: its final reply to the START
         verify(run.duration > 130, "duration " + run.duration)
         verify(run.distance > 100 && run.distance < 400, "distance " + run.distance)
         verify(run.maxDepth > 1.5 && run.maxDepth < 3, "deepest " + run.maxDepth)

@@ -167,6 +167,50 @@ TEST_P(Engines, EveryKindOfRecordIsWrittenAndReadBack)
     EXPECT_GE(sessions->front().lastMs, sessions->front().startMs);
 }
 
+// Issue #38: the review's session list: each session with the systems it kept positions of, its
+// plan runs and how each ended (a run with no end yet is "running"), and its logs; other
+// sessions' rows are not theirs.
+TEST_P(Engines, EachSessionIsSummarisedWithItsSystemsPlanRunsAndLogs)
+{
+    QString first;
+    {
+        Writer writer(location, options(dir.filePath(u"spool-a"_s), u"ops-a"_s));
+        first = writer.session();
+        writer.write(positions(u"lauv-sim-1"_s, 1000, 3));
+        writer.write(positions(u"boat-1"_s, 1000, 3));
+        writer.write(Row{Table::PlanEvent, {1100, u"lauv-sim-1"_s, u"survey"_s, u"sent"_s, QString(), QString()}});
+        writer.write(Row{Table::PlanEvent, {1200, u"lauv-sim-1"_s, u"survey"_s, u"started"_s, u"goto1"_s, QString()}});
+        writer.write(Row{Table::PlanEvent, {1300, u"lauv-sim-1"_s, u"survey"_s, u"maneuver"_s, u"rows2"_s, u"50 %"_s}});
+        writer.write(Row{Table::PlanEvent, {1400, u"lauv-sim-1"_s, u"survey"_s, u"failed"_s, u"rows2"_s, u"aborted"_s}});
+        writer.write(Row{Table::PlanEvent, {1500, u"boat-1"_s, u"patrol"_s, u"started"_s, u"go"_s, QString()}});
+        writer.write(Row{Table::Log, {u"/logs/a"_s, 1000, 2000, 300, 12000}});
+        ASSERT_TRUE(writer.flush());
+    }
+    {
+        Writer writer(location, options(dir.filePath(u"spool-b"_s), u"ops-b"_s));
+        writer.write(positions(u"lauv-sim-2"_s, 5000, 2));
+        writer.write(Row{Table::PlanEvent, {5100, u"lauv-sim-2"_s, u"survey"_s, u"started"_s, u"goto1"_s, QString()}});
+        writer.write(Row{Table::PlanEvent, {5200, u"lauv-sim-2"_s, u"survey"_s, u"completed"_s, u"goto1"_s, QString()}});
+        ASSERT_TRUE(writer.flush());
+    }
+    auto reader = Reader::open(location);
+    ASSERT_TRUE(reader.has_value()) << reader.error().toStdString();
+    const auto summaries = (*reader)->sessionSummaries();
+    ASSERT_TRUE(summaries.has_value()) << summaries.error().toStdString();
+    ASSERT_EQ(summaries->size(), 2u);
+    const auto &a = summaries->at(0), &b = summaries->at(1);
+    EXPECT_EQ(a.session.session, first);
+    EXPECT_EQ(a.session.console, u"ops-a"_s);
+    EXPECT_EQ(a.systems, (QStringList{u"boat-1"_s, u"lauv-sim-1"_s}));
+    EXPECT_EQ(a.runs, (QStringList{u"survey: failed"_s, u"patrol: running"_s}));
+    ASSERT_EQ(a.logs.size(), 1u);
+    EXPECT_EQ(a.logs[0].folder, u"/logs/a"_s);
+    EXPECT_EQ(b.session.console, u"ops-b"_s);
+    EXPECT_EQ(b.systems, QStringList{u"lauv-sim-2"_s});
+    EXPECT_EQ(b.runs, QStringList{u"survey: completed"_s});
+    EXPECT_TRUE(b.logs.empty());
+}
+
 TEST_P(Engines, TwoWritersAtOnceKeepEveryRowOnce)
 {
     constexpr int perWriter = 20000;

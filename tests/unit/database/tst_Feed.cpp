@@ -110,7 +110,7 @@ TEST_F(Feed, SystemsPositionsPlansAndTheLogBookGoIn)
     EXPECT_EQ(plans->at(0).maneuver, u"goto1"_s);
     EXPECT_EQ(plans->at(1).event, u"maneuver"_s);
     EXPECT_EQ(plans->at(1).maneuver, u"rows2"_s);
-    EXPECT_EQ(plans->at(2).event, u"success"_s);
+    EXPECT_EQ(plans->at(2).event, u"completed"_s);
     EXPECT_EQ(plans->at(2).plan, u"survey"_s);
     EXPECT_EQ(plans->at(3).event, u"start failure"_s);
     EXPECT_EQ(plans->at(3).detail, u"no such plan"_s);
@@ -119,6 +119,45 @@ TEST_F(Feed, SystemsPositionsPlansAndTheLogBookGoIn)
     ASSERT_EQ(book->size(), 1u);
     EXPECT_EQ(book->front().type, u"ERROR"_s);
     EXPECT_EQ(book->front().system, u"lauv-sim-1"_s);
+}
+
+// Issue #34/#38: the database hears of a plan's end from the vehicle's state, as the plan desk does
+// (the same tracker, plans::PlanRuns), never from counting replies: DUNE answers a START with
+// "plan loaded" and "<maneuver>: executing maneuver", both SUCCESS, then its end; an abort ends with
+// a FAILURE carrying the reason, just before the state says BLOCKED/FAILURE.
+TEST_F(Feed, APlansEndIsTheVehiclesStateWithItsWordsNotACountOfReplies)
+{
+    console.ingest(make("Announce", 0x1f, {{"sys_name", u"lauv-sim-1"_s}, {"sys_type", 2}}));
+    const auto reply = [&](int type, const QString &info) {
+        console.ingest(make("PlanControl", 0x1f, {{"type", type}, {"op", 0}, {"request_id", 7}, {"plan_id", u"survey"_s}, {"info", info}}));
+    };
+    const auto state = [&](int state, const QString &man, int outcome) {
+        console.ingest(make("PlanControlState", 0x1f, {{"state", state}, {"plan_id", u"survey"_s}, {"man_id", man}, {"last_outcome", outcome}}));
+        clock.advance(1000);
+    };
+    state(1, QString(), 0); // READY: heard before the plan starts
+    const qint64 t0 = clock.now().toMSecsSinceEpoch();
+    reply(1, u"plan loaded"_s);
+    reply(1, u"goto1: executing maneuver"_s);
+    for (int i = 0; i < 5; ++i)
+        state(3, u"goto1"_s, 0);
+    reply(2, u"aborted by operator"_s);
+    const qint64 ended = clock.now().toMSecsSinceEpoch();
+    state(0, QString(), 2); // BLOCKED, FAILURE
+
+    auto reader = read();
+    ASSERT_TRUE(reader);
+    const auto events = reader->planEvents(0, t0 + 100'000);
+    ASSERT_TRUE(events.has_value());
+    QStringList said;
+    for (const auto &e : *events)
+        said.append(e.event + u": "_s + e.detail);
+    EXPECT_EQ(said, (QStringList{u"start success: plan loaded"_s, u"start success: goto1: executing maneuver"_s, u"started: "_s,
+                                 u"start failure: aborted by operator"_s, u"failed: aborted by operator"_s}))
+        << said.join(u" | "_s).toStdString();
+    ASSERT_EQ(events->size(), 5u);
+    EXPECT_EQ(events->at(2).ms, t0);
+    EXPECT_EQ(events->at(4).ms, ended) << "the end at the state that said so";
 }
 
 TEST_F(Feed, AlarmsAreRaisedAcknowledgedAndCleared)

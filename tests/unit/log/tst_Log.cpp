@@ -632,12 +632,24 @@ TEST(Log, TheTimelineMarksTheDuneLogsPlanItsLogBookAndNothingElse)
         EXPECT_LE(m.time, logs.end());
     }
     ASSERT_EQ(starts.size(), 1u);
-    EXPECT_EQ(starts[0].text, QStringLiteral("lauv-simulator-1: plan goto-and-wait started"));
+    // DUNE opens the log as the plan starts: its first state already says EXECUTING.
+    EXPECT_EQ(starts[0].text, QStringLiteral("lauv-simulator-1: plan goto-and-wait running as the log begins"));
     EXPECT_NEAR(starts[0].time - logs.begin(), 0, 0.5);
+    // DUNE closes the log as the plan ends: after its last reply ("plan completed"), before a
+    // state says so. The log cannot say how the plan ended; it says what the vehicle said last.
     ASSERT_EQ(ends.size(), 1u) << qPrintable(ends.empty() ? QString() : ends[0].text);
-    EXPECT_TRUE(ends[0].text.startsWith(QStringLiteral("lauv-simulator-1: plan goto-and-wait ended (SUCCESS)")))
+    EXPECT_EQ(ends[0].text, QStringLiteral("lauv-simulator-1: plan goto-and-wait running when the log ends (last said: plan completed)"))
         << qPrintable(ends[0].text);
     EXPECT_NEAR(ends[0].time - logs.begin(), 137.8, 0.5);
+    // The same run in the review's plan list and the exports (one tracker: plans::PlanRuns).
+    const auto runs = log::planRuns(logs, log::tracks(logs));
+    ASSERT_EQ(runs.size(), 1u);
+    EXPECT_EQ(runs[0].plan, QStringLiteral("goto-and-wait"));
+    EXPECT_EQ(runs[0].outcome, QStringLiteral("still running"));
+    EXPECT_EQ(runs[0].reason, QStringLiteral("plan completed"));
+    EXPECT_DOUBLE_EQ(runs[0].begin, starts[0].time);
+    EXPECT_DOUBLE_EQ(runs[0].end, ends[0].time);
+    EXPECT_GT(runs[0].distance, 100);
     // The log book's 16 entries (none is DEBUG), no entity went to fault.
     int logBook = 0;
     for (const auto &m : notes)
