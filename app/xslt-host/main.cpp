@@ -151,7 +151,7 @@ int main(int argc, char **argv)
         if (!readExactly(count, 4))
             return 0; // the program closed its end
         const quint32 fields = wire::lengthOf(count);
-        if (fields < 4 || fields > 1000)
+        if (fields < 4 || fields > wire::maxFields)
             return 1;
         // This translation's CPU time, its compile included: past it the kernel ends the process.
         const auto seconds = readString(wire::maxFieldBytes);

@@ -175,9 +175,12 @@ QString Helper::whyEnded(const QElapsedTimer &clock, TranslateLimits limits)
     const bool reaped = ::waitpid(m_pid, &code, 0) == m_pid;
     m_pid = -1;
     status.pid = 0;
-    // Killed by its CPU-time limit (SIGXCPU), or ended when memory ran out.
+    // Killed by its CPU-time limit (SIGXCPU), or ended when memory ran out;
+    // status 1 is a request it could not read (checked before sending, so a defect).
     if ((reaped && WIFSIGNALED(code) && WTERMSIG(code) == SIGXCPU) || clock.elapsed() >= qint64(limits.seconds) * 1000 - 100)
         return QStringLiteral("stopped: it ran longer than its %1 s limit").arg(limits.seconds);
+    if (reaped && WIFEXITED(code) && WEXITSTATUS(code) == 1)
+        return QStringLiteral("%1 ended: it could not read the request").arg(translatorHelper());
     return QStringLiteral("stopped: it used more than its %1 MB of memory").arg(limits.megabytes);
 }
 
@@ -187,6 +190,16 @@ std::expected<QByteArray, xml::XmlError> Helper::translate(const QString &styles
                                                            TranslateLimits limits)
 {
     const auto failure = [&](const QString &why) { return std::unexpected(xml::XmlError{stylesheet, 0, 0, why}); };
+    // What the helper's protocol cannot carry is said here, before the helper
+    // would end on it (and its end be taken for running out of memory).
+    if (4 + parameters.size() > wire::maxFields)
+        return failure(QStringLiteral("%1 parameters: a translation takes at most %2").arg(parameters.size()).arg(wire::maxFields - 4));
+    if (quint32(stylesheet.toUtf8().size()) > wire::maxFieldBytes)
+        return failure(QStringLiteral("the stylesheet's path is over %1 bytes").arg(wire::maxFieldBytes));
+    for (const auto &[name, value] : parameters)
+        if (const qsizetype size = name.size() + 1 + value.toUtf8().size(); size > qsizetype(wire::maxFieldBytes))
+            return failure(QStringLiteral("parameter %1 is %2 bytes: a parameter takes at most %3")
+                               .arg(QString::fromUtf8(name)).arg(size).arg(wire::maxFieldBytes));
     QElapsedTimer clock;
     clock.start();
     const qint64 deadlineMs = qint64(limits.seconds) * 1000 + 500;
@@ -214,7 +227,11 @@ std::expected<QByteArray, xml::XmlError> Helper::translate(const QString &styles
     QByteArray rest = wire::field(inputName.toUtf8());
     for (const auto &[name, value] : parameters)
         rest += wire::field(name + '=' + value.toUtf8());
-    rest += wire::field(makeInput());
+    const QByteArray input = makeInput();
+    if (quint64(input.size()) > wire::maxInputBytes)
+        return failure(QStringLiteral("%1 is %2 MB: a translation takes at most %3 MB")
+                           .arg(inputName).arg(input.size() >> 20).arg(wire::maxInputBytes >> 20)); // `unfinished` ends the helper
+    rest += wire::field(input);
     char header[6];
     Read read = send(rest, clock, deadlineMs) ? receive(header, sizeof header, clock, deadlineMs)
                                               : clock.elapsed() >= deadlineMs ? Read::Late : Read::Ended;

@@ -28,6 +28,7 @@ inline bool outOfMemory(const QByteArray &error)
     return error.contains("Memory allocation failed") || error.contains("out of memory");
 }
 
+constexpr quint32 maxFields = 1000;
 constexpr quint32 maxFieldBytes = 1024 * 1024;
 constexpr quint32 maxInputBytes = 1024u * 1024 * 1024;
 

@@ -70,6 +70,29 @@ TEST(Translator, ErrorsKeepTheirFileAndLine)
     EXPECT_TRUE(out.error().message.contains(QStringLiteral("/etc/passwd"))) << out.error().toString().toStdString();
 }
 
+// What the helper's protocol cannot carry (a parameter over 1 MB, a thousand
+// parameters) is said as such, before the helper is given it: not "used more
+// than its memory", as when the helper ended on it.
+TEST(Translator, WhatTheProtocolCannotCarryIsSaidNotTakenForMemory)
+{
+    QTemporaryDir dir;
+    const QString path = writeStylesheet(dir, QStringLiteral("v.xsl"), R"X(<xsl:output method="text"/><xsl:param name="v"/>
+<xsl:template match="/"><xsl:value-of select="string-length($v)"/></xsl:template>)X");
+    const auto big = translate(path, plan, QStringLiteral("plan.xml"), {{"v", QString(2 << 20, u'x')}});
+    ASSERT_FALSE(big);
+    EXPECT_EQ(big.error().message, QStringLiteral("parameter v is 2097154 bytes: a parameter takes at most 1048576"));
+    QList<std::pair<QByteArray, QString>> many;
+    for (int i = 0; i < 1000; ++i)
+        many.append({"p" + QByteArray::number(i), QStringLiteral("1")});
+    const auto tooMany = translate(path, plan, QStringLiteral("plan.xml"), many);
+    ASSERT_FALSE(tooMany);
+    EXPECT_EQ(tooMany.error().message, QStringLiteral("1000 parameters: a translation takes at most 996"));
+    // Just under the limits, and the helper serves as before.
+    const auto fits = translate(path, plan, QStringLiteral("plan.xml"), {{"v", QString((1 << 20) - 2, u'x')}});
+    ASSERT_TRUE(fits) << fits.error().toString().toStdString();
+    EXPECT_EQ(*fits, QByteArray("1048574"));
+}
+
 // 2^40 elements would take hours and terabytes: the helper is stopped at
 // whichever limit it meets first, and the error says which.
 TEST(Translator, AStylesheetThatRunsOnIsStoppedAtItsLimit)
