@@ -26,6 +26,10 @@ QString CommandLine::databaseUrl(bool orBesideTheLogs) const
 {
     if (!database.isEmpty())
         return database;
+    // How a console hands its database to a review window it opens: not on the command line,
+    // which other users can read (a PostgreSQL URL may hold a password).
+    if (const QString handed = qEnvironmentVariable("NEPTUS_DATABASE"); !handed.isEmpty())
+        return handed;
     if (const QString saved = QSettings().value(QStringLiteral("database/url")).toString(); !saved.isEmpty())
         return saved;
     return orBesideTheLogs ? QDir(logRoot()).filePath(QStringLiteral("operation.db")) : QString();

@@ -5,9 +5,7 @@
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
-#include <QQmlContext>
 #include <QQmlEngine>
-#include <QQuickItem>
 
 using namespace neptus::layout;
 using namespace Qt::StringLiterals;

@@ -55,11 +55,12 @@ void RestWatch::setResting(bool resting)
     if (resting == m_resting)
         return;
     m_resting = resting;
+    emit restingChanged(resting);
+    // After the handlers (a lower display rate frees what the higher one held).
     if (resting) {
         trimHeap();
         m_trim.start();
     } else {
         m_trim.stop();
     }
-    emit restingChanged(resting);
 }

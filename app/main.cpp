@@ -187,6 +187,8 @@ int main(int argc, char *argv[])
     std::unique_ptr<neptus::session::OperationsFeed> feed;
     if (database || webPort >= 0) {
         feed = std::make_unique<neptus::session::OperationsFeed>(session.console(), database.get());
+        QObject::connect(&session.planDesk(), &neptus::plans::PlanDesk::runRelabelled, feed.get(), &neptus::session::OperationsFeed::relabelRun);
+        QObject::connect(&session.planDesk(), &neptus::plans::PlanDesk::stopAccepted, feed.get(), &neptus::session::OperationsFeed::stopAccepted);
         feed->setRecorder(recorder.get());
     }
     std::unique_ptr<neptus::web::LiveServer> web;
@@ -340,12 +342,18 @@ int main(int argc, char *argv[])
     if (database)
         session.sessions()->setOwnSession(database->session());
     QObject::connect(session.sessions(), &SessionsModel::openRequested, &app, [operationDatabase](const QString &id, const QStringList &logs) {
-        QStringList arguments{QStringLiteral("--console"), QDir(neptus::dataPath(QStringLiteral("consoles"))).filePath(QStringLiteral("Review.qml")),
-                              QStringLiteral("--database"), operationDatabase};
+        QStringList arguments{QStringLiteral("--console"), QDir(neptus::dataPath(QStringLiteral("consoles"))).filePath(QStringLiteral("Review.qml"))};
         for (const QString &log : logs)
             arguments << QStringLiteral("--replay") << log;
+        // The database in its environment, not on its command line (which other users can read).
+        QProcess review;
+        QProcessEnvironment environment = QProcessEnvironment::systemEnvironment();
+        environment.insert(QStringLiteral("NEPTUS_DATABASE"), operationDatabase);
+        review.setProcessEnvironment(environment);
+        review.setProgram(QCoreApplication::applicationFilePath());
+        review.setArguments(arguments);
         qint64 pid = 0;
-        if (QProcess::startDetached(QCoreApplication::applicationFilePath(), arguments, {}, &pid))
+        if (review.startDetached(&pid))
             std::printf("neptus: session %s opened for review (process %lld)\n", qPrintable(id), pid);
         else
             std::fprintf(stderr, "neptus: session %s: the review could not be started\n", qPrintable(id));

@@ -159,7 +159,7 @@ Rectangle {
                                             textFormat: Text.PlainText
                                             text: planRow.modelData.system + " · " + planRow.modelData.plan + " · "
                                                   + (planRow.modelData.outcome === "still running" ? qsTr("running when the log ends") : planRow.modelData.outcome)
-                                                  + (planRow.modelData.reason ? " (" + planRow.modelData.reason + ")" : "") + "\n"
+                                                  + (planRow.modelData.reason ? (planRow.modelData.outcome === "still running" ? qsTr(" (last said: %1)") : " (%1)").arg(planRow.modelData.reason) : "") + "\n"
                                                   + bar.seconds(planRow.modelData.duration) + " · "
                                                   + Math.round(planRow.modelData.distance) + " m · "
                                                   + qsTr("deepest %1 m").arg(planRow.modelData.maxDepth.toFixed(1))

@@ -953,7 +953,8 @@ std::expected<std::vector<Reader::SessionSummary>, QString> Reader::sessionSumma
         if (!events)
             return std::unexpected(events.error());
         QHash<QString, qsizetype> open; // system + plan → its run in `runs`
-        static const QStringList ends = {u"completed"_s, u"failed"_s, u"stopped"_s, u"replaced"_s, u"ended"_s};
+        // (success and failure: what consoles before the one tracker wrote.)
+        static const QStringList ends = {u"completed"_s, u"failed"_s, u"stopped"_s, u"replaced"_s, u"ended"_s, u"success"_s, u"failure"_s};
         for (const auto &[key, event] : *events) {
             if (event == u"started") {
                 open.insert(key, summary.runs.size());

@@ -630,6 +630,7 @@ void PlanDesk::heldMission(quint16 id, const std::vector<MissionItem> &items)
                 if (const auto run = m_runs.running(id); run && run->plan != p->id) {
                     note(id, u"%1 is %2"_s.arg(run->plan, p->id));
                     m_runs.relabel(id, p->id);
+                    emit runRelabelled(id, p->id);
                 }
                 break;
             }
@@ -794,6 +795,7 @@ std::expected<void, QString> PlanDesk::stopMavlink(quint16 id)
               // As a plan engine's answer to STOP: the run's end is "stopped", not a failure.
               for (const PlanRuns::Event &e : m_runs.stopAnswered(id))
                   told(e);
+              emit stopAccepted(id);
           });
     return {};
 }

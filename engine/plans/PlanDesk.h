@@ -159,6 +159,12 @@ signals:
     void changed(const QString &system);
     // Another mission is open (or the same, changed).
     void missionChanged();
+    // What the desk learnt of a vehicle's run beyond its reports, for other
+    // trackers of the same runs (the database's): the run is known by another
+    // name from now on (a MAVLink mission recognised as a plan); the vehicle
+    // accepted a stop by other means than a PlanControl reply.
+    void runRelabelled(quint16 system, const QString &plan);
+    void stopAccepted(quint16 system);
 
 private:
     struct Vehicle

@@ -194,8 +194,8 @@ std::expected<QByteArray, xml::XmlError> Helper::translate(const QString &styles
     // would end on it (and its end be taken for running out of memory).
     if (4 + parameters.size() > wire::maxFields)
         return failure(QStringLiteral("%1 parameters: a translation takes at most %2").arg(parameters.size()).arg(wire::maxFields - 4));
-    if (quint32(stylesheet.toUtf8().size()) > wire::maxFieldBytes)
-        return failure(QStringLiteral("the stylesheet's path is over %1 bytes").arg(wire::maxFieldBytes));
+    if (quint32(stylesheet.toUtf8().size()) > wire::maxFieldBytes || quint32(inputName.toUtf8().size()) > wire::maxFieldBytes)
+        return failure(QStringLiteral("the stylesheet's path or the input's name is over %1 bytes").arg(wire::maxFieldBytes));
     for (const auto &[name, value] : parameters)
         if (const qsizetype size = name.size() + 1 + value.toUtf8().size(); size > qsizetype(wire::maxFieldBytes))
             return failure(QStringLiteral("parameter %1 is %2 bytes: a parameter takes at most %3")

@@ -5,6 +5,7 @@
 #include "session/Console.h"
 
 #include <cmath>
+#include <limits>
 
 using namespace Qt::StringLiterals;
 
@@ -81,6 +82,7 @@ OperationsFeed::~OperationsFeed()
     if (!m_writer)
         return;
     m_writer->setProblemHandler({});
+    planEvents(m_runs.poll(std::numeric_limits<qint64>::max())); // ends still waiting for their words
     checkAlarms();
     m_logWrittenMs = 0; // the log's final span, now
     noteLog();
@@ -160,6 +162,18 @@ void OperationsFeed::observe(const msg::Message &m, bool sent)
     } else if (!sent && def->abbrev == u"LogBookEntry") {
         put(db::Row{db::Table::LogBook, {now, nameOf(source), enumOf(m, u"type"_s), m.text(u"context"), m.text(u"text")}});
     }
+}
+
+void OperationsFeed::relabelRun(quint16 system, const QString &plan)
+{
+    QMutexLocker lock(&m_mutex);
+    m_runs.relabel(system, plan);
+}
+
+void OperationsFeed::stopAccepted(quint16 system)
+{
+    QMutexLocker lock(&m_mutex);
+    planEvents(m_runs.stopAnswered(system));
 }
 
 void OperationsFeed::planEvents(const std::vector<plans::PlanRuns::Event> &events, double progress)

@@ -57,6 +57,10 @@ public:
     void setRecorder(const log::Recorder *recorder);
 
     void observe(const msg::Message &message, bool sent);
+    // What the plan desk learnt of a run beyond the vehicle's reports (PlanDesk's
+    // runRelabelled and stopAccepted), so the database says what the plan log says.
+    void relabelRun(quint16 system, const QString &plan);
+    void stopAccepted(quint16 system);
     // Raised, acknowledged and cleared alarms since the last look (a timer calls it; tests too).
     void checkAlarms();
 

@@ -12,6 +12,8 @@
 
 #include <gtest/gtest.h>
 
+#include <limits>
+
 using namespace neptus;
 using namespace Qt::StringLiterals;
 
@@ -158,6 +160,35 @@ TEST_F(Feed, APlansEndIsTheVehiclesStateWithItsWordsNotACountOfReplies)
     ASSERT_EQ(events->size(), 5u);
     EXPECT_EQ(events->at(2).ms, t0);
     EXPECT_EQ(events->at(4).ms, ended) << "the end at the state that said so";
+}
+
+// What the plan desk learns beyond the vehicle's reports reaches the database too (the plan log
+// and the database say the same): a MAVLink mission recognised as a plan while it runs is one
+// run under the plan's name; a stop the vehicle accepted by changing mode ends it "stopped".
+TEST_F(Feed, TheDesksRelabelAndAcceptedStopAreTheDatabasesToo)
+{
+    console.ingest(make("Announce", 0x1f, {{"sys_name", u"ardurover-1"_s}, {"sys_type", 3}}));
+    const auto state = [&](int state, const QString &plan, int outcome) {
+        console.ingest(make("PlanControlState", 0x1f, {{"state", state}, {"plan_id", plan}, {"man_id", u"1"_s}, {"last_outcome", outcome}}));
+        clock.advance(1000);
+    };
+    state(1, QString(), 0);
+    state(3, u"mission"_s, 0);
+    feed->relabelRun(0x1f, u"harbour-loop"_s);
+    state(3, u"harbour-loop"_s, 0);
+    feed->stopAccepted(0x1f);
+    console.ingest(make("PlanControl", 0x1f, {{"type", 2}, {"op", 0}, {"plan_id", u"harbour-loop"_s}, {"info", u"left the mission for HOLD"_s}}));
+    state(1, u"harbour-loop"_s, 2); // READY, FAILURE
+
+    auto reader = read();
+    ASSERT_TRUE(reader);
+    const auto events = reader->planEvents(0, std::numeric_limits<qint64>::max());
+    ASSERT_TRUE(events.has_value());
+    QStringList said;
+    for (const auto &e : *events)
+        said.append(e.plan + u' ' + e.event);
+    EXPECT_EQ(said, (QStringList{u"mission started"_s, u"harbour-loop start failure"_s, u"harbour-loop stopped"_s}))
+        << said.join(u" | "_s).toStdString();
 }
 
 TEST_F(Feed, AlarmsAreRaisedAcknowledgedAndCleared)
