@@ -149,11 +149,12 @@ std::vector<plans::PlanRuns::Event> planEvents(const LogSet &logs)
     return events;
 }
 
-std::vector<PlanRun> planRuns(const LogSet &logs, const std::map<quint16, std::vector<TrackPoint>> &all)
+std::vector<PlanRun> planRuns(const LogSet &logs, const std::vector<plans::PlanRuns::Event> &plans,
+                              const std::map<quint16, std::vector<TrackPoint>> &all)
 {
     std::vector<PlanRun> runs;
     QHash<quint16, size_t> open; // system → its run in `runs`
-    for (const plans::PlanRuns::Event &e : planEvents(logs)) {
+    for (const plans::PlanRuns::Event &e : plans) {
         const double t = e.ms / 1000.0;
         if (e.kind == plans::PlanRuns::Event::Kind::Started) {
             runs.push_back({e.system, logs.systemName(e.system), e.plan, {}, {}, t, t, 0, 0});
@@ -287,7 +288,7 @@ std::vector<std::pair<quint16, msg::Message>> planSpecifications(const LogSet &l
     return specifications;
 }
 
-std::vector<LogMarker> markersOf(const LogSet &logs)
+std::vector<LogMarker> markersOf(const LogSet &logs, const std::vector<plans::PlanRuns::Event> &plans)
 {
     std::vector<LogMarker> markers;
     if (logs.logs().empty())
@@ -329,7 +330,7 @@ std::vector<LogMarker> markersOf(const LogSet &logs)
         }
     }
     using Run = plans::PlanRuns;
-    for (const Run::Event &e : planEvents(logs)) {
+    for (const Run::Event &e : plans) {
         const QString who = logs.systemName(e.system);
         const double t = e.ms / 1000.0;
         switch (e.kind) {

@@ -50,7 +50,8 @@ struct LogMarker
     Kind kind = Note;
     QString text; // "lauv-simulator-1: plan goto-and-wait started"
 };
-std::vector<LogMarker> markersOf(const LogSet &logs);
+// `plans`: planEvents(logs), worked out once by the caller for the markers and the runs.
+std::vector<LogMarker> markersOf(const LogSet &logs, const std::vector<plans::PlanRuns::Event> &plans);
 
 // A numeric field's values against time (the messages' own timestamps),
 // from a tree path: "system/Message/field", the system by the name it
@@ -77,7 +78,8 @@ struct PlanRun
     double distance = 0;               // metres along the track
     double maxDepth = 0;
 };
-std::vector<PlanRun> planRuns(const LogSet &logs, const std::map<quint16, std::vector<TrackPoint>> &tracks);
+std::vector<PlanRun> planRuns(const LogSet &logs, const std::vector<plans::PlanRuns::Event> &plans,
+                              const std::map<quint16, std::vector<TrackPoint>> &tracks);
 
 // Every plan specification the log holds, whoever sent it (a console's
 // PlanDB SET or PlanControl START, a vehicle's PlanDB answer, a bare

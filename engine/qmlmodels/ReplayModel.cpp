@@ -26,7 +26,9 @@ ReplayModel::ReplayModel(std::shared_ptr<const log::LogSet> logs, log::ReplayTar
     m_exportFolder = QFileInfo(logs->logs().front()->folder()).isWritable()
         ? beside
         : QDir::home().filePath(QStringLiteral("neptus-exports/") + names.value(0));
-    addMarkers(log::markersOf(*logs));
+    // One pass over the log for the plans' runs: the markers and the plan list both use it.
+    const auto planEvents = log::planEvents(*logs);
+    addMarkers(log::markersOf(*logs, planEvents));
     // The console's own alarms: a console fed the whole log, off the GUI thread.
     m_exports.start([self = this, logs, stop = m_stopExport] {
         ManualClock clock;
@@ -47,7 +49,7 @@ ReplayModel::ReplayModel(std::shared_ptr<const log::LogSet> logs, log::ReplayTar
         if (!found.empty() && !stop->load())
             QMetaObject::invokeMethod(self, [self, found] { self->addMarkers(found); }, Qt::QueuedConnection);
     });
-    for (const log::PlanRun &run : log::planRuns(*logs, m_logTracks))
+    for (const log::PlanRun &run : log::planRuns(*logs, planEvents, m_logTracks))
         m_plans.append(QVariantMap{{QStringLiteral("system"), run.systemName}, {QStringLiteral("plan"), run.plan},
                                    {QStringLiteral("outcome"), run.outcome}, {QStringLiteral("reason"), run.reason}, {QStringLiteral("begin"), run.begin},
                                    {QStringLiteral("end"), run.end}, {QStringLiteral("duration"), run.end - run.begin},

@@ -624,7 +624,8 @@ TEST(Log, TheTimelineMarksTheDuneLogsPlanItsLogBookAndNothingElse)
     auto log = openLog(folder);
     ASSERT_TRUE(log);
     const log::LogSet logs(std::vector{log});
-    const auto markers = log::markersOf(logs);
+    const auto plans = log::planEvents(logs);
+    const auto markers = log::markersOf(logs, plans);
     std::vector<log::LogMarker> starts, ends, notes;
     for (const auto &m : markers) {
         (m.kind == log::LogMarker::PlanStart ? starts : m.kind == log::LogMarker::PlanEnd ? ends : notes).push_back(m);
@@ -642,7 +643,7 @@ TEST(Log, TheTimelineMarksTheDuneLogsPlanItsLogBookAndNothingElse)
         << qPrintable(ends[0].text);
     EXPECT_NEAR(ends[0].time - logs.begin(), 137.8, 0.5);
     // The same run in the review's plan list and the exports (one tracker: plans::PlanRuns).
-    const auto runs = log::planRuns(logs, log::tracks(logs));
+    const auto runs = log::planRuns(logs, plans, log::tracks(logs));
     ASSERT_EQ(runs.size(), 1u);
     EXPECT_EQ(runs[0].plan, QStringLiteral("goto-and-wait"));
     EXPECT_EQ(runs[0].outcome, QStringLiteral("still running"));
