@@ -131,6 +131,10 @@ std::expected<CommandLine, QString> CommandLine::parse(const QStringList &argume
         QStringLiteral("address|interface"));
     const QCommandLineOption imcPeer(QStringLiteral("imc-peer"),
         QStringLiteral("An IMC vehicle to talk to, as host:port (repeat for several)."), QStringLiteral("host:port"));
+    const QCommandLineOption systemId(QStringLiteral("system-id"),
+        QStringLiteral("This console's IMC and DDS system id, a console (CCU) id from 0x4000 to 0x5FFF (default 0x4001). "
+                       "Two consoles on one network or DDS domain need different ids."),
+        QStringLiteral("id"));
     const QCommandLineOption ddsDomain(QStringLiteral("dds-domain"),
         QStringLiteral("Cyclone DDS domain id (default 0; -1 turns DDS off)."), QStringLiteral("id"));
     const QCommandLineOption ddsConfig(QStringLiteral("dds-config"),
@@ -223,7 +227,7 @@ std::expected<CommandLine, QString> CommandLine::parse(const QStringList &argume
     parser.addOptions({logDir, noRecord, database, replay, replaySession, replayFrom, replayPlay, webPort, webBind, webToken, webCert, webKey, webTiles});
     parser.addOptions({charts, safetyDepth, displayRate, restingRate, screenInches});
     parser.addOptions({console, screenshot, screenshotDelay, components, edit, select, system, palette, uiScale, gps, size, selfTest,
-                       imcPort, imcBind, imcPeer, ddsDomain, ddsConfig, ddsKeys, ddsIdentity, defs, defsFor, imcDiscovery, dumpTree, quitAfter, forgetAfter, mission, share, name});
+                       imcPort, imcBind, imcPeer, systemId, ddsDomain, ddsConfig, ddsKeys, ddsIdentity, defs, defsFor, imcDiscovery, dumpTree, quitAfter, forgetAfter, mission, share, name});
     // "--defs-for SYSTEM FILE" (two words, as the documentation writes it) is
     // "--defs-for SYSTEM=FILE" to the parser, which takes one value per option.
     QStringList words = arguments;
@@ -361,6 +365,14 @@ std::expected<CommandLine, QString> CommandLine::parse(const QStringList &argume
         if (!ok || port > 65535)
             return std::unexpected(QStringLiteral("--imc-port must be a port number, not '%1'").arg(parser.value(imcPort)));
         result.imcPort = static_cast<quint16>(port);
+    }
+    if (parser.isSet(systemId)) {
+        bool ok = false;
+        const uint id = parser.value(systemId).toUInt(&ok, 0);
+        if (!ok || id < 0x4000 || id > 0x5FFF)
+            return std::unexpected(QStringLiteral("--system-id must be a console id from 0x4000 to 0x5FFF (IMC's CCU range), not '%1'")
+                                       .arg(parser.value(systemId)));
+        result.systemId = static_cast<quint16>(id);
     }
     if (parser.isSet(ddsDomain)) {
         bool ok = false;

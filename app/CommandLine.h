@@ -36,6 +36,7 @@ struct CommandLine
     QStringList definitionFiles;        // --defs: instead of msgdefs/
     QList<std::pair<QString, QString>> definitionsFor; // --defs-for SYSTEM=FILE
     quint16 imcPort = 6001;             // IMC over UDP
+    quint16 systemId = 0x4001;          // this console's IMC and DDS system id (--system-id; 0x4001 as LSTS Neptus on loopback)
     QString imcBind;                    // its address ("10.0.0.5"); empty: settings, else 127.0.0.1
     QList<std::pair<QHostAddress, quint16>> imcPeers; // static IMC destinations (--imc-peer host:port)
     bool imcDiscovery = true;           // announce to and listen on 30100-30104

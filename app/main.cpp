@@ -112,7 +112,7 @@ int main(int argc, char *argv[])
         neptus::log::RecorderConfig config;
         config.root = logRoot;
         config.name = commandLine->name.isEmpty() ? QFileInfo(commandLine->consoleFile).completeBaseName() : commandLine->name;
-        config.system = neptus::transport::ImcUdpConfig{}.systemId;
+        config.system = commandLine->systemId;
         config.definitionFiles = definitionFiles;
         config.definitionsFor = commandLine->definitionsFor;
         recorder = std::make_unique<neptus::log::Recorder>(config);
@@ -232,6 +232,7 @@ int main(int argc, char *argv[])
     if (commandLine->imcPort != 0 && !replay) {
         neptus::transport::ImcUdpConfig config;
         config.port = commandLine->imcPort;
+        config.systemId = commandLine->systemId;
         QString bind = commandLine->imcBind;
         if (const QString saved = QSettings().value(QStringLiteral("imc/bind")).toString(); bind.isEmpty() && !saved.isEmpty()) {
             auto address = CommandLine::localAddress(saved);
@@ -307,6 +308,9 @@ int main(int argc, char *argv[])
     if (commandLine->ddsDomain >= 0 && !replay) {
         neptus::transport::DdsConfig config{static_cast<dds_domainid_t>(commandLine->ddsDomain), commandLine->ddsConfig};
         config.security = {commandLine->ddsKeys, commandLine->ddsIdentity};
+        config.systemId = commandLine->systemId;
+        if (!commandLine->name.isEmpty())
+            config.systemName = commandLine->name;
         if (auto started = session.console().startDds(config); !started)
             std::fprintf(stderr, "neptus: %s; carrying on without DDS\n", qPrintable(started.error()));
         else if (!config.security.keys.isEmpty())

@@ -51,7 +51,7 @@ MissionShare::MissionShare(std::shared_ptr<const msg::Schema> schema, QString au
             m_hello.stop();
             return;
         }
-        this->publish(Hello, {}, {});
+        this->publish(Hello, {}, Object{{}, 0, m_author});
     });
 }
 
@@ -100,7 +100,11 @@ std::expected<void, QString> MissionShare::start(const mission::Mission &mission
             m_objects.insert(key, Object{data, 0, {}});
     m_heard = false;
     m_hellos = 0;
-    auto said = publish(Hello, {}, {});
+    if (!m_peers.isEmpty()) {
+        m_peers.clear();
+        emit peersChanged();
+    }
+    auto said = publish(Hello, {}, Object{{}, 0, m_author});
     if (!said)
         m_sharing = false;
     else
@@ -169,7 +173,9 @@ void MissionShare::receive(const msg::Message &message)
         return;
     const QString missionId = message.text(u"mission");
     const int op = int(message.integer(u"op"));
+    const QString author = message.text(u"author");
     if (op == Hello) {
+        heard(author);
         if (m_mission.id.isEmpty() || (!missionId.isEmpty() && missionId != m_mission.id))
             return;
         // Everything we hold, in the mission's order (so the new console has
@@ -194,12 +200,18 @@ void MissionShare::receive(const msg::Message &message)
         m_mission.id = missionId; // joining: the first shared mission heard
     if (missionId != m_mission.id)
         return;
+    heard(author);
     const QString key = message.text(u"object");
     const auto version = quint32(message.integer(u"version"));
-    const QString author = message.text(u"author");
     const Object held = m_objects.value(key);
-    if (version < held.version || (version == held.version && author <= held.author))
+    // The same version of an object changed here and there: neither console
+    // had the other's change when it made its own.
+    const bool collided = version > 0 && version == held.version && held.author == m_author && author != m_author;
+    if (version < held.version || (version == held.version && author <= held.author)) {
+        if (collided)
+            emit collision(author, describe(key) + (op == Remove ? u" removed"_s : QString()), true);
         return; // ours is newer, or the same
+    }
     QByteArray data;
     if (op == Put) {
         const QByteArray &packed = message.bytes(m_def->indexOf(u"data"));
@@ -216,8 +228,20 @@ void MissionShare::receive(const msg::Message &message)
         apply(key, {});
     }
     m_objects.insert(key, Object{data, version, author});
+    const QString what = describe(key) + (op == Remove ? u" removed"_s : QString());
     if (held.data != data)
-        emit remoteChange(author, describe(key) + (op == Remove ? u" removed"_s : QString()));
+        emit remoteChange(author, what);
+    if (collided)
+        emit collision(author, what, false);
+}
+
+void MissionShare::heard(const QString &author)
+{
+    if (author.isEmpty() || author == m_author || m_peers.contains(author))
+        return;
+    m_peers.append(author);
+    m_peers.sort();
+    emit peersChanged();
 }
 
 bool MissionShare::apply(const QString &key, const QByteArray &data)

@@ -7,6 +7,7 @@
 #include <QHash>
 #include <QList>
 #include <QObject>
+#include <QStringList>
 #include <QTimer>
 
 #include <expected>
@@ -22,9 +23,12 @@ namespace neptus::plans {
 // version past the highest seen, as MissionChange messages to every
 // console; a received object replaces ours when its version is higher (at
 // the same version the author's name decides, so every console ends with
-// the same mission): the last change wins and says who made it. A console
-// that starts sharing says HELLO and the others send it every object; one
-// with no mission takes the first shared mission it hears.
+// the same mission): the last change wins and says who made it. Two
+// changes made at the same moment (the same version: neither console had
+// seen the other's) are a collision, told to both: the author's name decides
+// which is kept. A console that starts sharing says HELLO (with its name)
+// and the others send it every object; one with no mission takes the first
+// shared mission it hears.
 class MissionShare : public QObject
 {
     Q_OBJECT
@@ -50,6 +54,8 @@ public:
     const mission::Mission &mission() const { return m_mission; }
     // Who made the version we hold of an object (its key), "" if unknown.
     QString authorOf(const QString &key) const { return m_objects.value(key).author; }
+    // The other consoles heard sharing this mission (their names, sorted).
+    QStringList peers() const { return m_peers; }
 
     // The mission's objects in its order, by key ("header", "plan:ID",
     // "feature:MAP/ID", "checklist:ID"), each as a mission file holding only it.
@@ -58,6 +64,10 @@ public:
 signals:
     // Another console changed the mission: `what` names the object ("plan survey", "feature mark1 removed").
     void remoteChange(const QString &author, const QString &what);
+    // `author` changed `what` at the same moment as this console did (after
+    // remoteChange when theirs replaced ours): `oursKept` says which stands.
+    void collision(const QString &author, const QString &what, bool oursKept);
+    void peersChanged();
     // A message could not be published or read: why.
     void problem(const QString &why);
 
@@ -70,6 +80,7 @@ private:
     };
     std::expected<void, QString> publish(int op, const QString &key, const Object &object);
     bool apply(const QString &key, const QByteArray &data); // into m_mission
+    void heard(const QString &author);
 
     std::shared_ptr<const msg::Schema> m_schema;
     const msg::MessageDef *m_def = nullptr;
@@ -83,6 +94,7 @@ private:
     bool m_heard = false;
     mission::Mission m_mission;
     QHash<QString, Object> m_objects;
+    QStringList m_peers;
 };
 
 } // namespace neptus::plans

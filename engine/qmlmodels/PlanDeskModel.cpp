@@ -26,6 +26,8 @@ PlanDeskModel::PlanDeskModel(neptus::plans::PlanDesk *desk, neptus::plans::Missi
 {
     if (share) {
         connect(share, &neptus::plans::MissionShare::remoteChange, this, &PlanDeskModel::remoteChange);
+        connect(share, &neptus::plans::MissionShare::collision, this, &PlanDeskModel::collision);
+        connect(share, &neptus::plans::MissionShare::peersChanged, this, &PlanDeskModel::sharingChanged);
         connect(share, &neptus::plans::MissionShare::problem, this, [this](const QString &why) {
             m_shareStatus = why;
             emit sharingChanged();
@@ -100,6 +102,14 @@ void PlanDeskModel::remoteChange(const QString &author, const QString &what)
     m_shareStatus = tr("%1 changed by %2, %3").arg(what, author, QTime::currentTime().toString(u"HH:mm:ss"_s));
     m_changes.append({author, what});
     m_store.start();
+    emit sharingChanged();
+}
+
+void PlanDeskModel::collision(const QString &author, const QString &what, bool oursKept)
+{
+    const QString now = QTime::currentTime().toString(u"HH:mm:ss"_s);
+    m_shareStatus = oursKept ? tr("%1 changed by %2 at the same moment as here: yours kept, %3").arg(what, author, now)
+                             : tr("%1 changed by %2 at the same moment as here: theirs kept (Undo brings yours back), %3").arg(what, author, now);
     emit sharingChanged();
 }
 

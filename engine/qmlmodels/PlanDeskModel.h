@@ -26,6 +26,8 @@ class PlanDeskModel : public QObject
     // was last said of it ("plan survey changed by ana@boat, 12:41:07", or why not).
     Q_PROPERTY(bool sharing READ sharing NOTIFY sharingChanged)
     Q_PROPERTY(QString shareStatus READ shareStatus NOTIFY sharingChanged)
+    // The other consoles heard sharing it (their names).
+    Q_PROPERTY(QStringList sharedWith READ sharedWith NOTIFY sharingChanged)
     // Missions opened lately, newest first (kept in the settings).
     Q_PROPERTY(QStringList recentMissions READ recentMissions NOTIFY recentChanged)
     // Where new and imported missions are written (the user's data folder).
@@ -47,6 +49,7 @@ public:
     QVariantMap home() const;
     bool sharing() const { return m_share && m_share->sharing(); }
     QString shareStatus() const { return m_shareStatus; }
+    QStringList sharedWith() const { return sharing() ? m_share->peers() : QStringList(); }
     // Starts or stops sharing the open mission (with none open: joins the
     // first shared mission heard): "" or why not.
     Q_INVOKABLE QString share(bool on);
@@ -110,6 +113,7 @@ private:
     QTimer m_store;
     QList<std::pair<QString, QString>> m_changes; // (author, what) not yet told
     void remoteChange(const QString &author, const QString &what);
+    void collision(const QString &author, const QString &what, bool oursKept);
     void storeShared();
     QHash<QString, QVariantMap> m_summaries; // the mission's plans: id, length, duration …
     QVariantList m_features;

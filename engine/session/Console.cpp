@@ -255,6 +255,13 @@ std::expected<void, QString> Console::startDds(transport::DdsConfig config)
                 definitionsDiffer(system, theirs, ours);
             });
     connect(dds.get(), &transport::DdsTransport::sourcesChanged, this, &Console::sourcesChanged);
+    connect(dds.get(), &transport::DdsTransport::ourIdInUse, this, [this, id = config.systemId](const QString &participant) {
+        m_graph.raise(m_graph.ensure(QStringLiteral("links/DDS")), alarms::Warning,
+                      tr("another console, %1, uses this console's system id 0x%2 on DDS: what it sends is ignored; "
+                         "give one of them another id (--system-id)")
+                          .arg(participant)
+                          .arg(id, 4, 16, QLatin1Char('0')));
+    });
     m_dds = std::move(dds);
     addLink(link, m_dds.get());
     return {};

@@ -914,6 +914,16 @@ Item {
                     font.pixelSize: Theme.smallFontPixelSize
                 }
                 Text {
+                    objectName: "sharedWith"
+                    width: parent.width
+                    visible: planModel.desk !== null && planModel.desk.sharing
+                    text: !visible ? "" : planModel.desk.sharedWith.length > 0 ? qsTr("⇄ Shared with %1").arg(planModel.desk.sharedWith.join(", "))
+                                                                               : qsTr("⇄ Shared: no other console heard yet")
+                    wrapMode: Text.Wrap
+                    color: Theme.text
+                    font.pixelSize: Theme.smallFontPixelSize
+                }
+                Text {
                     objectName: "shareStatus"
                     width: parent.width
                     visible: text !== ""

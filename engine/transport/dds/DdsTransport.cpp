@@ -193,8 +193,14 @@ void DdsTransport::onParticipant(dds_entity_t reader, void *self)
 {
     auto *transport = static_cast<DdsTransport *>(self);
     forEachTaken<neptus_Participant>(reader, [transport](const neptus_Participant &peer, const dds_sample_info_t &info) {
-        if (!info.valid_data || peer.system == transport->m_config.systemId)
+        if (!info.valid_data)
             return;
+        if (peer.system == transport->m_config.systemId) {
+            // Another participant as this system (ignorelocal: not us).
+            const QString name = QString::fromUtf8(peer.name);
+            QMetaObject::invokeMethod(transport, [transport, name] { emit transport->ourIdInUse(name); }, Qt::QueuedConnection);
+            return;
+        }
         const QString theirs = QString::fromUtf8(peer.digest);
         const QString ours = QString::fromLatin1(transport->m_schemas->defaultSchema().digest());
         QMutexLocker lock(&transport->m_mutex);
@@ -308,8 +314,10 @@ void DdsTransport::onData(dds_entity_t reader, void *self)
         const qint64 now = monotonicMs();
         for (int i = 0; i < n; ++i) {
             const neptus_Envelope &envelope = buffers.envelopes[i];
+            // (Our own samples never come here, ignorelocal: one sent as our
+            // id is another participant's, said by onParticipant.)
             if (!buffers.infos[i].valid_data || envelope.src == transport->m_config.systemId)
-                continue; // a disposal, or our own
+                continue; // a disposal, or sent as us
             if (!transport->heard(envelope.src, reader, buffers.infos[i].publication_handle, now))
                 continue; // the operator trusts another participant as this system
             const auto bytes = static_cast<qsizetype>(envelope.packet._length);

@@ -118,6 +118,9 @@ signals:
     // Who sends as `system` changed: its recent participants, and the one
     // trusted ("" while two claim it and none was picked).
     void sourcesChanged(quint16 system, const QStringList &senders, const QString &destination);
+    // Another participant (named) announces itself as this console's own
+    // system id (two consoles given the same id): what it sends is ignored.
+    void ourIdInUse(const QString &participant);
 
 private:
     // The participant QoS that turns DDS Security on (null without keys).

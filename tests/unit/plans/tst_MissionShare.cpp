@@ -114,10 +114,29 @@ TEST(MissionShare, AConsoleJoiningLateGetsTheMissionThenEditsFlowBothWays)
     MissionShare shareC(net.schema, u"console-c"_s, net.publisherFor(&c));
     c = &shareC;
     net.consoles = {a, b, c};
+    QSignalSpy collidedA(a, &MissionShare::collision), collidedB(b, &MissionShare::collision);
     ASSERT_TRUE(c->start({}));
     EXPECT_EQ(a->mission().plans[0].description, u"B's"_s) << "console-b > console-a at the same version";
     EXPECT_EQ(b->mission().plans[0].description, u"B's"_s);
     EXPECT_EQ(c->mission().plans[0].description, u"B's"_s);
+    // Both are told of the collision, once, and which change stands.
+    ASSERT_EQ(collidedA.size(), 1);
+    EXPECT_EQ(collidedA[0], (QVariantList{u"console-b"_s, u"plan survey"_s, false}));
+    ASSERT_EQ(collidedB.size(), 1);
+    EXPECT_EQ(collidedB[0], (QVariantList{u"console-a"_s, u"plan survey"_s, true}));
+    // Each knows who it shares the mission with.
+    EXPECT_EQ(a->peers(), (QStringList{u"console-b"_s, u"console-c"_s}));
+    EXPECT_EQ(c->peers(), (QStringList{u"console-a"_s, u"console-b"_s}));
+
+    // A later change is no collision, whoever makes it.
+    collidedA.clear();
+    collidedB.clear();
+    mission::Mission again = a->mission();
+    again.plans[0].description = u"A's again"_s;
+    a->update(again);
+    EXPECT_EQ(b->mission().plans[0].description, u"A's again"_s);
+    EXPECT_TRUE(collidedA.isEmpty());
+    EXPECT_TRUE(collidedB.isEmpty());
 }
 
 TEST(MissionShare, DamagedOrForeignObjectsAreIgnoredAndSaid)

@@ -39,7 +39,8 @@ TEST(CommandLine, ReadsEveryOption)
                              QStringLiteral("--imc-port"), QStringLiteral("6010"), QStringLiteral("--imc-peer"),
                              QStringLiteral("127.0.0.1:6002"), QStringLiteral("--components"), dir.path(),
                              QStringLiteral("--edit"), QStringLiteral("--select"), QStringLiteral("depth"),
-                             QStringLiteral("--system"), QStringLiteral("lauv-1")});
+                             QStringLiteral("--system"), QStringLiteral("lauv-1"), QStringLiteral("--system-id"),
+                             QStringLiteral("0x4002")});
     ASSERT_TRUE(line) << line.error().toStdString();
     EXPECT_EQ(line->componentDirectories, QStringList{dir.path()});
     EXPECT_TRUE(line->edit);
@@ -51,6 +52,7 @@ TEST(CommandLine, ReadsEveryOption)
     EXPECT_EQ(line->windowSize, QSize(1920, 1080));
     EXPECT_TRUE(line->selfTest);
     EXPECT_EQ(line->imcPort, 6010);
+    EXPECT_EQ(line->systemId, 0x4002);
     EXPECT_EQ(line->imcPeers, (QList<std::pair<QHostAddress, quint16>>{{QHostAddress(QStringLiteral("127.0.0.1")), 6002}}));
 }
 
@@ -87,6 +89,10 @@ TEST(CommandLine, NamesWhatIsWrong)
     line = parse({QStringLiteral("--imc-port"), QStringLiteral("70000")});
     ASSERT_FALSE(line);
     EXPECT_TRUE(line.error().contains(QStringLiteral("70000")));
+
+    line = parse({QStringLiteral("--system-id"), QStringLiteral("0x1f")});
+    ASSERT_FALSE(line);
+    EXPECT_TRUE(line.error().contains(QStringLiteral("0x4000 to 0x5FFF"))) << line.error().toStdString();
 
     line = parse({QStringLiteral("--imc-peer"), QStringLiteral("nohostport")});
     ASSERT_FALSE(line);

@@ -151,3 +151,26 @@ TEST(DdsTransport, ARestartedVehicleIsNotItsOwnImpostor)
     }, 5000)) << "within half the conflict window: " << console.sources(0x23).join(u' ').toStdString();
     EXPECT_TRUE(console.publish(0x23, msg::Message(test::shippedSchema()->byAbbrev(u"Abort"))));
 }
+
+// Two consoles given one system id (issue #38: two console programs on one
+// machine both took 0x4001 and each dropped the other's messages as its own,
+// silently): the other's messages are still not taken as ours, and it is said who.
+TEST(DdsTransport, AnotherParticipantSendingAsOurIdIsIgnoredAndSaid)
+{
+    DdsTransport console(test::shippedSchema(), DdsConfig{26, {}, 0x4001, QStringLiteral("console-a")});
+    DdsTransport twin(test::shippedSchema(), DdsConfig{26, {}, 0x4001, QStringLiteral("console-b")});
+    ASSERT_TRUE(console.start());
+    ASSERT_TRUE(twin.start());
+    QSignalSpy received(&console, &DdsTransport::received), inUse(&console, &DdsTransport::ourIdInUse);
+    msg::Message state(test::shippedSchema()->byAbbrev(u"EstimatedState"));
+    ASSERT_TRUE(QTest::qWaitFor([&] {
+        twin.broadcast(state);
+        return inUse.count() > 0;
+    }, 10000));
+    EXPECT_EQ(received.count(), 0) << "not taken as this console's own";
+    EXPECT_TRUE(inUse.first().at(0).toString().contains(QStringLiteral("console-b"))) << inUse.first().at(0).toString().toStdString();
+    for (int i = 0; i < 5; ++i)
+        twin.broadcast(state);
+    QTest::qWait(300);
+    EXPECT_EQ(inUse.count(), 1) << "said once";
+}
