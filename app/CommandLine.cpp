@@ -49,22 +49,21 @@ std::expected<QStringList, QString> sessionLogs(const QString &url, const QStrin
     auto reader = neptus::db::Reader::open(*location);
     if (!reader)
         return std::unexpected(reader.error());
-    const auto sessions = (*reader)->sessions();
-    const auto logs = (*reader)->logs();
-    if (!sessions || !logs)
-        return std::unexpected(sessions ? logs.error() : sessions.error());
-    QString found;
+    const auto sessions = (*reader)->sessionSummaries();
+    if (!sessions)
+        return std::unexpected(sessions.error());
+    const neptus::db::Reader::SessionSummary *found = nullptr;
     for (const auto &s : *sessions) // oldest first: a console's latest session wins
-        if (s.console == wanted || (wanted.size() >= 4 && s.session.startsWith(wanted)))
-            found = s.session;
-    if (found.isEmpty())
+        if (s.session.console == wanted || (wanted.size() >= 4 && s.session.session.startsWith(wanted)))
+            found = &s;
+    if (!found)
         return std::unexpected(QStringLiteral("no session '%1' in %2 (neptus-log sessions %2 lists them)").arg(wanted, location->display()));
     QStringList folders;
-    for (const auto &l : *logs)
-        if (l.session == found && QFileInfo::exists(l.folder))
+    for (const auto &l : found->logs)
+        if (QFileInfo::exists(l.folder))
             folders << l.folder;
     if (folders.isEmpty())
-        return std::unexpected(QStringLiteral("session %1 recorded no log that is still there").arg(found));
+        return std::unexpected(QStringLiteral("session %1 recorded no log that is still there").arg(found->session.session));
     return folders;
 }
 

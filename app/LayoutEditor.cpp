@@ -151,7 +151,8 @@ QStringList LayoutEditor::componentIds() const
     return ids;
 }
 
-QString LayoutEditor::add(const QString &type, const QString &module, double x, double y, double width, double height)
+QString LayoutEditor::add(const QString &type, const QString &module, double x, double y, double width, double height,
+                          const QVariantList &upright)
 {
     if (!m_document)
         return {};
@@ -159,8 +160,56 @@ QString LayoutEditor::add(const QString &type, const QString &module, double x, 
         type, module,
         {{QStringLiteral("x"), std::round(x)}, {QStringLiteral("y"), std::round(y)}, {QStringLiteral("width"), std::round(width)},
          {QStringLiteral("height"), std::round(height)}});
+    if (!id.isEmpty() && upright.size() == 4) {
+        QVariantList entries = portraitEntries();
+        entries.append(QVariant(QVariantList{id, std::round(upright[0].toDouble()), std::round(upright[1].toDouble()),
+                                             std::round(upright[2].toDouble()), std::round(upright[3].toDouble())}));
+        if (setPortraitEntries(entries))
+            m_document->joinLastTwoSteps();
+    }
     edited(!id.isEmpty());
     return id;
+}
+
+QVariantList LayoutEditor::portraitEntries() const
+{
+    if (!m_document)
+        return {};
+    QVariant list = m_document->value(rootId(), QStringLiteral("portrait"));
+    return list.toList();
+}
+
+bool LayoutEditor::setPortraitEntries(const QVariantList &entries)
+{
+    return m_document && m_document->setProperties(rootId(), {{QStringLiteral("portrait"), entries}});
+}
+
+QVariantList LayoutEditor::uprightGeometry(const QString &id) const
+{
+    for (const QVariant &entry : portraitEntries()) {
+        const QVariantList e = entry.toList();
+        if (e.size() == 5 && e[0].toString() == id)
+            return e.mid(1);
+    }
+    return {};
+}
+
+bool LayoutEditor::setUprightGeometry(const QString &id, double x, double y, double width, double height)
+{
+    if (!m_document || !m_document->find(id))
+        return false;
+    QVariantList entries = portraitEntries();
+    const QVariant placed(QVariantList{id, std::round(x), std::round(y), std::round(width), std::round(height)});
+    bool found = false;
+    for (QVariant &entry : entries) {
+        if (entry.toList().value(0).toString() == id) {
+            entry = placed;
+            found = true;
+        }
+    }
+    if (!found)
+        entries.append(placed);
+    return apply([&](LayoutDocument &) { return setPortraitEntries(entries); });
 }
 
 bool LayoutEditor::setGeometry(const QString &id, double x, double y, double width, double height)
@@ -192,14 +241,31 @@ bool LayoutEditor::resetProperty(const QString &id, const QString &name)
 
 bool LayoutEditor::remove(const QString &id)
 {
-    return apply([&](LayoutDocument &d) { return d.remove(id); });
+    QVariantList entries = portraitEntries();
+    const qsizetype before = entries.size();
+    entries.removeIf([&](const QVariant &entry) { return entry.toList().value(0).toString() == id; });
+    return apply([&](LayoutDocument &d) {
+        if (!d.remove(id))
+            return false;
+        if (entries.size() != before && setPortraitEntries(entries))
+            d.joinLastTwoSteps();
+        return true;
+    });
 }
 
 QString LayoutEditor::duplicate(const QString &id, double dx, double dy)
 {
     if (!m_document)
         return {};
+    const QVariantList upright = uprightGeometry(id);
     const QString copy = m_document->duplicate(id, dx, dy);
+    if (!copy.isEmpty() && upright.size() == 4) {
+        QVariantList entries = portraitEntries();
+        entries.append(QVariant(QVariantList{copy, upright[0].toDouble() + std::round(dx), upright[1].toDouble() + std::round(dy),
+                                             upright[2], upright[3]}));
+        if (setPortraitEntries(entries))
+            m_document->joinLastTwoSteps();
+    }
     edited(!copy.isEmpty());
     return copy;
 }

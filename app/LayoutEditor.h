@@ -54,13 +54,22 @@ public:
     Q_INVOKABLE QString rootId() const;
     Q_INVOKABLE bool save();
 
-    Q_INVOKABLE QString add(const QString &type, const QString &module, double x, double y, double width, double height);
+    // A new component at x, y, width, height; with `upright` ([x, y, width,
+    // height]) placed in the console's portrait arrangement too, one step of undo.
+    Q_INVOKABLE QString add(const QString &type, const QString &module, double x, double y, double width, double height,
+                            const QVariantList &upright = {});
     Q_INVOKABLE bool setGeometry(const QString &id, double x, double y, double width, double height);
     Q_INVOKABLE bool setValue(const QString &id, const QString &name, const QVariant &value);
     Q_INVOKABLE bool setBinding(const QString &id, const QString &name, const QString &expression);
     Q_INVOKABLE bool resetProperty(const QString &id, const QString &name);
+    // Removing or duplicating a component does the same to its place in the
+    // portrait arrangement (the copy offset there by dx, dy too): one step of undo.
     Q_INVOKABLE bool remove(const QString &id);
     Q_INVOKABLE QString duplicate(const QString &id, double dx, double dy);
+    // A component's place in the root Console's portrait arrangement,
+    // [x, y, width, height] in its portrait design pixels, or [] when it has none.
+    Q_INVOKABLE QVariantList uprightGeometry(const QString &id) const;
+    Q_INVOKABLE bool setUprightGeometry(const QString &id, double x, double y, double width, double height);
     // One step up or down the z-order; to the top or bottom.
     Q_INVOKABLE bool raise(const QString &id);
     Q_INVOKABLE bool lower(const QString &id);
@@ -91,6 +100,9 @@ private:
     bool edited(bool changed);
     void setError(const QString &error);
     int zIndexOf(const QString &id) const;
+    // The root's portrait entries ([id, x, y, width, height] each).
+    QVariantList portraitEntries() const;
+    bool setPortraitEntries(const QVariantList &entries);
 
     QUrl m_source;
     std::optional<neptus::layout::LayoutDocument> m_document;

@@ -19,7 +19,7 @@ set(NEPTUS_LAYERS
   "neptus-coastline    geo         neptus-core"
   "neptus-mission-model mission    neptus-messages neptus-geo"
   "neptus-processor    processor   neptus-mission-model"
-  "neptus-plan-runs    plans       neptus-messages"
+  "neptus-plan-runs    runs        neptus-messages"
   "neptus-plans        plans       neptus-mission-model neptus-scripting neptus-plan-runs"
   "neptus-charts       charts      neptus-mission-model"
   "neptus-chart-reader charts      neptus-charts"

@@ -188,6 +188,12 @@ void LayoutDocument::restore(const QString &text)
     m_root = std::move(document->m_root);
 }
 
+void LayoutDocument::joinLastTwoSteps()
+{
+    if (m_undo.size() >= 2)
+        m_undo.pop_back(); // the text between the two: undo goes to before the first
+}
+
 bool LayoutDocument::undo()
 {
     if (m_undo.empty())

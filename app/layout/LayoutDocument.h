@@ -106,6 +106,9 @@ public:
     // True when the property is set by an expression rather than a literal.
     bool isBinding(const QString &id, const QString &name) const;
 
+    // The last two edits become one step of undo (an edit made of two).
+    void joinLastTwoSteps();
+
     bool canUndo() const { return !m_undo.empty(); }
     bool canRedo() const { return !m_redo.empty(); }
     bool undo();

@@ -21,6 +21,10 @@ Item {
     readonly property LayoutEditor editor: layoutEditor
     // Bumped when components the console may use changed on disk.
     property int componentsRevision: 0
+    // The space whose shape chooses the console's arrangement (Console.shapeWidth):
+    // the shell's whole space, the designer's panels included.
+    property real shapeWidth: width
+    property real shapeHeight: height
 
     onComponentsRevisionChanged: rebuild()
 
@@ -97,6 +101,8 @@ Item {
         object.session = Qt.binding(() => loader.session)
         object.width = Qt.binding(() => loader.width)
         object.height = Qt.binding(() => loader.height)
+        object.shapeWidth = Qt.binding(() => loader.shapeWidth)
+        object.shapeHeight = Qt.binding(() => loader.shapeHeight)
         installScripts()
     }
 

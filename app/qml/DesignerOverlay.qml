@@ -91,20 +91,8 @@ Item {
     // A console held upright shows its portrait arrangement (Console.portrait):
     // what is placed there is placed in it, landscape stays as it was.
     function portraitShown() { return loader && loader.item ? loader.item.portraitShown === true : false }
-    function portraitEntry(id) {
-        const list = editor.value(editor.rootId(), "portrait") || []
-        for (const entry of list) {
-            if (entry[0] === id)
-                return entry
-        }
-        return null
-    }
     function placeGeometry(id, x, y, w, h) {
-        if (!portraitShown())
-            return editor.setGeometry(id, x, y, w, h)
-        const list = (editor.value(editor.rootId(), "portrait") || []).filter(entry => entry[0] !== id)
-        list.push([id, x, y, w, h])
-        return editor.setValue(editor.rootId(), "portrait", list)
+        return portraitShown() ? editor.setUprightGeometry(id, x, y, w, h) : editor.setGeometry(id, x, y, w, h)
     }
     function setGeometry(id, item) {
         const r = toLayout(item.x, item.y, item.width, item.height)
@@ -132,9 +120,7 @@ Item {
             const c = loader.item
             const kx = c.designWidth / c.portraitWidth, ky = c.designHeight / c.portraitHeight
             id = editor.add(entry.name, entry.module, Math.round(r.x * kx), Math.round(r.y * ky),
-                            Math.round(r.width * kx), Math.round(r.height * ky))
-            if (id !== "")
-                placeGeometry(id, r.x, r.y, r.width, r.height)
+                            Math.round(r.width * kx), Math.round(r.height * ky), [r.x, r.y, r.width, r.height])
         } else {
             id = editor.add(entry.name, entry.module, r.x, r.y, r.width, r.height)
         }
@@ -178,9 +164,9 @@ Item {
         if (!item || !movable(selected))
             return
         // In the layout's own units (design pixels for a proportional layout).
-        const placed = portraitShown() ? portraitEntry(selected) : null
-        if (placed) {
-            placeGeometry(selected, placed[1] + dx, placed[2] + dy, placed[3], placed[4])
+        const placed = portraitShown() ? editor.uprightGeometry(selected) : []
+        if (placed.length === 4) {
+            placeGeometry(selected, placed[0] + dx, placed[1] + dy, placed[2], placed[3])
             return
         }
         if (portraitShown()) {

@@ -280,6 +280,8 @@ ApplicationWindow {
     ConsoleLoader {
         id: consoleLoader
         anchors { fill: parent; leftMargin: designer.leftInset; rightMargin: designer.rightInset; bottomMargin: designer.bottomInset }
+        shapeWidth: parent.width
+        shapeHeight: parent.height
         session: window.session
         source: window.consoleUrl
         componentsRevision: componentPalette.revision

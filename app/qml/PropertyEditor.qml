@@ -25,11 +25,30 @@ Rectangle {
     readonly property var entry: palette && type !== "" ? palette.entry(type) : ({})
     // A proportional console's geometry is in pixels of its design size.
     readonly property Console hostConsole: target ? target.parent as Console : null
-    readonly property string geometryUnit: hostConsole && hostConsole.proportional
-                                           ? qsTr("design px of %1 × %2").arg(hostConsole.designWidth).arg(hostConsole.designHeight) : "px"
-    readonly property var geometry: [{ name: "x", type: "number", unit: geometryUnit }, { name: "y", type: "number", unit: geometryUnit },
-                                     { name: "width", type: "number", unit: geometryUnit, min: 8 },
-                                     { name: "height", type: "number", unit: geometryUnit, min: 8 }]
+    // Upright (the console's portrait arrangement shown), the geometry edited
+    // is the component's place in that arrangement.
+    readonly property bool upright: hostConsole !== null && hostConsole.portraitShown
+    readonly property string geometryUnit: !hostConsole || !hostConsole.proportional ? "px"
+        : upright ? qsTr("design px of %1 × %2, upright").arg(hostConsole.portraitWidth).arg(hostConsole.portraitHeight)
+                  : qsTr("design px of %1 × %2").arg(hostConsole.designWidth).arg(hostConsole.designHeight)
+    readonly property var geometry: [{ name: "x", type: "number", unit: geometryUnit, place: 0, panel: panel },
+                                     { name: "y", type: "number", unit: geometryUnit, place: 1, panel: panel },
+                                     { name: "width", type: "number", unit: geometryUnit, min: 8, place: 2, panel: panel },
+                                     { name: "height", type: "number", unit: geometryUnit, min: 8, place: 3, panel: panel }]
+    // [x, y, width, height] upright: its place in the portrait arrangement, or
+    // where it is shown until it has one (its landscape place, stretched).
+    function uprightPlace(): var {
+        const placed = editor.uprightGeometry(componentId)
+        if (placed.length === 4 || !target)
+            return placed
+        const r = hostConsole.toDesign(target.x, target.y, target.width, target.height)
+        return [r.x, r.y, r.width, r.height]
+    }
+    function setUpright(index: int, value: real): void {
+        const place = uprightPlace()
+        place[index] = value
+        editor.setUprightGeometry(componentId, place[0], place[1], place[2], place[3])
+    }
 
     color: Theme.surface
     border.color: Theme.border
@@ -90,8 +109,10 @@ Rectangle {
         property string componentId
         property var spec
         readonly property string name: spec.name
-        readonly property bool bound: { editor.text; return editor.isBinding(componentId, name) }
-        readonly property var current: { editor.text; return editor.value(componentId, name) }
+        // A geometry row of an upright console: the portrait arrangement's.
+        readonly property bool upright: spec.place !== undefined && spec.panel.upright
+        readonly property bool bound: { editor.text; return !upright && editor.isBinding(componentId, name) }
+        readonly property var current: { editor.text; return upright ? spec.panel.uprightPlace()[spec.place] : editor.value(componentId, name) }
         // What the running component has when the layout does not set it: its real default.
         property Item target: null
         readonly property var live: { editor.text; return target ? target[name] : undefined }
@@ -102,7 +123,12 @@ Rectangle {
         objectName: "property-" + name
         spacing: Theme.spacing / 2
 
-        function commit(value) { editor.setValue(componentId, name, value) }
+        function commit(value) {
+            if (upright)
+                spec.panel.setUpright(spec.place, value)
+            else
+                editor.setValue(componentId, name, value)
+        }
 
         Text {
             text: row.name + (row.spec.unit ? " (" + row.spec.unit + ")" : "")

@@ -935,39 +935,46 @@ std::expected<std::vector<Reader::SessionSummary>, QString> Reader::sessionSumma
     auto logs = this->logs();
     if (!sessions || !logs)
         return std::unexpected(sessions ? logs.error() : sessions.error());
+    // Three reads for every session at once, not two a session.
+    auto systems = select<QStringList>(m_connection, u"SELECT DISTINCT session, system FROM positions ORDER BY session, system"_s, {},
+                                       [](const QSqlQuery &q) { return QStringList{q.value(0).toString(), q.value(1).toString()}; });
+    if (!systems)
+        return std::unexpected(systems.error());
+    auto events = select<QStringList>(
+        m_connection, u"SELECT session, system, plan, event FROM plan_events ORDER BY t, seq"_s, {}, [](const QSqlQuery &q) {
+            return QStringList{q.value(0).toString(), q.value(1).toString(), q.value(2).toString(), q.value(3).toString()};
+        });
+    if (!events)
+        return std::unexpected(events.error());
     std::vector<SessionSummary> summaries;
     summaries.reserve(sessions->size());
-    for (SessionRecord &record : *sessions) {
-        SessionSummary summary{std::move(record), {}, {}, {}};
-        const QString &id = summary.session.session;
-        // The positions' and plan events' keys start with the session: these read its rows only.
-        auto systems = select<QString>(m_connection, u"SELECT DISTINCT system FROM positions WHERE session = ? ORDER BY system"_s, {id},
-                                       [](const QSqlQuery &q) { return q.value(0).toString(); });
-        if (!systems)
-            return std::unexpected(systems.error());
-        summary.systems = QStringList(systems->begin(), systems->end());
-        // A run is a "started" row, then the row that ends it (see OperationsFeed).
-        auto events = select<std::pair<QString, QString>>(
-            m_connection, u"SELECT system, plan, event FROM plan_events WHERE session = ? ORDER BY t, seq"_s, {id},
-            [](const QSqlQuery &q) { return std::pair{q.value(0).toString() + u'\n' + q.value(1).toString(), q.value(2).toString()}; });
-        if (!events)
-            return std::unexpected(events.error());
-        QHash<QString, qsizetype> open; // system + plan → its run in `runs`
-        // (success and failure: what consoles before the one tracker wrote.)
-        static const QStringList ends = {u"completed"_s, u"failed"_s, u"stopped"_s, u"replaced"_s, u"ended"_s, u"success"_s, u"failure"_s};
-        for (const auto &[key, event] : *events) {
-            if (event == u"started") {
-                open.insert(key, summary.runs.size());
-                summary.runs << key.section(u'\n', 1) + u": running"_s;
-            } else if (ends.contains(event) && open.contains(key)) {
-                summary.runs[open.take(key)] = key.section(u'\n', 1) + u": "_s + event;
-            }
+    QHash<QString, SessionSummary *> byId;
+    for (SessionRecord &record : *sessions)
+        summaries.push_back(SessionSummary{std::move(record), {}, {}, {}});
+    for (SessionSummary &summary : summaries)
+        byId.insert(summary.session.session, &summary);
+    for (const QStringList &row : *systems)
+        if (SessionSummary *summary = byId.value(row[0]))
+            summary->systems << row[1];
+    // A run is a "started" row, then the row that ends it (see OperationsFeed).
+    // (success and failure: what consoles before the one tracker wrote.)
+    static const QStringList ends = {u"completed"_s, u"failed"_s, u"stopped"_s, u"replaced"_s, u"ended"_s, u"success"_s, u"failure"_s};
+    QHash<QString, qsizetype> open; // session + system + plan → its run in the session's `runs`
+    for (const QStringList &row : *events) {
+        SessionSummary *summary = byId.value(row[0]);
+        if (!summary)
+            continue;
+        const QString key = row[0] + u'\n' + row[1] + u'\n' + row[2];
+        if (row[3] == u"started") {
+            open.insert(key, summary->runs.size());
+            summary->runs << row[2] + u": running"_s;
+        } else if (ends.contains(row[3]) && open.contains(key)) {
+            summary->runs[open.take(key)] = row[2] + u": "_s + row[3];
         }
-        for (const LogRecord &log : *logs)
-            if (log.session == id)
-                summary.logs.push_back(log);
-        summaries.push_back(std::move(summary));
     }
+    for (const LogRecord &log : *logs)
+        if (SessionSummary *summary = byId.value(log.session))
+            summary->logs.push_back(log);
     return summaries;
 }
 

@@ -1,7 +1,7 @@
 #pragma once
 
 #include "log/Replay.h"
-#include "plans/PlanRuns.h"
+#include "runs/PlanRuns.h"
 
 #include <QHash>
 #include <QString>

@@ -8,7 +8,7 @@
 #include "mission/Vehicle.h"
 #include "plans/PlanClient.h"
 #include "plans/PlanDatabase.h"
-#include "plans/PlanRuns.h"
+#include "runs/PlanRuns.h"
 #include "plans/Supervisor.h"
 #include "tree/VariableTree.h"
 

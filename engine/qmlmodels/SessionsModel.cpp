@@ -14,6 +14,7 @@ namespace {
 struct Read
 {
     QList<RowModel::Row> rows;
+    QList<bool> quiet;
     QString problem;
 };
 
@@ -44,9 +45,11 @@ Read readSessions(const neptus::db::Location &location, const QString &own)
             if (QFileInfo::exists(log.folder))
                 here << log.folder;
         }
+        const bool ours = s.session.session == own;
         read.rows.append(RowModel::Row{s.session.session, s.session.console, s.session.host, s.session.program,
                                        double(s.session.startMs), double(s.session.lastMs), s.systems, s.runs, here,
-                                       double(packets), s.session.session == own});
+                                       double(packets), ours});
+        read.quiet.append(!ours && packets == 0 && s.systems.isEmpty() && s.runs.isEmpty());
     }
     return read;
 }
@@ -67,8 +70,11 @@ SessionsModel::~SessionsModel()
 
 void SessionsModel::setDatabase(const QString &url)
 {
-    if (url != m_url)
-        m_rows.setRows({}); // another database's sessions
+    if (url != m_url) { // another database's sessions
+        m_all.clear();
+        m_quiet.clear();
+        show();
+    }
     m_url = url;
     const auto location = neptus::db::Location::parse(url);
     m_display = location ? location->display() : url;
@@ -82,7 +88,9 @@ void SessionsModel::refresh()
     const auto location = neptus::db::Location::parse(m_url);
     if (m_url.isEmpty() || !location) {
         m_problem = m_url.isEmpty() ? u"this console has no database"_s : location.error();
-        m_rows.setRows({});
+        m_all.clear();
+        m_quiet.clear();
+        show();
         emit changed();
         return;
     }
@@ -93,11 +101,37 @@ void SessionsModel::refresh()
     connect(&m_read, &QFutureWatcherBase::finished, this, [this, result] {
         m_loading = false;
         m_problem = result->problem;
-        if (m_problem.isEmpty())
-            m_rows.setRows(std::move(result->rows));
+        if (m_problem.isEmpty()) {
+            m_all = std::move(result->rows);
+            m_quiet = std::move(result->quiet);
+            show();
+        }
         emit changed();
     });
     m_read.setFuture(QtConcurrent::run([location = *location, own = m_own, result] { *result = readSessions(location, own); }));
+}
+
+int SessionsModel::quietCount() const
+{
+    return int(m_quiet.count(true));
+}
+
+void SessionsModel::setShowQuiet(bool show)
+{
+    if (show == m_showQuiet)
+        return;
+    m_showQuiet = show;
+    this->show();
+    emit changed();
+}
+
+void SessionsModel::show()
+{
+    QList<RowModel::Row> rows;
+    for (qsizetype i = 0; i < m_all.size(); ++i)
+        if (m_showQuiet || !m_quiet.value(i))
+            rows.append(m_all[i]);
+    m_rows.setRows(std::move(rows));
 }
 
 bool SessionsModel::open(const QString &session)

@@ -24,6 +24,10 @@ class SessionsModel : public QObject
     // (lists of text), logs (the folders still here), packets (recorded, all logs), own (this console's).
     Q_PROPERTY(RowModel *rows READ rows CONSTANT)
     Q_PROPERTY(bool loading READ loading NOTIFY changed)
+    // Sessions that recorded nothing (no packet, no position, no plan: a
+    // console opened and closed, a test) are folded away unless shown.
+    Q_PROPERTY(int quietCount READ quietCount NOTIFY changed)
+    Q_PROPERTY(bool showQuiet READ showQuiet WRITE setShowQuiet NOTIFY changed)
     // Why the last read failed ("" when it did not).
     Q_PROPERTY(QString problem READ problem NOTIFY changed)
 
@@ -39,6 +43,9 @@ public:
     RowModel *rows() { return &m_rows; }
     bool loading() const { return m_loading; }
     QString problem() const { return m_problem; }
+    int quietCount() const;
+    bool showQuiet() const { return m_showQuiet; }
+    void setShowQuiet(bool show);
 
     // Reads the sessions again (the list as it stands stays meanwhile).
     Q_INVOKABLE void refresh();
@@ -52,6 +59,10 @@ signals:
 private:
     QString m_url, m_display, m_problem, m_own;
     bool m_loading = false;
+    bool m_showQuiet = false;
     RowModel m_rows;
+    QList<RowModel::Row> m_all; // every session read; m_rows shows them but the quiet ones unless asked
+    QList<bool> m_quiet;
+    void show();
     QFutureWatcher<void> m_read;
 };

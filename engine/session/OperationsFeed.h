@@ -4,7 +4,7 @@
 #include "core/Clock.h"
 #include "database/Database.h"
 #include "messages/Message.h"
-#include "plans/PlanRuns.h"
+#include "runs/PlanRuns.h"
 
 #include <QHash>
 #include <QMutex>

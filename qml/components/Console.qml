@@ -37,9 +37,14 @@ Item {
     property real portraitWidth: 0
     property real portraitHeight: 0
     property var portrait: []
+    // The size whose shape chooses the arrangement: the console's own unless
+    // its host says (the shell gives its whole space, so the designer's side
+    // panels, which narrow the console, do not turn it upright).
+    property real shapeWidth: width
+    property real shapeHeight: height
     // Whether the portrait arrangement is the one shown (chosen by the aspect ratio).
     readonly property bool portraitShown: proportional && portraitWidth > 0 && portraitHeight > 0
-                                          && portrait.length > 0 && height > width
+                                          && portrait.length > 0 && shapeHeight > shapeWidth
     readonly property real scaleX: proportional && width > 0 ? width / (portraitShown ? portraitWidth : designWidth) : 1
     readonly property real scaleY: proportional && height > 0 ? height / (portraitShown ? portraitHeight : designHeight) : 1
 

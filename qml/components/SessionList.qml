@@ -81,6 +81,30 @@ Rectangle {
         spacing: Theme.spacing / 2
         model: list.sessions ? list.sessions.rows : null
         boundsBehavior: Flickable.StopAtBounds
+        footer: Item {
+            width: ListView.view.width
+            height: quietRow.visible ? quietRow.height + Theme.spacing : 0
+            Row {
+                id: quietRow
+                y: Theme.spacing / 2
+                visible: list.sessions !== null && list.sessions.quietCount > 0
+                spacing: Theme.spacing
+                Text {
+                    anchors.verticalCenter: parent.verticalCenter
+                    text: list.sessions && list.sessions.showQuiet
+                          ? qsTr("%n session(s) that recorded nothing shown", "", list.sessions.quietCount)
+                          : qsTr("%n session(s) that recorded nothing folded away", "", list.sessions ? list.sessions.quietCount : 0)
+                    color: Theme.textDim
+                    font.pixelSize: Theme.smallFontPixelSize
+                }
+                TouchButton {
+                    objectName: "showQuiet"
+                    text: list.sessions && list.sessions.showQuiet ? qsTr("Hide") : qsTr("Show")
+                    toolTip: qsTr("Sessions with no packet, no position and no plan: a console opened and closed")
+                    onClicked: list.sessions.showQuiet = !list.sessions.showQuiet
+                }
+            }
+        }
         delegate: Rectangle {
             id: row
             required property string session

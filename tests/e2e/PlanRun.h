@@ -6,7 +6,7 @@
 #include "mission/MissionXml.h"
 #include "plans/PlanClient.h"
 #include "plans/PlanDatabase.h"
-#include "plans/PlanRuns.h"
+#include "runs/PlanRuns.h"
 #include "session/Console.h"
 
 #include "Missions.h"

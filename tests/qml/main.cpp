@@ -252,19 +252,26 @@ public:
     // An operation's database in `folder` (operation.db) with three sessions, one after the
     // other: "ops-a" heard lauv-sim-1, whose plan survey completed, and recorded <folder>/logs/a
     // (made here); "ops-b" heard boat-1, whose survey has no end, and recorded <folder>/gone (not
-    // on this machine); "ops-c" is the console's own. The console session's list reads it.
+    // on this machine); "ops-c" is the console's own. Before them "ops-q" recorded nothing
+    // (a console opened and closed). The console session's list reads it.
     // Returns ops-a's session id.
     Q_INVOKABLE QString writeOperation(const QString &folder)
     {
         const QString file = QDir(folder).filePath(u"operation.db"_s);
         const auto location = db::Location::parse(file);
         QStringList ids;
-        for (const QString &console : {u"ops-a"_s, u"ops-b"_s, u"ops-c"_s}) {
+        for (const QString &console : {u"ops-q"_s, u"ops-a"_s, u"ops-b"_s, u"ops-c"_s}) {
             db::Writer::Options options;
             options.spoolFolder = QDir(folder).filePath(u"spool-"_s + console);
             options.console = console;
             options.host = u"deck"_s;
             db::Writer writer(*location, options);
+            if (console == u"ops-q") {
+                if (!writer.flush(5000))
+                    return {};
+                QThread::msleep(5);
+                continue;
+            }
             ids << writer.session();
             const QString system = console == u"ops-a" ? u"lauv-sim-1"_s : u"boat-1"_s;
             writer.write(db::Row{db::Table::Position, {1000, system, 0x1f, 41.18, -8.7, 2.0, 10.0, 0.0, 1.0}});

@@ -65,6 +65,16 @@ TestCase {
         verify(!findChild(c, "review").enabled)
         verify(!Fixtures.session.sessions.open(rows.get(0).session))
         compare(opened.count, 1)
+
+        // A session that recorded nothing (ops-q) is folded away, one tap shows it.
+        compare(Fixtures.session.sessions.quietCount, 1)
+        const showQuiet = findChild(list, "showQuiet")
+        verify(showQuiet !== null && showQuiet.visible)
+        mouseClick(showQuiet)
+        tryCompare(list, "count", 4)
+        compare(rows.get(3).console, "ops-q")
+        mouseClick(showQuiet)
+        tryCompare(list, "count", 3)
     }
 
     function test_2_saysWhyWhenThereIsNoDatabase() {

@@ -34,9 +34,13 @@ TestCase {
             height: test.height
             ComponentPalette { id: palette }
             ConsoleCatalog { id: catalog }
+            // inset: as the program's shell (Main.qml), the designer's panels beside the console, not over it.
+            property bool inset: false
             ConsoleLoader {
                 id: loader
-                anchors.fill: parent
+                anchors { fill: parent; leftMargin: designer.leftInset; rightMargin: designer.rightInset; bottomMargin: designer.bottomInset }
+                shapeWidth: parent.width
+                shapeHeight: parent.height
                 session: Fixtures.session
                 componentsRevision: palette.revision
             }
@@ -46,6 +50,7 @@ TestCase {
                 loader: loader
                 palette: palette
                 catalog: catalog
+                insetCanvas: shell.inset
                 editing: true
             }
         }
@@ -370,12 +375,64 @@ TestCase {
         verify(editor.save())
         const saved = Fixtures.readFile(shell.file)
         verify(saved.indexOf("portrait: [[\"depth\", 24, 32, 200, 96], [\"speed\", ") > 0, saved)
+        const root = editor.rootId()
+        const placedIds = () => editor.value(root, "portrait").map(entry => entry[0])
+
+        // Duplicated upright: the copy gets a place there too, one step of undo for both.
+        shell.designer.selected = "depth"
+        shell.designer.duplicateSelected()
+        const copy = shell.designer.selected
+        verify(copy !== "depth" && copy !== "")
+        compare(editor.uprightGeometry(copy), [24 + 16, 32 + 16, 200, 96])
+        shell.designer.undo()
+        compare(editor.componentIds.indexOf(copy), -1)
+        compare(placedIds(), ["depth", "speed"], "one undo took the copy and its place")
+        // Placed upright: one step of undo.
+        const added = shell.designer.place("Readout", 200, 300)
+        verify(added !== "")
+        compare(editor.uprightGeometry(added).length, 4)
+        shell.designer.undo()
+        compare(editor.componentIds.indexOf(added), -1)
+        compare(placedIds(), ["depth", "speed"])
+        // Removed: its place goes with it (no entry naming nothing); undo brings both.
+        shell.designer.selected = "speed"
+        shell.designer.removeSelected()
+        compare(placedIds(), ["depth"])
+        shell.designer.undo()
+        compare(placedIds(), ["depth", "speed"])
+        verify(editor.componentIds.indexOf("speed") >= 0)
+        // The property panel edits the upright place, in the portrait's design pixels.
+        shell.designer.selected = "depth"
+        tryVerify(() => findChild(shell.designer, "property-x") !== null)
+        const xLabel = findChild(shell.designer, "property-x").children[0].text
+        verify(xLabel.indexOf("design px of 400 × 640, upright") > 0, xLabel)
+        const xField = findChild(shell.designer, "field-x")
+        compare(xField.text, "24")
+        xField.text = "40"
+        xField.committed()
+        compare(editor.uprightGeometry("depth"), [40, 32, 200, 96])
+        compare(editor.value("depth", "x"), 96, "the landscape place stays")
+        shell.designer.undo()
 
         // Back to landscape: as it was.
         shell.width = landscape.width
         shell.height = landscape.height
         tryVerify(() => !shell.loader.item.portraitShown)
         tryCompare(liveItem(shell, "depth"), "x", Math.round(96 * shell.loader.item.scaleX))
+
+        // The designer's side panels narrow a landscape window's console until it
+        // is taller than wide: still the landscape arrangement, the one being edited.
+        shell.width = 720
+        shell.height = 600
+        shell.inset = true
+        shell.designer.paletteShown = true
+        tryVerify(() => shell.loader.width < shell.loader.height, 2000,
+                  "the panels take " + (shell.designer.leftInset + shell.designer.rightInset) + " px of 720")
+        verify(!shell.loader.item.portraitShown)
+        shell.designer.selected = "depth"
+        shell.designer.nudge(8, 0)
+        compare(editor.value("depth", "x"), 104, "the landscape place is what moved")
+        compare(editor.value(editor.rootId(), "portrait")[0], ["depth", 24, 32, 200, 96])
     }
 
     // A shipped console saved as one of the user's own (the shipped file

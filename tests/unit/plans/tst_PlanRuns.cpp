@@ -2,7 +2,7 @@
 // PlanControlState, with the words of its PlanControl replies, in the order
 // and with the texts a real DUNE uses (src/Plan/Engine/Task.cpp; the fixture
 // log ../shared/fixtures/dune-log): each run starts once and ends once.
-#include "plans/PlanRuns.h"
+#include "runs/PlanRuns.h"
 
 #include "core/Gzip.h"
 #include "messages/Codec.h"

@@ -5,7 +5,7 @@
 // address a vehicle was heard from, signing.
 #include "transport/mavlink/MavlinkTransport.h"
 
-#include "plans/PlanRuns.h"
+#include "runs/PlanRuns.h"
 #include "session/Console.h"
 
 #include "Fixtures.h"

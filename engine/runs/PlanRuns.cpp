@@ -1,4 +1,4 @@
-#include "plans/PlanRuns.h"
+#include "runs/PlanRuns.h"
 
 #include <limits>
 
