@@ -22,9 +22,14 @@
 #include <QFileInfo>
 #include <QHash>
 
-#include <cstdio>
 #include <algorithm>
+#include <chrono>
+#include <condition_variable>
+#include <cstdio>
+#include <cstdlib>
+#include <mutex>
 #include <optional>
+#include <thread>
 
 #include <sys/resource.h>
 #include <unistd.h>
@@ -45,6 +50,69 @@ rlim_t mappedBytes()
     }
     return rlim_t(pages) * rlim_t(sysconf(_SC_PAGESIZE));
 }
+
+// Resident memory now, from /proc/self/statm.
+long long residentBytes()
+{
+    long long pages = 0, resident = 0;
+    if (FILE *f = std::fopen("/proc/self/statm", "r")) {
+        if (std::fscanf(f, "%lld %lld", &pages, &resident) != 2)
+            resident = 0;
+        std::fclose(f);
+    }
+    return resident * sysconf(_SC_PAGESIZE);
+}
+
+// The memory cap as resident memory too, watched every 10 ms while a
+// translation runs (and not at all between them): what the address-space
+// limit cannot see, an allocator that takes its memory from space reserved at
+// start (a sanitizer's), ends the process here, as running out would.
+class ResidentWatch
+{
+public:
+    explicit ResidentWatch(long long cap)
+        : m_cap(cap)
+        , m_thread([this] { watch(); })
+    {
+    }
+    ~ResidentWatch()
+    {
+        {
+            std::lock_guard lock(m_mutex);
+            m_quit = true;
+        }
+        m_wake.notify_one();
+        m_thread.join();
+    }
+    void translating(bool on)
+    {
+        {
+            std::lock_guard lock(m_mutex);
+            m_on = on;
+        }
+        m_wake.notify_one();
+    }
+
+private:
+    void watch()
+    {
+        std::unique_lock lock(m_mutex);
+        while (!m_quit) {
+            if (!m_on) {
+                m_wake.wait(lock);
+                continue;
+            }
+            if (residentBytes() > m_cap)
+                std::_Exit(3); // as out of memory: the program says the limit
+            m_wake.wait_for(lock, std::chrono::milliseconds(10));
+        }
+    }
+    const long long m_cap;
+    std::mutex m_mutex;
+    std::condition_variable m_wake;
+    bool m_on = false, m_quit = false;
+    std::thread m_thread;
+};
 
 // CPU seconds used so far (user and system), rounded up.
 rlim_t cpuSecondsUsed()
@@ -141,6 +209,9 @@ int main(int argc, char **argv)
         const rlimit limit{cap, cap};
         setrlimit(RLIMIT_AS, &limit);
     }
+    std::optional<ResidentWatch> resident;
+    if (memory > 0)
+        resident.emplace(residentBytes() + static_cast<long long>(memory));
     rlimit cpu{};
     getrlimit(RLIMIT_CPU, &cpu);
 
@@ -206,7 +277,11 @@ int main(int argc, char **argv)
                 return 1;
             continue;
         }
+        if (resident)
+            resident->translating(true);
         const auto output = compiled[path].stylesheet.apply(rest.last(), QString::fromUtf8(rest[0]), parameters);
+        if (resident)
+            resident->translating(false);
         if (!output) {
             const QByteArray why = output.error().toString().toUtf8();
             // Out of memory: said, and then a fresh process for the next one.
