@@ -41,7 +41,7 @@ bool LayoutEditor::reload()
         m_modified = false;
         emit modifiedChanged();
     }
-    emit textChanged();
+    emitTextChanged();
     return m_document.has_value();
 }
 
@@ -137,8 +137,18 @@ bool LayoutEditor::edited(bool changed)
         m_modified = true;
         emit modifiedChanged();
     }
-    emit textChanged();
+    emitTextChanged();
     return true;
+}
+
+void LayoutEditor::emitTextChanged()
+{
+    ++m_revision;
+    emit textChanged();
+    if (QStringList ids = componentIds(); ids != m_ids) {
+        m_ids = std::move(ids);
+        emit componentIdsChanged();
+    }
 }
 
 QStringList LayoutEditor::componentIds() const
@@ -209,15 +219,21 @@ bool LayoutEditor::setUprightGeometry(const QString &id, double x, double y, dou
     }
     if (!found)
         entries.append(placed);
-    return apply([&](LayoutDocument &) { return setPortraitEntries(entries); });
+    m_placed = id;
+    const bool done = apply([&](LayoutDocument &) { return setPortraitEntries(entries); });
+    m_placed.clear();
+    return done;
 }
 
 bool LayoutEditor::setGeometry(const QString &id, double x, double y, double width, double height)
 {
-    return apply([&](LayoutDocument &d) {
+    m_placed = id;
+    const bool done = apply([&](LayoutDocument &d) {
         return d.setProperties(id, {{QStringLiteral("x"), std::round(x)}, {QStringLiteral("y"), std::round(y)},
                                     {QStringLiteral("width"), std::round(width)}, {QStringLiteral("height"), std::round(height)}});
     });
+    m_placed.clear();
+    return done;
 }
 
 bool LayoutEditor::setValue(const QString &id, const QString &name, const QVariant &value)

@@ -19,11 +19,18 @@ class LayoutEditor : public QObject
     QML_ELEMENT
     Q_PROPERTY(QUrl source READ source WRITE setSource NOTIFY sourceChanged)
     Q_PROPERTY(QString text READ text NOTIFY textChanged)
+    // Bumped at every change of the text: what bindings that read the layout
+    // depend on (reading `text` writes out the whole layout).
+    Q_PROPERTY(int revision READ revision NOTIFY textChanged)
     Q_PROPERTY(bool editable READ editable NOTIFY textChanged)
     Q_PROPERTY(bool canUndo READ canUndo NOTIFY textChanged)
     Q_PROPERTY(bool canRedo READ canRedo NOTIFY textChanged)
     Q_PROPERTY(bool modified READ modified NOTIFY modifiedChanged)
-    Q_PROPERTY(QStringList componentIds READ componentIds NOTIFY textChanged)
+    Q_PROPERTY(QStringList componentIds READ componentIds NOTIFY componentIdsChanged)
+    // While textChanged is told of an edit that only placed one component
+    // (setGeometry, setUprightGeometry): its id, so the console can move it
+    // rather than be built again; "" for any other change.
+    Q_PROPERTY(QString placedOnly READ placedOnly NOTIFY textChanged)
     Q_PROPERTY(QString errorString READ errorString NOTIFY errorStringChanged)
 
 public:
@@ -39,6 +46,8 @@ public:
     bool modified() const { return m_modified; }
     // Ids of the console's own components, bottom of the z-order first.
     QStringList componentIds() const;
+    QString placedOnly() const { return m_placed; }
+    int revision() const { return m_revision; }
     QString errorString() const { return m_error; }
 
     // Reads the file again, dropping unsaved edits.
@@ -91,6 +100,7 @@ public:
 signals:
     void sourceChanged();
     void textChanged();
+    void componentIdsChanged();
     void modifiedChanged();
     void errorStringChanged();
 
@@ -98,6 +108,7 @@ private:
     // Runs an edit; true (and text changes) only when the layout changed.
     bool apply(const std::function<bool(neptus::layout::LayoutDocument &)> &edit);
     bool edited(bool changed);
+    void emitTextChanged();
     void setError(const QString &error);
     int zIndexOf(const QString &id) const;
     // The root's portrait entries ([id, x, y, width, height] each).
@@ -107,5 +118,8 @@ private:
     QUrl m_source;
     std::optional<neptus::layout::LayoutDocument> m_document;
     bool m_modified = false;
+    QStringList m_ids;
+    QString m_placed;
+    int m_revision = 0;
     QString m_error;
 };

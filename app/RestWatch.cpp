@@ -3,15 +3,21 @@
 #include <QEvent>
 #include <QCoreApplication>
 
-#if defined(__GLIBC__)
+#if defined(__SANITIZE_ADDRESS__)
+#include <sanitizer/allocator_interface.h>
+#elif defined(__GLIBC__)
 #include <malloc.h>
 #endif
 
 namespace {
 
+// Whichever allocator holds it: glibc's, or AddressSanitizer's (which keeps
+// freed blocks in quarantine) in the sanitizer build.
 void trimHeap()
 {
-#if defined(__GLIBC__)
+#if defined(__SANITIZE_ADDRESS__)
+    __sanitizer_purge_allocator();
+#elif defined(__GLIBC__)
     malloc_trim(0);
 #endif
 }

@@ -42,6 +42,9 @@ Item {
     }
 
     function rebuild() {
+        // Only placed anew: moved where it is, the console kept (not built again).
+        if (item && warning === "" && layoutEditor.placedOnly !== "" && move(layoutEditor.placedOnly))
+            return
         if (source.toString() === "") {
             replace(null)
             errorString = ""
@@ -60,6 +63,30 @@ Item {
         replace(made)
         errorString = ""
         warning = ""
+    }
+
+    // Gives component `id` of the live console its place as the layout now says; false when it cannot.
+    function move(id: string): bool {
+        const target = layoutEditor.itemWithId(item, id)
+        const r = ["x", "y", "width", "height"].map(name => layoutEditor.value(id, name))
+        if (!target || r.some(v => typeof v !== "number"))
+            return false
+        if (!item.proportional) {
+            target.x = r[0]
+            target.y = r[1]
+            target.width = r[2]
+            target.height = r[3]
+            return true
+        }
+        const entry = item.designRects.find(e => e.item === target)
+        if (!entry)
+            return false
+        entry.rect = Qt.rect(r[0], r[1], r[2], r[3])
+        const portrait = layoutEditor.value(layoutEditor.rootId(), "portrait")
+        if (JSON.stringify(portrait || []) !== JSON.stringify(item.portrait))
+            item.portrait = portrait || []
+        item.relayout()
+        return true
     }
 
     // A new console object, or why there is none.

@@ -226,7 +226,8 @@ Item {
                 required property string modelData
                 readonly property Item target: designer.loader && designer.loader.item ? designer.itemFor(modelData) : null
                 readonly property bool isSelected: designer.selected === modelData
-                readonly property bool canMove: designer.movable(modelData)
+                // (Asked of the selected one only: thousands of frames would ask at every edit.)
+                readonly property bool canMove: { if (!isSelected) return false; designer.editor.revision; return designer.movable(modelData) }
                 objectName: "frame-" + modelData
                 visible: target !== null
                 x: target ? target.x : 0
@@ -411,7 +412,7 @@ Item {
         border.color: Theme.border
         radius: Theme.radius
         PointerStop {}
-        readonly property string root: designer.editor.text !== "" ? designer.editor.rootId() : ""
+        readonly property string root: designer.editor.editable ? designer.editor.rootId() : ""
         Column {
             id: consoleColumn
             anchors { left: parent.left; right: parent.right; top: parent.top; margins: Theme.spacing * 1.5 }
@@ -422,7 +423,7 @@ Item {
                 width: parent.width
                 objectName: "consoleTitleField"
                 enabled: consolePanel.root !== ""
-                text: designer.editor.text !== "" ? designer.editor.value(consolePanel.root, "title") || "" : ""
+                text: designer.editor.editable ? designer.editor.value(consolePanel.root, "title") || "" : ""
                 onEditingFinished: if (text !== designer.editor.value(consolePanel.root, "title")) designer.editor.setValue(consolePanel.root, "title", text)
             }
             Text { text: qsTr("For vehicles of kind (UUV, USV, UAV, … comma-separated; empty for any)"); color: Theme.textDim; font.pixelSize: Theme.smallFontPixelSize; width: parent.width; wrapMode: Text.Wrap }
@@ -430,7 +431,7 @@ Item {
                 width: parent.width
                 objectName: "consoleKindsField"
                 enabled: consolePanel.root !== ""
-                text: designer.editor.text !== "" ? (designer.editor.value(consolePanel.root, "vehicleKinds") || []).join(", ") : ""
+                text: designer.editor.editable ? (designer.editor.value(consolePanel.root, "vehicleKinds") || []).join(", ") : ""
                 onEditingFinished: {
                     const kinds = text.split(/[\s,]+/).filter(k => k !== "").map(k => k.toUpperCase())
                     designer.editor.setValue(consolePanel.root, "vehicleKinds", kinds)

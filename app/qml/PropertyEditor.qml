@@ -21,7 +21,7 @@ Rectangle {
         return item !== null && typeof item[name] === "string"
     }
 
-    readonly property string type: editor ? (editor.text, editor.typeOf(componentId)) : ""
+    readonly property string type: editor ? (editor.revision, editor.typeOf(componentId)) : ""
     readonly property var entry: palette && type !== "" ? palette.entry(type) : ({})
     // A proportional console's geometry is in pixels of its design size.
     readonly property Console hostConsole: target ? target.parent as Console : null
@@ -111,11 +111,11 @@ Rectangle {
         readonly property string name: spec.name
         // A geometry row of an upright console: the portrait arrangement's.
         readonly property bool upright: spec.place !== undefined && spec.panel.upright
-        readonly property bool bound: { editor.text; return !upright && editor.isBinding(componentId, name) }
-        readonly property var current: { editor.text; return upright ? spec.panel.uprightPlace()[spec.place] : editor.value(componentId, name) }
+        readonly property bool bound: { editor.revision; return !upright && editor.isBinding(componentId, name) }
+        readonly property var current: { editor.revision; return upright ? spec.panel.uprightPlace()[spec.place] : editor.value(componentId, name) }
         // What the running component has when the layout does not set it: its real default.
         property Item target: null
-        readonly property var live: { editor.text; return target ? target[name] : undefined }
+        readonly property var live: { editor.revision; return target ? target[name] : undefined }
         readonly property var shown: current !== undefined ? current : live
         readonly property string defaultText: current === undefined && live !== undefined && live !== null
                                               ? qsTr("%1 (default)").arg(String(live)) : ""
@@ -431,7 +431,7 @@ Rectangle {
         property LayoutEditor editor: null
         property string componentId: ""
         spacing: Theme.spacing / 2
-        readonly property string saved: editor ? (editor.text, editor.value(componentId, "alarmScript") || "") : ""
+        readonly property string saved: editor ? (editor.revision, editor.value(componentId, "alarmScript") || "") : ""
         // The script checked once the typing pauses, on the script thread; until
         // its answer comes for this very text it cannot be applied.
         property var check: ({ ok: true })

@@ -71,9 +71,6 @@ long residentAnonymousKb()
 // 2-hour soak's growth); the rest gives it back to the system.
 TEST(RestWatch, GivesTheHeapsFreedMemoryBackToTheSystemWhenTheRestBegins)
 {
-#if defined(__SANITIZE_ADDRESS__)
-    GTEST_SKIP() << "AddressSanitizer has its own allocator: glibc's malloc_trim has nothing to give back";
-#endif
     RestWatch watch(150ms);
     // 32 MB in small blocks (from the heap, not mmap), all touched, then all
     // freed but the last: the block on top keeps glibc from trimming by itself.
