@@ -4,7 +4,8 @@
 #include <QCoreApplication>
 
 #if defined(__SANITIZE_ADDRESS__)
-#include <sanitizer/allocator_interface.h>
+// (In the sanitizer runtime; GCC ships no header declaring it.)
+extern "C" void __sanitizer_purge_allocator();
 #elif defined(__GLIBC__)
 #include <malloc.h>
 #endif
