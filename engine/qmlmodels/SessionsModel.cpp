@@ -49,7 +49,9 @@ Read readSessions(const neptus::db::Location &location, const QString &own)
         read.rows.append(RowModel::Row{s.session.session, s.session.console, s.session.host, s.session.program,
                                        double(s.session.startMs), double(s.session.lastMs), s.systems, s.runs, here,
                                        double(packets), ours});
-        read.quiet.append(!ours && packets == 0 && s.systems.isEmpty() && s.runs.isEmpty());
+        // Nothing to review: no plan ran, and nothing was recorded or it lasted under a minute (a glimpse).
+        const bool glimpse = s.session.lastMs - s.session.startMs < 60000;
+        read.quiet.append(!ours && s.runs.isEmpty() && (glimpse || (packets == 0 && s.systems.isEmpty())));
     }
     return read;
 }

@@ -24,8 +24,9 @@ class SessionsModel : public QObject
     // (lists of text), logs (the folders still here), packets (recorded, all logs), own (this console's).
     Q_PROPERTY(RowModel *rows READ rows CONSTANT)
     Q_PROPERTY(bool loading READ loading NOTIFY changed)
-    // Sessions that recorded nothing (no packet, no position, no plan: a
-    // console opened and closed, a test) are folded away unless shown.
+    // Sessions with nothing to review (no plan ran, and nothing recorded or
+    // under a minute long: a console opened and closed, a glance, a test) are
+    // folded away unless shown.
     Q_PROPERTY(int quietCount READ quietCount NOTIFY changed)
     Q_PROPERTY(bool showQuiet READ showQuiet WRITE setShowQuiet NOTIFY changed)
     // Why the last read failed ("" when it did not).

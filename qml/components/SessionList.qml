@@ -92,15 +92,15 @@ Rectangle {
                 Text {
                     anchors.verticalCenter: parent.verticalCenter
                     text: list.sessions && list.sessions.showQuiet
-                          ? qsTr("%n session(s) that recorded nothing shown", "", list.sessions.quietCount)
-                          : qsTr("%n session(s) that recorded nothing folded away", "", list.sessions ? list.sessions.quietCount : 0)
+                          ? qsTr("%n short session(s) with no plan shown", "", list.sessions.quietCount)
+                          : qsTr("%n short session(s) with no plan folded away", "", list.sessions ? list.sessions.quietCount : 0)
                     color: Theme.textDim
                     font.pixelSize: Theme.smallFontPixelSize
                 }
                 TouchButton {
                     objectName: "showQuiet"
                     text: list.sessions && list.sessions.showQuiet ? qsTr("Hide") : qsTr("Show")
-                    toolTip: qsTr("Sessions with no packet, no position and no plan: a console opened and closed")
+                    toolTip: qsTr("Sessions where no plan ran that recorded nothing or lasted under a minute: a console opened and closed")
                     onClicked: list.sessions.showQuiet = !list.sessions.showQuiet
                 }
             }
