@@ -49,21 +49,23 @@ std::expected<QStringList, QString> sessionLogs(const QString &url, const QStrin
     auto reader = neptus::db::Reader::open(*location);
     if (!reader)
         return std::unexpected(reader.error());
-    const auto sessions = (*reader)->sessionSummaries();
-    if (!sessions)
-        return std::unexpected(sessions.error());
-    const neptus::db::Reader::SessionSummary *found = nullptr;
+    // (sessions and logs only: sessionSummaries would read every position too.)
+    const auto sessions = (*reader)->sessions();
+    const auto logs = (*reader)->logs();
+    if (!sessions || !logs)
+        return std::unexpected(sessions ? logs.error() : sessions.error());
+    QString found;
     for (const auto &s : *sessions) // oldest first: a console's latest session wins
-        if (s.session.console == wanted || (wanted.size() >= 4 && s.session.session.startsWith(wanted)))
-            found = &s;
-    if (!found)
+        if (s.console == wanted || (wanted.size() >= 4 && s.session.startsWith(wanted)))
+            found = s.session;
+    if (found.isEmpty())
         return std::unexpected(QStringLiteral("no session '%1' in %2 (neptus-log sessions %2 lists them)").arg(wanted, location->display()));
     QStringList folders;
-    for (const auto &l : found->logs)
-        if (QFileInfo::exists(l.folder))
+    for (const auto &l : *logs)
+        if (l.session == found && QFileInfo::exists(l.folder))
             folders << l.folder;
     if (folders.isEmpty())
-        return std::unexpected(QStringLiteral("session %1 recorded no log that is still there").arg(found->session.session));
+        return std::unexpected(QStringLiteral("session %1 recorded no log that is still there").arg(found));
     return folders;
 }
 
@@ -132,7 +134,7 @@ std::expected<CommandLine, QString> CommandLine::parse(const QStringList &argume
         QStringLiteral("An IMC vehicle to talk to, as host:port (repeat for several)."), QStringLiteral("host:port"));
     const QCommandLineOption systemId(QStringLiteral("system-id"),
         QStringLiteral("This console's IMC and DDS system id, a console (CCU) id from 0x4000 to 0x5FFF (default 0x4001). "
-                       "Two consoles on one network or DDS domain need different ids."),
+                       "Two consoles on one network or DDS domain need different ids (neptus-logd uses 0x4002)."),
         QStringLiteral("id"));
     const QCommandLineOption ddsDomain(QStringLiteral("dds-domain"),
         QStringLiteral("Cyclone DDS domain id (default 0; -1 turns DDS off)."), QStringLiteral("id"));

@@ -63,15 +63,17 @@ long long residentBytes()
     return resident * sysconf(_SC_PAGESIZE);
 }
 
-// The memory cap as resident memory too, watched every 10 ms while a
-// translation runs (and not at all between them): what the address-space
-// limit cannot see, an allocator that takes its memory from space reserved at
-// start (a sanitizer's), ends the process here, as running out would.
+// The memory cap as resident memory too, each translation's own (what it
+// adds), watched every 10 ms while it runs (and not at all between them): what
+// the address-space limit cannot see, an allocator that takes its memory from
+// space reserved at start (a sanitizer's), ends the process here, as running
+// out would.
 class ResidentWatch
 {
 public:
-    explicit ResidentWatch(long long cap)
-        : m_cap(cap)
+    // `allowance`: what one translation may add to what is resident as it begins.
+    explicit ResidentWatch(long long allowance)
+        : m_allowance(allowance)
         , m_thread([this] { watch(); })
     {
     }
@@ -86,9 +88,11 @@ public:
     }
     void translating(bool on)
     {
+        const long long now = on ? residentBytes() : 0;
         {
             std::lock_guard lock(m_mutex);
             m_on = on;
+            m_cap = now + m_allowance;
         }
         m_wake.notify_one();
     }
@@ -107,7 +111,8 @@ private:
             m_wake.wait_for(lock, std::chrono::milliseconds(10));
         }
     }
-    const long long m_cap;
+    const long long m_allowance;
+    long long m_cap = 0;
     std::mutex m_mutex;
     std::condition_variable m_wake;
     bool m_on = false, m_quit = false;
@@ -211,7 +216,7 @@ int main(int argc, char **argv)
     }
     std::optional<ResidentWatch> resident;
     if (memory > 0)
-        resident.emplace(residentBytes() + static_cast<long long>(memory));
+        resident.emplace(static_cast<long long>(memory));
     rlimit cpu{};
     getrlimit(RLIMIT_CPU, &cpu);
 

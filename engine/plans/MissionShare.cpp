@@ -175,9 +175,9 @@ void MissionShare::receive(const msg::Message &message)
     const int op = int(message.integer(u"op"));
     const QString author = message.text(u"author");
     if (op == Hello) {
-        heard(author);
         if (m_mission.id.isEmpty() || (!missionId.isEmpty() && missionId != m_mission.id))
             return;
+        heard(author);
         // Everything we hold, in the mission's order (so the new console has
         // it in ours), as ours where nobody has changed it yet; then what was removed.
         QSet<QString> sent;
@@ -204,9 +204,11 @@ void MissionShare::receive(const msg::Message &message)
     const QString key = message.text(u"object");
     const auto version = quint32(message.integer(u"version"));
     const Object held = m_objects.value(key);
-    // The same version of an object changed here and there: neither console
-    // had the other's change when it made its own.
-    const bool collided = version > 0 && version == held.version && held.author == m_author && author != m_author;
+    // The same version of an object changed here and there, differently:
+    // neither console had the other's change when it made its own.
+    const QByteArray &packed = message.bytes(m_def->indexOf(u"data"));
+    const bool collided = version > 0 && version == held.version && held.author == m_author && author != m_author
+                       && packed != (held.data.isEmpty() ? QByteArray() : qCompress(held.data, 9));
     if (version < held.version || (version == held.version && author <= held.author)) {
         if (collided)
             emit collision(author, describe(key) + (op == Remove ? u" removed"_s : QString()), true);
@@ -214,7 +216,6 @@ void MissionShare::receive(const msg::Message &message)
     }
     QByteArray data;
     if (op == Put) {
-        const QByteArray &packed = message.bytes(m_def->indexOf(u"data"));
         if (packed.size() < 4 || qFromBigEndian<quint32>(packed.constData()) > maxUnpacked
             || (data = qUncompress(packed)).isEmpty()) {
             emit problem(u"%1 from %2: damaged data, ignored"_s.arg(describe(key), author));

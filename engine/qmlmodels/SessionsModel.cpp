@@ -40,8 +40,12 @@ Read readSessions(const neptus::db::Location &location, const QString &own)
     for (const auto &s : *summaries) {
         QStringList here;
         qint64 packets = 0;
+        // (last_seen is written as a console starts and ends: one that was
+        // killed has none later than its start, its logs say how long it ran.)
+        qint64 lastMs = s.session.lastMs;
         for (const auto &log : s.logs) {
             packets += log.packets;
+            lastMs = std::max(lastMs, log.endMs);
             if (QFileInfo::exists(log.folder))
                 here << log.folder;
         }
@@ -50,7 +54,7 @@ Read readSessions(const neptus::db::Location &location, const QString &own)
                                        double(s.session.startMs), double(s.session.lastMs), s.systems, s.runs, here,
                                        double(packets), ours});
         // Nothing to review: no plan ran, and nothing was recorded or it lasted under a minute (a glimpse).
-        const bool glimpse = s.session.lastMs - s.session.startMs < 60000;
+        const bool glimpse = lastMs - s.session.startMs < 60000;
         read.quiet.append(!ours && s.runs.isEmpty() && (glimpse || (packets == 0 && s.systems.isEmpty())));
     }
     return read;

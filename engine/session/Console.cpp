@@ -259,8 +259,7 @@ std::expected<void, QString> Console::startDds(transport::DdsConfig config)
         m_graph.raise(m_graph.ensure(QStringLiteral("links/DDS")), alarms::Warning,
                       tr("another console, %1, uses this console's system id 0x%2 on DDS: what it sends is ignored; "
                          "give one of them another id (--system-id)")
-                          .arg(participant)
-                          .arg(id, 4, 16, QLatin1Char('0')));
+                          .arg(participant, QStringLiteral("%1").arg(id, 4, 16, QLatin1Char('0'))));
     });
     m_dds = std::move(dds);
     addLink(link, m_dds.get());

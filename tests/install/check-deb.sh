@@ -35,8 +35,15 @@ mount --rbind /dev "$merged/dev" && mount -t proc proc "$merged/proc" && mount -
 if [ -n "${DISPLAY:-}" ] && [ -d /tmp/.X11-unix ]; then
   mkdir -p "$merged/tmp/.X11-unix" && mount --bind /tmp/.X11-unix "$merged/tmp/.X11-unix"
 fi
+# A sanitizer build's programs run with the suite's sanitizer options; its
+# leak suppressions are copied in (the source tree is not there).
+lsan=${LSAN_OPTIONS:-}
+if [[ $lsan =~ suppressions=([^:]+) ]]; then
+  cp "${BASH_REMATCH[1]}" "$merged/tmp/lsan.supp" && lsan=${lsan/"${BASH_REMATCH[1]}"/\/tmp\/lsan.supp}
+fi
 in_root() { chroot "$merged" /usr/bin/env -i PATH=/usr/sbin:/usr/bin:/sbin:/bin HOME=/root LANG=C.UTF-8 \
-  DEBIAN_FRONTEND=noninteractive DISPLAY="${DISPLAY:-}" LIBGL_ALWAYS_SOFTWARE=1 QT_QPA_PLATFORM=xcb "$@"; }
+  DEBIAN_FRONTEND=noninteractive DISPLAY="${DISPLAY:-}" LIBGL_ALWAYS_SOFTWARE=1 QT_QPA_PLATFORM=xcb \
+  ASAN_OPTIONS="${ASAN_OPTIONS:-}" UBSAN_OPTIONS="${UBSAN_OPTIONS:-}" LSAN_OPTIONS="$lsan" "$@"; }
 failures=0
 check() { if [ "$2" = 0 ]; then echo "ok: $1"; else echo "FAIL: $1"; failures=$((failures + 1)); fi; }
 
@@ -80,7 +87,7 @@ check "neptus-mission targets finds the installed vehicles and stylesheets" $?
 if [ -n "${DISPLAY:-}" ]; then
   in_root neptus --self-test >"$work/selftest.log" 2>&1; status=$?
   check "neptus --self-test from the package: $(grep -c ' ok$' "$work/selftest.log") types and consoles" $status
-  [ $status = 0 ] || grep "FAILED" "$work/selftest.log" | head -10 | sed 's/^/  /'
+  [ $status = 0 ] || { grep "FAILED" "$work/selftest.log" || tail -15 "$work/selftest.log"; } | head -15 | sed 's/^/  /'
 else
   echo "FAIL: no display for neptus --self-test (run through tools/test)"; failures=$((failures + 1))
 fi
