@@ -604,11 +604,20 @@ NodeId VariableTree::find(QStringView path) const
     return node;
 }
 
+namespace {
+// Whether an id names a node (noNode from find() does not): one that does not reads as absent.
+template<typename Nodes>
+bool inRange(const Nodes &nodes, NodeId id)
+{
+    return id >= 0 && id < static_cast<NodeId>(nodes.size());
+}
+} // namespace
+
 QString VariableTree::path(NodeId node) const
 {
     QMutexLocker lock(&m_mutex);
     QStringList parts;
-    for (; node > 0; node = m_nodes[static_cast<size_t>(node)].parent)
+    for (; node > 0 && node < static_cast<NodeId>(m_nodes.size()); node = m_nodes[static_cast<size_t>(node)].parent)
         parts.prepend(m_nodes[static_cast<size_t>(node)].name);
     return parts.join(u'/');
 }
@@ -616,30 +625,32 @@ QString VariableTree::path(NodeId node) const
 QString VariableTree::name(NodeId node) const
 {
     QMutexLocker lock(&m_mutex);
-    return m_nodes[static_cast<size_t>(node)].name;
+    return inRange(m_nodes, node) ? m_nodes[static_cast<size_t>(node)].name : QString();
 }
 
 VariableTree::Kind VariableTree::kind(NodeId node) const
 {
     QMutexLocker lock(&m_mutex);
-    return m_nodes[static_cast<size_t>(node)].kind;
+    return inRange(m_nodes, node) ? m_nodes[static_cast<size_t>(node)].kind : Kind::Field;
 }
 
 NodeId VariableTree::parent(NodeId node) const
 {
     QMutexLocker lock(&m_mutex);
-    return m_nodes[static_cast<size_t>(node)].parent;
+    return inRange(m_nodes, node) ? m_nodes[static_cast<size_t>(node)].parent : noNode;
 }
 
 int VariableTree::childCount(NodeId node) const
 {
     QMutexLocker lock(&m_mutex);
-    return static_cast<int>(m_nodes[static_cast<size_t>(node)].children.size());
+    return inRange(m_nodes, node) ? static_cast<int>(m_nodes[static_cast<size_t>(node)].children.size()) : 0;
 }
 
 NodeId VariableTree::child(NodeId node, int row) const
 {
     QMutexLocker lock(&m_mutex);
+    if (!inRange(m_nodes, node))
+        return noNode;
     const auto &children = m_nodes[static_cast<size_t>(node)].children;
     return row >= 0 && row < static_cast<int>(children.size()) ? children[static_cast<size_t>(row)] : noNode;
 }
@@ -655,7 +666,7 @@ NodeId VariableTree::childByName(NodeId node, QStringView name) const
 int VariableTree::row(NodeId node) const
 {
     QMutexLocker lock(&m_mutex);
-    return m_nodes[static_cast<size_t>(node)].row;
+    return inRange(m_nodes, node) ? m_nodes[static_cast<size_t>(node)].row : 0;
 }
 
 QStringList VariableTree::childNames(QStringView path) const
@@ -822,6 +833,9 @@ VariableTree::Snapshot VariableTree::snapshot(NodeId id) const
 {
     QMutexLocker lock(&m_mutex);
     Snapshot s;
+    // An id that names no node (noNode from find()) reads as absent, not memory before the nodes.
+    if (!inRange(m_nodes, id))
+        return s;
     const Node &node = m_nodes[static_cast<size_t>(id)];
     if (node.kind == Kind::Root || node.removed)
         return s;

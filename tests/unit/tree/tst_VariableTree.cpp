@@ -60,6 +60,28 @@ TEST(VariableTree, MessagesBecomeSystemMessageFieldPaths)
     EXPECT_DOUBLE_EQ(tree.snapshot(depth).value.toDouble(), 30);
 }
 
+// find() gives noNode for a path not heard yet; a caller that reads it at
+// once (tst_PlanExecution's wait for a state did) got memory before the
+// nodes (AddressSanitizer: heap-buffer-overflow). An id that names no node reads as absent.
+TEST(VariableTree, AnIdThatNamesNoNodeReadsAsAbsent)
+{
+    ManualClock clock(QDateTime::fromMSecsSinceEpoch(5000, QTimeZone::UTC));
+    VariableTree tree(&clock);
+    tree.ingest(state(0x1f, 12.5));
+    const NodeId missing = tree.find(u"0x001f/PlanControlState/state");
+    ASSERT_EQ(missing, noNode);
+    for (const NodeId id : {missing, NodeId(tree.nodeCapacity()), NodeId(1 << 30)}) {
+        const auto s = tree.snapshot(id);
+        EXPECT_FALSE(s.present);
+        EXPECT_TRUE(s.text.isEmpty());
+        EXPECT_EQ(tree.name(id), QString());
+        EXPECT_EQ(tree.path(id), QString());
+        EXPECT_EQ(tree.childCount(id), 0);
+        EXPECT_EQ(tree.child(id, 0), noNode);
+        EXPECT_EQ(tree.parent(id), noNode);
+    }
+}
+
 TEST(VariableTree, SystemsAreNamedByAnnounceOrConfiguration)
 {
     VariableTree tree;
