@@ -172,13 +172,17 @@ QString LayoutEditor::add(const QString &type, const QString &module, double x, 
          {QStringLiteral("height"), std::round(height)}});
     if (!id.isEmpty() && upright.size() == 4) {
         QVariantList entries = portraitEntries();
-        entries.append(QVariant(QVariantList{id, std::round(upright[0].toDouble()), std::round(upright[1].toDouble()),
-                                             std::round(upright[2].toDouble()), std::round(upright[3].toDouble())}));
+        entries.append(portraitEntry(id, upright[0].toDouble(), upright[1].toDouble(), upright[2].toDouble(), upright[3].toDouble()));
         if (setPortraitEntries(entries))
             m_document->joinLastTwoSteps();
     }
     edited(!id.isEmpty());
     return id;
+}
+
+QVariant LayoutEditor::portraitEntry(const QString &id, double x, double y, double width, double height)
+{
+    return QVariantList{id, std::round(x), std::round(y), std::round(width), std::round(height)};
 }
 
 QVariantList LayoutEditor::portraitEntries() const
@@ -209,7 +213,7 @@ bool LayoutEditor::setUprightGeometry(const QString &id, double x, double y, dou
     if (!m_document || !m_document->find(id))
         return false;
     QVariantList entries = portraitEntries();
-    const QVariant placed(QVariantList{id, std::round(x), std::round(y), std::round(width), std::round(height)});
+    const QVariant placed = portraitEntry(id, x, y, width, height);
     bool found = false;
     for (QVariant &entry : entries) {
         if (entry.toList().value(0).toString() == id) {
@@ -277,8 +281,8 @@ QString LayoutEditor::duplicate(const QString &id, double dx, double dy)
     const QString copy = m_document->duplicate(id, dx, dy);
     if (!copy.isEmpty() && upright.size() == 4) {
         QVariantList entries = portraitEntries();
-        entries.append(QVariant(QVariantList{copy, upright[0].toDouble() + std::round(dx), upright[1].toDouble() + std::round(dy),
-                                             upright[2], upright[3]}));
+        entries.append(portraitEntry(copy, upright[0].toDouble() + dx, upright[1].toDouble() + dy, upright[2].toDouble(),
+                                     upright[3].toDouble()));
         if (setPortraitEntries(entries))
             m_document->joinLastTwoSteps();
     }

@@ -113,6 +113,7 @@ private:
     int zIndexOf(const QString &id) const;
     // The root's portrait entries ([id, x, y, width, height] each).
     QVariantList portraitEntries() const;
+    static QVariant portraitEntry(const QString &id, double x, double y, double width, double height); // rounded
     bool setPortraitEntries(const QVariantList &entries);
 
     QUrl m_source;

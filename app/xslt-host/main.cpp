@@ -39,29 +39,19 @@ namespace wire = processor::wire;
 
 namespace {
 
-// The process's address space now, from /proc/self/statm.
-rlim_t mappedBytes()
+// The process's address space (field 0) or resident memory (field 1) now, from /proc/self/statm.
+long long statmBytes(int field)
 {
-    long long pages = 0;
+    long long values[2] = {0, 0};
     if (FILE *f = std::fopen("/proc/self/statm", "r")) {
-        if (std::fscanf(f, "%lld", &pages) != 1)
-            pages = 0;
+        if (std::fscanf(f, "%lld %lld", &values[0], &values[1]) != 2)
+            values[0] = values[1] = 0;
         std::fclose(f);
     }
-    return rlim_t(pages) * rlim_t(sysconf(_SC_PAGESIZE));
+    return values[field] * sysconf(_SC_PAGESIZE);
 }
-
-// Resident memory now, from /proc/self/statm.
-long long residentBytes()
-{
-    long long pages = 0, resident = 0;
-    if (FILE *f = std::fopen("/proc/self/statm", "r")) {
-        if (std::fscanf(f, "%lld %lld", &pages, &resident) != 2)
-            resident = 0;
-        std::fclose(f);
-    }
-    return resident * sysconf(_SC_PAGESIZE);
-}
+rlim_t mappedBytes() { return rlim_t(statmBytes(0)); }
+long long residentBytes() { return statmBytes(1); }
 
 // The memory cap as resident memory too, each translation's own (what it
 // adds), watched every 10 ms while it runs (and not at all between them): what
