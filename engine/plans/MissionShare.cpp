@@ -12,7 +12,7 @@ namespace neptus::plans {
 
 namespace {
 
-enum Op { Put = 0, Remove = 1, Hello = 2 };
+enum Op { Put = 0, Remove = 1, Hello = 2, Here = 3 };
 
 // Larger objects are refused rather than cut (an IMC rawdata field holds 65,535 bytes).
 constexpr qsizetype maxPacked = 60000;
@@ -177,7 +177,8 @@ void MissionShare::receive(const msg::Message &message)
     if (op == Hello) {
         if (m_mission.id.isEmpty() || (!missionId.isEmpty() && missionId != m_mission.id))
             return;
-        heard(author);
+        heard(message.header.src, author);
+        publish(Here, {}, Object{{}, 0, m_author});
         // Everything we hold, in the mission's order (so the new console has
         // it in ours), as ours where nobody has changed it yet; then what was removed.
         QSet<QString> sent;
@@ -193,14 +194,17 @@ void MissionShare::receive(const msg::Message &message)
                 publish(Remove, it.key(), *it);
         return;
     }
-    if (op != Put && op != Remove)
+    if (op != Put && op != Remove && op != Here)
         return;
     m_heard = true;
     if (m_mission.id.isEmpty() && !missionId.isEmpty())
         m_mission.id = missionId; // joining: the first shared mission heard
     if (missionId != m_mission.id)
         return;
-    heard(author);
+    if (op == Here) {
+        heard(message.header.src, author);
+        return;
+    }
     const QString key = message.text(u"object");
     const auto version = quint32(message.integer(u"version"));
     const Object held = m_objects.value(key);
@@ -236,13 +240,26 @@ void MissionShare::receive(const msg::Message &message)
         emit collision(author, what, false);
 }
 
-void MissionShare::heard(const QString &author)
+void MissionShare::heard(quint16 system, const QString &name)
 {
-    if (author.isEmpty() || author == m_author || m_peers.contains(author))
+    if (name.isEmpty() || name == m_author || m_peers.value(system) == name)
         return;
-    m_peers.append(author);
-    m_peers.sort();
+    m_peers.insert(system, name);
     emit peersChanged();
+}
+
+void MissionShare::forget(quint16 system)
+{
+    if (m_peers.remove(system))
+        emit peersChanged();
+}
+
+QStringList MissionShare::peers() const
+{
+    QStringList names = m_peers.values();
+    names.sort();
+    names.removeDuplicates();
+    return names;
 }
 
 bool MissionShare::apply(const QString &key, const QByteArray &data)

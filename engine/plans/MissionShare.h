@@ -6,6 +6,7 @@
 
 #include <QHash>
 #include <QList>
+#include <QMap>
 #include <QObject>
 #include <QStringList>
 #include <QTimer>
@@ -28,7 +29,8 @@ namespace neptus::plans {
 // seen the other's) are a collision, told to both: the author's name decides
 // which is kept. A console that starts sharing says HELLO (with its name)
 // and the others send it every object; one with no mission takes the first
-// shared mission it hears.
+// shared mission it hears. Each console that hears a HELLO answers HERE
+// (with its name) before sending the objects, so both know who shares.
 class MissionShare : public QObject
 {
     Q_OBJECT
@@ -54,8 +56,12 @@ public:
     const mission::Mission &mission() const { return m_mission; }
     // Who made the version we hold of an object (its key), "" if unknown.
     QString authorOf(const QString &key) const { return m_objects.value(key).author; }
-    // The other consoles heard sharing this mission (their names, sorted).
-    QStringList peers() const { return m_peers; }
+    // The other consoles sharing this mission now (their names, sorted):
+    // each said so itself (HELLO, or HERE in answer to one), never a name
+    // read off an object relayed by someone else.
+    QStringList peers() const;
+    // The console that sent as `system` left (DDS said so): no longer a peer.
+    void forget(quint16 system);
 
     // The mission's objects in its order, by key ("header", "plan:ID",
     // "feature:MAP/ID", "checklist:ID"), each as a mission file holding only it.
@@ -80,7 +86,7 @@ private:
     };
     std::expected<void, QString> publish(int op, const QString &key, const Object &object);
     bool apply(const QString &key, const QByteArray &data); // into m_mission
-    void heard(const QString &author);
+    void heard(quint16 system, const QString &name);
 
     std::shared_ptr<const msg::Schema> m_schema;
     const msg::MessageDef *m_def = nullptr;
@@ -94,7 +100,7 @@ private:
     bool m_heard = false;
     mission::Mission m_mission;
     QHash<QString, Object> m_objects;
-    QStringList m_peers;
+    QMap<quint16, QString> m_peers; // by the sender's system id
 };
 
 } // namespace neptus::plans

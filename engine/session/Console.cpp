@@ -261,6 +261,12 @@ std::expected<void, QString> Console::startDds(transport::DdsConfig config)
                          "give one of them another id (--system-id)")
                           .arg(participant, QStringLiteral("%1").arg(id, 4, 16, QLatin1Char('0'))));
     });
+    connect(dds.get(), &transport::DdsTransport::participantLeft, this, [this, id = config.systemId](quint16 system) {
+        if (system == id)
+            m_graph.clear(m_graph.ensure(QStringLiteral("links/DDS"))); // the other console with our id left
+        else
+            emit participantLeft(system);
+    });
     m_dds = std::move(dds);
     addLink(link, m_dds.get());
     return {};

@@ -193,8 +193,18 @@ void DdsTransport::onParticipant(dds_entity_t reader, void *self)
 {
     auto *transport = static_cast<DdsTransport *>(self);
     forEachTaken<neptus_Participant>(reader, [transport](const neptus_Participant &peer, const dds_sample_info_t &info) {
-        if (!info.valid_data)
+        if (!info.valid_data) {
+            // The participant that announced `system` left (or its lease ran out).
+            if (info.instance_state == DDS_IST_ALIVE)
+                return;
+            const quint16 system = peer.system;
+            {
+                QMutexLocker lock(&transport->m_mutex);
+                transport->m_peerDigests.remove(system);
+            }
+            QMetaObject::invokeMethod(transport, [transport, system] { emit transport->participantLeft(system); }, Qt::QueuedConnection);
             return;
+        }
         if (peer.system == transport->m_config.systemId) {
             // Another participant as this system (ignorelocal: not us).
             const QString name = QString::fromUtf8(peer.name);

@@ -121,6 +121,9 @@ signals:
     // Another participant (named) announces itself as this console's own
     // system id (two consoles given the same id): what it sends is ignored.
     void ourIdInUse(const QString &participant);
+    // The participant that announced itself as `system` left or went
+    // silent past its lease (this console's own id: the other one left).
+    void participantLeft(quint16 system);
 
 private:
     // The participant QoS that turns DDS Security on (null without keys).

@@ -17,6 +17,8 @@
 #include <QThread>
 #include <QUdpSocket>
 
+#include <memory>
+
 #include <gtest/gtest.h>
 
 using namespace neptus;
@@ -220,6 +222,25 @@ TEST(Hostile, AnImpostorHoldsCommandsUntilOneHostIsChosen)
         session.tick();
         return levelOf(session.alarmGraph(), QStringLiteral("systems/lauv-sim-1/sources")) == alarms::Normal;
     }, 2000));
+}
+
+// Two consoles given one system id (two programs on one machine both take
+// 0x4001): each ignores what the other sends as its own, so the console says
+// so, naming the other, and stops saying it when the other leaves.
+TEST(Hostile, AnotherConsoleWithOurIdIsAWarningUntilItLeaves)
+{
+    session::Console session(test::shippedSchema());
+    ASSERT_TRUE(session.startDds(transport::DdsConfig{27, {}, 0x4001, QStringLiteral("console-a")}));
+    auto twin = std::make_unique<transport::DdsTransport>(test::shippedSchema(),
+                                                          transport::DdsConfig{27, {}, 0x4001, QStringLiteral("console-b")});
+    ASSERT_TRUE(twin->start());
+    const QString link = QStringLiteral("links/DDS");
+    ASSERT_TRUE(QTest::qWaitFor([&] { return levelOf(session.alarmGraph(), link) == alarms::Warning; }, 10000));
+    const QString said = session.alarmGraph().message(session.alarmGraph().find(link));
+    EXPECT_TRUE(said.contains(QStringLiteral("console-b")) && said.contains(QStringLiteral("0x4001"))) << said.toStdString();
+    twin.reset();
+    EXPECT_TRUE(QTest::qWaitFor([&] { return levelOf(session.alarmGraph(), link) == alarms::Normal; }, 15000))
+        << "cleared when the other console left";
 }
 
 // Over DDS an impostor with a vehicle's id made its position jump between

@@ -27,11 +27,14 @@ struct Network
     std::vector<MissionShare *> consoles;
     int published = 0;
 
-    MissionShare::Publish publisherFor(MissionShare **self)
+    // `system`: the console's id, which the link puts in every message it sends.
+    MissionShare::Publish publisherFor(MissionShare **self, quint16 system)
     {
-        return [this, self](const msg::Message &message) -> std::expected<void, QString> {
+        return [this, self, system](const msg::Message &message) -> std::expected<void, QString> {
             ++published;
-            const auto packet = codec.encode(message);
+            msg::Message sent = message;
+            sent.header.src = system;
+            const auto packet = codec.encode(sent);
             if (!packet)
                 return std::unexpected(packet.error().toString());
             for (MissionShare *c : consoles) {
@@ -60,8 +63,8 @@ TEST(MissionShare, AConsoleJoiningLateGetsTheMissionThenEditsFlowBothWays)
 {
     Network net;
     MissionShare *a = nullptr, *b = nullptr;
-    MissionShare shareA(net.schema, u"console-a"_s, net.publisherFor(&a));
-    MissionShare shareB(net.schema, u"console-b"_s, net.publisherFor(&b));
+    MissionShare shareA(net.schema, u"console-a"_s, net.publisherFor(&a, 0x4001));
+    MissionShare shareB(net.schema, u"console-b"_s, net.publisherFor(&b, 0x4002));
     a = &shareA;
     b = &shareB;
     net.consoles = {a, b};
@@ -111,7 +114,7 @@ TEST(MissionShare, AConsoleJoiningLateGetsTheMissionThenEditsFlowBothWays)
     a->update(byA.plans[0].description == u"A's"_s ? a->mission() : byA); // nothing new
     // Each says its version again as a late joiner would ask for it.
     MissionShare *c = nullptr;
-    MissionShare shareC(net.schema, u"console-c"_s, net.publisherFor(&c));
+    MissionShare shareC(net.schema, u"console-c"_s, net.publisherFor(&c, 0x4003));
     c = &shareC;
     net.consoles = {a, b, c};
     QSignalSpy collidedA(a, &MissionShare::collision), collidedB(b, &MissionShare::collision);
@@ -143,7 +146,7 @@ TEST(MissionShare, DamagedOrForeignObjectsAreIgnoredAndSaid)
 {
     Network net;
     MissionShare *a = nullptr;
-    MissionShare shareA(net.schema, u"console-a"_s, net.publisherFor(&a));
+    MissionShare shareA(net.schema, u"console-a"_s, net.publisherFor(&a, 0x4001));
     a = &shareA;
     net.consoles = {a};
     ASSERT_TRUE(a->start(leixoes()));
@@ -176,4 +179,43 @@ TEST(MissionShare, DamagedOrForeignObjectsAreIgnoredAndSaid)
     a->update(big);
     ASSERT_EQ(problems.size(), 3);
     EXPECT_TRUE(problems[2][0].toString().contains(u"not shared"_s)) << problems[2][0].toString().toStdString();
+}
+
+TEST(MissionShare, PeersAreTheConsolesThatSaidSoAndLeaveWithTheirParticipant)
+{
+    Network net;
+    MissionShare *a = nullptr, *b = nullptr, *c = nullptr;
+    MissionShare shareA(net.schema, u"console-a"_s, net.publisherFor(&a, 0x4001));
+    MissionShare shareB(net.schema, u"console-b"_s, net.publisherFor(&b, 0x4002));
+    MissionShare shareC(net.schema, u"console-c"_s, net.publisherFor(&c, 0x4003));
+    a = &shareA;
+    b = &shareB;
+    c = &shareC;
+    net.consoles = {a, b};
+    ASSERT_TRUE(a->start(leixoes()));
+    ASSERT_TRUE(b->start({}));
+    EXPECT_EQ(a->peers(), QStringList{u"console-b"_s}) << "from B's HELLO";
+    EXPECT_EQ(b->peers(), QStringList{u"console-a"_s}) << "from A's HERE, before its objects";
+
+    // B changes a plan, then leaves: DDS tells A its participant left.
+    mission::Mission edited = b->mission();
+    edited.plans[0].description = u"B was here"_s;
+    b->update(edited);
+    ASSERT_EQ(a->authorOf(u"plan:survey"_s), u"console-b"_s);
+    net.consoles = {a};
+    QSignalSpy peersOfA(a, &MissionShare::peersChanged);
+    a->forget(0x4002);
+    EXPECT_TRUE(a->peers().isEmpty());
+    EXPECT_EQ(peersOfA.size(), 1);
+    a->forget(0x4002);
+    EXPECT_EQ(peersOfA.size(), 1) << "forgetting a console not listed says nothing";
+
+    // C joins: A relays B's plan, made by console-b, who is gone. C shares
+    // the mission with A only.
+    net.consoles = {a, c};
+    ASSERT_TRUE(c->start({}));
+    EXPECT_EQ(c->mission().plans[0].description, u"B was here"_s);
+    EXPECT_EQ(c->authorOf(u"plan:survey"_s), u"console-b"_s);
+    EXPECT_EQ(c->peers(), QStringList{u"console-a"_s}) << "an object's author is not a peer";
+    EXPECT_EQ(a->peers(), QStringList{u"console-c"_s});
 }

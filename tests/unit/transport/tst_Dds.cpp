@@ -9,6 +9,8 @@
 #include <QSignalSpy>
 #include <QTest>
 
+#include <memory>
+
 #include <gtest/gtest.h>
 
 using namespace neptus;
@@ -158,19 +160,25 @@ TEST(DdsTransport, ARestartedVehicleIsNotItsOwnImpostor)
 TEST(DdsTransport, AnotherParticipantSendingAsOurIdIsIgnoredAndSaid)
 {
     DdsTransport console(test::shippedSchema(), DdsConfig{26, {}, 0x4001, QStringLiteral("console-a")});
-    DdsTransport twin(test::shippedSchema(), DdsConfig{26, {}, 0x4001, QStringLiteral("console-b")});
+    auto twin = std::make_unique<DdsTransport>(test::shippedSchema(), DdsConfig{26, {}, 0x4001, QStringLiteral("console-b")});
     ASSERT_TRUE(console.start());
-    ASSERT_TRUE(twin.start());
+    ASSERT_TRUE(twin->start());
     QSignalSpy received(&console, &DdsTransport::received), inUse(&console, &DdsTransport::ourIdInUse);
     msg::Message state(test::shippedSchema()->byAbbrev(u"EstimatedState"));
     ASSERT_TRUE(QTest::qWaitFor([&] {
-        twin.broadcast(state);
+        twin->broadcast(state);
         return inUse.count() > 0;
     }, 10000));
     EXPECT_EQ(received.count(), 0) << "not taken as this console's own";
     EXPECT_TRUE(inUse.first().at(0).toString().contains(QStringLiteral("console-b"))) << inUse.first().at(0).toString().toStdString();
     for (int i = 0; i < 5; ++i)
-        twin.broadcast(state);
+        twin->broadcast(state);
     QTest::qWait(300);
     EXPECT_EQ(inUse.count(), 1) << "said once";
+
+    // The other console leaves: the console hears that its id is its own again.
+    QSignalSpy left(&console, &DdsTransport::participantLeft);
+    twin.reset();
+    ASSERT_TRUE(QTest::qWaitFor([&] { return left.count() > 0; }, 10000)) << "the twin's leaving is heard";
+    EXPECT_EQ(left.first().at(0).toUInt(), 0x4001u);
 }
