@@ -7,6 +7,7 @@
 #include "web/ChartLayer.h"
 #include "web/Requests.h"
 
+#include <QCoreApplication>
 #include <QDateTime>
 #include <QFile>
 #include <QHttpServer>
@@ -99,6 +100,14 @@ LiveServer::~LiveServer()
     }
     m_history.waitForDone();
     m_charts.waitForDone();
+    // An answer finished on a worker reaches the HTTP server as a posted call
+    // holding the request's responder. Left posted, it would be destroyed
+    // with the server after the server's connections, and the responder's
+    // destructor would touch its deleted connection (a crash seen under
+    // AddressSanitizer when a console quit during a chart request): deliver
+    // those answers now, while the connections exist.
+    if (m_http)
+        QCoreApplication::sendPostedEvents(m_http.get(), QEvent::MetaCall);
 }
 
 QString LiveServer::url() const

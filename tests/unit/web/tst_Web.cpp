@@ -33,6 +33,7 @@
 #include <gtest/gtest.h>
 
 #include "core/DataFiles.h"
+#include "Patience.h"
 
 using namespace neptus;
 using namespace Qt::StringLiterals;
@@ -60,7 +61,7 @@ Reply fetch(const QUrl &url, const QByteArray &method = "GET", const QByteArray 
     if (!authorization.isEmpty())
         request.setRawHeader("Authorization", authorization);
     QNetworkReply *reply = manager.sendCustomRequest(request, method, method == "GET" ? QByteArray() : QByteArray("x=1"));
-    EXPECT_TRUE(QTest::qWaitFor([&] { return reply->isFinished(); }, 10000)) << url.toString().toStdString();
+    EXPECT_TRUE(QTest::qWaitFor([&] { return reply->isFinished(); }, test::patience(10000))) << url.toString().toStdString();
     Reply r{reply->attribute(QNetworkRequest::HttpStatusCodeAttribute).toInt(), reply->readAll(), reply->error()};
     reply->deleteLater();
     return r;
@@ -371,6 +372,26 @@ TEST_F(Server, HostileInputIsRefusedAndTheServerKeepsServing)
 // contours with the safety contour apart, the coast, and buoys, beacons,
 // lights and hazards in words — only what meets the box asked; without
 // charts it says there are none.
+// A console that quits while a chart request is still being answered on the
+// chart worker: the answer arrives after the server began to go away
+// (AddressSanitizer: a SEGV in the responder's destructor, on a deleted connection).
+TEST_F(Server, QuittingDuringAChartRequestIsSafe)
+{
+    NEPTUS_REQUIRE_FIXTURE(cell, "charts/US4MD81M");
+    QTemporaryDir cache; // the first read of the cell, by its helper process: a few hundred ms at least
+    qputenv("XDG_CACHE_HOME", QFile::encodeName(cache.path()));
+    web::WebConfig config;
+    config.charts = cell;
+    start(config);
+    QNetworkAccessManager manager;
+    QNetworkReply *reply = manager.get(QNetworkRequest(QUrl(base + u"/api/chart?bbox=-76.60,38.35,-76.00,39.05"_s)));
+    QTest::qWait(100); // the server has the request; the worker is reading the cell
+    EXPECT_FALSE(reply->isFinished()) << "answered before the server went away: nothing was tested";
+    server.reset();
+    EXPECT_TRUE(QTest::qWaitFor([&] { return reply->isFinished(); }, 5000)) << "answered or closed, not left hanging";
+    delete reply;
+}
+
 TEST_F(Server, DrawsTheConsolesChartLayer)
 {
     NEPTUS_REQUIRE_FIXTURE(cell, "charts/US4MD81M");
