@@ -27,6 +27,7 @@
 #include <QTemporaryDir>
 #include <QNetworkReply>
 #include <QTcpSocket>
+#include <QSignalSpy>
 #include <QTest>
 #include <QWebSocket>
 
@@ -385,7 +386,9 @@ TEST_F(Server, QuittingDuringAChartRequestIsSafe)
     start(config);
     QNetworkAccessManager manager;
     QNetworkReply *reply = manager.get(QNetworkRequest(QUrl(base + u"/api/chart?bbox=-76.60,38.35,-76.00,39.05"_s)));
-    QTest::qWait(100); // the server has the request; the worker is reading the cell
+    QSignalSpy sent(reply, &QNetworkReply::requestSent);
+    ASSERT_TRUE(sent.wait(test::patience(5000)));
+    QTest::qWait(test::patience(50)); // the server (on this thread) has read it: the worker is reading the cell
     EXPECT_FALSE(reply->isFinished()) << "answered before the server went away: nothing was tested";
     server.reset();
     EXPECT_TRUE(QTest::qWaitFor([&] { return reply->isFinished(); }, 5000)) << "answered or closed, not left hanging";
