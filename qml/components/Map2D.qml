@@ -486,6 +486,7 @@ Rectangle {
         visible: !root.editingPlan
         map: root
         features: Session.session && !root.editingPlan ? Session.session.plans.features : []
+        avoid: root.systemsCover
     }
     // Plans running, one layer per system drawn (its own reports say which).
     Repeater {
@@ -498,8 +499,19 @@ Rectangle {
         }
     }
 
+    // Where the systems' marks and labels are: the features' names keep out of them.
+    readonly property var systemsCover: {
+        let covered = []
+        for (let i = 0; i < markers.count; ++i) {
+            const marker = markers.itemAt(i) as MapSystemMarker
+            if (marker)
+                covered = covered.concat(marker.covers)
+        }
+        return covered
+    }
     // Systems: a row of the console's tracks each.
     Repeater {
+        id: markers
         model: root.tracks
         MapSystemMarker {
             id: marker

@@ -19,8 +19,43 @@ Item {
     property var hiddenLayers: []
     property string selected: ""
     property bool editable: false
+    // Rectangles (in this layer's coordinates) the features' names keep out of: the systems' marks and labels.
+    property var avoid: []
 
     readonly property var shown: features.filter(f => hiddenLayers.indexOf(f.layer) < 0)
+    // The features drawn as a glyph and a name (marks, transponders, centres).
+    readonly property var placed: shown.filter(f => !isNaN(f.lat))
+    function nameOf(f: var): string { return f.name !== "" ? f.name : f.id }
+
+    // Where each placed feature's name goes: 0 right of its glyph, 1 left, 2 above, 3 below,
+    // the first clear of the systems (avoid), of every glyph and of the names placed before
+    // it; -1 where none is clear (the name is left out, the glyph stays).
+    FontMetrics { id: nameMetrics; font.pixelSize: Theme.smallFontPixelSize }
+    function nameRect(at: point, place: int, w: real, h: real): rect {
+        const gap = Theme.mm(3)
+        return place === 0 ? Qt.rect(at.x + gap, at.y - h / 2, w, h)
+             : place === 1 ? Qt.rect(at.x - gap - w, at.y - h / 2, w, h)
+             : place === 2 ? Qt.rect(at.x - w / 2, at.y - gap / 1.5 - h, w, h)
+             : Qt.rect(at.x - w / 2, at.y + gap / 1.5, w, h)
+    }
+    readonly property var namePlaces: {
+        const overlaps = (r, a) => r.x < a.x + a.width && a.x < r.x + r.width && r.y < a.y + a.height && a.y < r.y + r.height
+        const at = placed.map(f => map.screenPoint(f.lat, f.lon))
+        const half = Theme.largeFontPixelSize / 2
+        const taken = avoid.concat(at.map(p => Qt.rect(p.x - half, p.y - half, 2 * half, 2 * half)))
+        const h = nameMetrics.height
+        return placed.map((f, i) => {
+            const w = nameMetrics.advanceWidth(nameOf(f))
+            for (let place = 0; place < 4; ++place) {
+                const r = nameRect(at[i], place, w, h)
+                if (!taken.some(a => overlaps(r, a))) {
+                    taken.push(r)
+                    return place
+                }
+            }
+            return -1
+        })
+    }
     readonly property var selectedFeature: shown.find(f => f.id === selected) || null
 
     function colourOf(f: var): color {
@@ -130,10 +165,11 @@ Item {
     }
     // Marks, transponders, models and the circles' and solids' centres: a glyph and the name.
     Repeater {
-        model: layer.shown.filter(f => !isNaN(f.lat))
+        model: layer.placed
         delegate: Item {
             id: glyph
             required property var modelData
+            required property int index
             readonly property point at: layer.map.screenPoint(modelData.lat, modelData.lon)
             objectName: "feature:" + modelData.id
             x: at.x
@@ -149,9 +185,13 @@ Item {
                 font.pixelSize: Theme.largeFontPixelSize
             }
             Text {
-                x: Theme.mm(3)
-                y: -height / 2
-                text: glyph.modelData.name !== "" ? glyph.modelData.name : glyph.modelData.id
+                readonly property int place: layer.namePlaces[glyph.index] ?? 0
+                readonly property rect where: layer.nameRect(Qt.point(0, 0), Math.max(place, 0), width, height)
+                objectName: "name"
+                visible: place >= 0
+                x: where.x
+                y: where.y
+                text: layer.nameOf(glyph.modelData)
                 color: Theme.text
                 style: Text.Outline
                 styleColor: Theme.background

@@ -30,6 +30,17 @@ Item {
     readonly property string kind: kindVariable.present ? kindVariable.text : ""
     readonly property bool selected: Session.mainSystem === system
     readonly property bool stale: positionVariable.stale
+    // What it covers on the map (in its parent's coordinates): its mark, its labels.
+    // The feature names around keep out of them (MapFeatureLayer.avoid).
+    readonly property var covers: {
+        if (!visible)
+            return []
+        const labels = chartedBox.visible
+            ? Qt.rect(Math.min(labelBox.x, chartedBox.x), labelBox.y, Math.max(labelBox.width, chartedBox.width),
+                      chartedBox.y + chartedBox.height - labelBox.y)
+            : Qt.rect(labelBox.x, labelBox.y, labelBox.width, labelBox.height)
+        return [Qt.rect(x, y, width, height), Qt.rect(x + labels.x, y + labels.y, labels.width, labels.height)]
+    }
 
     objectName: "marker:" + system
     visible: valid
@@ -85,6 +96,7 @@ Item {
     }
     // The charted water under it, under the label: in the alarm's colour when it is not enough.
     Rectangle {
+        id: chartedBox
         objectName: "charted"
         visible: marker.chartedText !== ""
         anchors { top: labelBox.bottom; horizontalCenter: parent.horizontalCenter; topMargin: Theme.mm(0.3) }

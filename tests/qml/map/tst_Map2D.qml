@@ -71,6 +71,43 @@ TestCase {
         compare(new Set(shapes).size, 4, "four different marks")
     }
 
+    // A mission feature's name keeps clear of the systems' marks and labels
+    // (seen: "Pick-up point (rally)" under "ardurover-1 · USV" in tools/run):
+    // right of its glyph, else left, above or below; with none clear, left out.
+    function test_1b_featureNamesKeepClearOfTheSystemsLabels() {
+        const bravo = marker("bravo")
+        tryVerify(() => map2d.systemsCover.length === 4, 2000, "two systems: a mark and labels each")
+        const label = map2d.systemsCover[3]
+        verify(label.width > 0 && label.height > 0)
+        // A mark just left of bravo's label, level with it: its name, right of it, would lie on the label.
+        const at = map2d.toCoordinate(label.x - Theme.mm(3.5), label.y + label.height / 2)
+        const feature = { id: "pickup", name: "Pick-up point", kind: "mark", role: "rally", layer: "", color: "",
+                          lat: at.lat, lon: at.lon, points: [], outline: [] }
+        const layer = findChild(map2d, "missionMap")
+        layer.features = [feature]
+        layer.avoid = []
+        const name = findChild(layer, "name")
+        verify(name)
+        const overlaps = (r, a) => r.x < a.x + a.width && a.x < r.x + r.width && r.y < a.y + a.height && a.y < r.y + r.height
+        const nameRect = () => { const p = name.mapToItem(map2d, 0, 0); return Qt.rect(p.x, p.y, name.width, name.height) }
+        compare(name.place, 0, "nothing to avoid: right of the glyph")
+        verify(overlaps(nameRect(), label), "and there it covers bravo's label")
+        layer.avoid = Qt.binding(() => map2d.systemsCover)
+        verify(name.place > 0, "moved")
+        verify(name.visible)
+        for (const taken of map2d.systemsCover)
+            verify(!overlaps(nameRect(), taken), "clear of " + JSON.stringify(taken) + ": " + JSON.stringify(nameRect()))
+        // Nowhere clear: left out, the glyph stays.
+        const r = nameRect()
+        layer.avoid = [Qt.rect(r.x - 500, r.y - 500, 1000, 1000)]
+        compare(name.place, -1)
+        verify(!name.visible)
+        verify(findChild(layer, "feature:pickup").visible)
+        verify(bravo.visible)
+        layer.avoid = Qt.binding(() => map2d.systemsCover)
+        layer.features = []
+    }
+
     // Our projection against Qt Location's own, on a map with tiles (where
     // Qt Location draws them): overlays, trails and tiles must line up.
     function checkProjection(m, trail, what) {
