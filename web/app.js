@@ -100,11 +100,22 @@ const chartShapes = {
   cairn: 'M-4.5,0 L4.5,0 L0,-6 Z',
 };
 
+// A sector light's legs and arc (mark.sector: directions from the light, degrees true, clockwise
+// from the first to the second), 25 and 35 pixels out, as the console's map draws them.
+function sectorPath(sector) {
+  const at = (degrees, r) => (r * Math.sin(degrees * Math.PI / 180)).toFixed(2) + ',' + (-r * Math.cos(degrees * Math.PI / 180)).toFixed(2);
+  const from = sector[0], to = sector[1] > from ? sector[1] : sector[1] + 360;
+  return 'M0,0 L' + at(from, 35) + ' M0,0 L' + at(to, 35)
+    + ' M' + at(from, 25) + ' A25,25 0 ' + (to - from > 180 ? 1 : 0) + ',1 ' + at(to, 25);
+}
+
 function chartSymbol(mark, colours) {
   const c = mark.kind === 'hazard' ? colours.hazard : mark.colour ? colours[mark.colour] : colours.aid;
-  const d = chartShapes[mark.shape] || chartShapes.ring;
-  const svg = '<svg viewBox="-12 -12 24 24" width="24" height="24"><path d="' + d + '" fill="none" stroke="' + c + '" stroke-width="1.8"/></svg>';
-  return L.divIcon({ html: svg, className: 'chart-mark', iconSize: [24, 24], iconAnchor: [12, 12] });
+  const d = (chartShapes[mark.shape] || chartShapes.ring) + (mark.sector ? ' ' + sectorPath(mark.sector) : '');
+  const side = mark.sector ? 80 : 24;
+  const svg = '<svg viewBox="' + -side / 2 + ' ' + -side / 2 + ' ' + side + ' ' + side + '" width="' + side + '" height="' + side
+    + '"><path d="' + d + '" fill="none" stroke="' + c + '" stroke-width="1.8"/></svg>';
+  return L.divIcon({ html: svg, className: 'chart-mark', iconSize: [side, side], iconAnchor: [side / 2, side / 2] });
 }
 
 function drawChart() {

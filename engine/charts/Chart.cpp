@@ -386,8 +386,23 @@ AidColour aidColour(const Feature &f)
     case 3: return AidColour::Red;
     case 4: return AidColour::Green;
     case 6: return AidColour::Yellow;
+    case 1: return f.objectClass == u"LIGHTS" ? AidColour::Yellow : AidColour::Other;
     default: return AidColour::Other;
     }
+}
+
+std::optional<LightSector> lightSector(const Feature &f)
+{
+    if (f.objectClass != u"LIGHTS")
+        return std::nullopt;
+    const auto s1 = f.number(u"SECTR1"_s), s2 = f.number(u"SECTR2"_s);
+    if (!s1 || !s2 || !std::isfinite(*s1) || !std::isfinite(*s2))
+        return std::nullopt;
+    const auto fromLight = [](double bearing) {
+        const double d = std::fmod(bearing + 180, 360);
+        return d < 0 ? d + 360 : d;
+    };
+    return LightSector{fromLight(*s1), fromLight(*s2)};
 }
 
 Shape shapeOf(const Feature &f)

@@ -141,10 +141,19 @@ enum class Drawn : quint8 { Nothing, Land, Depth, Contour, Coast, Restricted, Fa
 Drawn drawnAs(const Feature &feature);
 // An aid's colour as it is drawn: the first of its COLOUR attribute's S-57
 // colours ("(1:3)" red, "(3:4,3,4)" green with bands), what matters at a
-// glance (port and starboard, a yellow special mark); Other for the rest
-// (white, black, none said), drawn in the chart's aid colour.
+// glance (port and starboard, a yellow special mark; a white light yellow,
+// as S-52 draws it); Other for the rest (white, black, none said), drawn in
+// the chart's aid colour.
 enum class AidColour : quint8 { Other, Red, Green, Yellow };
 AidColour aidColour(const Feature &feature);
+// A sector light's sector, as directions from the light (degrees true): it
+// shows from `from` clockwise to `to`. S-57 gives SECTR1 and SECTR2 as
+// bearings from seaward towards the light, so each is turned half a circle.
+struct LightSector
+{
+    double from = 0, to = 0;
+};
+std::optional<LightSector> lightSector(const Feature &feature);
 // A symbol's shape, as paper charts draw it (INT 1's simplified symbols):
 // buoys by BOYSHP (conical, can, spherical, pillar, spar, barrel, super-buoy;
 // a ring when not said), beacons by BCNSHP (stake or withy, tower, lattice,

@@ -89,6 +89,8 @@ QJsonObject chartLayer(const std::vector<charts::Cell> &cells, double west, doub
                             mark.insert(u"colour"_s, c == charts::AidColour::Red ? u"red"_s : c == charts::AidColour::Green ? u"green"_s : u"yellow"_s);
                     if (drawn == Drawn::Hazard && f.shallowest)
                         mark.insert(u"depth"_s, *f.shallowest);
+                    if (const auto sector = charts::lightSector(f))
+                        mark.insert(u"sector"_s, QJsonArray{sector->from, sector->to});
                     marks.append(mark);
                     if (f.geometry != charts::Feature::Geometry::Point)
                         break; // an area or line hazard at its first point

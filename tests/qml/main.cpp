@@ -412,6 +412,8 @@ public:
     }
     Q_INVOKABLE QString sourceDir() const { return test::sourcePath({}); }
     Q_INVOKABLE QString sharedDir() const { return test::sharedPath({}); }
+    // An environment variable of the test run ("" when not set): NEPTUS_KEEP_SHOTS, a folder to keep screenshots in.
+    Q_INVOKABLE QString environment(const QString &name) const { return qEnvironmentVariable(name.toUtf8().constData()); }
 
     // A second console, fed from the log at `folder` (review), made once per
     // log; null (and `replayError` says why) when the log does not open.

@@ -45,6 +45,24 @@ Cell::Bounds boundsOf(const std::vector<Cell> &cells)
 // Local units: a pixel at zoom 16 (about 2 m), around the charts' middle.
 constexpr double localZoom = 16;
 
+// A sector light's sector, as S-52 draws it: its two legs from the light and
+// the arc between them in the light's colour, the same size at every zoom
+// (`r` the symbols' size; `bearing` the map's turn), as pairs of end points.
+constexpr double sectorArc = 5, sectorLegs = 7;
+void appendSector(std::vector<QPointF> &lines, LightSector sector, QPointF p, double r, double bearing)
+{
+    const auto towards = [&](double degrees, double length) { // clockwise from the screen's up
+        const double a = (degrees - bearing) * std::numbers::pi / 180;
+        return p + QPointF(std::sin(a), -std::cos(a)) * length * r;
+    };
+    const double to = sector.to > sector.from ? sector.to : sector.to + 360;
+    lines.insert(lines.end(), {p, towards(sector.from, sectorLegs), p, towards(to, sectorLegs)});
+    const int steps = std::max(2, int(std::ceil((to - sector.from) / 5)));
+    for (int i = 0; i < steps; ++i)
+        lines.insert(lines.end(), {towards(sector.from + (to - sector.from) * i / steps, sectorArc),
+                                   towards(sector.from + (to - sector.from) * (i + 1) / steps, sectorArc)});
+}
+
 // A symbol's outline (shapeOf()) around `p`, `r` pixels its size, as pairs of end points.
 void appendOutline(std::vector<QPointF> &lines, Shape shape, QPointF p, double r)
 {
@@ -164,6 +182,7 @@ struct ChartItem::Loaded
         Shape shape;
         double scamin;
         AidColour colour;
+        std::optional<LightSector> sector; // a sector light's
     };
     std::vector<Point> points;
 
@@ -232,7 +251,8 @@ void ChartItem::Loaded::convert()
                 const Shape shape = shapeOf(f);
                 for (const auto &part : f.parts) {
                     if (!part.empty() && !coveredByBetter(*cells, c, part.front().lon, part.front().lat))
-                        points.push_back({mercatorOf(part.front().lat, part.front().lon), shape, f.number(u"SCAMIN"_s).value_or(0), aidColour(f)});
+                        points.push_back({mercatorOf(part.front().lat, part.front().lon), shape, f.number(u"SCAMIN"_s).value_or(0), aidColour(f),
+                                          lightSector(f)});
                     if (f.geometry != Feature::Geometry::Point)
                         break;
                 }
@@ -608,9 +628,12 @@ QSGNode *ChartItem::updatePaintNode(QSGNode *old, UpdatePaintNodeData *)
         if (point.scamin > 0 ? scale > point.scamin : view.zoom < 11)
             continue;
         const QPointF p = view.fromMercator(point.mercator);
-        if (p.x() < -r || p.y() < -r || p.x() > width() + r || p.y() > height() + r)
+        const double reach = point.sector ? sectorLegs * r : r;
+        if (p.x() < -reach || p.y() < -reach || p.x() > width() + reach || p.y() > height() + reach)
             continue;
         appendOutline(point.shape == Shape::Cross ? hazards : aidsBy[int(point.colour)], point.shape, p, r);
+        if (point.sector)
+            appendSector(aidsBy[int(point.colour)], *point.sector, p, r, view.bearing);
     }
     QSGGeometryNode *hazardNode = flatNode(root, 1, QSGGeometry::DrawLines);
     setNodePoints(hazardNode, hazards, m_lineWidth * 1.5);

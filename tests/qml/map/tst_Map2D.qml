@@ -275,6 +275,21 @@ TestCase {
         verify(near(shot, at.x, at.y - 1.05 * r, Theme.chart.red), "a nun's tip")
         verify(!near(shot, at.x - 0.75 * r, at.y - 0.75 * r, Theme.chart.red) && !near(shot, at.x + 0.75 * r, at.y - 0.75 * r, Theme.chart.red),
                "and no flat top")
+        // A sector light (LIGHTS 587-590 off Kent Island: white 51.5-96.5, red 96.5-202, white 202-11,
+        // red 11-51.5, bearings from seaward): each sector's arc from the light in its colour (white
+        // drawn yellow), round the light the opposite way from the bearings.
+        m.centreAt(38.8990101, -76.4358149)
+        tryVerify(() => drawnIn(38.8990101, -76.4358149, Theme.chart.yellow), 5000, "the light")
+        shot = grabImage(m)
+        at = m.screenPoint(38.8990101, -76.4358149)
+        const arcAt = degrees => Qt.point(at.x + 5 * r * Math.sin(degrees * Math.PI / 180), at.y - 5 * r * Math.cos(degrees * Math.PI / 180))
+        for (const [direction, colour, what] of [[100, Theme.chart.yellow, "white, 22-191 from the light"], [210, Theme.chart.red, "red, 191-231.5"],
+                                                 [250, Theme.chart.yellow, "white, 231.5-276.5"], [340, Theme.chart.red, "red, 276.5-22 across north"]]) {
+            const q = arcAt(direction)
+            verify(near(shot, q.x, q.y, colour), "the arc at " + direction + "°: " + what)
+        }
+        if (Fixtures.environment("NEPTUS_KEEP_SHOTS") !== "")
+            shot.save(Fixtures.environment("NEPTUS_KEEP_SHOTS") + "/sector-light.png")
         // A zoom within half a level of the painted one (where a pinch or the wheel may leave it) is
         // shown scaled at first, and painted again at that zoom once the view rests.
         tryCompare(findChild(m, "chart"), "paintedZoom", 16, 5000)

@@ -209,6 +209,28 @@ TEST(Chart, AnAidIsDrawnInItsFirstChartedColour)
     EXPECT_EQ(colour(QString()), AidColour::Other);
     EXPECT_EQ(colour(u"(red)"_s), AidColour::Other);
     EXPECT_EQ(drawnAs([] { Feature f = point(u"BOYLAT"_s, 0, 0); f.role = roleOf(f); return f; }()), Drawn::Buoy);
+    EXPECT_EQ(aidColour(point(u"LIGHTS"_s, 0, 0, {{u"COLOUR"_s, u"(1:1)"_s}})), AidColour::Yellow) << "a white light: yellow, as S-52";
+}
+
+// A sector light's sector is drawn from the light: S-57's SECTR1 and SECTR2
+// are bearings from seaward towards it, so each is turned half a circle.
+TEST(Chart, ASectorLightsSectorIsTurnedToDirectionsFromTheLight)
+{
+    const auto sector = [](const QString &objectClass, QMap<QString, QString> attributes) {
+        return lightSector(point(objectClass, 0, 0, std::move(attributes)));
+    };
+    const auto across = sector(u"LIGHTS"_s, {{u"SECTR1"_s, u"350"_s}, {u"SECTR2"_s, u"20"_s}});
+    ASSERT_TRUE(across);
+    EXPECT_DOUBLE_EQ(across->from, 170);
+    EXPECT_DOUBLE_EQ(across->to, 200);
+    const auto round = sector(u"LIGHTS"_s, {{u"SECTR1"_s, u"200"_s}, {u"SECTR2"_s, u"10"_s}});
+    ASSERT_TRUE(round);
+    EXPECT_DOUBLE_EQ(round->from, 20);
+    EXPECT_DOUBLE_EQ(round->to, 190);
+    EXPECT_FALSE(sector(u"LIGHTS"_s, {{u"SECTR1"_s, u"200"_s}})) << "one limit is no sector";
+    EXPECT_FALSE(sector(u"LIGHTS"_s, {})) << "an all-round light";
+    EXPECT_FALSE(sector(u"LIGHTS"_s, {{u"SECTR1"_s, u"x"_s}, {u"SECTR2"_s, u"10"_s}}));
+    EXPECT_FALSE(sector(u"BOYLAT"_s, {{u"SECTR1"_s, u"200"_s}, {u"SECTR2"_s, u"10"_s}})) << "lights only";
 }
 
 // Buoys and beacons in their charted shape (BOYSHP, BCNSHP), as paper charts

@@ -10,6 +10,9 @@
 #include <QFileInfo>
 #include <QTemporaryDir>
 
+#include <algorithm>
+#include <tuple>
+
 #include <gtest/gtest.h>
 
 using namespace neptus::charts;
@@ -101,6 +104,17 @@ TEST(S57, TheHelperReadsACellOnceAndTheCacheAnswersAfter)
     ASSERT_EQ(seen.size(), 1u);
     EXPECT_TRUE(seen[0].endsWith(u"US4MD81M.000"_s));
     EXPECT_EQ(first->front().counts().value(u"WRECKS"_s), 111);
+    // Its sector light (ogrinfo: LIGHTS 587-590 at -76.4358, 38.8990, white 51.5-96.5, red
+    // 96.5-202, white 202-11, red 11-51.5, bearings from seaward): the four sectors as
+    // directions from the light, half a circle round, the third across north.
+    std::vector<std::tuple<double, double, AidColour>> sectors;
+    for (const Feature &f : first->front().features)
+        if (const auto sector = lightSector(f))
+            sectors.emplace_back(sector->from, sector->to, aidColour(f));
+    std::ranges::sort(sectors);
+    EXPECT_EQ(sectors, (std::vector<std::tuple<double, double, AidColour>>{{22, 191, AidColour::Yellow}, {191, 231.5, AidColour::Red},
+                                                                          {231.5, 276.5, AidColour::Yellow}, {276.5, 22, AidColour::Red}}))
+        << "white lights are drawn yellow, as S-52 draws them";
     bool fromCache = false;
     const auto again = loadCell(seen[0], options, &fromCache);
     ASSERT_TRUE(again) << again.error().toStdString();
