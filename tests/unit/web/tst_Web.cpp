@@ -454,6 +454,14 @@ TEST_F(Server, DrawsTheConsolesChartLayer)
     }
     for (const char *shape : {"conical", "can", "pillar", "stake", "cross", "flare"})
         EXPECT_TRUE(shapes.contains(QLatin1StringView(shape))) << shape << ": " << shapes.values().join(u',').toStdString();
+    // The sector light off Kent Island: its four sectors, as directions from the light, in their colours.
+    QStringList sectors;
+    for (const QJsonValue &m : chart.value(u"marks"_s).toArray())
+        if (m[u"sector"_s].isArray())
+            sectors << u"%1-%2 %3"_s.arg(m[u"sector"_s][0].toDouble()).arg(m[u"sector"_s][1].toDouble()).arg(m[u"colour"_s].toString());
+    sectors.sort();
+    EXPECT_EQ(sectors, (QStringList{u"191-231.5 red"_s, u"22-191 yellow"_s, u"231.5-276.5 yellow"_s, u"276.5-22 red"_s}))
+        << sectors.join(u", "_s).toStdString();
     // A deeper safety depth moves the safety contour and the shades with it.
     const QJsonObject deeper = QJsonDocument::fromJson(fetch(QUrl(base + u"/api/chart?bbox=-76.60,38.35,-76.00,39.05&safety=12"_s)).body).object();
     EXPECT_GT(deeper.value(u"safetyContour"_s).toDouble(), safety);
