@@ -211,6 +211,41 @@ TEST_P(Engines, EachSessionIsSummarisedWithItsSystemsPlanRunsAndLogs)
     EXPECT_TRUE(b.logs.empty());
 }
 
+// The session list reads which systems a session kept positions of from
+// session_systems (schema version 2), not by scanning every position: a
+// database written by a console before it (version 1) gets the table filled
+// from its positions when it is first opened.
+TEST_P(Engines, AVersion1DatabaseGetsItsSessionsSystemsOnceWhenOpened)
+{
+    {
+        Writer writer(location, options(dir.filePath(u"spool-a"_s), u"ops-a"_s));
+        writer.write(positions(u"lauv-sim-1"_s, 1000, 3));
+        writer.write(positions(u"boat-1"_s, 1000, 3));
+        ASSERT_TRUE(writer.flush());
+    }
+    {
+        // As a version-1 console left it: no session_systems.
+        QSqlDatabase db = QSqlDatabase::addDatabase(GetParam() == Location::Postgres ? u"QPSQL"_s : u"QSQLITE"_s, u"raw"_s);
+        db.setDatabaseName(GetParam() == Location::Postgres ? u"neptus"_s : location.file);
+        db.setHostName(location.host);
+        db.setUserName(location.user);
+        ASSERT_TRUE(db.open());
+        QSqlQuery query(db);
+        ASSERT_TRUE(query.exec(u"SELECT COUNT(*) FROM session_systems"_s) && query.next());
+        EXPECT_EQ(query.value(0).toInt(), 2) << "the writer noted each system once";
+        ASSERT_TRUE(query.exec(u"DROP TABLE session_systems"_s));
+        ASSERT_TRUE(query.exec(u"DELETE FROM schema_version WHERE version > 1"_s));
+        db.close();
+    }
+    QSqlDatabase::removeDatabase(u"raw"_s);
+    auto reader = Reader::open(location);
+    ASSERT_TRUE(reader.has_value()) << reader.error().toStdString();
+    const auto summaries = (*reader)->sessionSummaries();
+    ASSERT_TRUE(summaries.has_value()) << summaries.error().toStdString();
+    ASSERT_EQ(summaries->size(), 1u);
+    EXPECT_EQ(summaries->front().systems, (QStringList{u"boat-1"_s, u"lauv-sim-1"_s}));
+}
+
 TEST_P(Engines, TwoWritersAtOnceKeepEveryRowOnce)
 {
     constexpr int perWriter = 20000;
