@@ -702,6 +702,7 @@ Rectangle {
         onVisibleChanged: removing = ""
         PointerStop {} // what lands on the panel stays there
         Flickable {
+            id: chartFlick
             anchors { fill: parent; margins: Theme.spacing }
             contentHeight: chartColumn.implicitHeight
             clip: true
@@ -790,6 +791,7 @@ Rectangle {
                 }
             }
         }
+        ListCues { view: chartFlick }
     }
     FileChooser {
         id: chartChooser

@@ -1027,6 +1027,7 @@ Item {
                 }
             }
         }
+        ListCues { view: panelFlick } // the panel scrolls: what is out of view is said
     }
 
     // The graph, beside the panel.

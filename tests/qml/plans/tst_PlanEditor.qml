@@ -97,6 +97,34 @@ TestCase {
         tryVerify(() => findChild(map2d, "profile:ALTITUDE") === null)
     }
 
+
+    // The editor's panel scrolls when it does not fit: cues say there is more
+    // below (or above), and a tap on one scrolls on (a pane is not a list: no count).
+    function test_1b_thePanelSaysWhatIsOutOfView() {
+        const flick = findChild(map2d, "planEditorFlick")
+        verify(flick)
+        const panel = flick.parent
+        const below = findChild(panel, "moreBelow"), above = findChild(panel, "moreAbove")
+        verify(below && above)
+        flick.contentY = 0
+        map2d.anchors.fill = undefined
+        map2d.width = test.width
+        map2d.height = 360 // a short map: the panel no longer fits
+        tryVerify(() => flick.contentHeight > flick.height + Theme.spacing, 2000, flick.contentHeight + " > " + flick.height)
+        tryVerify(() => below.visible, 2000, "more below")
+        verify(!above.visible)
+        compare(below.text, "▼ more")
+        mouseClick(below)
+        tryVerify(() => flick.contentY > 0, 2000, "a tap scrolls on")
+        tryVerify(() => above.visible, 2000, "and now there is more above")
+        flick.contentY = flick.contentHeight - flick.height
+        tryVerify(() => !below.visible, 2000, "none below at the end")
+        mouseClick(above)
+        tryVerify(() => flick.contentY < flick.contentHeight - flick.height, 2000)
+        flick.contentY = 0
+        map2d.anchors.fill = test
+        tryVerify(() => !below.visible && !above.visible, 2000, "all in view again: no cue")
+    }
     function test_2_aTapAddsAGotoWhereItLandsAndADragMovesIt() {
         mouseClick(findChild(map2d, "add-Goto"))
         const at = map2d.screenPoint(41.1415, -8.6125)
