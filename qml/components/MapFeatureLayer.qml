@@ -28,15 +28,23 @@ Item {
     function nameOf(f: var): string { return f.name !== "" ? f.name : f.id }
 
     // Where each placed feature's name goes: 0 right of its glyph, 1 left, 2 above, 3 below,
-    // the first clear of the systems (avoid), of every glyph and of the names placed before
-    // it; -1 where none is clear (the name is left out, the glyph stays).
+    // then the four corners (upper right, lower right, upper left, lower left): the first
+    // clear of the systems (avoid), of every glyph and of the names placed before it; -1 where
+    // none is clear (the name is left out, the glyph stays).
     FontMetrics { id: nameMetrics; font.pixelSize: Theme.smallFontPixelSize }
+    readonly property int namePlaceCount: 8
     function nameRect(at: point, place: int, w: real, h: real): rect {
-        const gap = Theme.mm(3)
-        return place === 0 ? Qt.rect(at.x + gap, at.y - h / 2, w, h)
-             : place === 1 ? Qt.rect(at.x - gap - w, at.y - h / 2, w, h)
-             : place === 2 ? Qt.rect(at.x - w / 2, at.y - gap / 1.5 - h, w, h)
-             : Qt.rect(at.x - w / 2, at.y + gap / 1.5, w, h)
+        const gap = Theme.mm(3), side = gap / 1.5
+        switch (place) {
+        case 0: return Qt.rect(at.x + gap, at.y - h / 2, w, h)
+        case 1: return Qt.rect(at.x - gap - w, at.y - h / 2, w, h)
+        case 2: return Qt.rect(at.x - w / 2, at.y - side - h, w, h)
+        case 3: return Qt.rect(at.x - w / 2, at.y + side, w, h)
+        case 4: return Qt.rect(at.x + side, at.y - side - h, w, h)
+        case 5: return Qt.rect(at.x + side, at.y + side, w, h)
+        case 6: return Qt.rect(at.x - side - w, at.y - side - h, w, h)
+        default: return Qt.rect(at.x - side - w, at.y + side, w, h)
+        }
     }
     readonly property var namePlaces: {
         const overlaps = (r, a) => r.x < a.x + a.width && a.x < r.x + r.width && r.y < a.y + a.height && a.y < r.y + r.height
@@ -46,9 +54,10 @@ Item {
         const h = nameMetrics.height
         return placed.map((f, i) => {
             const w = nameMetrics.advanceWidth(nameOf(f))
-            for (let place = 0; place < 4; ++place) {
+            const own = avoid.length + i // its own glyph: the places are around it already
+            for (let place = 0; place < namePlaceCount; ++place) {
                 const r = nameRect(at[i], place, w, h)
-                if (!taken.some(a => overlaps(r, a))) {
+                if (!taken.some((a, j) => j !== own && overlaps(r, a))) {
                     taken.push(r)
                     return place
                 }

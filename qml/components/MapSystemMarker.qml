@@ -39,7 +39,7 @@ Item {
             ? Qt.rect(Math.min(labelBox.x, chartedBox.x), labelBox.y, Math.max(labelBox.width, chartedBox.width),
                       chartedBox.y + chartedBox.height - labelBox.y)
             : Qt.rect(labelBox.x, labelBox.y, labelBox.width, labelBox.height)
-        return [Qt.rect(x, y, width, height), Qt.rect(x + labels.x, y + labels.y, labels.width, labels.height)]
+        return [Qt.rect(x + mark.x, y + mark.y, mark.width, mark.height), Qt.rect(x + labels.x, y + labels.y, labels.width, labels.height)]
     }
 
     objectName: "marker:" + system

@@ -73,7 +73,7 @@ TestCase {
 
     // A mission feature's name keeps clear of the systems' marks and labels
     // (seen: "Pick-up point (rally)" under "ardurover-1 · USV" in tools/run):
-    // right of its glyph, else left, above or below; with none clear, left out.
+    // right of its glyph, else left, above, below or at a corner; with none clear, left out.
     function test_1b_featureNamesKeepClearOfTheSystemsLabels() {
         const bravo = marker("bravo")
         tryVerify(() => map2d.systemsCover.length === 4, 2000, "two systems: a mark and labels each")
