@@ -105,8 +105,10 @@ const chartShapes = {
 function sectorPath(sector) {
   const at = (degrees, r) => (r * Math.sin(degrees * Math.PI / 180)).toFixed(2) + ',' + (-r * Math.cos(degrees * Math.PI / 180)).toFixed(2);
   const from = sector[0], to = sector[1] > from ? sector[1] : sector[1] + 360;
-  return 'M0,0 L' + at(from, 35) + ' M0,0 L' + at(to, 35)
-    + ' M' + at(from, 25) + ' A25,25 0 ' + (to - from > 180 ? 1 : 0) + ',1 ' + at(to, 25);
+  const legs = 'M0,0 L' + at(from, 35) + ' M0,0 L' + at(to, 35);
+  if (to - from >= 360) // all round: an arc's ends may not meet, so two halves
+    return legs + ' M' + at(from, 25) + ' A25,25 0 1,1 ' + at(from + 180, 25) + ' A25,25 0 1,1 ' + at(from, 25);
+  return legs + ' M' + at(from, 25) + ' A25,25 0 ' + (to - from > 180 ? 1 : 0) + ',1 ' + at(to, 25);
 }
 
 function chartSymbol(mark, colours) {

@@ -194,17 +194,20 @@ void MissionShare::receive(const msg::Message &message)
                 publish(Remove, it.key(), *it);
         return;
     }
-    if (op != Put && op != Remove && op != Here)
+    if (op == Here) {
+        // A console sharing this mission (or, while joining, the one about to be sent).
+        // Not an answer to our HELLO by itself: that is the objects, which may still be lost.
+        if (m_mission.id.isEmpty() || missionId == m_mission.id)
+            heard(message.header.src, author);
+        return;
+    }
+    if (op != Put && op != Remove)
         return;
     m_heard = true;
     if (m_mission.id.isEmpty() && !missionId.isEmpty())
         m_mission.id = missionId; // joining: the first shared mission heard
     if (missionId != m_mission.id)
         return;
-    if (op == Here) {
-        heard(message.header.src, author);
-        return;
-    }
     const QString key = message.text(u"object");
     const auto version = quint32(message.integer(u"version"));
     const Object held = m_objects.value(key);
@@ -246,6 +249,12 @@ void MissionShare::heard(quint16 system, const QString &name)
         return;
     m_peers.insert(system, name);
     emit peersChanged();
+}
+
+void MissionShare::greet()
+{
+    if (m_sharing && !m_mission.id.isEmpty())
+        publish(Here, {}, Object{{}, 0, m_author});
 }
 
 void MissionShare::forget(quint16 system)

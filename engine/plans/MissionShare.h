@@ -62,6 +62,9 @@ public:
     QStringList peers() const;
     // The console that sent as `system` left (DDS said so): no longer a peer.
     void forget(quint16 system);
+    // A participant appeared (or came back after an outage: the consoles had
+    // forgotten each other): this console says HERE, if it shares a mission.
+    void greet();
 
     // The mission's objects in its order, by key ("header", "plan:ID",
     // "feature:MAP/ID", "checklist:ID"), each as a mission file holding only it.

@@ -175,9 +175,13 @@ QString Helper::whyEnded(const QElapsedTimer &clock, TranslateLimits limits)
     const bool reaped = ::waitpid(m_pid, &code, 0) == m_pid;
     m_pid = -1;
     status.pid = 0;
-    // Killed by its CPU-time limit (SIGXCPU), or ended when memory ran out;
-    // status 1 is a request it could not read (checked before sending, so a defect).
-    if ((reaped && WIFSIGNALED(code) && WTERMSIG(code) == SIGXCPU) || clock.elapsed() >= qint64(limits.seconds) * 1000 - 100)
+    // Killed by its CPU-time limit (SIGXCPU), or ended when memory ran out
+    // (status 3: its resident-memory watch; else the address-space cap's
+    // failed allocation); status 1 is a request it could not read (checked
+    // before sending, so a defect).
+    const bool memoryWatch = reaped && WIFEXITED(code) && WEXITSTATUS(code) == 3;
+    if (!memoryWatch
+        && ((reaped && WIFSIGNALED(code) && WTERMSIG(code) == SIGXCPU) || clock.elapsed() >= qint64(limits.seconds) * 1000 - 100))
         return QStringLiteral("stopped: it ran longer than its %1 s limit").arg(limits.seconds);
     if (reaped && WIFEXITED(code) && WEXITSTATUS(code) == 1)
         return QStringLiteral("%1 ended: it could not read the request").arg(translatorHelper());

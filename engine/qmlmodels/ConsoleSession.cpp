@@ -74,6 +74,7 @@ ConsoleSession::ConsoleSession(std::shared_ptr<const msg::Schema> schema, const 
     });
     connect(&m_console, &session::Console::sharedMissionReceived, &m_share, &plans::MissionShare::receive);
     connect(&m_console, &session::Console::participantLeft, &m_share, &plans::MissionShare::forget);
+    connect(&m_console, &session::Console::participantJoined, &m_share, &plans::MissionShare::greet);
     m_planDesk.setMavlink({[this] { return m_console.mavlinkSchema(); }, &mavlinkPlanFor,
                            [this](quint16 system, const QString &planId, const QStringList &maneuverOfItem) {
                                m_console.labelMission(system, planId, maneuverOfItem);

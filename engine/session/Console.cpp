@@ -261,6 +261,10 @@ std::expected<void, QString> Console::startDds(transport::DdsConfig config)
                          "give one of them another id (--system-id)")
                           .arg(participant, QStringLiteral("%1").arg(id, 4, 16, QLatin1Char('0'))));
     });
+    connect(dds.get(), &transport::DdsTransport::participantJoined, this, [this, id = config.systemId](quint16 system) {
+        if (system != id)
+            emit participantJoined(system);
+    });
     connect(dds.get(), &transport::DdsTransport::participantLeft, this, [this, id = config.systemId](quint16 system) {
         if (system == id)
             m_graph.clear(m_graph.ensure(QStringLiteral("links/DDS"))); // the other console with our id left

@@ -150,7 +150,8 @@ signals:
     void planMessageReceived(const neptus::msg::Message &message);
     // Another console changed a shared mission (MissionChange): for plans::MissionShare.
     void sharedMissionReceived(const neptus::msg::Message &message);
-    // The console (or vehicle) that announced itself as `system` on DDS left: for plans::MissionShare.
+    // A console (or vehicle) announced itself as `system` on DDS, or left: for plans::MissionShare.
+    void participantJoined(quint16 system);
     void participantLeft(quint16 system);
 
 private:

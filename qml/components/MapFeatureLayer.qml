@@ -53,6 +53,8 @@ Item {
         const taken = avoid.concat(at.map(p => Qt.rect(p.x - half, p.y - half, 2 * half, 2 * half)))
         const h = nameMetrics.height
         return placed.map((f, i) => {
+            if (at[i].x < -width || at[i].y < -height || at[i].x > 2 * width || at[i].y > 2 * height)
+                return 0 // far out of view: not worked out
             const w = nameMetrics.advanceWidth(nameOf(f))
             const own = avoid.length + i // its own glyph: the places are around it already
             for (let place = 0; place < namePlaceCount; ++place) {

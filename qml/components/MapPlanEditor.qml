@@ -123,6 +123,7 @@ Item {
         map: editor.map
         features: planModel.features
         model: planModel
+        avoid: editor.map.systemsCover
         hiddenLayers: editor.hiddenLayers
         selected: editor.selectedFeature
         editable: editor.mode === "map"

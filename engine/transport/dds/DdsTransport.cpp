@@ -192,18 +192,24 @@ std::expected<dds_qos_t *, QString> DdsTransport::securityQos(const DdsSecurity 
 void DdsTransport::onParticipant(dds_entity_t reader, void *self)
 {
     auto *transport = static_cast<DdsTransport *>(self);
-    forEachTaken<neptus_Participant>(reader, [transport](const neptus_Participant &peer, const dds_sample_info_t &info) {
-        if (!info.valid_data) {
-            // The participant that announced `system` left (or its lease ran out).
-            if (info.instance_state == DDS_IST_ALIVE)
-                return;
-            const quint16 system = peer.system;
-            {
-                QMutexLocker lock(&transport->m_mutex);
-                transport->m_peerDigests.remove(system);
+    forEachTaken<neptus_Participant>(reader, [transport, reader](const neptus_Participant &peer, const dds_sample_info_t &info) {
+        if (!info.valid_data)
+            return; // who left is told by the participants' own presence (onPresence), one by one
+        const quint16 system = peer.system;
+        // The participant that announced it: several may share a system id, and
+        // the id is free again only when the last of them has left.
+        QString participant = QStringLiteral("dds:unknown");
+        if (dds_builtintopic_endpoint_t *writer = dds_get_matched_publication_data(reader, info.publication_handle)) {
+            participant = participantLabel(writer->participant_key);
+            dds_builtintopic_free_endpoint(writer);
+        }
+        {
+            QMutexLocker lock(&transport->m_mutex);
+            if (transport->m_announcers.value(participant, -1) != system) {
+                transport->m_announcers.insert(participant, system);
+                QMetaObject::invokeMethod(transport, [transport, system] { emit transport->participantJoined(system); },
+                                          Qt::QueuedConnection);
             }
-            QMetaObject::invokeMethod(transport, [transport, system] { emit transport->participantLeft(system); }, Qt::QueuedConnection);
-            return;
         }
         if (peer.system == transport->m_config.systemId) {
             // Another participant as this system (ignorelocal: not us).
@@ -217,7 +223,6 @@ void DdsTransport::onParticipant(dds_entity_t reader, void *self)
         if (theirs == ours || transport->m_peerDigests.value(peer.system) == theirs)
             return;
         transport->m_peerDigests.insert(peer.system, theirs);
-        const quint16 system = peer.system;
         const QString name = QString::fromUtf8(peer.name);
         QMetaObject::invokeMethod(transport, [transport, system, name, theirs, ours] {
             emit transport->definitionsDiffer(system, name, theirs, ours);
@@ -239,6 +244,18 @@ void DdsTransport::onPresence(dds_entity_t reader, void *self)
     const qint64 now = monotonicMs();
     QMutexLocker lock(&transport->m_mutex);
     transport->m_participantOfWriter.removeIf([&](const auto &it) { return gone.contains(it.value()); });
+    // The systems whose last announcer left.
+    for (const QString &name : gone) {
+        const int system = transport->m_announcers.value(name, -1);
+        if (system < 0)
+            continue;
+        transport->m_announcers.remove(name);
+        if (std::ranges::find(transport->m_announcers, system) != transport->m_announcers.end())
+            continue;
+        transport->m_peerDigests.remove(quint16(system));
+        QMetaObject::invokeMethod(transport, [transport, system] { emit transport->participantLeft(quint16(system)); },
+                                  Qt::QueuedConnection);
+    }
     for (auto peer = transport->m_peers.begin(); peer != transport->m_peers.end(); ++peer) {
         bool changed = false;
         for (const QString &name : gone) {

@@ -121,8 +121,11 @@ signals:
     // Another participant (named) announces itself as this console's own
     // system id (two consoles given the same id): what it sends is ignored.
     void ourIdInUse(const QString &participant);
-    // The participant that announced itself as `system` left or went
-    // silent past its lease (this console's own id: the other one left).
+    // A participant announced itself as `system` (again, after it left: a
+    // link back after an outage longer than the lease).
+    void participantJoined(quint16 system);
+    // Every participant that announced itself as `system` left or went
+    // silent past its lease (this console's own id: the others using it left).
     void participantLeft(quint16 system);
 
 private:
@@ -169,6 +172,7 @@ private:
     QHash<const msg::MessageDef *, dds_entity_t> m_writers;
     dds_entity_t m_participantWriter = 0;
     QHash<quint16, QString> m_peerDigests;
+    QHash<QString, int> m_announcers; // the system each participant announced itself as (by participantLabel)
     QHash<dds_instance_handle_t, QString> m_participantOfWriter; // by publication handle
     QHash<quint16, Peer> m_peers;
     std::function<void(const msg::Message &, qsizetype)> m_direct;

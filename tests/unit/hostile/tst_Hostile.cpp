@@ -235,11 +235,11 @@ TEST(Hostile, AnotherConsoleWithOurIdIsAWarningUntilItLeaves)
                                                           transport::DdsConfig{27, {}, 0x4001, QStringLiteral("console-b")});
     ASSERT_TRUE(twin->start());
     const QString link = QStringLiteral("links/DDS");
-    ASSERT_TRUE(QTest::qWaitFor([&] { return levelOf(session.alarmGraph(), link) == alarms::Warning; }, 10000));
+    ASSERT_TRUE(QTest::qWaitFor([&] { return levelOf(session.alarmGraph(), link) == alarms::Warning; }, 8000));
     const QString said = session.alarmGraph().message(session.alarmGraph().find(link));
     EXPECT_TRUE(said.contains(QStringLiteral("console-b")) && said.contains(QStringLiteral("0x4001"))) << said.toStdString();
     twin.reset();
-    EXPECT_TRUE(QTest::qWaitFor([&] { return levelOf(session.alarmGraph(), link) == alarms::Normal; }, 15000))
+    EXPECT_TRUE(QTest::qWaitFor([&] { return levelOf(session.alarmGraph(), link) == alarms::Normal; }, 8000))
         << "cleared when the other console left";
 }
 

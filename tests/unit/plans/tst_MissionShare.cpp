@@ -218,4 +218,16 @@ TEST(MissionShare, PeersAreTheConsolesThatSaidSoAndLeaveWithTheirParticipant)
     EXPECT_EQ(c->authorOf(u"plan:survey"_s), u"console-b"_s);
     EXPECT_EQ(c->peers(), QStringList{u"console-a"_s}) << "an object's author is not a peer";
     EXPECT_EQ(a->peers(), QStringList{u"console-c"_s});
+
+    // B was only cut off (an outage past the DDS lease: each forgot the other) and comes back:
+    // DDS says its participant appeared, and each console greets.
+    net.consoles = {a, b, c};
+    b->forget(0x4001);
+    b->forget(0x4003);
+    ASSERT_TRUE(b->peers().isEmpty());
+    a->greet();
+    c->greet();
+    b->greet();
+    EXPECT_EQ(a->peers(), (QStringList{u"console-b"_s, u"console-c"_s}));
+    EXPECT_EQ(b->peers(), (QStringList{u"console-a"_s, u"console-c"_s}));
 }

@@ -367,12 +367,6 @@ TEST_F(Server, HostileInputIsRefusedAndTheServerKeepsServing)
     EXPECT_TRUE(after.body.contains("lauv-sim-1"));
 }
 
-// The chart layer: the page draws the console's chart (the README's NOAA cell)
-// as the console's map does — land, depth areas shaded against the safety
-// contour (the first charted contour at or past the console's safety depth),
-// contours with the safety contour apart, the coast, and buoys, beacons,
-// lights and hazards in words — only what meets the box asked; without
-// charts it says there are none.
 // A console that quits while a chart request is still being answered on the
 // chart worker: the answer arrives after the server began to go away
 // (AddressSanitizer: a SEGV in the responder's destructor, on a deleted connection).
@@ -395,6 +389,12 @@ TEST_F(Server, QuittingDuringAChartRequestIsSafe)
     delete reply;
 }
 
+// The chart layer: the page draws the console's chart (the README's NOAA cell)
+// as the console's map does — land, depth areas shaded against the safety
+// contour (the first charted contour at or past the console's safety depth),
+// contours with the safety contour apart, the coast, and buoys, beacons,
+// lights and hazards in words — only what meets the box asked; without
+// charts it says there are none.
 TEST_F(Server, DrawsTheConsolesChartLayer)
 {
     NEPTUS_REQUIRE_FIXTURE(cell, "charts/US4MD81M");
