@@ -35,12 +35,19 @@ print("positions:", db.execute("SELECT COUNT(*) FROM positions").fetchone()[0], 
 db.execute("DROP TABLE IF EXISTS session_systems")
 db.commit()
 db.close()
-for _ in range(3):
-    db = sqlite3.connect(path)
-    t = time.time()
-    pairs = db.execute("SELECT DISTINCT session, system FROM positions ORDER BY session, system").fetchall()
-    print("scanning positions: %.0f ms, %d pairs" % ((time.time() - t) * 1000, len(pairs)))
-    db.close()
+
+
+def timed(what, query):
+    """Three reads of `query`, each on a fresh connection (as the session list's worker opens one)."""
+    for _ in range(3):
+        db = sqlite3.connect(path)
+        t = time.time()
+        pairs = db.execute(query).fetchall()
+        print("%s: %.2f ms, %d pairs" % (what, (time.time() - t) * 1000, len(pairs)))
+        db.close()
+
+
+timed("scanning positions", "SELECT DISTINCT session, system FROM positions ORDER BY session, system")
 db = sqlite3.connect(path)
 t = time.time()
 # Schema version 2's migration, once per database.
@@ -49,9 +56,4 @@ db.execute("INSERT INTO session_systems (session, system) SELECT DISTINCT sessio
 db.commit()
 print("the migration's fill, once: %.0f ms" % ((time.time() - t) * 1000))
 db.close()
-for _ in range(3):
-    db = sqlite3.connect(path)
-    t = time.time()
-    pairs = db.execute("SELECT session, system FROM session_systems ORDER BY session, system").fetchall()
-    print("reading session_systems: %.2f ms, %d pairs" % ((time.time() - t) * 1000, len(pairs)))
-    db.close()
+timed("reading session_systems", "SELECT session, system FROM session_systems ORDER BY session, system")
