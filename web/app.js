@@ -102,21 +102,70 @@ const chartShapes = {
 
 // A sector light's legs and arc (mark.sector: directions from the light, degrees true, clockwise
 // from the first to the second), 25 and 35 pixels out, as the console's map draws them.
-function sectorPath(sector) {
+function sectorPaths(sector) {
   const at = (degrees, r) => (r * Math.sin(degrees * Math.PI / 180)).toFixed(2) + ',' + (-r * Math.cos(degrees * Math.PI / 180)).toFixed(2);
   const from = sector[0], to = sector[1] > from ? sector[1] : sector[1] + 360;
   const legs = 'M0,0 L' + at(from, 35) + ' M0,0 L' + at(to, 35);
   if (to - from >= 360) // all round: an arc's ends may not meet, so two halves
-    return legs + ' M' + at(from, 25) + ' A25,25 0 1,1 ' + at(from + 180, 25) + ' A25,25 0 1,1 ' + at(from, 25);
-  return legs + ' M' + at(from, 25) + ' A25,25 0 ' + (to - from > 180 ? 1 : 0) + ',1 ' + at(to, 25);
+    return { legs: legs, arc: 'M' + at(from, 25) + ' A25,25 0 1,1 ' + at(from + 180, 25) + ' A25,25 0 1,1 ' + at(from, 25) };
+  return { legs: legs, arc: 'M' + at(from, 25) + ' A25,25 0 ' + (to - from > 180 ? 1 : 0) + ',1 ' + at(to, 25) };
+}
+
+// A shape's extent (its path's bounding box), measured once in a hidden SVG.
+const svgNs = 'http://www.w3.org/2000/svg';
+const shapeBoxes = {};
+function shapeBox(d) {
+  if (!shapeBoxes[d]) {
+    const svg = document.createElementNS(svgNs, 'svg'), path = document.createElementNS(svgNs, 'path');
+    svg.style.position = 'absolute';
+    svg.style.visibility = 'hidden';
+    path.setAttribute('d', d);
+    svg.appendChild(path);
+    document.body.appendChild(svg);
+    const b = path.getBBox();
+    shapeBoxes[d] = { x: b.x, y: b.y, width: b.width, height: b.height };
+    svg.remove();
+  }
+  return shapeBoxes[d];
+}
+
+// A buoy's or beacon's bands (mark.bands: its colour pattern and colours), filling its shape as the
+// console's map fills it: top to bottom, left to right, from the upper left, or in quarters.
+let bandClips = 0;
+function bandsSvg(d, bands, colours) {
+  const b = shapeBox(d), n = bands.colours.length, id = 'bands' + (++bandClips);
+  const fill = (i) => colours[bands.colours[i % n]];
+  const rect = (x, y, w, h, i) => '<rect x="' + x + '" y="' + y + '" width="' + w + '" height="' + h + '" fill="' + fill(i) + '"/>';
+  let rects = '';
+  if (bands.pattern === 'vertical') {
+    for (let i = 0; i < n; ++i) rects += rect(b.x + b.width * i / n, b.y, b.width / n, b.height, i);
+  } else if (bands.pattern === 'squared') {
+    const w = b.width / 2, h = b.height / 2;
+    rects = rect(b.x, b.y, w, h, 0) + rect(b.x + w, b.y, w, h, 1) + rect(b.x, b.y + h, w, h, 1) + rect(b.x + w, b.y + h, w, h, 0);
+  } else if (bands.pattern === 'diagonal') { // stacked along the lower right diagonal, from the shape's upper left
+    const corners = [[b.x, b.y], [b.x + b.width, b.y], [b.x, b.y + b.height], [b.x + b.width, b.y + b.height]].map(([x, y]) => (x + y) / Math.SQRT2);
+    const first = Math.min(...corners), span = Math.max(...corners) - first;
+    for (let i = 0; i < n; ++i) rects += rect(first + span * i / n, -20, span / n, 40, i);
+    rects = '<g transform="rotate(45)">' + rects + '</g>';
+  } else {
+    for (let i = 0; i < n; ++i) rects += rect(b.x, b.y + b.height * i / n, b.width, b.height / n, i);
+  }
+  return '<defs><clipPath id="' + id + '"><path d="' + d + '"/></clipPath></defs><g clip-path="url(#' + id + ')">' + rects + '</g>';
 }
 
 function chartSymbol(mark, colours) {
   const c = mark.kind === 'hazard' ? colours.hazard : mark.colour ? colours[mark.colour] : colours.aid;
-  const d = (chartShapes[mark.shape] || chartShapes.ring) + (mark.sector ? ' ' + sectorPath(mark.sector) : '');
+  const shape = chartShapes[mark.shape] || chartShapes.ring;
   const side = mark.sector ? 80 : 24;
+  const stroke = (d, colour, width) => '<path d="' + d + '" fill="none" stroke="' + colour + '" stroke-width="' + width + '"/>';
+  let sector = '';
+  if (mark.sector) { // the legs in the chart's black, the arc in the light's colour over a dark outline
+    const paths = sectorPaths(mark.sector);
+    sector = stroke(paths.legs, colours.hazard, 1.2) + stroke(paths.arc, colours.hazard, 5.8) + stroke(paths.arc, c, 1.8);
+  }
   const svg = '<svg viewBox="' + -side / 2 + ' ' + -side / 2 + ' ' + side + ' ' + side + '" width="' + side + '" height="' + side
-    + '"><path d="' + d + '" fill="none" stroke="' + c + '" stroke-width="1.8"/></svg>';
+    + '">' + (mark.bands && mark.shape !== 'stake' ? bandsSvg(shape, mark.bands, colours) : '') + sector
+    + stroke(shape, c, 1.8) + '</svg>';
   return L.divIcon({ html: svg, className: 'chart-mark', iconSize: [side, side], iconAnchor: [side / 2, side / 2] });
 }
 

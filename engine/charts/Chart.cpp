@@ -375,20 +375,74 @@ Drawn drawnAs(const Feature &f)
     return Drawn::Nothing;
 }
 
-AidColour aidColour(const Feature &f)
+namespace {
+
+// COLOUR's S-57 colour codes: GDAL writes a list attribute as "(count:a,b,...)"; a plain "3" is taken too.
+std::vector<int> colourCodes(const Feature &f)
 {
-    // GDAL writes a list attribute as "(count:a,b,...)"; a plain "3" is taken too.
     QString text = f.attributes.value(u"COLOUR"_s).trimmed();
     if (text.startsWith(u'(') && text.endsWith(u')'))
         text = text.mid(1, text.size() - 2).section(u':', -1);
-    bool ok = false;
-    switch (text.section(u',', 0, 0).trimmed().toInt(&ok)) {
+    std::vector<int> codes;
+    for (const QString &part : text.split(u',', Qt::SkipEmptyParts)) {
+        bool ok = false;
+        codes.push_back(part.trimmed().toInt(&ok));
+        if (!ok)
+            return {};
+    }
+    return codes;
+}
+
+AidColour colourOf(int code, bool light)
+{
+    switch (code) {
     case 3: return AidColour::Red;
     case 4: return AidColour::Green;
-    case 6: return AidColour::Yellow;
-    case 1: return f.objectClass == u"LIGHTS" ? AidColour::Yellow : AidColour::Other;
+    case 6: case 9: case 11: return AidColour::Yellow; // yellow, amber, orange
+    case 1: return light ? AidColour::Yellow : AidColour::Other;
     default: return AidColour::Other;
     }
+}
+
+} // namespace
+
+AidColour aidColour(const Feature &f)
+{
+    const std::vector<int> codes = colourCodes(f);
+    return codes.empty() ? AidColour::Other : colourOf(codes.front(), f.objectClass == u"LIGHTS");
+}
+
+std::optional<AidBands> aidBands(const Feature &f)
+{
+    if (f.objectClass == u"LIGHTS")
+        return std::nullopt;
+    QString pattern = f.attributes.value(u"COLPAT"_s).trimmed(); // (a list too; the first is taken)
+    if (pattern.startsWith(u'(') && pattern.endsWith(u')'))
+        pattern = pattern.mid(1, pattern.size() - 2).section(u':', -1);
+    // COLPAT: 1 horizontal stripes, 2 vertical, 3 diagonal, 4 squared, 5 stripes of unknown direction, 6 border stripe.
+    static constexpr std::optional<ColourPattern> patterns[] = {std::nullopt, ColourPattern::Horizontal, ColourPattern::Vertical,
+                                                                ColourPattern::Diagonal, ColourPattern::Squared,
+                                                                ColourPattern::Horizontal, std::nullopt};
+    const int code = pattern.section(u',', 0, 0).trimmed().toInt();
+    const std::vector<int> codes = colourCodes(f);
+    if (code <= 0 || code >= int(std::size(patterns)) || !patterns[code] || codes.size() < 2)
+        return std::nullopt;
+    AidBands bands{*patterns[code], {}};
+    for (const int c : codes)
+        bands.colours.push_back(colourOf(c, false));
+    return bands;
+}
+
+QString patternName(ColourPattern pattern)
+{
+    static const QString names[] = {u"horizontal"_s, u"vertical"_s, u"diagonal"_s, u"squared"_s};
+    return names[int(pattern)];
+}
+
+QString colourName(AidColour colour)
+{
+    static const QString names[] = {u"aid"_s, u"red"_s, u"green"_s, u"yellow"_s};
+    return names[int(colour)];
 }
 
 std::optional<LightSector> lightSector(const Feature &f)

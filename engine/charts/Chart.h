@@ -146,6 +146,25 @@ Drawn drawnAs(const Feature &feature);
 // the chart's aid colour.
 enum class AidColour : quint8 { Other, Red, Green, Yellow };
 AidColour aidColour(const Feature &feature);
+// Its name in the page's JSON ("red", "green", "yellow"; "aid" for Other).
+QString colourName(AidColour colour);
+// A buoy or beacon of several colours in a pattern (COLPAT, with two or more
+// COLOUR values), as S-52 fills its symbol: the colours in COLOUR's order, top
+// to bottom (horizontal bands), left to right (vertical), from the upper left
+// (diagonal), or in quarters (squared, two colours alternating). S-57's
+// "stripes, direction unknown" are drawn horizontal; a border stripe is not
+// banded (its outline alone). Orange and amber are drawn yellow, white and
+// black in the aid colour, as aidColour()'s.
+enum class ColourPattern : quint8 { Horizontal, Vertical, Diagonal, Squared };
+struct AidBands
+{
+    ColourPattern pattern;
+    std::vector<AidColour> colours;
+    bool operator==(const AidBands &) const = default;
+};
+std::optional<AidBands> aidBands(const Feature &feature);
+// Its name in the page's JSON ("horizontal", "vertical", "diagonal", "squared").
+QString patternName(ColourPattern pattern);
 // A sector light's sector, as directions from the light (degrees true): it
 // shows from `from` clockwise to `to`. S-57 gives SECTR1 and SECTR2 as
 // bearings from seaward towards the light, so each is turned half a circle.

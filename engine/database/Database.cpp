@@ -217,7 +217,12 @@ std::expected<QSqlDatabase, QString> connectTo(const Location &location, const Q
         if (auto quiet = exec(db, u"SET client_min_messages = warning"_s); !quiet) // no "already exists, skipping"
             return std::unexpected(quiet.error());
     if (location.engine == Location::Sqlite) {
-        for (const QString &pragma : {u"PRAGMA journal_mode=WAL"_s, u"PRAGMA synchronous=NORMAL"_s})
+        // The page cache is capped at 512 KiB (SQLite's default is 2 MiB): a
+        // console writes for hours and reads little, and the operating
+        // system caches the file anyway. The cap keeps a long watch's memory
+        // flat (BENCHMARKS.md, "The console over hours").
+        for (const QString &pragma :
+             {u"PRAGMA journal_mode=WAL"_s, u"PRAGMA synchronous=NORMAL"_s, u"PRAGMA cache_size=-512"_s})
             if (auto done = exec(db, pragma); !done)
                 return std::unexpected(done.error());
     }

@@ -86,7 +86,13 @@ QJsonObject chartLayer(const std::vector<charts::Cell> &cells, double west, doub
                         mark.insert(u"name"_s, f.name());
                     if (drawn != Drawn::Hazard)
                         if (const charts::AidColour c = charts::aidColour(f); c != charts::AidColour::Other)
-                            mark.insert(u"colour"_s, c == charts::AidColour::Red ? u"red"_s : c == charts::AidColour::Green ? u"green"_s : u"yellow"_s);
+                            mark.insert(u"colour"_s, charts::colourName(c));
+                    if (const auto bands = charts::aidBands(f)) {
+                        QJsonArray colours;
+                        for (const charts::AidColour c : bands->colours)
+                            colours.append(charts::colourName(c));
+                        mark.insert(u"bands"_s, QJsonObject{{u"pattern"_s, charts::patternName(bands->pattern)}, {u"colours"_s, colours}});
+                    }
                     if (drawn == Drawn::Hazard && f.shallowest)
                         mark.insert(u"depth"_s, *f.shallowest);
                     if (const auto sector = charts::lightSector(f))

@@ -263,6 +263,11 @@ TEST(WebPage, TheConsolesChartIsDrawnAsItsMapDrawsIt)
     EXPECT_GT(browser.evaluate(u"document.querySelectorAll('.chart-mark').length"_s).toInt(), 0);
     EXPECT_TRUE(browser.evaluate(u"[...document.querySelectorAll('.chart-mark')].some(e => /buoy|beacon|light/.test(e.title))"_s).toBool())
         << "each symbol says what it is";
+    // An aid of several colours filled with its bands, as on the console's map: Queen Ann County
+    // Obstruction Buoy A, white over orange (drawn in the aid colour over yellow).
+    EXPECT_EQ(browser.evaluate(u"(() => { const e = [...document.querySelectorAll('.chart-mark')].find(e => /Obstruction Buoy A/.test(e.title));"
+                               " return e ? [...e.querySelectorAll('g[clip-path] rect')].map(r => r.getAttribute('fill')).join(' ') : 'none' })()"_s).toString(),
+              browser.evaluate(u"cssColour('aid') + ' ' + cssColour('yellow')"_s).toString());
     QTest::qWait(500);
     EXPECT_TRUE(browser.screenshot(shots + u"/web-chart-harbour-1280x800.png"_s));
 

@@ -45,22 +45,23 @@ Cell::Bounds boundsOf(const std::vector<Cell> &cells)
 // Local units: a pixel at zoom 16 (about 2 m), around the charts' middle.
 constexpr double localZoom = 16;
 
-// A sector light's sector, as S-52 draws it: its two legs from the light and
-// the arc between them in the light's colour, the same size at every zoom
+// A sector light's sector, as S-52 draws it: its two legs from the light (in
+// `legs`) and the arc between them (in `arc`), the same size at every zoom
 // (`r` the symbols' size; `bearing` the map's turn), as pairs of end points.
+// The arc is drawn in the light's colour over a dark outline, the legs dark.
 constexpr double sectorArc = 5, sectorLegs = 7;
-void appendSector(std::vector<QPointF> &lines, LightSector sector, QPointF p, double r, double bearing)
+void appendSector(std::vector<QPointF> &legs, std::vector<QPointF> &arc, LightSector sector, QPointF p, double r, double bearing)
 {
     const auto towards = [&](double degrees, double length) { // clockwise from the screen's up
         const double a = (degrees - bearing) * std::numbers::pi / 180;
         return p + QPointF(std::sin(a), -std::cos(a)) * length * r;
     };
     const double to = sector.to > sector.from ? sector.to : sector.to + 360;
-    lines.insert(lines.end(), {p, towards(sector.from, sectorLegs), p, towards(to, sectorLegs)});
+    legs.insert(legs.end(), {p, towards(sector.from, sectorLegs), p, towards(to, sectorLegs)});
     const int steps = std::max(2, int(std::ceil((to - sector.from) / 5)));
     for (int i = 0; i < steps; ++i)
-        lines.insert(lines.end(), {towards(sector.from + (to - sector.from) * i / steps, sectorArc),
-                                   towards(sector.from + (to - sector.from) * (i + 1) / steps, sectorArc)});
+        arc.insert(arc.end(), {towards(sector.from + (to - sector.from) * i / steps, sectorArc),
+                               towards(sector.from + (to - sector.from) * (i + 1) / steps, sectorArc)});
 }
 
 // A symbol's outline (shapeOf()) around `p`, `r` pixels its size, as pairs of end points.
@@ -138,6 +139,51 @@ void appendOutline(std::vector<QPointF> &lines, Shape shape, QPointF p, double r
     }
 }
 
+// A symbol of several colours filled with its bands (aidBands()): lines
+// `step` apart (the symbols' line width: they touch) across the outline
+// `outline` drawn around `p` (pairs of end points), each in its band's
+// colour, kept half a line inside the outline.
+void appendBands(std::array<std::vector<QPointF>, 4> &linesBy, const std::vector<QPointF> &outline, QPointF p, const AidBands &bands,
+                 double step)
+{
+    // Lines along `along`, stacked along `across` (unit vectors).
+    const auto [along, across] = bands.pattern == ColourPattern::Vertical   ? std::pair(QPointF(0, 1), QPointF(1, 0))
+                                 : bands.pattern == ColourPattern::Diagonal ? std::pair(QPointF(1, -1) / std::numbers::sqrt2, QPointF(1, 1) / std::numbers::sqrt2)
+                                                                            : std::pair(QPointF(1, 0), QPointF(0, 1));
+    const auto dot = [](QPointF a, QPointF b) { return a.x() * b.x() + a.y() * b.y(); };
+    double first = INFINITY, last = -INFINITY;
+    for (const QPointF &q : outline) {
+        first = std::min(first, dot(q - p, across));
+        last = std::max(last, dot(q - p, across));
+    }
+    const std::size_t n = bands.colours.size();
+    for (double t = first + step; t < last - step / 2; t += step) {
+        double from = INFINITY, to = -INFINITY; // where the line meets the outline (the shapes are convex enough)
+        for (std::size_t i = 0; i + 1 < outline.size(); i += 2) {
+            const double da = dot(outline[i] - p, across) - t, db = dot(outline[i + 1] - p, across) - t;
+            if ((da < 0) == (db < 0) || da == db)
+                continue;
+            const double s = dot(outline[i] + (outline[i + 1] - outline[i]) * (da / (da - db)) - p, along);
+            from = std::min(from, s);
+            to = std::max(to, s);
+        }
+        if (to - from <= step)
+            continue;
+        const QPointF at = p + across * t;
+        const auto add = [&](std::size_t band, double a, double b) {
+            auto &lines = linesBy[int(bands.colours[band % n])];
+            lines.insert(lines.end(), {at + along * a, at + along * b});
+        };
+        if (bands.pattern == ColourPattern::Squared) { // quarters: the upper left and lower right in the first colour
+            const std::size_t row = t < (first + last) / 2 ? 0 : 1;
+            add(row, from + step / 2, (from + to) / 2);
+            add(row + 1, (from + to) / 2, to - step / 2);
+        } else {
+            add(std::min(n - 1, std::size_t((t - first) / (last - first) * double(n))), from + step / 2, to - step / 2);
+        }
+    }
+}
+
 // The side of the tiles the chart's image is drawn in (pixels).
 constexpr int tileSide = 256;
 
@@ -183,6 +229,7 @@ struct ChartItem::Loaded
         double scamin;
         AidColour colour;
         std::optional<LightSector> sector; // a sector light's
+        std::optional<AidBands> bands;     // a buoy's or beacon's of several colours
     };
     std::vector<Point> points;
 
@@ -237,7 +284,7 @@ void ChartItem::Loaded::convert()
             } else if (drawn == Drawn::Restricted) {
                 segments(f, restricted); // the rings, edge by edge
             } else if (drawn == Drawn::Fairway) {
-                // Edges dashed, 120 m on and 80 m off (60 and 40 local units: a unit is 2 m).
+                // Edges dashed, 60 local units on and 40 off (a unit is 2.4 m × cos(latitude): 110 and 75 m at 39° N).
                 std::vector<QPointF> edges;
                 segments(f, edges);
                 for (std::size_t i = 0; i + 1 < edges.size(); i += 2) {
@@ -252,7 +299,7 @@ void ChartItem::Loaded::convert()
                 for (const auto &part : f.parts) {
                     if (!part.empty() && !coveredByBetter(*cells, c, part.front().lon, part.front().lat))
                         points.push_back({mercatorOf(part.front().lat, part.front().lon), shape, f.number(u"SCAMIN"_s).value_or(0), aidColour(f),
-                                          lightSector(f)});
+                                          lightSector(f), aidBands(f)});
                     if (f.geometry != Feature::Geometry::Point)
                         break;
                 }
@@ -623,7 +670,8 @@ QSGNode *ChartItem::updatePaintNode(QSGNode *old, UpdatePaintNodeData *)
     const MapProjection view = projection();
     const double r = m_symbolRadius;
     const double scale = view.metresPerPixel() / 0.00028;
-    std::vector<QPointF> hazards, aidsBy[4]; // aids by AidColour
+    std::vector<QPointF> hazards, outline, sectorLegLines, sectorArcs;
+    std::array<std::vector<QPointF>, 4> aidsBy; // aids by AidColour
     for (const Loaded::Point &point : m_read ? m_read->points : std::vector<Loaded::Point>{}) {
         if (point.scamin > 0 ? scale > point.scamin : view.zoom < 11)
             continue;
@@ -631,17 +679,32 @@ QSGNode *ChartItem::updatePaintNode(QSGNode *old, UpdatePaintNodeData *)
         const double reach = point.sector ? sectorLegs * r : r;
         if (p.x() < -reach || p.y() < -reach || p.x() > width() + reach || p.y() > height() + reach)
             continue;
+        if (point.bands && point.shape != Shape::Stake) { // (a stake is lines: nothing to fill)
+            outline.clear();
+            appendOutline(outline, point.shape, p, r);
+            appendBands(aidsBy, outline, p, *point.bands, m_lineWidth * 1.5);
+        }
         appendOutline(point.shape == Shape::Cross ? hazards : aidsBy[int(point.colour)], point.shape, p, r);
-        if (point.sector)
-            appendSector(aidsBy[int(point.colour)], *point.sector, p, r, view.bearing);
+        if (point.sector) {
+            const std::size_t arcFrom = sectorArcs.size();
+            appendSector(sectorLegLines, sectorArcs, *point.sector, p, r, view.bearing);
+            aidsBy[int(point.colour)].insert(aidsBy[int(point.colour)].end(), sectorArcs.begin() + std::ptrdiff_t(arcFrom), sectorArcs.end());
+        }
     }
     QSGGeometryNode *hazardNode = flatNode(root, 1, QSGGeometry::DrawLines);
     setNodePoints(hazardNode, hazards, m_lineWidth * 1.5);
     setNodeColor(hazardNode, m_hazardColor);
+    // Light sectors' legs, and their arcs' dark outline under the arcs' colours (the chart's black: the hazards' colour).
+    QSGGeometryNode *legNode = flatNode(root, 2, QSGGeometry::DrawLines);
+    setNodePoints(legNode, sectorLegLines, m_lineWidth);
+    setNodeColor(legNode, m_hazardColor);
+    QSGGeometryNode *arcOutline = flatNode(root, 3, QSGGeometry::DrawLines);
+    setNodePoints(arcOutline, sectorArcs, m_lineWidth * 1.5 + 4);
+    setNodeColor(arcOutline, m_hazardColor);
     // Aids in their charted colour (red, green, yellow; the rest in the aid colour).
     const QColor aidColours[4] = {m_aidColor, m_redAidColor, m_greenAidColor, m_yellowAidColor};
     for (int c = 0; c < 4; ++c) {
-        QSGGeometryNode *aidNode = flatNode(root, 2 + c, QSGGeometry::DrawLines);
+        QSGGeometryNode *aidNode = flatNode(root, 4 + c, QSGGeometry::DrawLines);
         setNodePoints(aidNode, aidsBy[c], m_lineWidth * 1.5);
         setNodeColor(aidNode, aidColours[c]);
     }

@@ -268,6 +268,17 @@ TestCase {
         verify(near(shot, at.x - 0.5 * r, at.y - 0.6 * r, Theme.chart.green) && near(shot, at.x, at.y - 0.6 * r, Theme.chart.green)
                && near(shot, at.x + 0.5 * r, at.y - 0.6 * r, Theme.chart.green), "a can buoy's flat top")
         verify(!near(shot, at.x, at.y - r, Theme.chart.green), "not a ring's (nor a nun's) top")
+        verify(!near(shot, at.x, at.y, Theme.chart.green), "one colour: the outline alone")
+        // An aid of several colours filled with its bands (COLPAT): South River Junction Buoy SR, a
+        // can green-red-green in horizontal bands: red across its middle, green round it.
+        m.centreAt(38.8943, -76.4312)
+        tryVerify(() => drawnIn(38.8942856, -76.4311711, Theme.chart.red), 5000, "the junction buoy's red band")
+        shot = grabImage(m)
+        at = m.screenPoint(38.8942856, -76.4311711)
+        verify(near(shot, at.x, at.y, Theme.chart.red), "its middle band red")
+        verify(near(shot, at.x, at.y - 0.6 * r, Theme.chart.green) && near(shot, at.x, at.y + 0.6 * r, Theme.chart.green), "green above and below")
+        if (Fixtures.environment("NEPTUS_KEEP_SHOTS") !== "")
+            shot.save(Fixtures.environment("NEPTUS_KEEP_SHOTS") + "/junction-buoy.png")
         m.centreAt(38.8983, -76.3375)
         tryVerify(() => drawnIn(38.8982947, -76.3375269, Theme.chart.red), 5000)
         shot = grabImage(m)
@@ -288,8 +299,39 @@ TestCase {
             const q = arcAt(direction)
             verify(near(shot, q.x, q.y, colour), "the arc at " + direction + "°: " + what)
         }
+        // As S-52 draws it: the arc over a dark outline, the legs dark (the chart's black).
+        const lw = findChild(m, "chart").lineWidth
+        const outside = Qt.point(at.x + (5 * r + 0.75 * lw + 2) * Math.sin(100 * Math.PI / 180), at.y - (5 * r + 0.75 * lw + 2) * Math.cos(100 * Math.PI / 180))
+        verify(near(shot, outside.x, outside.y, Theme.chart.hazard), "the arc's outline")
+        verify(near(shot, at.x + 6 * r * Math.sin(22 * Math.PI / 180), at.y - 6 * r * Math.cos(22 * Math.PI / 180), Theme.chart.hazard), "a leg")
         if (Fixtures.environment("NEPTUS_KEEP_SHOTS") !== "")
             shot.save(Fixtures.environment("NEPTUS_KEEP_SHOTS") + "/sector-light.png")
+        // Fairways' edges dashed (ChartItem: from each edge's start 60 local units on, 40 off; a unit
+        // is a pixel at zoom 16). Parish Creek Channel's west edge runs 195 units north to south: a
+        // line across it at 30 and 130 units, none at 80 and 180 (a line: a pixel that differs from
+        // the chart 4 pixels either side of it).
+        m.centreAt(38.84941, -76.50676)
+        const edgeFrom = m.screenPoint(38.8510337, -76.5068897), edgeTo = m.screenPoint(38.8477851, -76.5066255)
+        const edge = Qt.point(edgeTo.x - edgeFrom.x, edgeTo.y - edgeFrom.y), edgeLength = Math.hypot(edge.x, edge.y)
+        verify(Math.abs(edgeLength - 195) < 3, "the edge's length on screen: " + edgeLength)
+        const apart = (c, d) => Math.abs(c.r - d.r) + Math.abs(c.g - d.g) + Math.abs(c.b - d.b)
+        const lineAt = (image, units) => {
+            const x = edgeFrom.x + edge.x * units / edgeLength, y = edgeFrom.y + edge.y * units / edgeLength
+            const nx = -edge.y / edgeLength, ny = edge.x / edgeLength
+            const left = image.pixel(Math.round(x - 4 * nx), Math.round(y - 4 * ny)), right = image.pixel(Math.round(x + 4 * nx), Math.round(y + 4 * ny))
+            for (let k = -1; k <= 1; ++k) {
+                const c = image.pixel(Math.round(x + k * nx), Math.round(y + k * ny))
+                if (apart(c, left) > 0.25 && apart(c, right) > 0.25)
+                    return true
+            }
+            return false
+        }
+        tryVerify(() => lineAt(grabImage(m), 30), 5000, "a dash at 30 units")
+        shot = grabImage(m)
+        verify(lineAt(shot, 130), "a dash at 130 units")
+        verify(!lineAt(shot, 80) && !lineAt(shot, 180), "gaps at 80 and 180 units")
+        if (Fixtures.environment("NEPTUS_KEEP_SHOTS") !== "")
+            shot.save(Fixtures.environment("NEPTUS_KEEP_SHOTS") + "/fairway.png")
         // A zoom within half a level of the painted one (where a pinch or the wheel may leave it) is
         // shown scaled at first, and painted again at that zoom once the view rests.
         tryCompare(findChild(m, "chart"), "paintedZoom", 16, 5000)

@@ -210,6 +210,35 @@ TEST(Chart, AnAidIsDrawnInItsFirstChartedColour)
     EXPECT_EQ(colour(u"(red)"_s), AidColour::Other);
     EXPECT_EQ(drawnAs([] { Feature f = point(u"BOYLAT"_s, 0, 0); f.role = roleOf(f); return f; }()), Drawn::Buoy);
     EXPECT_EQ(aidColour(point(u"LIGHTS"_s, 0, 0, {{u"COLOUR"_s, u"(1:1)"_s}})), AidColour::Yellow) << "a white light: yellow, as S-52";
+    EXPECT_EQ(colour(u"(2:11,1)"_s), AidColour::Yellow) << "orange (a special purpose buoy's) is drawn yellow";
+    EXPECT_EQ(colourName(AidColour::Green), u"green"_s);
+    EXPECT_EQ(colourName(AidColour::Other), u"aid"_s);
+}
+
+// An aid of several colours in a pattern (S-57's COLPAT) is filled with its
+// bands, in COLOUR's order: a preferred channel buoy green-red-green in
+// horizontal bands, a safe water buoy red and white in vertical ones.
+TEST(Chart, AnAidOfSeveralColoursIsFilledWithItsBands)
+{
+    const auto bands = [](const QString &colours, const QString &pattern, const QString &objectClass = u"BOYLAT"_s) {
+        QMap<QString, QString> attributes{{u"COLOUR"_s, colours}};
+        if (!pattern.isNull())
+            attributes.insert(u"COLPAT"_s, pattern);
+        return aidBands(point(objectClass, 0, 0, attributes));
+    };
+    EXPECT_EQ(bands(u"(3:4,3,4)"_s, u"(1:1)"_s), (AidBands{ColourPattern::Horizontal, {AidColour::Green, AidColour::Red, AidColour::Green}}));
+    EXPECT_EQ(bands(u"(2:3,1)"_s, u"(1:2)"_s, u"BOYSAW"_s), (AidBands{ColourPattern::Vertical, {AidColour::Red, AidColour::Other}}));
+    EXPECT_EQ(bands(u"(2:2,6)"_s, u"3"_s)->pattern, ColourPattern::Diagonal);
+    EXPECT_EQ(bands(u"(2:1,3)"_s, u"(1:4)"_s)->pattern, ColourPattern::Squared);
+    EXPECT_EQ(bands(u"(2:1,11)"_s, u"(1:5)"_s), (AidBands{ColourPattern::Horizontal, {AidColour::Other, AidColour::Yellow}}))
+        << "stripes of unknown direction: drawn horizontal; orange: yellow";
+    EXPECT_FALSE(bands(u"(2:1,3)"_s, u"(1:6)"_s)) << "a border stripe: the outline alone";
+    EXPECT_FALSE(bands(u"(1:3)"_s, u"(1:1)"_s)) << "one colour: no bands";
+    EXPECT_FALSE(bands(u"(2:3,4)"_s, QString())) << "no pattern said";
+    EXPECT_FALSE(bands(u"(2:3,x)"_s, u"(1:1)"_s)) << "a colour that is no number";
+    EXPECT_FALSE(bands(u"(2:3,4)"_s, u"(1:9)"_s)) << "no such pattern";
+    EXPECT_FALSE(bands(u"(2:1,3)"_s, u"(1:1)"_s, u"LIGHTS"_s)) << "a light's colours are its sectors', not bands";
+    EXPECT_EQ(patternName(ColourPattern::Vertical), u"vertical"_s);
 }
 
 // A sector light's sector is drawn from the light: S-57's SECTR1 and SECTR2

@@ -115,6 +115,18 @@ TEST(S57, TheHelperReadsACellOnceAndTheCacheAnswersAfter)
     EXPECT_EQ(sectors, (std::vector<std::tuple<double, double, AidColour>>{{22, 191, AidColour::Yellow}, {191, 231.5, AidColour::Red},
                                                                           {231.5, 276.5, AidColour::Yellow}, {276.5, 22, AidColour::Red}}))
         << "white lights are drawn yellow, as S-52 draws them";
+    // Its aids of several colours (ogrinfo: COLPAT 1 on 1 BOYLAT, 16 BOYSPP and 4 BCNLAT, COLPAT 2 on
+    // 2 BOYSAW and 2 BCNSPP): filled with their bands; South River Junction Buoy SR green-red-green.
+    QMap<QString, int> banded;
+    for (const Feature &f : first->front().features)
+        if (const auto bands = aidBands(f)) {
+            ++banded[f.objectClass + u' ' + patternName(bands->pattern)];
+            if (f.name() == u"South River Junction Buoy SR"_s) {
+                EXPECT_EQ(bands->colours, (std::vector{AidColour::Green, AidColour::Red, AidColour::Green}));
+            }
+        }
+    EXPECT_EQ(banded, (QMap<QString, int>{{u"BCNLAT horizontal"_s, 4}, {u"BCNSPP vertical"_s, 2}, {u"BOYLAT horizontal"_s, 1},
+                                          {u"BOYSAW vertical"_s, 2}, {u"BOYSPP horizontal"_s, 16}}));
     bool fromCache = false;
     const auto again = loadCell(seen[0], options, &fromCache);
     ASSERT_TRUE(again) << again.error().toStdString();

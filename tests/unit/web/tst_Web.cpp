@@ -454,6 +454,13 @@ TEST_F(Server, DrawsTheConsolesChartLayer)
     }
     for (const char *shape : {"conical", "can", "pillar", "stake", "cross", "flare"})
         EXPECT_TRUE(shapes.contains(QLatin1StringView(shape))) << shape << ": " << shapes.values().join(u',').toStdString();
+    // Aids of several colours with their bands: South River Junction Buoy SR green-red-green, across.
+    QJsonObject junction;
+    for (const QJsonValue &m : chart.value(u"marks"_s).toArray())
+        if (m[u"name"_s].toString() == u"South River Junction Buoy SR"_s)
+            junction = m[u"bands"_s].toObject();
+    EXPECT_EQ(junction, (QJsonObject{{u"pattern"_s, u"horizontal"_s}, {u"colours"_s, QJsonArray{u"green"_s, u"red"_s, u"green"_s}}}))
+        << QJsonDocument(junction).toJson().toStdString();
     // The sector light off Kent Island: its four sectors, as directions from the light, in their colours.
     QStringList sectors;
     for (const QJsonValue &m : chart.value(u"marks"_s).toArray())
