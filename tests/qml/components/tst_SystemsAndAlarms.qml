@@ -151,7 +151,7 @@ TestCase {
         compare(view.itemAtIndex(1).objectName, "alarm-systems/b/Sonar")
         const below = findChild(list, "moreBelow")
         tryVerify(() => below.visible, 2000, "a cue says some are out of view")
-        verify(below.text.indexOf("1 more") >= 0, below.text)
+        verify(below.text.indexOf("2 more") >= 0, below.text + ": the third out of view, the second under the cue")
         verify(below.height >= Theme.touchTarget * 0.8 - 1)
         verify(!findChild(list, "moreAbove").visible)
         mouseClick(below)
@@ -185,5 +185,31 @@ TestCase {
         verify(hidden >= 1 && hidden < view.count, below.text)
         mouseClick(below)
         tryVerify(() => findChild(list, "moreAbove").visible, 2000, "scrolled on")
+    }
+
+    // A cue never covers a row it does not count: with the third of four rows
+    // nine tenths in view, the cue over it says two more, not one; a tap
+    // brings the third row wholly into view clear of the cue still there.
+    function test_aRowUnderTheCueIsCounted() {
+        const list = createTemporaryObject(smallSystems, test, { x: 500, y: 0, z: 100 })
+        const view = findChild(list, "systemsView")
+        for (let id = 60; id < 64; ++id) {
+            Fixtures.nameSystem(id, "many-" + id)
+            Fixtures.ingest("Heartbeat", id, {})
+        }
+        Fixtures.treeModel.sync()
+        tryVerify(() => view.count === 4 && view.itemAtIndex(0), 2000, "systems: " + view.count)
+        const row = view.itemAtIndex(0).height
+        list.height += row * 2.9 + view.spacing * 2 - view.height
+        tryVerify(() => Math.abs(view.height - (row * 2.9 + view.spacing * 2)) < 1)
+        const below = findChild(list, "moreBelow")
+        tryVerify(() => below.visible && below.text.indexOf("2 more") >= 0, 2000, "the row under the cue is counted: " + below.text)
+        const third = view.itemAtIndex(2)
+        verify(third.y + third.height > view.contentY + view.height - below.height, "and the cue is over it")
+        mouseClick(below)
+        tryVerify(() => findChild(list, "moreAbove").visible, 2000, "scrolled on")
+        const cueTop = below.visible ? below.height : 0
+        tryVerify(() => third.y + third.height <= view.contentY + view.height - cueTop + 0.5, 2000,
+                  "the third row clear of the cue: " + (third.y + third.height) + " > " + (view.contentY + view.height - cueTop))
     }
 }
