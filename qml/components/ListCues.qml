@@ -92,34 +92,17 @@ Item {
         function onCountChanged() { Qt.callLater(cues.recount) }
     }
 
-    component Cue: Rectangle {
-        id: cue
-        property string text
-        signal tapped()
-        anchors.horizontalCenter: parent.horizontalCenter
-        height: Theme.touchTarget
-        width: Math.min(cues.width, cueText.implicitWidth + Theme.spacing * 4)
-        radius: height / 2
-        color: Theme.accent
-        Text {
-            id: cueText
-            anchors.centerIn: parent
-            text: cue.text
-            color: Theme.background
-            font.pixelSize: Theme.smallFontPixelSize
-            font.bold: true
-        }
-        TapHandler { onTapped: cue.tapped() }
-    }
-    Cue {
+    ScrollCue {
         objectName: "moreAbove"
+        anchors.horizontalCenter: parent.horizontalCenter
         visible: cues.hiddenAbove > 0
         anchors.top: parent.top
         text: cues.list ? qsTr("▲ %n more", "", cues.hiddenAbove) : qsTr("▲ more")
         onTapped: cues.reveal(true)
     }
-    Cue {
+    ScrollCue {
         objectName: "moreBelow"
+        anchors.horizontalCenter: parent.horizontalCenter
         visible: cues.hiddenBelow > 0
         anchors.bottom: parent.bottom
         text: cues.list ? qsTr("▼ %n more", "", cues.hiddenBelow) : qsTr("▼ more")

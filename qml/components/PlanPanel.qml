@@ -420,24 +420,13 @@ Rectangle {
     }
     }
     // Said when part of it is out of view (Send and Stop may be): a tap shows the rest, or the top again.
-    Rectangle {
+    ScrollCue {
         objectName: "moreBelow"
         visible: upper.overflowing
         readonly property bool atEnd: upper.contentY + upper.height >= upper.contentHeight - 1
         anchors { horizontalCenter: upper.horizontalCenter; top: upper.bottom; topMargin: Theme.spacing / 2 }
-        height: Theme.touchTarget
-        width: Math.min(upper.width, moreText.implicitWidth + Theme.spacing * 4)
-        radius: height / 2
-        color: Theme.accent
-        Text {
-            id: moreText
-            anchors.centerIn: parent
-            text: parent.atEnd ? qsTr("▲ top") : qsTr("▼ more")
-            color: Theme.background
-            font.pixelSize: Theme.smallFontPixelSize
-            font.bold: true
-        }
-        TapHandler { onTapped: upper.contentY = parent.atEnd ? 0 : upper.contentHeight - upper.height }
+        text: atEnd ? qsTr("▲ top") : qsTr("▼ more")
+        onTapped: upper.contentY = atEnd ? 0 : upper.contentHeight - upper.height
     }
     Column {
         id: commands
