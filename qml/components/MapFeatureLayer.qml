@@ -30,43 +30,17 @@ Item {
     // Where each placed feature's name goes: 0 right of its glyph, 1 left, 2 above, 3 below,
     // then the four corners (upper right, lower right, upper left, lower left): the first
     // clear of the systems (avoid), of every glyph and of the names placed before it; -1 where
-    // none is clear (the name is left out, the glyph stays).
+    // none is clear (the name is left out, the glyph stays). Worked out again at every move
+    // of a system (NamePlacer, in C++); the names' widths only when the features change.
     FontMetrics { id: nameMetrics; font.pixelSize: Theme.smallFontPixelSize }
-    readonly property int namePlaceCount: 8
+    readonly property real nameGap: Theme.mm(3)
     function nameRect(at: point, place: int, w: real, h: real): rect {
-        const gap = Theme.mm(3), side = gap / 1.5
-        switch (place) {
-        case 0: return Qt.rect(at.x + gap, at.y - h / 2, w, h)
-        case 1: return Qt.rect(at.x - gap - w, at.y - h / 2, w, h)
-        case 2: return Qt.rect(at.x - w / 2, at.y - side - h, w, h)
-        case 3: return Qt.rect(at.x - w / 2, at.y + side, w, h)
-        case 4: return Qt.rect(at.x + side, at.y - side - h, w, h)
-        case 5: return Qt.rect(at.x + side, at.y + side, w, h)
-        case 6: return Qt.rect(at.x - side - w, at.y - side - h, w, h)
-        default: return Qt.rect(at.x - side - w, at.y + side, w, h)
-        }
+        return NamePlacer.nameRect(at, place, w, h, nameGap, nameGap / 1.5)
     }
-    readonly property var namePlaces: {
-        const overlaps = (r, a) => r.x < a.x + a.width && a.x < r.x + r.width && r.y < a.y + a.height && a.y < r.y + r.height
-        const at = placed.map(f => map.screenPoint(f.lat, f.lon))
-        const half = Theme.largeFontPixelSize / 2
-        const taken = avoid.concat(at.map(p => Qt.rect(p.x - half, p.y - half, 2 * half, 2 * half)))
-        const h = nameMetrics.height
-        return placed.map((f, i) => {
-            if (at[i].x < -width || at[i].y < -height || at[i].x > 2 * width || at[i].y > 2 * height)
-                return 0 // far out of view: not worked out
-            const w = nameMetrics.advanceWidth(nameOf(f))
-            const own = avoid.length + i // its own glyph: the places are around it already
-            for (let place = 0; place < namePlaceCount; ++place) {
-                const r = nameRect(at[i], place, w, h)
-                if (!taken.some((a, j) => j !== own && overlaps(r, a))) {
-                    taken.push(r)
-                    return place
-                }
-            }
-            return -1
-        })
-    }
+    readonly property var nameWidths: placed.map(f => nameMetrics.advanceWidth(nameOf(f)))
+    readonly property var glyphPoints: placed.map(f => map.screenPoint(f.lat, f.lon))
+    readonly property var namePlaces: NamePlacer.place(glyphPoints, nameWidths, nameMetrics.height, avoid, Theme.largeFontPixelSize / 2,
+                                                       nameGap, nameGap / 1.5, Qt.rect(-width, -height, 3 * width, 3 * height))
     readonly property var selectedFeature: shown.find(f => f.id === selected) || null
 
     function colourOf(f: var): color {

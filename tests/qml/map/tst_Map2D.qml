@@ -108,6 +108,37 @@ TestCase {
         layer.features = []
     }
 
+    // With many features (a grid of 120 marks, names longer than their spacing), every name
+    // placed is clear of the systems, of every glyph and of every other name; the rest are left out.
+    function test_1c_manyFeatureNamesNeverOverlap() {
+        const layer = findChild(map2d, "missionMap")
+        const features = []
+        for (let i = 0; i < 120; ++i) {
+            const at = map2d.toCoordinate(40 + (i % 12) * 60, 40 + Math.floor(i / 12) * 45)
+            features.push({ id: "f" + i, name: "Feature number " + i, kind: "mark", role: "", layer: "", color: "",
+                            lat: at.lat, lon: at.lon, points: [], outline: [] })
+        }
+        layer.features = features
+        tryCompare(layer.namePlaces, "length", 120)
+        const overlaps = (r, a) => r.x < a.x + a.width && a.x < r.x + r.width && r.y < a.y + a.height && a.y < r.y + r.height
+        const half = Theme.largeFontPixelSize / 2
+        const glyphs = layer.glyphPoints.map(p => Qt.rect(p.x - half, p.y - half, 2 * half, 2 * half))
+        const names = []
+        layer.namePlaces.forEach((place, i) => {
+            if (place >= 0)
+                names.push([i, layer.nameRect(layer.glyphPoints[i], place, layer.nameWidths[i], findChild(layer, "name").height)])
+        })
+        verify(names.length > 12 && names.length < 120, names.length + " names placed")
+        for (const [i, r] of names) {
+            for (const a of map2d.systemsCover)
+                verify(!overlaps(r, a), "name " + i + " clear of the systems")
+            glyphs.forEach((g, j) => verify(j === i || !overlaps(r, g), "name " + i + " clear of glyph " + j))
+            for (const [j, other] of names)
+                verify(j === i || !overlaps(r, other), "names " + i + " and " + j + " apart")
+        }
+        layer.features = []
+    }
+
     // Our projection against Qt Location's own, on a map with tiles (where
     // Qt Location draws them): overlays, trails and tiles must line up.
     function checkProjection(m, trail, what) {
