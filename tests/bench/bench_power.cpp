@@ -7,11 +7,15 @@
 // rest) and the frames it drew (the scene graph's own timing log).
 //
 //   bench_power [SECONDS=30] [--vehicles N=2] [--display-rate HZ] [--resting-rate HZ] [--idle]
+//   bench_power --startup [--starts N=5] [--vehicles N=2]
 //
 // Nobody touches the console here, so it rests (20 s after start) and shows
 // vehicles at its resting rate: the figure is a tablet on a boat nobody
 // touches. `--resting-rate 0` is a console in use (the display rate).
 // --idle: no vehicles at all (goal: no frames).
+// --startup: how long the console takes from its start to its first frame
+// on screen (the render loop's first "frame rendered" line), and its
+// resident memory then and 10 s later, over N starts (goal: ≤ 0.5 s, ≤ 200 MB).
 #include "Paths.h"
 
 #include <QCoreApplication>
@@ -51,6 +55,19 @@ std::map<QString, qint64> ticksByThread(qint64 pid)
         ticks[name] += fields.value(11).toLongLong() + fields.value(12).toLongLong();
     }
     return ticks;
+}
+
+// A process's resident memory, in MB: all of it (VmRSS), or its anonymous
+// part (RssAnon: heap, stacks, GL buffers) or its files' (RssFile: libraries).
+double residentMegabytes(qint64 pid, const QByteArray &which = "VmRSS")
+{
+    QFile status(u"/proc/%1/status"_s.arg(pid));
+    if (!status.open(QIODevice::ReadOnly))
+        return 0;
+    for (const QByteArray &line : status.readAll().split('\n'))
+        if (line.startsWith(which + ':'))
+            return line.mid(which.size() + 1).trimmed().split(' ').value(0).toDouble() / 1024;
+    return 0;
 }
 
 QString groupOf(const QString &thread)
@@ -113,9 +130,49 @@ int main(int argc, char **argv)
         arguments << u"--display-rate"_s << displayRate;
     if (!restingRate.isEmpty())
         arguments << u"--resting-rate"_s << restingRate;
-    QProcess console;
     QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
     env.insert(u"QT_LOGGING_RULES"_s, u"qt.scenegraph.time.renderloop=true"_s); // a line for every frame drawn
+    if (args.contains(u"--startup"_s)) {
+        const int starts = option(u"--starts"_s, u"5"_s).toInt();
+        std::vector<double> toFrame, rssAtFrame, rssLater;
+        for (int n = 0; n < starts; ++n) {
+            QProcess console;
+            console.setProcessEnvironment(env);
+            QElapsedTimer clock;
+            qint64 firstFrame = -1;
+            QObject::connect(&console, &QProcess::readyReadStandardError, [&] {
+                if (console.readAllStandardError().contains("frame rendered in") && firstFrame < 0) {
+                    firstFrame = clock.nsecsElapsed();
+                    rssAtFrame.push_back(residentMegabytes(console.processId()));
+                }
+            });
+            clock.start();
+            console.start(bin + u"/neptus"_s, arguments);
+            if (!QTest::qWaitFor([&] { return firstFrame >= 0; }, 30000)) {
+                std::fprintf(stderr, "bench_power: the console drew no frame in 30 s\n");
+                return 1;
+            }
+            toFrame.push_back(double(firstFrame) / 1e6);
+            QTest::qWait(10000);
+            rssLater.push_back(residentMegabytes(console.processId()));
+            const double anonymous = residentMegabytes(console.processId(), "RssAnon"), files = residentMegabytes(console.processId(), "RssFile");
+            console.terminate();
+            console.waitForFinished(5000);
+            std::printf("  start %d: first frame after %.0f ms, RSS %.1f MB then, %.1f MB 10 s later (%.1f anonymous, %.1f files)\n",
+                        n + 1, toFrame.back(), rssAtFrame.back(), rssLater.back(), anonymous, files);
+        }
+        const auto median = [](std::vector<double> v) { std::ranges::sort(v); return v[v.size() / 2]; };
+        std::printf("bench_power --startup: the default console at 1280x800 (software OpenGL), %d simulated vehicle%s, %d starts: "
+                    "first frame after %.0f ms (median; %.0f–%.0f), RSS %.1f MB then and %.1f MB 10 s later (medians)\n",
+                    vehicles, vehicles == 1 ? "" : "s", starts, median(toFrame), *std::ranges::min_element(toFrame),
+                    *std::ranges::max_element(toFrame), median(rssAtFrame), median(rssLater));
+        for (auto &sim : sims)
+            sim->terminate();
+        for (auto &sim : sims)
+            sim->waitForFinished(5000);
+        return 0;
+    }
+    QProcess console;
     console.setProcessEnvironment(env);
     qint64 frames = 0;
     bool counting = false;
@@ -139,12 +196,7 @@ int main(int argc, char **argv)
     const auto after = ticksByThread(console.processId());
     const double elapsed = clock.elapsed() / 1000.0;
     counting = false;
-    QFile status(u"/proc/%1/status"_s.arg(console.processId()));
-    status.open(QIODevice::ReadOnly);
-    QByteArray rss;
-    for (const QByteArray &line : status.readAll().split('\n'))
-        if (line.startsWith("VmRSS"))
-            rss = line;
+    const double rss = residentMegabytes(console.processId());
 
     std::map<QString, double> groups;
     double total = 0;
@@ -160,8 +212,7 @@ int main(int argc, char **argv)
                 vehicles, vehicles == 1 ? "" : "s", displayRate.isEmpty() ? "default" : qPrintable(displayRate),
                 rests ? qPrintable(u"resting (rate %1)"_s.arg(restingRate.isEmpty() ? u"default"_s : restingRate)) : "in use",
                 elapsed);
-    std::printf("  CPU: %.1f %% of one core; %.1f frames a second; %s\n", 100 * total / elapsed, double(frames) / elapsed,
-                rss.simplified().constData());
+    std::printf("  CPU: %.1f %% of one core; %.1f frames a second; RSS %.1f MB\n", 100 * total / elapsed, double(frames) / elapsed, rss);
     for (const auto &[group, used] : groups)
         std::printf("    %-40s %5.1f %%\n", qPrintable(group), 100 * used / elapsed);
     console.terminate();
