@@ -159,7 +159,7 @@ function chartSymbol(mark, colours) {
   const side = mark.sector ? 80 : 24;
   const stroke = (d, colour, width) => '<path d="' + d + '" fill="none" stroke="' + colour + '" stroke-width="' + width + '"/>';
   let sector = '';
-  if (mark.sector) { // the legs in the chart's black, the arc in the light's colour over a dark outline
+  if (mark.sector) { // the legs in the chart's black (the hazards' colour), the arc in the light's colour over an outline in it
     const paths = sectorPaths(mark.sector);
     sector = stroke(paths.legs, colours.hazard, 1.2) + stroke(paths.arc, colours.hazard, 5.8) + stroke(paths.arc, c, 1.8);
   }

@@ -377,19 +377,24 @@ Drawn drawnAs(const Feature &f)
 
 namespace {
 
-// COLOUR's S-57 colour codes: GDAL writes a list attribute as "(count:a,b,...)"; a plain "3" is taken too.
-std::vector<int> colourCodes(const Feature &f)
+// COLOUR's S-57 colour codes, up to the first that is no number: GDAL writes a
+// list attribute as "(count:a,b,...)"; a plain "3" is taken too. `whole` says
+// whether all of them were numbers.
+std::vector<int> colourCodes(const Feature &f, bool *whole = nullptr)
 {
     QString text = f.attributes.value(u"COLOUR"_s).trimmed();
     if (text.startsWith(u'(') && text.endsWith(u')'))
         text = text.mid(1, text.size() - 2).section(u':', -1);
     std::vector<int> codes;
+    bool ok = true;
     for (const QString &part : text.split(u',', Qt::SkipEmptyParts)) {
-        bool ok = false;
-        codes.push_back(part.trimmed().toInt(&ok));
+        const int code = part.trimmed().toInt(&ok);
         if (!ok)
-            return {};
+            break;
+        codes.push_back(code);
     }
+    if (whole)
+        *whole = ok;
     return codes;
 }
 
@@ -414,7 +419,7 @@ AidColour aidColour(const Feature &f)
 
 std::optional<AidBands> aidBands(const Feature &f)
 {
-    if (f.objectClass == u"LIGHTS")
+    if (!f.objectClass.startsWith(u"BOY"_s) && !f.objectClass.startsWith(u"BCN"_s)) // buoys and beacons only
         return std::nullopt;
     QString pattern = f.attributes.value(u"COLPAT"_s).trimmed(); // (a list too; the first is taken)
     if (pattern.startsWith(u'(') && pattern.endsWith(u')'))
@@ -424,8 +429,9 @@ std::optional<AidBands> aidBands(const Feature &f)
                                                                 ColourPattern::Diagonal, ColourPattern::Squared,
                                                                 ColourPattern::Horizontal, std::nullopt};
     const int code = pattern.section(u',', 0, 0).trimmed().toInt();
-    const std::vector<int> codes = colourCodes(f);
-    if (code <= 0 || code >= int(std::size(patterns)) || !patterns[code] || codes.size() < 2)
+    bool whole = false;
+    const std::vector<int> codes = colourCodes(f, &whole);
+    if (code <= 0 || code >= int(std::size(patterns)) || !patterns[code] || codes.size() < 2 || !whole)
         return std::nullopt;
     AidBands bands{*patterns[code], {}};
     for (const int c : codes)

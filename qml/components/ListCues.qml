@@ -36,7 +36,7 @@ Item {
         const shown = Math.min(item.y + item.height, to) - Math.max(item.y, from)
         if (shown >= item.height * 0.75)
             return false
-        return above ? item.y < from : item.y + item.height > to
+        return above ? item.y < from : item.y + item.height > to && item.y >= from // (a row over both ends: above)
     }
     function count(above, top, bottom) {
         if (!list) // a pane: whether any of it is out of view that way (a few pixels do not count)

@@ -38,8 +38,9 @@ Item {
         return NamePlacer.nameRect(at, place, w, h, nameGap, nameGap / 1.5)
     }
     readonly property var nameWidths: placed.map(f => nameMetrics.advanceWidth(nameOf(f)))
+    readonly property real nameHeight: nameMetrics.height
     readonly property var glyphPoints: placed.map(f => map.screenPoint(f.lat, f.lon))
-    readonly property var namePlaces: NamePlacer.place(glyphPoints, nameWidths, nameMetrics.height, avoid, Theme.largeFontPixelSize / 2,
+    readonly property var namePlaces: NamePlacer.place(glyphPoints, nameWidths, nameHeight, avoid, Theme.largeFontPixelSize / 2,
                                                        nameGap, nameGap / 1.5, Qt.rect(-width, -height, 3 * width, 3 * height))
     readonly property var selectedFeature: shown.find(f => f.id === selected) || null
 

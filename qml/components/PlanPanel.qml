@@ -425,6 +425,7 @@ Rectangle {
         visible: upper.overflowing
         readonly property bool atEnd: upper.contentY + upper.height >= upper.contentHeight - 1
         anchors { horizontalCenter: upper.horizontalCenter; top: upper.bottom; topMargin: Theme.spacing / 2 }
+        maxWidth: upper.width
         text: atEnd ? qsTr("▲ top") : qsTr("▼ more")
         onTapped: upper.contentY = atEnd ? 0 : upper.contentHeight - upper.height
     }

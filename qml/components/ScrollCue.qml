@@ -5,9 +5,11 @@ import QtQuick
 Rectangle {
     id: cue
     property string text
+    // At most as wide as what it is over.
+    property real maxWidth: parent ? parent.width : 0
     signal tapped()
     height: Theme.touchTarget
-    width: Math.min(parent ? parent.width : implicitWidth, cueText.implicitWidth + Theme.spacing * 4)
+    width: Math.min(maxWidth, cueText.implicitWidth + Theme.spacing * 4)
     radius: height / 2
     color: Theme.accent
     Text {

@@ -133,7 +133,7 @@ int main(int argc, char **argv)
     QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
     env.insert(u"QT_LOGGING_RULES"_s, u"qt.scenegraph.time.renderloop=true"_s); // a line for every frame drawn
     if (args.contains(u"--startup"_s)) {
-        const int starts = option(u"--starts"_s, u"5"_s).toInt();
+        const int starts = std::max(1, option(u"--starts"_s, u"5"_s).toInt());
         std::vector<double> toFrame, rssAtFrame, rssLater;
         for (int n = 0; n < starts; ++n) {
             QProcess console;

@@ -266,8 +266,9 @@ TEST(WebPage, TheConsolesChartIsDrawnAsItsMapDrawsIt)
     // An aid of several colours filled with its bands, as on the console's map: Queen Ann County
     // Obstruction Buoy A, white over orange (drawn in the aid colour over yellow).
     EXPECT_EQ(browser.evaluate(u"(() => { const e = [...document.querySelectorAll('.chart-mark')].find(e => /Obstruction Buoy A/.test(e.title));"
-                               " return e ? [...e.querySelectorAll('g[clip-path] rect')].map(r => r.getAttribute('fill')).join(' ') : 'none' })()"_s).toString(),
-              browser.evaluate(u"cssColour('aid') + ' ' + cssColour('yellow')"_s).toString());
+                               " if (!e) return 'none'; const r = [...e.querySelectorAll('g[clip-path] rect')];"
+                               " return r.map(r => r.getAttribute('fill')).join(' ') + (r.length === 2 && +r[0].getAttribute('y') < +r[1].getAttribute('y') ? ', top first' : ', not top first') })()"_s).toString(),
+              browser.evaluate(u"cssColour('aid') + ' ' + cssColour('yellow') + ', top first'"_s).toString());
     QTest::qWait(500);
     EXPECT_TRUE(browser.screenshot(shots + u"/web-chart-harbour-1280x800.png"_s));
 

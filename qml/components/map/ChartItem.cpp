@@ -48,7 +48,8 @@ constexpr double localZoom = 16;
 // A sector light's sector, as S-52 draws it: its two legs from the light (in
 // `legs`) and the arc between them (in `arc`), the same size at every zoom
 // (`r` the symbols' size; `bearing` the map's turn), as pairs of end points.
-// The arc is drawn in the light's colour over a dark outline, the legs dark.
+// The arc is drawn in the light's colour over an outline in the chart's black
+// (S-52's CHBLK: the hazards' colour, light at dusk), the legs in it too.
 constexpr double sectorArc = 5, sectorLegs = 7;
 void appendSector(std::vector<QPointF> &legs, std::vector<QPointF> &arc, LightSector sector, QPointF p, double r, double bearing)
 {
@@ -157,7 +158,10 @@ void appendBands(std::array<std::vector<QPointF>, 4> &linesBy, const std::vector
         last = std::max(last, dot(q - p, across));
     }
     const std::size_t n = bands.colours.size();
-    for (double t = first + step; t < last - step / 2; t += step) {
+    // (Wide lines are as wide as asked across x or y, whichever is the lesser: a diagonal one is
+    // thinner across itself by √2, so diagonal lines are drawn closer.)
+    const double apart = bands.pattern == ColourPattern::Diagonal ? step / std::numbers::sqrt2 : step;
+    for (double t = first + step; t < last - step / 2; t += apart) {
         double from = INFINITY, to = -INFINITY; // where the line meets the outline (the shapes are convex enough)
         for (std::size_t i = 0; i + 1 < outline.size(); i += 2) {
             const double da = dot(outline[i] - p, across) - t, db = dot(outline[i + 1] - p, across) - t;
@@ -174,10 +178,10 @@ void appendBands(std::array<std::vector<QPointF>, 4> &linesBy, const std::vector
             auto &lines = linesBy[int(bands.colours[band % n])];
             lines.insert(lines.end(), {at + along * a, at + along * b});
         };
-        if (bands.pattern == ColourPattern::Squared) { // quarters: the upper left and lower right in the first colour
+        if (bands.pattern == ColourPattern::Squared) { // quarters: the upper left and lower right in the first colour, the others in the second
             const std::size_t row = t < (first + last) / 2 ? 0 : 1;
-            add(row, from + step / 2, (from + to) / 2);
-            add(row + 1, (from + to) / 2, to - step / 2);
+            add(row % 2, from + step / 2, (from + to) / 2);
+            add((row + 1) % 2, (from + to) / 2, to - step / 2);
         } else {
             add(std::min(n - 1, std::size_t((t - first) / (last - first) * double(n))), from + step / 2, to - step / 2);
         }
@@ -694,7 +698,7 @@ QSGNode *ChartItem::updatePaintNode(QSGNode *old, UpdatePaintNodeData *)
     QSGGeometryNode *hazardNode = flatNode(root, 1, QSGGeometry::DrawLines);
     setNodePoints(hazardNode, hazards, m_lineWidth * 1.5);
     setNodeColor(hazardNode, m_hazardColor);
-    // Light sectors' legs, and their arcs' dark outline under the arcs' colours (the chart's black: the hazards' colour).
+    // Light sectors' legs, and their arcs' outline under the arcs' colours, in the chart's black (the hazards' colour).
     QSGGeometryNode *legNode = flatNode(root, 2, QSGGeometry::DrawLines);
     setNodePoints(legNode, sectorLegLines, m_lineWidth);
     setNodeColor(legNode, m_hazardColor);

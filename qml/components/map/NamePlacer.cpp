@@ -27,8 +27,11 @@ class Taken
 public:
     explicit Taken(const QRectF &region) : m_region(region)
     {
-        m_columns = std::max(1, int(std::ceil(region.width() / cell)));
-        m_rows = std::max(1, int(std::ceil(region.height() / cell)));
+        // 64-pixel cells, at most 128 a side (a region of any size, or none, costs a bounded grid).
+        const qreal longest = std::max(region.width(), region.height());
+        m_cell = std::isfinite(longest) ? std::max<qreal>(64, longest / 128) : 64;
+        m_columns = index(region.width() / m_cell, 127) + 1;
+        m_rows = index(region.height() / m_cell, 127) + 1;
         m_cells.resize(std::size_t(m_columns * m_rows));
     }
     void add(const QRectF &r)
@@ -55,7 +58,8 @@ public:
     }
 
 private:
-    static constexpr qreal cell = 64;
+    // A cell's index from a position in cells, within 0…last (not a number: 0).
+    static int index(qreal cells, int last) { return cells >= 0 ? int(std::min<qreal>(cells, last)) : 0; }
     struct Span
     {
         int c0, c1, r0, r1;
@@ -63,11 +67,12 @@ private:
     // The cells `r` touches.
     Span span(const QRectF &r) const
     {
-        const auto column = [&](qreal x) { return std::clamp(int(std::floor((x - m_region.x()) / cell)), 0, m_columns - 1); };
-        const auto row = [&](qreal y) { return std::clamp(int(std::floor((y - m_region.y()) / cell)), 0, m_rows - 1); };
+        const auto column = [&](qreal x) { return index((x - m_region.x()) / m_cell, m_columns - 1); };
+        const auto row = [&](qreal y) { return index((y - m_region.y()) / m_cell, m_rows - 1); };
         return {column(r.left()), column(r.right()), row(r.top()), row(r.bottom())};
     }
     QRectF m_region;
+    qreal m_cell = 64;
     int m_columns = 1, m_rows = 1;
     std::vector<std::vector<int>> m_cells;
     std::vector<QRectF> m_rects;
@@ -79,14 +84,15 @@ QList<int> NamePlacer::place(const QList<QPointF> &glyphs, const QList<qreal> &w
                              qreal glyphHalf, qreal gap, qreal side, const QRectF &within) const
 {
     Taken taken(within);
+    const auto finite = [](QPointF p) { return std::isfinite(p.x()) && std::isfinite(p.y()); };
     for (const QRectF &r : avoid)
-        taken.add(r);
+        taken.add(r.normalized());
     for (const QPointF &p : glyphs)
-        taken.add({p.x() - glyphHalf, p.y() - glyphHalf, 2 * glyphHalf, 2 * glyphHalf});
+        taken.add(finite(p) ? QRectF(p.x() - glyphHalf, p.y() - glyphHalf, 2 * glyphHalf, 2 * glyphHalf) : QRectF()); // (keeps the numbering)
     QList<int> places;
     places.reserve(glyphs.size());
     for (qsizetype i = 0; i < glyphs.size(); ++i) {
-        if (!within.contains(glyphs[i])) {
+        if (!finite(glyphs[i]) || !within.contains(glyphs[i])) {
             places.append(0); // far out of view: not worked out
             continue;
         }

@@ -108,27 +108,50 @@ TestCase {
         layer.features = []
     }
 
-    // With many features (a grid of 120 marks, names longer than their spacing), every name
-    // placed is clear of the systems, of every glyph and of every other name; the rest are left out.
+    // With many features (a grid of 120 marks, names longer than their spacing, a few far out
+    // of view or on the grid's cell edges), the names go where placing them one by one against
+    // every rectangle puts them (the rule as it was written first, in JavaScript, kept here as
+    // the reference), and every name placed is clear of the systems, every glyph and every other.
     function test_1c_manyFeatureNamesNeverOverlap() {
         const layer = findChild(map2d, "missionMap")
         const features = []
-        for (let i = 0; i < 120; ++i) {
-            const at = map2d.toCoordinate(40 + (i % 12) * 60, 40 + Math.floor(i / 12) * 45)
-            features.push({ id: "f" + i, name: "Feature number " + i, kind: "mark", role: "", layer: "", color: "",
-                            lat: at.lat, lon: at.lon, points: [], outline: [] })
+        const add = (x, y) => {
+            const at = map2d.toCoordinate(x, y)
+            features.push({ id: "f" + features.length, name: "Feature number " + features.length, kind: "mark", role: "", layer: "",
+                            color: "", lat: at.lat, lon: at.lon, points: [], outline: [] })
         }
+        for (let i = 0; i < 120; ++i)
+            add(40 + (i % 12) * 60, 40 + Math.floor(i / 12) * 45)
+        for (const [x, y] of [[-500, 300], [3000, 200], [-map2d.width, 0], [64, 128], [128, 64], [map2d.width - 2, map2d.height - 2]])
+            add(x, y)
         layer.features = features
-        tryCompare(layer.namePlaces, "length", 120)
+        tryCompare(layer.namePlaces, "length", features.length)
         const overlaps = (r, a) => r.x < a.x + a.width && a.x < r.x + r.width && r.y < a.y + a.height && a.y < r.y + r.height
+        const gap = Theme.mm(3), side = gap / 1.5, h = layer.nameHeight
+        const rectAt = (p, place, w) => [Qt.rect(p.x + gap, p.y - h / 2, w, h), Qt.rect(p.x - gap - w, p.y - h / 2, w, h),
+                                         Qt.rect(p.x - w / 2, p.y - side - h, w, h), Qt.rect(p.x - w / 2, p.y + side, w, h),
+                                         Qt.rect(p.x + side, p.y - side - h, w, h), Qt.rect(p.x + side, p.y + side, w, h),
+                                         Qt.rect(p.x - side - w, p.y - side - h, w, h), Qt.rect(p.x - side - w, p.y + side, w, h)][place]
         const half = Theme.largeFontPixelSize / 2
-        const glyphs = layer.glyphPoints.map(p => Qt.rect(p.x - half, p.y - half, 2 * half, 2 * half))
-        const names = []
-        layer.namePlaces.forEach((place, i) => {
-            if (place >= 0)
-                names.push([i, layer.nameRect(layer.glyphPoints[i], place, layer.nameWidths[i], findChild(layer, "name").height)])
+        const at = layer.glyphPoints
+        const glyphs = at.map(p => Qt.rect(p.x - half, p.y - half, 2 * half, 2 * half))
+        const taken = layer.avoid.concat(glyphs)
+        const reference = at.map((p, i) => {
+            if (p.x < -layer.width || p.y < -layer.height || p.x > 2 * layer.width || p.y > 2 * layer.height)
+                return 0
+            for (let place = 0; place < 8; ++place) {
+                const r = rectAt(p, place, layer.nameWidths[i])
+                if (!taken.some((a, j) => j !== layer.avoid.length + i && overlaps(r, a))) {
+                    taken.push(r)
+                    return place
+                }
+            }
+            return -1
         })
-        verify(names.length > 12 && names.length < 120, names.length + " names placed")
+        compare(JSON.stringify(layer.namePlaces), JSON.stringify(reference))
+        const names = []
+        layer.namePlaces.forEach((place, i) => { if (place >= 0 && i < 120) names.push([i, rectAt(at[i], place, layer.nameWidths[i])]) })
+        verify(names.length > 20 && names.length < 120, names.length + " names placed")
         for (const [i, r] of names) {
             for (const a of map2d.systemsCover)
                 verify(!overlaps(r, a), "name " + i + " clear of the systems")
@@ -307,7 +330,15 @@ TestCase {
         shot = grabImage(m)
         at = m.screenPoint(38.8942856, -76.4311711)
         verify(near(shot, at.x, at.y, Theme.chart.red), "its middle band red")
-        verify(near(shot, at.x, at.y - 0.6 * r, Theme.chart.green) && near(shot, at.x, at.y + 0.6 * r, Theme.chart.green), "green above and below")
+        verify(near(shot, at.x, at.y - 0.35 * r, Theme.chart.green) && near(shot, at.x, at.y + 0.35 * r, Theme.chart.green),
+               "green bands above and below")
+        // In COLOUR's order, top first: Queen Ann County Obstruction Buoy A, a pillar, white (the
+        // aid colour) over orange (yellow).
+        m.centreAt(38.9884, -76.3406)
+        tryVerify(() => drawnIn(38.988434, -76.340611, Theme.chart.yellow), 5000, "the obstruction buoy's yellow band")
+        const pillar = grabImage(m), base = m.screenPoint(38.988434, -76.340611)
+        verify(near(pillar, base.x, base.y + 0.2 * r, Theme.chart.yellow), "yellow below")
+        verify(!near(pillar, base.x, base.y - 0.8 * r, Theme.chart.yellow), "and not above")
         if (Fixtures.environment("NEPTUS_KEEP_SHOTS") !== "")
             shot.save(Fixtures.environment("NEPTUS_KEEP_SHOTS") + "/junction-buoy.png")
         m.centreAt(38.8983, -76.3375)
@@ -332,7 +363,7 @@ TestCase {
         }
         // As S-52 draws it: the arc over a dark outline, the legs dark (the chart's black).
         const lw = findChild(m, "chart").lineWidth
-        const outside = Qt.point(at.x + (5 * r + 0.75 * lw + 2) * Math.sin(100 * Math.PI / 180), at.y - (5 * r + 0.75 * lw + 2) * Math.cos(100 * Math.PI / 180))
+        const outside = Qt.point(at.x + (5 * r + 0.75 * lw + 1) * Math.sin(100 * Math.PI / 180), at.y - (5 * r + 0.75 * lw + 1) * Math.cos(100 * Math.PI / 180))
         verify(near(shot, outside.x, outside.y, Theme.chart.hazard), "the arc's outline")
         verify(near(shot, at.x + 6 * r * Math.sin(22 * Math.PI / 180), at.y - 6 * r * Math.cos(22 * Math.PI / 180), Theme.chart.hazard), "a leg")
         if (Fixtures.environment("NEPTUS_KEEP_SHOTS") !== "")

@@ -208,6 +208,7 @@ TEST(Chart, AnAidIsDrawnInItsFirstChartedColour)
     EXPECT_EQ(colour(u"(1:2)"_s), AidColour::Other);
     EXPECT_EQ(colour(QString()), AidColour::Other);
     EXPECT_EQ(colour(u"(red)"_s), AidColour::Other);
+    EXPECT_EQ(colour(u"(2:3,x)"_s), AidColour::Red) << "the first colour, whatever follows";
     EXPECT_EQ(drawnAs([] { Feature f = point(u"BOYLAT"_s, 0, 0); f.role = roleOf(f); return f; }()), Drawn::Buoy);
     EXPECT_EQ(aidColour(point(u"LIGHTS"_s, 0, 0, {{u"COLOUR"_s, u"(1:1)"_s}})), AidColour::Yellow) << "a white light: yellow, as S-52";
     EXPECT_EQ(colour(u"(2:11,1)"_s), AidColour::Yellow) << "orange (a special purpose buoy's) is drawn yellow";
@@ -238,6 +239,8 @@ TEST(Chart, AnAidOfSeveralColoursIsFilledWithItsBands)
     EXPECT_FALSE(bands(u"(2:3,x)"_s, u"(1:1)"_s)) << "a colour that is no number";
     EXPECT_FALSE(bands(u"(2:3,4)"_s, u"(1:9)"_s)) << "no such pattern";
     EXPECT_FALSE(bands(u"(2:1,3)"_s, u"(1:1)"_s, u"LIGHTS"_s)) << "a light's colours are its sectors', not bands";
+    EXPECT_FALSE(bands(u"(2:2,3)"_s, u"(1:1)"_s, u"WRECKS"_s)) << "buoys and beacons only";
+    EXPECT_TRUE(bands(u"(3:2,6,2)"_s, u"(1:1)"_s, u"BCNCAR"_s));
     EXPECT_EQ(patternName(ColourPattern::Vertical), u"vertical"_s);
 }
 
