@@ -162,7 +162,7 @@ public:
                 return fail(Kind::LengthPastEnd, &f,
                             QStringLiteral("length prefix says %1 bytes, %2 are left").arg(length).arg(m_end - m_p),
                             lengthAt);
-            CodecAccess::byteStrings(message)[static_cast<size_t>(field.storage)] =
+            CodecAccess::byteStrings(message)[field.storage] =
                 QByteArray(reinterpret_cast<const char *>(m_p), length);
             m_p += length;
             break;
@@ -170,7 +170,7 @@ public:
         case FieldType::Message: {
             if (!need(2, &f, field))
                 return false;
-            auto &list = CodecAccess::lists(message)[static_cast<size_t>(field.storage)];
+            auto &list = CodecAccess::lists(message)[field.storage];
             list.clear();
             const uchar *idAt = m_p;
             const quint16 id = load<quint16>();
@@ -191,7 +191,7 @@ public:
                 return fail(Kind::ListTooLong, &f,
                             QStringLiteral("count %1 cannot fit in the %2 bytes left").arg(n).arg(m_end - m_p),
                             countAt);
-            auto &list = CodecAccess::lists(message)[static_cast<size_t>(field.storage)];
+            auto &list = CodecAccess::lists(message)[field.storage];
             list.clear();
             list.reserve(n);
             for (int k = 0; k < n; ++k) {
@@ -316,12 +316,12 @@ public:
             const FieldDef &field = def.fields[i];
             frame.field = static_cast<int>(i);
             if (field.type == FieldType::RawData || field.type == FieldType::PlainText) {
-                const qsizetype length = CodecAccess::byteStrings(message)[static_cast<size_t>(field.storage)].size();
+                const qsizetype length = CodecAccess::byteStrings(message)[field.storage].size();
                 if (length > 0xFFFF)
                     return fail(Kind::TooLarge, &frame, QStringLiteral("%1 bytes; at most 65535 fit").arg(length));
                 size += 2 + length;
             } else if (field.type == FieldType::Message || field.type == FieldType::MessageList) {
-                const auto &list = CodecAccess::lists(message)[static_cast<size_t>(field.storage)];
+                const auto &list = CodecAccess::lists(message)[field.storage];
                 if (field.type == FieldType::Message && list.size() > 1)
                     return fail(Kind::TooLarge, &frame, QStringLiteral("a message field holds one message, not %1").arg(list.size()));
                 if (list.size() > 0xFFFF)

@@ -10,10 +10,10 @@ struct CodecAccess
 {
     static quint64 *scalars(Message &m) { return m.m_slots.data(); }
     static const quint64 *scalars(const Message &m) { return m.m_slots.data(); }
-    static std::vector<QByteArray> &byteStrings(Message &m) { return m.m_byteStrings; }
-    static const std::vector<QByteArray> &byteStrings(const Message &m) { return m.m_byteStrings; }
-    static std::vector<std::vector<Message>> &lists(Message &m) { return m.m_lists; }
-    static const std::vector<std::vector<Message>> &lists(const Message &m) { return m.m_lists; }
+    static QVarLengthArray<QByteArray, 2> &byteStrings(Message &m) { return m.m_byteStrings; }
+    static const QVarLengthArray<QByteArray, 2> &byteStrings(const Message &m) { return m.m_byteStrings; }
+    static QVarLengthArray<std::vector<Message>, 1> &lists(Message &m) { return m.m_lists; }
+    static const QVarLengthArray<std::vector<Message>, 1> &lists(const Message &m) { return m.m_lists; }
 };
 
 } // namespace neptus::msg

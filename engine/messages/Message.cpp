@@ -33,8 +33,10 @@ Message::Message(const MessageDef *def)
         return;
     m_slots.resize(static_cast<qsizetype>(def->fields.size()) - def->byteStringCount - def->messageListCount);
     std::fill(m_slots.begin(), m_slots.end(), 0);
-    m_byteStrings.resize(static_cast<size_t>(def->byteStringCount));
-    m_lists.resize(static_cast<size_t>(def->messageListCount));
+    if (def->byteStringCount > 0)
+        m_byteStrings.resize(def->byteStringCount);
+    if (def->messageListCount > 0)
+        m_lists.resize(def->messageListCount);
 }
 
 Message Message::opaque(quint16 id, QByteArray payload)
@@ -85,7 +87,7 @@ const QByteArray &Message::bytes(int index) const
     const FieldDef &f = field(index);
     if (f.type != FieldType::PlainText && f.type != FieldType::RawData)
         return emptyBytes;
-    return m_byteStrings[static_cast<size_t>(f.storage)];
+    return m_byteStrings[f.storage];
 }
 
 const Message *Message::inlineMessage(int index) const
@@ -99,7 +101,7 @@ std::span<const Message> Message::messages(int index) const
     const FieldDef &f = field(index);
     if (f.type != FieldType::Message && f.type != FieldType::MessageList)
         return {};
-    return m_lists[static_cast<size_t>(f.storage)];
+    return m_lists[f.storage];
 }
 
 QVariant Message::value(int index) const

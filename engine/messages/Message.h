@@ -84,8 +84,8 @@ public:
     // sign- or zero-extended, fp32 and fp64 as their IEEE bit patterns).
     quint64 rawSlot(int index) const { return m_slots[field(index).storage]; }
     void setRawSlot(int index, quint64 bits) { m_slots[field(index).storage] = bits; }
-    QByteArray &byteString(int index) { return m_byteStrings[static_cast<size_t>(field(index).storage)]; }
-    std::vector<Message> &messageList(int index) { return m_lists[static_cast<size_t>(field(index).storage)]; }
+    QByteArray &byteString(int index) { return m_byteStrings[field(index).storage]; }
+    std::vector<Message> &messageList(int index) { return m_lists[field(index).storage]; }
 
     friend bool operator==(const Message &a, const Message &b);
 
@@ -94,10 +94,12 @@ private:
     const MessageDef *m_def = nullptr;
     quint16 m_opaqueId = 0;
     // Inline room for the scalars of most messages: decoding EstimatedState
-    // (20 scalars) allocates nothing.
+    // (20 scalars) allocates nothing. Likewise two byte strings and one
+    // message list: a plan's Gotos, maneuvers and transitions (one or two
+    // strings, a list) need no allocation of their own for them.
     QVarLengthArray<quint64, 24> m_slots;
-    std::vector<QByteArray> m_byteStrings;
-    std::vector<std::vector<Message>> m_lists;
+    QVarLengthArray<QByteArray, 2> m_byteStrings;
+    QVarLengthArray<std::vector<Message>, 1> m_lists;
     QByteArray m_opaque;
 };
 
