@@ -220,8 +220,8 @@ std::expected<QSqlDatabase, QString> connectTo(const Location &location, const Q
         // Each connection's page cache (the writer's and the readers') is
         // capped at 512 KiB (SQLite's default is 2 MiB): a console writes for
         // hours and reads little, and the operating system caches the file
-        // anyway. The cap keeps a long watch's memory flatter (BENCHMARKS.md,
-        // "The console over hours").
+        // anyway. (Not what grows in a long watch: BENCHMARKS.md, "The
+        // console over hours".)
         for (const QString &pragma :
              {u"PRAGMA journal_mode=WAL"_s, u"PRAGMA synchronous=NORMAL"_s, u"PRAGMA cache_size=-512"_s})
             if (auto done = exec(db, pragma); !done)
