@@ -377,12 +377,12 @@ Drawn drawnAs(const Feature &f)
 
 namespace {
 
-// COLOUR's S-57 colour codes, up to the first that is no number: GDAL writes a
-// list attribute as "(count:a,b,...)"; a plain "3" is taken too. `whole` says
-// whether all of them were numbers.
-std::vector<int> colourCodes(const Feature &f, bool *whole = nullptr)
+// A list attribute's S-57 codes (COLOUR, COLPAT), up to the first that is no
+// number: GDAL writes a list as "(count:a,b,...)"; a plain "3" is taken too.
+// `whole` says whether all of them were numbers.
+std::vector<int> listCodes(const Feature &f, const QString &attribute, bool *whole = nullptr)
 {
-    QString text = f.attributes.value(u"COLOUR"_s).trimmed();
+    QString text = f.attributes.value(attribute).trimmed();
     if (text.startsWith(u'(') && text.endsWith(u')'))
         text = text.mid(1, text.size() - 2).section(u':', -1);
     std::vector<int> codes;
@@ -413,7 +413,7 @@ AidColour colourOf(int code, bool light)
 
 AidColour aidColour(const Feature &f)
 {
-    const std::vector<int> codes = colourCodes(f);
+    const std::vector<int> codes = listCodes(f, u"COLOUR"_s);
     return codes.empty() ? AidColour::Other : colourOf(codes.front(), f.objectClass == u"LIGHTS");
 }
 
@@ -421,16 +421,15 @@ std::optional<AidBands> aidBands(const Feature &f)
 {
     if (!f.objectClass.startsWith(u"BOY"_s) && !f.objectClass.startsWith(u"BCN"_s)) // buoys and beacons only
         return std::nullopt;
-    QString pattern = f.attributes.value(u"COLPAT"_s).trimmed(); // (a list too; the first is taken)
-    if (pattern.startsWith(u'(') && pattern.endsWith(u')'))
-        pattern = pattern.mid(1, pattern.size() - 2).section(u':', -1);
-    // COLPAT: 1 horizontal stripes, 2 vertical, 3 diagonal, 4 squared, 5 stripes of unknown direction, 6 border stripe.
+    // COLPAT (a list too; the first is taken): 1 horizontal stripes, 2 vertical, 3 diagonal, 4 squared,
+    // 5 stripes of unknown direction, 6 border stripe (S-57's attribute catalogue).
     static constexpr std::optional<ColourPattern> patterns[] = {std::nullopt, ColourPattern::Horizontal, ColourPattern::Vertical,
                                                                 ColourPattern::Diagonal, ColourPattern::Squared,
                                                                 ColourPattern::Horizontal, std::nullopt};
-    const int code = pattern.section(u',', 0, 0).trimmed().toInt();
+    const std::vector<int> pattern = listCodes(f, u"COLPAT"_s);
+    const int code = pattern.empty() ? 0 : pattern.front();
     bool whole = false;
-    const std::vector<int> codes = colourCodes(f, &whole);
+    const std::vector<int> codes = listCodes(f, u"COLOUR"_s, &whole);
     if (code <= 0 || code >= int(std::size(patterns)) || !patterns[code] || codes.size() < 2 || !whole)
         return std::nullopt;
     AidBands bands{*patterns[code], {}};

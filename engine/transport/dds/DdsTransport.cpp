@@ -198,14 +198,16 @@ void DdsTransport::onParticipant(dds_entity_t reader, void *self)
         const quint16 system = peer.system;
         // The participant that announced it: several may share a system id, and
         // the id is free again only when the last of them has left.
-        QString participant = QStringLiteral("dds:unknown");
+        // (One whose writer DDS no longer knows, or that has already left, is not counted: nothing
+        // would ever say it left.)
+        QString participant;
         if (dds_builtintopic_endpoint_t *writer = dds_get_matched_publication_data(reader, info.publication_handle)) {
             participant = participantLabel(writer->participant_key);
             dds_builtintopic_free_endpoint(writer);
         }
-        {
+        if (!participant.isEmpty()) {
             QMutexLocker lock(&transport->m_mutex);
-            if (transport->m_announcers.value(participant, -1) != system) {
+            if (!transport->m_left.contains(participant) && transport->m_announcers.value(participant, -1) != system) {
                 transport->m_announcers.insert(participant, system);
                 QMetaObject::invokeMethod(transport, [transport, system] { emit transport->participantJoined(system); },
                                           Qt::QueuedConnection);
@@ -244,6 +246,8 @@ void DdsTransport::onPresence(dds_entity_t reader, void *self)
     const qint64 now = monotonicMs();
     QMutexLocker lock(&transport->m_mutex);
     transport->m_participantOfWriter.removeIf([&](const auto &it) { return gone.contains(it.value()); });
+    for (const QString &name : gone)
+        transport->m_left.insert(name); // (a participant's key is never used again)
     // The systems whose last announcer left.
     for (const QString &name : gone) {
         const int system = transport->m_announcers.value(name, -1);

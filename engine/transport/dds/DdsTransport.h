@@ -5,6 +5,7 @@
 #include "transport/OutputSink.h"
 
 #include <QHash>
+#include <QSet>
 #include <QMutex>
 #include <QObject>
 
@@ -173,6 +174,7 @@ private:
     dds_entity_t m_participantWriter = 0;
     QHash<quint16, QString> m_peerDigests;
     QHash<QString, int> m_announcers; // the system each participant announced itself as (by participantLabel)
+    QSet<QString> m_left; // participants seen leaving: a late announcement of theirs is not counted
     QHash<dds_instance_handle_t, QString> m_participantOfWriter; // by publication handle
     QHash<quint16, Peer> m_peers;
     std::function<void(const msg::Message &, qsizetype)> m_direct;

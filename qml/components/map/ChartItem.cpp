@@ -683,12 +683,12 @@ QSGNode *ChartItem::updatePaintNode(QSGNode *old, UpdatePaintNodeData *)
         const double reach = point.sector ? sectorLegs * r : r;
         if (p.x() < -reach || p.y() < -reach || p.x() > width() + reach || p.y() > height() + reach)
             continue;
-        if (point.bands && point.shape != Shape::Stake) { // (a stake is lines: nothing to fill)
-            outline.clear();
-            appendOutline(outline, point.shape, p, r);
+        outline.clear();
+        appendOutline(outline, point.shape, p, r);
+        if (point.bands && point.shape != Shape::Stake) // (a stake is lines: nothing to fill)
             appendBands(aidsBy, outline, p, *point.bands, m_lineWidth * 1.5);
-        }
-        appendOutline(point.shape == Shape::Cross ? hazards : aidsBy[int(point.colour)], point.shape, p, r);
+        auto &lines = point.shape == Shape::Cross ? hazards : aidsBy[int(point.colour)];
+        lines.insert(lines.end(), outline.begin(), outline.end());
         if (point.sector) {
             const std::size_t arcFrom = sectorArcs.size();
             appendSector(sectorLegLines, sectorArcs, *point.sector, p, r, view.bearing);
