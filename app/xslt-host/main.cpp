@@ -97,7 +97,7 @@ private:
                 continue;
             }
             if (residentBytes() > m_cap)
-                std::_Exit(3); // as out of memory: the program says the limit
+                std::_Exit(neptus::processor::wire::exitMemoryWatch); // as out of memory: the program says the limit
             m_wake.wait_for(lock, std::chrono::milliseconds(10));
         }
     }

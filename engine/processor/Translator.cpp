@@ -179,7 +179,7 @@ QString Helper::whyEnded(const QElapsedTimer &clock, TranslateLimits limits)
     // (status 3: its resident-memory watch; else the address-space cap's
     // failed allocation); status 1 is a request it could not read (checked
     // before sending, so a defect).
-    const bool memoryWatch = reaped && WIFEXITED(code) && WEXITSTATUS(code) == 3;
+    const bool memoryWatch = reaped && WIFEXITED(code) && WEXITSTATUS(code) == wire::exitMemoryWatch;
     if (!memoryWatch
         && ((reaped && WIFSIGNALED(code) && WTERMSIG(code) == SIGXCPU) || clock.elapsed() >= qint64(limits.seconds) * 1000 - 100))
         return QStringLiteral("stopped: it ran longer than its %1 s limit").arg(limits.seconds);

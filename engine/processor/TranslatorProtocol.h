@@ -29,6 +29,8 @@ inline bool outOfMemory(const QByteArray &error)
 }
 
 constexpr quint32 maxFields = 1000;
+// The helper's exit status when its own memory watch stops it (said as memory, whatever the time).
+constexpr int exitMemoryWatch = 3;
 constexpr quint32 maxFieldBytes = 1024 * 1024;
 constexpr quint32 maxInputBytes = 1024u * 1024 * 1024;
 
