@@ -17,8 +17,10 @@
 #include "web/LiveServer.h"
 
 #include <QDir>
+#include <QElapsedTimer>
 #include <QFile>
 #include <QGuiApplication>
+#include <QLoggingCategory>
 #include <QProcess>
 #include <QQmlApplicationEngine>
 #include <QQuickStyle>
@@ -29,6 +31,7 @@
 #include <QUrl>
 #include <QtQml/qqmlextensionplugin.h>
 
+#include <atomic>
 #include <cstdio>
 
 Q_IMPORT_QML_PLUGIN(Neptus_EnginePlugin)
@@ -36,6 +39,38 @@ Q_IMPORT_QML_PLUGIN(Neptus_ComponentsPlugin)
 Q_IMPORT_QML_PLUGIN(Neptus_ShellPlugin)
 
 namespace {
+
+// Where the start's time goes (QT_LOGGING_RULES="neptus.startup=true"): each
+// step in milliseconds since main() began (bench_power --startup reads them).
+Q_LOGGING_CATEGORY(lcStartup, "neptus.startup", QtWarningMsg)
+QElapsedTimer startupClock;
+void startupStep(const char *step)
+{
+    qCDebug(lcStartup, "%.1f ms: %s", double(startupClock.nsecsElapsed()) / 1e6, step);
+}
+
+// True once the console layout is made, or has failed to be (its error is what is shown).
+bool consoleSettled(const QQuickWindow *window)
+{
+    const auto *loader = window->property("consoleLoader").value<QObject *>();
+    return loader && (loader->property("item").value<QObject *>() || !loader->property("errorString").toString().isEmpty());
+}
+
+// Calls `then` on the GUI thread once a frame showing the console (or why
+// there is none) is on screen: the first frame synchronised after it was made.
+void whenConsoleOnScreen(QQuickWindow *window, std::function<void()> then)
+{
+    auto state = std::make_shared<std::atomic<int>>(0); // 0 waiting, 1 in the frame being drawn, 2 done
+    // Both on the render thread; the GUI thread waits while the scene synchronises, so the loader can be read.
+    QObject::connect(window, &QQuickWindow::afterSynchronizing, window, [window, state] {
+        if (state->load() == 0 && consoleSettled(window))
+            state->store(1);
+    }, Qt::DirectConnection);
+    QObject::connect(window, &QQuickWindow::frameSwapped, window, [state, then = std::move(then)] {
+        if (int drawn = 1; state->compare_exchange_strong(drawn, 2))
+            QMetaObject::invokeMethod(qApp, then, Qt::QueuedConnection);
+    }, Qt::DirectConnection);
+}
 
 int saveScreenshot(QQuickWindow *window, const QString &file)
 {
@@ -55,7 +90,9 @@ int main(int argc, char *argv[])
 {
     // What it says goes out line by line, also into a pipe (a supervisor, a test reading it live).
     std::setvbuf(stdout, nullptr, _IOLBF, 0);
+    startupClock.start();
     QGuiApplication app(argc, argv);
+    startupStep("application");
     QCoreApplication::setOrganizationName(QStringLiteral("neptus-qt"));
     QCoreApplication::setApplicationName(QStringLiteral("neptus"));
     QCoreApplication::setApplicationVersion(QStringLiteral(NEPTUS_VERSION));
@@ -147,6 +184,7 @@ int main(int argc, char *argv[])
         }
     }
 
+    startupStep("definitions, recording and database");
     QString mainSystem = commandLine->system;
     neptus::ManualClock replayClock;
     ConsoleSession session(schema, replayLogs ? static_cast<const neptus::Clock *>(&replayClock) : &neptus::Clock::system());
@@ -365,6 +403,7 @@ int main(int argc, char *argv[])
     // Nobody touching the console: vehicles are shown at the resting rate.
     RestWatch restWatch(std::chrono::seconds(CommandLine::restAfterS));
     QObject::connect(&restWatch, &RestWatch::restingChanged, session.treeModel(), &neptus::tree::VariableTreeModel::setResting);
+    startupStep("session, mission and vehicles");
     QQmlApplicationEngine engine;
     engine.setInitialProperties({
         {QStringLiteral("session"), QVariant::fromValue(&session)},
@@ -382,6 +421,9 @@ int main(int argc, char *argv[])
         {QStringLiteral("safetyDepth"), commandLine->safetyDepth},
         {QStringLiteral("width"), commandLine->windowSize.width()},
         {QStringLiteral("height"), commandLine->windowSize.height()},
+        // The window shows at once and the console is made while its first frame is drawn
+        // (not when a component is to be selected or edited from the start).
+        {QStringLiteral("consoleDeferred"), !commandLine->edit && commandLine->select.isEmpty()},
     });
     // Before the first console loads: saved layouts import Neptus.User.
     ComponentPalette::installUserModule(engine, componentDirectories);
@@ -402,16 +444,31 @@ int main(int argc, char *argv[])
     if (engine.rootObjects().isEmpty())
         return 1;
     auto *window = qobject_cast<QQuickWindow *>(engine.rootObjects().constFirst());
-
-
+    startupStep("shell made");
+    // The console is made while the shell's first frame is drawn, or after a second
+    // if the window is not drawn at all (hidden): the engine is running either way.
+    const auto makeConsole = [window] {
+        if (!window->property("consoleDeferred").toBool())
+            return;
+        window->setProperty("consoleDeferred", false);
+        startupStep("console made");
+    };
+    QObject::connect(window, &QQuickWindow::afterSynchronizing, window, [window, makeConsole] {
+        startupStep("first frame synchronised");
+        QMetaObject::invokeMethod(window, makeConsole, Qt::QueuedConnection);
+    }, Qt::ConnectionType(Qt::DirectConnection | Qt::SingleShotConnection));
+    QTimer::singleShot(1000, window, makeConsole);
+    QObject::connect(window, &QQuickWindow::frameSwapped, window, [] { startupStep("first frame on screen"); },
+                     Qt::ConnectionType(Qt::DirectConnection | Qt::SingleShotConnection));
+    whenConsoleOnScreen(window, [] { startupStep("console on screen"); });
     if (!commandLine->screenshotFile.isEmpty()) {
-        // Grab after the first frame (and the delay asked for, to let data
+        // Grab once the console is on screen (and after the delay asked for, to let data
         // arrive) so the window has its final size and content.
-        QObject::connect(window, &QQuickWindow::frameSwapped, &app, [&] {
+        whenConsoleOnScreen(window, [&] {
             QTimer::singleShot(commandLine->screenshotDelayMs, &app, [&] {
                 QCoreApplication::exit(saveScreenshot(window, commandLine->screenshotFile));
             });
-        }, Qt::SingleShotConnection);
+        });
     }
     if (commandLine->quitAfterMs > 0)
         QTimer::singleShot(commandLine->quitAfterMs, &app, [] { QCoreApplication::exit(0); });

@@ -1,5 +1,4 @@
 import QtQuick
-import QtMultimedia
 import Neptus.Engine
 import Neptus.Shell
 
@@ -16,17 +15,13 @@ Item {
     signal requested(int level)
 
     // The audio output is opened at the first alarm, not at start (a console
-    // that never alarms never touches the sound system).
+    // that never alarms never touches the sound system, nor loads Qt Multimedia).
     property var effectSet: null
     Loader {
         id: effects
         active: false
         onLoaded: sounds.effectSet = item
-        sourceComponent: QtObject {
-            readonly property SoundEffect warning: SoundEffect { source: AlarmTones.url(AlarmLevel.Warning) }
-            readonly property SoundEffect error: SoundEffect { source: AlarmTones.url(AlarmLevel.Error) }
-            readonly property SoundEffect failure: SoundEffect { source: AlarmTones.url(AlarmLevel.Failure) }
-        }
+        source: Qt.resolvedUrl("AlarmEffects.qml")
     }
     function stopAll() {
         if (effectSet)

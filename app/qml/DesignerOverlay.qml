@@ -25,6 +25,8 @@ Item {
     // The left panel shows the variable tree instead of the palette: drag a
     // value onto the console to make a readout of it.
     property bool variablesShown: false
+    property bool variablesMade: false
+    onVariablesShownChanged: if (variablesShown) variablesMade = true
     // The console shrinks beside the panels while editing (the shell binds
     // its console area to these insets), so no panel covers it and no handle
     // is under a panel; the property panel's place is kept whether or not
@@ -71,7 +73,15 @@ Item {
     visible: editing
     enabled: editing
 
-    onEditingChanged: if (!editing) { selected = ""; placing = "" }
+    property bool panelsMade: false
+    onEditingChanged: {
+        if (editing)
+            panelsMade = true
+        else {
+            selected = ""
+            placing = ""
+        }
+    }
 
     // Stand-ins while nothing is attached (a preview, the self-test).
     LayoutEditor { id: fallbackEditor }
@@ -492,26 +502,31 @@ Item {
     }
 
     // --- Palette ---
-    ComponentPaletteView {
+    // (The palette and the property panel are made at the first edit: a
+    // console nobody edits never makes them.)
+    Loader {
         id: paletteView
         objectName: "paletteView"
         visible: designer.paletteShown
         anchors { left: parent.left; top: parent.top; bottom: toolbar.top; margins: Theme.spacing }
         width: Theme.mm(58)
-        palette: designer.palette
-        placing: designer.placing
-        onArmed: name => designer.placing = (designer.placing === name ? "" : name)
-        onDragged: (name, scenePoint, active) => {
-            const p = canvas.mapFromItem(null, scenePoint.x, scenePoint.y)
-            const entry = designer.palette.entry(name)
-            const w = entry.defaultWidth || 240, h = entry.defaultHeight || 160
-            ghost.x = designer.snap(Math.max(0, p.x - w / 2))
-            ghost.y = designer.snap(Math.max(0, p.y - h / 2))
-            ghost.width = w
-            ghost.height = h
-            ghost.visible = active
-            if (!active && p.x > paletteView.x + paletteView.width && p.x < canvas.width && p.y > 0 && p.y < canvas.height)
-                designer.place(name, p.x, p.y)
+        active: designer.panelsMade
+        sourceComponent: ComponentPaletteView {
+            palette: designer.palette
+            placing: designer.placing
+            onArmed: name => designer.placing = (designer.placing === name ? "" : name)
+            onDragged: (name, scenePoint, active) => {
+                const p = canvas.mapFromItem(null, scenePoint.x, scenePoint.y)
+                const entry = designer.palette.entry(name)
+                const w = entry.defaultWidth || 240, h = entry.defaultHeight || 160
+                ghost.x = designer.snap(Math.max(0, p.x - w / 2))
+                ghost.y = designer.snap(Math.max(0, p.y - h / 2))
+                ghost.width = w
+                ghost.height = h
+                ghost.visible = active
+                if (!active && p.x > paletteView.x + paletteView.width && p.x < canvas.width && p.y > 0 && p.y < canvas.height)
+                    designer.place(name, p.x, p.y)
+            }
         }
     }
 
@@ -527,46 +542,56 @@ Item {
         radius: Theme.radius
         // Touches on the panel stay on the panel.
         PointerStop {}
-        VariableTreeView {
-            id: variableTree
-            objectName: "designerTree"
-            anchors { left: parent.left; right: parent.right; top: parent.top; bottom: addReadout.top; margins: Theme.spacing }
-            dragLeaves: true
-            onLeafDragged: (path, scenePoint, active) => {
-                const p = canvas.mapFromItem(null, scenePoint.x, scenePoint.y)
-                const entry = designer.palette.entry("Readout")
-                const w = entry.defaultWidth || 200, h = entry.defaultHeight || 96
-                ghost.x = designer.snap(Math.max(0, p.x - w / 2))
-                ghost.y = designer.snap(Math.max(0, p.y - h / 2))
-                ghost.width = w
-                ghost.height = h
-                ghost.visible = active
-                if (!active && p.x > variablesView.x + variablesView.width && p.x < canvas.width && p.y > 0 && p.y < canvas.height)
-                    designer.placeReadout(path, p.x, p.y)
+        // Made the first time it is shown: a console nobody edits never makes the tree.
+        Loader {
+            anchors.fill: parent
+            active: designer.variablesMade
+            sourceComponent: Item {
+                VariableTreeView {
+                    id: variableTree
+                    objectName: "designerTree"
+                    anchors { left: parent.left; right: parent.right; top: parent.top; bottom: addReadout.top; margins: Theme.spacing }
+                    dragLeaves: true
+                    onLeafDragged: (path, scenePoint, active) => {
+                        const p = canvas.mapFromItem(null, scenePoint.x, scenePoint.y)
+                        const entry = designer.palette.entry("Readout")
+                        const w = entry.defaultWidth || 200, h = entry.defaultHeight || 96
+                        ghost.x = designer.snap(Math.max(0, p.x - w / 2))
+                        ghost.y = designer.snap(Math.max(0, p.y - h / 2))
+                        ghost.width = w
+                        ghost.height = h
+                        ghost.visible = active
+                        if (!active && p.x > variablesView.x + variablesView.width && p.x < canvas.width && p.y > 0 && p.y < canvas.height)
+                            designer.placeReadout(path, p.x, p.y)
+                    }
+                }
+                TouchButton {
+                    id: addReadout
+                    objectName: "addReadout"
+                    anchors { left: parent.left; right: parent.right; bottom: parent.bottom; margins: Theme.spacing }
+                    text: qsTr("Add a readout of %1").arg(variableTree.selectedPath.split("/").pop() || "…")
+                    enabled: variableTree.selectedIsLeaf
+                    onClicked: designer.placeReadout(variableTree.selectedPath,
+                                                     variablesView.x + variablesView.width + Theme.mm(40), canvas.height / 3)
+                }
             }
-        }
-        TouchButton {
-            id: addReadout
-            objectName: "addReadout"
-            anchors { left: parent.left; right: parent.right; bottom: parent.bottom; margins: Theme.spacing }
-            text: qsTr("Add a readout of %1").arg(variableTree.selectedPath.split("/").pop() || "…")
-            enabled: variableTree.selectedIsLeaf
-            onClicked: designer.placeReadout(variableTree.selectedPath,
-                                             variablesView.x + variablesView.width + Theme.mm(40), canvas.height / 3)
         }
     }
 
     // --- Properties of the selection ---
-    PropertyEditor {
+    Loader {
         id: properties
         objectName: "propertyEditor"
         visible: designer.selected !== ""
         anchors { right: parent.right; top: parent.top; bottom: toolbar.top; margins: Theme.spacing }
         width: Theme.mm(72)
-        editor: designer.editor
-        palette: designer.palette
-        componentId: designer.selected
-        target: designer.selected !== "" ? designer.itemFor(designer.selected) : null
+        active: designer.panelsMade
+        sourceComponent: PropertyEditor {
+            editor: designer.editor
+            palette: designer.palette
+            componentId: designer.selected
+            target: designer.selected !== "" ? designer.itemFor(designer.selected) : null
+        }
     }
 
     // --- Keyboard ---

@@ -9,6 +9,9 @@ ApplicationWindow {
     id: window
 
     required property url consoleUrl
+    // Set by the program at start: the console is made once the shell is
+    // being drawn (the window shows at once, the console a frame later).
+    property bool consoleDeferred: false
     // The console's tree, alarms and scripts; null in previews and tests of the shell alone.
     property ConsoleSession session: null
     // "day", "dusk" or "night" from the command line; empty = as the user left it.
@@ -118,9 +121,11 @@ ApplicationWindow {
     }
 
     // Reviewing a log: its timeline under the console.
+    // (By its file: a live console neither makes nor loads it.)
     footer: Loader {
-        active: window.session !== null && window.session.replay !== null
-        sourceComponent: ReplayBar { replay: window.session.replay }
+        readonly property ReplayModel replay: window.session ? window.session.replay : null
+        onReplayChanged: replay ? setSource(Qt.resolvedUrl("ReplayBar.qml"), { replay: replay }) : setSource("")
+        Component.onCompleted: replayChanged()
     }
 
     OwnShip { source: window.gpsSource }
@@ -217,43 +222,49 @@ ApplicationWindow {
         x: Theme.spacing
         y: Theme.spacing
         width: Math.min(parent.width - Theme.spacing * 2, Theme.mm(100))
-        height: Math.min(parent.height - Theme.spacing * 2, switcherColumn.implicitHeight + Theme.spacing * 2)
+        height: Math.min(parent.height - Theme.spacing * 2, switcherContent.implicitHeight + Theme.spacing * 2)
         color: Theme.surface
         border.color: Theme.border
         radius: Theme.radius
         PointerStop {}
-        Flickable {
+        // Made when shown (the consoles are listed then).
+        Loader {
+            id: switcherContent
             anchors { fill: parent; margins: Theme.spacing }
-            contentHeight: switcherColumn.implicitHeight
-            clip: true
-            Column {
-                id: switcherColumn
-                width: parent.width
-                spacing: Theme.spacing / 2
-                TouchButton {
-                    objectName: "backButton"
+            active: switcher.shown
+            sourceComponent: Flickable {
+                implicitHeight: contentHeight
+                contentHeight: switcherColumn.implicitHeight
+                clip: true
+                Column {
+                    id: switcherColumn
                     width: parent.width
-                    visible: String(window.previousUrl) !== "" && String(window.previousUrl) !== String(window.consoleUrl)
-                    text: qsTr("← Back to %1").arg(window.previousTitle || qsTr("the previous console"))
-                    onClicked: window.openConsole(window.previousUrl, window.previousSystem, false)
-                }
-                Repeater {
-                    model: catalog.consoles
-                    delegate: TouchButton {
-                        required property var modelData
-                        objectName: "open-" + modelData.title
-                        width: switcherColumn.width
-                        text: modelData.title + (modelData.kinds.length ? "  ·  " + modelData.kinds.join(", ") : "")
-                        highlighted: String(modelData.file) === String(window.consoleUrl)
-                        onClicked: window.openConsole(modelData.file, Session.mainSystem, false)
+                    spacing: Theme.spacing / 2
+                    TouchButton {
+                        objectName: "backButton"
+                        width: parent.width
+                        visible: String(window.previousUrl) !== "" && String(window.previousUrl) !== String(window.consoleUrl)
+                        text: qsTr("← Back to %1").arg(window.previousTitle || qsTr("the previous console"))
+                        onClicked: window.openConsole(window.previousUrl, window.previousSystem, false)
                     }
-                }
-                TouchButton {
-                    objectName: "openFileButton"
-                    width: parent.width
-                    text: qsTr("Open a console file…")
-                    toolTip: qsTr("A console layout from anywhere: a USB stick, a colleague's folder")
-                    onClicked: { switcher.shown = false; consoleChooser.open("") }
+                    Repeater {
+                        model: catalog.consoles
+                        delegate: TouchButton {
+                            required property var modelData
+                            objectName: "open-" + modelData.title
+                            width: switcherColumn.width
+                            text: modelData.title + (modelData.kinds.length ? "  ·  " + modelData.kinds.join(", ") : "")
+                            highlighted: String(modelData.file) === String(window.consoleUrl)
+                            onClicked: window.openConsole(modelData.file, Session.mainSystem, false)
+                        }
+                    }
+                    TouchButton {
+                        objectName: "openFileButton"
+                        width: parent.width
+                        text: qsTr("Open a console file…")
+                        toolTip: qsTr("A console layout from anywhere: a USB stick, a colleague's folder")
+                        onClicked: { switcher.shown = false; consoleChooser.open("") }
+                    }
                 }
             }
         }
@@ -283,7 +294,7 @@ ApplicationWindow {
         shapeWidth: parent.width
         shapeHeight: parent.height
         session: window.session
-        source: window.consoleUrl
+        source: window.consoleDeferred ? "" : window.consoleUrl
         componentsRevision: componentPalette.revision
     }
 

@@ -5,6 +5,7 @@
 #include "Schemas.h"
 
 #include <QHostAddress>
+#include <QImage>
 #include <QDirIterator>
 #include <QProcess>
 #include <QProcessEnvironment>
@@ -98,4 +99,48 @@ TEST(ConsoleProcess, ARestartedConsoleOpensTheMissionItHadOpen)
     const QString third = run({});
     EXPECT_FALSE(third.contains(QStringLiteral("neptus: mission"))) << third.toStdString();
     EXPECT_FALSE(third.contains(QStringLiteral("no mission open"))) << "a file since deleted is not an error" << third.toStdString();
+}
+
+// The window is on screen before the console layout is made (the console is
+// made while the shell's first frame is drawn), and what waits for the
+// console (a screenshot, even with no delay) gets the console, not the empty
+// shell: here a console of one big red rectangle.
+TEST(ConsoleProcess, TheWindowShowsFirstAndTheConsoleFollowsWithinItsStart)
+{
+    QTemporaryDir dir;
+    const QString layout = dir.filePath(QStringLiteral("red.qml"));
+    QFile file(layout);
+    ASSERT_TRUE(file.open(QIODevice::WriteOnly));
+    file.write("import QtQuick\nimport Neptus.Components\n\nConsole {\n    designWidth: 640\n    designHeight: 400\n"
+               "    title: \"Red\"\n    Rectangle { x: 0; y: 0; width: 640; height: 400; color: \"#ff0000\" }\n}\n");
+    file.close();
+    const QString shot = dir.filePath(QStringLiteral("shot.png"));
+    QProcessEnvironment environment = QProcessEnvironment::systemEnvironment();
+    environment.insert(QStringLiteral("QT_LOGGING_RULES"), QStringLiteral("neptus.startup=true"));
+    environment.insert(QStringLiteral("QT_MESSAGE_PATTERN"), QStringLiteral("%{category}: %{message}"));
+    environment.insert(QStringLiteral("XDG_CONFIG_HOME"), dir.filePath(QStringLiteral("config")));
+    QProcess console;
+    console.setProcessEnvironment(environment);
+    console.setProcessChannelMode(QProcess::MergedChannels);
+    console.start(neptus::test::programPath(QStringLiteral("neptus")),
+                  {QStringLiteral("--console"), layout, QStringLiteral("--size"), QStringLiteral("640x480"),
+                   QStringLiteral("--imc-port"), QString::number(neptus::test::freeUdpPort()), QStringLiteral("--imc-discovery"),
+                   QStringLiteral("off"), QStringLiteral("--dds-domain"), QStringLiteral("-1"), QStringLiteral("--no-record"),
+                   QStringLiteral("--screenshot"), shot, QStringLiteral("--screenshot-delay"), QStringLiteral("0")});
+    ASSERT_TRUE(console.waitForFinished(60000));
+    const QString said = QString::fromUtf8(console.readAll());
+    EXPECT_EQ(console.exitCode(), 0) << said.toStdString();
+    // Its start, step by step, in order.
+    qsizetype at = 0;
+    for (const char *step : {"application", "session, mission and vehicles", "shell made", "first frame synchronised",
+                             "console made", "console on screen"}) {
+        const qsizetype next = said.indexOf(QStringLiteral(" ms: %1\n").arg(QLatin1String(step)), at);
+        ASSERT_GE(next, 0) << "the step '" << step << "' after the ones before it in:\n" << said.toStdString();
+        at = next;
+    }
+    // The console is in the picture.
+    const QImage image(shot);
+    ASSERT_FALSE(image.isNull()) << said.toStdString();
+    const QPoint middle(image.width() / 2, image.height() / 2);
+    EXPECT_EQ(image.pixelColor(middle), QColor(255, 0, 0)) << image.pixelColor(middle).name().toStdString();
 }

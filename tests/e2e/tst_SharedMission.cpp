@@ -114,12 +114,13 @@ Console {
         property bool reading: false
         readonly property var desk: Session.session ? Session.session.plans : null
         function say(what) { console.log("NAME " + what) }
+        function report() { say("status: " + desk.shareStatus + " | with: " + desk.sharedWith.join(",")) }
         Connections {
             target: operator.desk
-            function onSharingChanged() {
-                operator.say("status: " + operator.desk.shareStatus + " | with: " + operator.desk.sharedWith.join(","))
-            }
+            function onSharingChanged() { operator.report() }
         }
+        // (The console is made once the window is drawn: sharing may have begun before.)
+        Component.onCompleted: if (desk) report()
         function step(s) {
             const model = map.planEditor ? map.planEditor.model : null
             if (!model)
