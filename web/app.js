@@ -104,7 +104,7 @@ const chartShapes = {
 // from the first to the second), 25 and 35 pixels out, as the console's map draws them.
 function sectorPaths(sector) {
   const at = (degrees, r) => (r * Math.sin(degrees * Math.PI / 180)).toFixed(2) + ',' + (-r * Math.cos(degrees * Math.PI / 180)).toFixed(2);
-  const from = sector[0], to = sector[1] > from ? sector[1] : sector[1] + 360;
+  const from = sector[0], to = sector[1] > from ? sector[1] : sector[1] + 360; // charts::LightSector::span()
   const legs = 'M0,0 L' + at(from, 35) + ' M0,0 L' + at(to, 35);
   if (to - from >= 360) // all round: an arc's ends may not meet, so two halves
     return { legs: legs, arc: 'M' + at(from, 25) + ' A25,25 0 1,1 ' + at(from + 180, 25) + ' A25,25 0 1,1 ' + at(from, 25) };

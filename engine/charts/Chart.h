@@ -171,6 +171,8 @@ QString patternName(ColourPattern pattern);
 struct LightSector
 {
     double from = 0, to = 0;
+    // Degrees clockwise from `from` to `to`: 360 for a light all round (the two limits the same).
+    double span() const { return to > from ? to - from : to + 360 - from; }
 };
 std::optional<LightSector> lightSector(const Feature &feature);
 // A symbol's shape, as paper charts draw it (INT 1's simplified symbols):

@@ -57,7 +57,7 @@ void appendSector(std::vector<QPointF> &legs, std::vector<QPointF> &arc, LightSe
         const double a = (degrees - bearing) * std::numbers::pi / 180;
         return p + QPointF(std::sin(a), -std::cos(a)) * length * r;
     };
-    const double to = sector.to > sector.from ? sector.to : sector.to + 360;
+    const double to = sector.from + sector.span();
     legs.insert(legs.end(), {p, towards(sector.from, sectorLegs), p, towards(to, sectorLegs)});
     const int steps = std::max(2, int(std::ceil((to - sector.from) / 5)));
     for (int i = 0; i < steps; ++i)

@@ -259,6 +259,11 @@ TEST(Chart, ASectorLightsSectorIsTurnedToDirectionsFromTheLight)
     ASSERT_TRUE(round);
     EXPECT_DOUBLE_EQ(round->from, 20);
     EXPECT_DOUBLE_EQ(round->to, 190);
+    // Its span clockwise, across north too; the same two limits are a light all round.
+    EXPECT_DOUBLE_EQ(across->span(), 30);
+    EXPECT_DOUBLE_EQ(round->span(), 170);
+    EXPECT_DOUBLE_EQ((LightSector{276.5, 22}.span()), 105.5);
+    EXPECT_DOUBLE_EQ((LightSector{40, 40}.span()), 360);
     EXPECT_FALSE(sector(u"LIGHTS"_s, {{u"SECTR1"_s, u"200"_s}})) << "one limit is no sector";
     EXPECT_FALSE(sector(u"LIGHTS"_s, {})) << "an all-round light";
     EXPECT_FALSE(sector(u"LIGHTS"_s, {{u"SECTR1"_s, u"x"_s}, {u"SECTR2"_s, u"10"_s}}));
