@@ -141,9 +141,8 @@ int runSelfTest(const CommandLine &commandLine)
     {
         QQmlEngine engine;
         types += checkModuleTypes(engine, QStringLiteral("Neptus.Components"), {});
-        // Main is a whole window; it is checked with every console below. AlarmEffects opens
-        // the audio output (AlarmSounds makes it at the first alarm; tst_AlarmSounds plays it).
-        types += checkModuleTypes(engine, QStringLiteral("Neptus.Shell"), {QStringLiteral("Main"), QStringLiteral("AlarmEffects")});
+        // Main is a whole window; it is checked with every console below.
+        types += checkModuleTypes(engine, QStringLiteral("Neptus.Shell"), {QStringLiteral("Main")});
     }
     const int consoles = checkConsoles(commandLine);
     qInstallMessageHandler(nullptr);

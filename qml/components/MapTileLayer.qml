@@ -1,8 +1,5 @@
 pragma ComponentBehavior: Bound
-import QtCore
 import QtQuick
-import QtLocation
-import QtPositioning
 
 // The map tiles under a Map2D, when it has a source: Qt Location's map,
 // following the Map2D's own camera. Offline first: a folder of z/x/y.png
@@ -24,40 +21,12 @@ Loader {
     property real bearing: 0
 
     readonly property string source: tileServer !== "" ? tileServer : tileDirectory !== "" ? tileDirectory : offlineDirectory
-    active: false
     onSourceChanged: Qt.callLater(reload)
     Component.onCompleted: reload()
+    // A new map for each source (by its file: see MapTiles.qml).
     function reload() {
-        active = false
-        active = source !== ""
-    }
-    sourceComponent: Map {
-        objectName: "map"
-        plugin: Plugin {
-            name: "osm"
-            // No providers' list from the internet, and the only map type
-            // used is the custom one: nothing reaches beyond the given source.
-            PluginParameter { name: "osm.mapping.providersrepository.disabled"; value: true }
-            PluginParameter {
-                name: "osm.mapping.custom.host"
-                value: tiles.tileServer !== "" ? tiles.tileServer.replace(/\/?$/, "/")
-                     : tiles.tileDirectory !== "" ? "file://" + tiles.tileDirectory.replace(/\/?$/, "/")
-                     : "file:///nonexistent-neptus-tiles/"
-            }
-            PluginParameter { name: "osm.mapping.offline.directory"; value: tiles.offlineDirectory }
-            PluginParameter {
-                name: "osm.mapping.cache.directory"
-                value: StandardPaths.writableLocation(StandardPaths.CacheLocation).toString().replace(/^file:\/\//, "")
-                       + "/tiles/" + Qt.md5(tiles.source)
-            }
-            PluginParameter { name: "osm.useragent"; value: "Neptus-Qt" }
-        }
-        activeMapType: supportedMapTypes[supportedMapTypes.length - 1]
-        color: tiles.background
-        copyrightsVisible: false
-        minimumZoomLevel: tiles.minimumZoomLevel
-        center: QtPositioning.coordinate(tiles.centerLatitude, tiles.centerLongitude)
-        zoomLevel: tiles.zoomLevel
-        bearing: tiles.bearing
+        setSource("")
+        if (source !== "")
+            setSource(Qt.resolvedUrl("MapTiles.qml"), { tiles: tiles })
     }
 }
