@@ -216,6 +216,12 @@ void DdsTransport::onParticipant(dds_entity_t reader, void *self)
         if (peer.system == transport->m_config.systemId) {
             // Another participant as this system (ignorelocal: not us).
             const QString name = QString::fromUtf8(peer.name);
+            if (!participant.isEmpty()) {
+                QMutexLocker lock(&transport->m_mutex);
+                if (!transport->m_left.contains(participant))
+                    transport->m_ourIdUsers.insert(participant, name);
+                transport->m_ourIdNamed = participant;
+            }
             QMetaObject::invokeMethod(transport, [transport, name] { emit transport->ourIdInUse(name); }, Qt::QueuedConnection);
             return;
         }
@@ -248,6 +254,14 @@ void DdsTransport::onPresence(dds_entity_t reader, void *self)
     transport->m_participantOfWriter.removeIf([&](const auto &it) { return gone.contains(it.value()); });
     for (const QString &name : gone)
         transport->m_left.insert(name); // (a participant's key is never used again)
+    // The other console named as using our id left while others still do: name one of them.
+    for (const QString &name : gone)
+        transport->m_ourIdUsers.remove(name);
+    if (gone.contains(transport->m_ourIdNamed) && !transport->m_ourIdUsers.isEmpty()) {
+        transport->m_ourIdNamed = transport->m_ourIdUsers.firstKey();
+        const QString still = transport->m_ourIdUsers.first();
+        QMetaObject::invokeMethod(transport, [transport, still] { emit transport->ourIdInUse(still); }, Qt::QueuedConnection);
+    }
     // The systems whose last announcer left.
     for (const QString &name : gone) {
         const int system = transport->m_announcers.value(name, -1);

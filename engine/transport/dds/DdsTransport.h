@@ -5,6 +5,7 @@
 #include "transport/OutputSink.h"
 
 #include <QHash>
+#include <QMap>
 #include <QSet>
 #include <QMutex>
 #include <QObject>
@@ -121,6 +122,7 @@ signals:
     void sourcesChanged(quint16 system, const QStringList &senders, const QString &destination);
     // Another participant (named) announces itself as this console's own
     // system id (two consoles given the same id): what it sends is ignored.
+    // Said again, naming another, when the one named leaves and others remain.
     void ourIdInUse(const QString &participant);
     // A participant announced itself as `system` (again, after it left: a
     // link back after an outage longer than the lease).
@@ -175,6 +177,8 @@ private:
     QHash<quint16, QString> m_peerDigests;
     QHash<QString, int> m_announcers; // the system each participant announced itself as (by participantLabel)
     QSet<QString> m_left; // participants seen leaving: a late announcement of theirs is not counted
+    QMap<QString, QString> m_ourIdUsers; // the others announcing our system id: their names, by participantLabel
+    QString m_ourIdNamed; // which of them ourIdInUse named last
     QHash<dds_instance_handle_t, QString> m_participantOfWriter; // by publication handle
     QHash<quint16, Peer> m_peers;
     std::function<void(const msg::Message &, qsizetype)> m_direct;

@@ -176,8 +176,9 @@ TEST(DdsTransport, AnotherParticipantSendingAsOurIdIsIgnoredAndSaid)
     QTest::qWait(300);
     EXPECT_EQ(inUse.count(), 1) << "said once";
 
-    // A third console with the same id; then the twin leaves, and the id is still in use;
-    // then the third leaves, and the console hears that its id is its own again.
+    // A third console with the same id; then the third (the one named last) leaves, and the
+    // id is still in use: by the twin, which is named again; then the twin leaves, and the
+    // console hears that its id is its own again.
     QSignalSpy joined(&console, &DdsTransport::participantJoined), left(&console, &DdsTransport::participantLeft);
     auto third = std::make_unique<DdsTransport>(test::shippedSchema(), DdsConfig{26, {}, 0x4001, QStringLiteral("console-c")});
     ASSERT_TRUE(third->start());
@@ -185,10 +186,12 @@ TEST(DdsTransport, AnotherParticipantSendingAsOurIdIsIgnoredAndSaid)
     EXPECT_TRUE(inUse.last().at(0).toString().contains(QStringLiteral("console-c")));
     ASSERT_TRUE(QTest::qWaitFor([&] { return joined.count() > 0; }, 2000));
     EXPECT_EQ(joined.first().at(0).toUInt(), 0x4001u);
-    twin.reset();
-    QTest::qWait(1000);
-    EXPECT_EQ(left.count(), 0) << "console-c still uses the id";
     third.reset();
+    ASSERT_TRUE(QTest::qWaitFor([&] { return inUse.count() == 3; }, 10000)) << "the one still using the id is named";
+    EXPECT_TRUE(inUse.last().at(0).toString().contains(QStringLiteral("console-b"))) << inUse.last().at(0).toString().toStdString();
+    EXPECT_EQ(left.count(), 0) << "console-b still uses the id";
+    twin.reset();
     ASSERT_TRUE(QTest::qWaitFor([&] { return left.count() > 0; }, 10000)) << "the last one's leaving is heard";
     EXPECT_EQ(left.first().at(0).toUInt(), 0x4001u);
+    EXPECT_EQ(inUse.count(), 3) << "nobody named when nobody is left";
 }
