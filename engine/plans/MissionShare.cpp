@@ -177,7 +177,7 @@ void MissionShare::receive(const msg::Message &message)
     if (op == Hello) {
         if (m_mission.id.isEmpty() || (!missionId.isEmpty() && missionId != m_mission.id))
             return;
-        heard(message.header.src, author);
+        heard(message.header.src, author, missionId);
         publish(Here, {}, Object{{}, 0, m_author});
         // Everything we hold, in the mission's order (so the new console has
         // it in ours), as ours where nobody has changed it yet; then what was removed.
@@ -198,14 +198,18 @@ void MissionShare::receive(const msg::Message &message)
         // A console sharing this mission (or, while joining, the one about to be sent).
         // Not an answer to our HELLO by itself: that is the objects, which may still be lost.
         if (m_mission.id.isEmpty() || missionId == m_mission.id)
-            heard(message.header.src, author);
+            heard(message.header.src, author, missionId);
         return;
     }
     if (op != Put && op != Remove)
         return;
     m_heard = true;
-    if (m_mission.id.isEmpty() && !missionId.isEmpty())
+    if (m_mission.id.isEmpty() && !missionId.isEmpty()) {
         m_mission.id = missionId; // joining: the first shared mission heard
+        // Consoles heard while joining that share another mission are not this one's peers.
+        if (m_peers.removeIf([&](QMap<quint16, Peer>::iterator peer) { return !peer->mission.isEmpty() && peer->mission != missionId; }) > 0)
+            emit peersChanged();
+    }
     if (missionId != m_mission.id)
         return;
     const QString key = message.text(u"object");
@@ -243,12 +247,14 @@ void MissionShare::receive(const msg::Message &message)
         emit collision(author, what, false);
 }
 
-void MissionShare::heard(quint16 system, const QString &name)
+void MissionShare::heard(quint16 system, const QString &name, const QString &missionId)
 {
-    if (name.isEmpty() || name == m_author || m_peers.value(system) == name)
+    if (name.isEmpty() || name == m_author)
         return;
-    m_peers.insert(system, name);
-    emit peersChanged();
+    const bool listed = m_peers.contains(system) && m_peers[system].name == name;
+    m_peers.insert(system, Peer{name, missionId});
+    if (!listed)
+        emit peersChanged();
 }
 
 void MissionShare::greet()
@@ -265,7 +271,9 @@ void MissionShare::forget(quint16 system)
 
 QStringList MissionShare::peers() const
 {
-    QStringList names = m_peers.values();
+    QStringList names;
+    for (const Peer &peer : m_peers)
+        names.append(peer.name);
     names.sort();
     names.removeDuplicates();
     return names;

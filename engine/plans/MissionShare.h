@@ -89,7 +89,7 @@ private:
     };
     std::expected<void, QString> publish(int op, const QString &key, const Object &object);
     bool apply(const QString &key, const QByteArray &data); // into m_mission
-    void heard(quint16 system, const QString &name);
+    void heard(quint16 system, const QString &name, const QString &missionId);
 
     std::shared_ptr<const msg::Schema> m_schema;
     const msg::MessageDef *m_def = nullptr;
@@ -103,7 +103,11 @@ private:
     bool m_heard = false;
     mission::Mission m_mission;
     QHash<QString, Object> m_objects;
-    QMap<quint16, QString> m_peers; // by the sender's system id
+    struct Peer
+    {
+        QString name, mission; // the console's name and the mission it said it shares
+    };
+    QMap<quint16, Peer> m_peers; // by the sender's system id
 };
 
 } // namespace neptus::plans

@@ -231,3 +231,42 @@ TEST(MissionShare, PeersAreTheConsolesThatSaidSoAndLeaveWithTheirParticipant)
     EXPECT_EQ(a->peers(), (QStringList{u"console-b"_s, u"console-c"_s}));
     EXPECT_EQ(b->peers(), (QStringList{u"console-a"_s, u"console-c"_s}));
 }
+
+// A console joining (no mission yet) hears the consoles of every shared
+// mission greet; once the first mission's objects make it join that one,
+// the consoles of the others are not listed as sharing it.
+TEST(MissionShare, AJoiningConsoleListsOnlyTheConsolesOfTheMissionItJoins)
+{
+    Network net;
+    MissionShare *a = nullptr, *d = nullptr, *j = nullptr;
+    MissionShare shareA(net.schema, u"console-a"_s, net.publisherFor(&a, 0x4001));
+    MissionShare shareD(net.schema, u"console-d"_s, net.publisherFor(&d, 0x4004));
+    MissionShare shareJ(net.schema, u"console-j"_s, net.publisherFor(&j, 0x4010));
+    a = &shareA;
+    d = &shareD;
+    j = &shareJ;
+    mission::Mission other = leixoes();
+    other.id = u"another-mission"_s;
+    net.consoles = {a};
+    ASSERT_TRUE(a->start(leixoes()));
+    net.consoles = {d};
+    ASSERT_TRUE(d->start(other));
+    net.consoles = {j};
+    ASSERT_TRUE(j->start({})); // its HELLO heard by nobody yet
+
+    // D greets (a participant appeared): J, still joining, lists it.
+    net.consoles = {d, j};
+    d->greet();
+    EXPECT_EQ(j->peers(), QStringList{u"console-d"_s});
+    // A's change reaches J first: J joins A's mission, and D, of another one, is no longer listed.
+    net.consoles = {a, j};
+    QSignalSpy peersOfJ(j, &MissionShare::peersChanged);
+    mission::Mission edited = a->mission();
+    edited.plans[0].description = u"from A"_s;
+    a->update(edited);
+    EXPECT_EQ(j->mission().id, leixoes().id);
+    EXPECT_TRUE(j->peers().isEmpty()) << j->peers().join(u' ').toStdString();
+    EXPECT_EQ(peersOfJ.size(), 1);
+    a->greet();
+    EXPECT_EQ(j->peers(), QStringList{u"console-a"_s});
+}
