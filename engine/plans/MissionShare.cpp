@@ -53,6 +53,14 @@ MissionShare::MissionShare(std::shared_ptr<const msg::Schema> schema, QString au
         }
         this->publish(Hello, {}, Object{{}, 0, m_author});
     });
+    // A HERE said when a participant appears may reach it before its MissionChange
+    // reader is matched (DDS finds participants before their readers): said again once.
+    m_greetAgain.setSingleShot(true);
+    m_greetAgain.setInterval(2000);
+    connect(&m_greetAgain, &QTimer::timeout, this, [this] {
+        if (m_sharing && !m_mission.id.isEmpty())
+            this->publish(Here, {}, Object{{}, 0, m_author});
+    });
 }
 
 QList<std::pair<QString, QByteArray>> MissionShare::objectsOf(const mission::Mission &mission)
@@ -116,6 +124,7 @@ void MissionShare::stop()
 {
     m_sharing = false;
     m_hello.stop();
+    m_greetAgain.stop();
 }
 
 void MissionShare::update(const mission::Mission &mission)
@@ -259,8 +268,10 @@ void MissionShare::heard(quint16 system, const QString &name, const QString &mis
 
 void MissionShare::greet()
 {
-    if (m_sharing && !m_mission.id.isEmpty())
-        publish(Here, {}, Object{{}, 0, m_author});
+    if (!m_sharing || m_mission.id.isEmpty())
+        return;
+    publish(Here, {}, Object{{}, 0, m_author});
+    m_greetAgain.start();
 }
 
 void MissionShare::forget(quint16 system)

@@ -63,7 +63,8 @@ public:
     // The console that sent as `system` left (DDS said so): no longer a peer.
     void forget(quint16 system);
     // A participant appeared (or came back after an outage: the consoles had
-    // forgotten each other): this console says HERE, if it shares a mission.
+    // forgotten each other): this console says HERE, if it shares a mission,
+    // and again 2 s later (the new participant's reader may not be matched yet).
     void greet();
 
     // The mission's objects in its order, by key ("header", "plan:ID",
@@ -100,6 +101,7 @@ private:
     // times): one sent before DDS discovery found the others is lost.
     QTimer m_hello;
     int m_hellos = 0;
+    QTimer m_greetAgain;
     bool m_heard = false;
     mission::Mission m_mission;
     QHash<QString, Object> m_objects;

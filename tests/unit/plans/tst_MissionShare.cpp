@@ -9,6 +9,7 @@
 
 #include <QRandomGenerator>
 #include <QSignalSpy>
+#include <QTest>
 
 #include <gtest/gtest.h>
 
@@ -269,4 +270,33 @@ TEST(MissionShare, AJoiningConsoleListsOnlyTheConsolesOfTheMissionItJoins)
     EXPECT_EQ(peersOfJ.size(), 1);
     a->greet();
     EXPECT_EQ(j->peers(), QStringList{u"console-a"_s});
+}
+
+// A HERE said when a participant appears can be lost: DDS finds a participant
+// before its readers are matched. It is said again 2 s later.
+TEST(MissionShare, AGreetingIsSaidAgainForAPeerWhoseReaderWasNotYetMatched)
+{
+    Network net;
+    MissionShare *a = nullptr, *b = nullptr;
+    MissionShare shareA(net.schema, u"console-a"_s, net.publisherFor(&a, 0x4001));
+    MissionShare shareB(net.schema, u"console-b"_s, net.publisherFor(&b, 0x4002));
+    a = &shareA;
+    b = &shareB;
+    net.consoles = {a, b};
+    ASSERT_TRUE(a->start(leixoes()));
+    ASSERT_TRUE(b->start(leixoes()));
+    mission::Mission edited = b->mission();
+    edited.plans[0].description = u"from B"_s;
+    b->update(edited); // (A has heard another console: its HELLOs stop)
+    b->forget(0x4001);
+    ASSERT_TRUE(b->peers().isEmpty());
+    // A greets B's participant before B's reader is matched: B does not hear it.
+    net.consoles = {a};
+    a->greet();
+    net.consoles = {a, b};
+    EXPECT_TRUE(b->peers().isEmpty());
+    EXPECT_TRUE(QTest::qWaitFor([&] { return b->peers() == QStringList{u"console-a"_s}; }, 3000)) << "said again";
+    const int published = net.published;
+    QTest::qWait(2500);
+    EXPECT_EQ(net.published, published) << "once, not for ever";
 }
