@@ -260,7 +260,7 @@ void MissionShare::heard(quint16 system, const QString &name, const QString &mis
 {
     if (name.isEmpty() || name == m_author)
         return;
-    const bool listed = m_peers.contains(system) && m_peers[system].name == name;
+    const bool listed = m_peers.value(system).name == name;
     m_peers.insert(system, Peer{name, missionId});
     if (!listed)
         emit peersChanged();

@@ -176,7 +176,7 @@ QString Helper::whyEnded(const QElapsedTimer &clock, TranslateLimits limits)
     m_pid = -1;
     status.pid = 0;
     // Killed by its CPU-time limit (SIGXCPU), or ended when memory ran out
-    // (status 3: its resident-memory watch; else the address-space cap's
+    // (wire::exitMemoryWatch: its resident-memory watch; else the address-space cap's
     // failed allocation); status 1 is a request it could not read (checked
     // before sending, so a defect).
     const bool memoryWatch = reaped && WIFEXITED(code) && WEXITSTATUS(code) == wire::exitMemoryWatch;

@@ -205,23 +205,21 @@ void DdsTransport::onParticipant(dds_entity_t reader, void *self)
             participant = participantLabel(writer->participant_key);
             dds_builtintopic_free_endpoint(writer);
         }
+        const QString name = QString::fromUtf8(peer.name);
         if (!participant.isEmpty()) {
             QMutexLocker lock(&transport->m_mutex);
-            if (!transport->m_left.contains(participant) && transport->m_announcers.value(participant, -1) != system) {
-                transport->m_announcers.insert(participant, system);
-                QMetaObject::invokeMethod(transport, [transport, system] { emit transport->participantJoined(system); },
-                                          Qt::QueuedConnection);
+            if (!transport->m_left.contains(participant)) {
+                const bool joined = transport->m_announcers.value(participant).system != system;
+                transport->m_announcers.insert(participant, Announcer{system, name});
+                if (joined)
+                    QMetaObject::invokeMethod(transport, [transport, system] { emit transport->participantJoined(system); },
+                                              Qt::QueuedConnection);
             }
-        }
-        if (peer.system == transport->m_config.systemId) {
-            // Another participant as this system (ignorelocal: not us).
-            const QString name = QString::fromUtf8(peer.name);
-            if (!participant.isEmpty()) {
-                QMutexLocker lock(&transport->m_mutex);
-                if (!transport->m_left.contains(participant))
-                    transport->m_ourIdUsers.insert(participant, name);
+            if (system == transport->m_config.systemId)
                 transport->m_ourIdNamed = participant;
-            }
+        }
+        if (system == transport->m_config.systemId) {
+            // Another participant as this system (ignorelocal: not us).
             QMetaObject::invokeMethod(transport, [transport, name] { emit transport->ourIdInUse(name); }, Qt::QueuedConnection);
             return;
         }
@@ -231,7 +229,6 @@ void DdsTransport::onParticipant(dds_entity_t reader, void *self)
         if (theirs == ours || transport->m_peerDigests.value(peer.system) == theirs)
             return;
         transport->m_peerDigests.insert(peer.system, theirs);
-        const QString name = QString::fromUtf8(peer.name);
         QMetaObject::invokeMethod(transport, [transport, system, name, theirs, ours] {
             emit transport->definitionsDiffer(system, name, theirs, ours);
         }, Qt::QueuedConnection);
@@ -254,24 +251,26 @@ void DdsTransport::onPresence(dds_entity_t reader, void *self)
     transport->m_participantOfWriter.removeIf([&](const auto &it) { return gone.contains(it.value()); });
     for (const QString &name : gone)
         transport->m_left.insert(name); // (a participant's key is never used again)
-    // The other console named as using our id left while others still do: name one of them.
-    for (const QString &name : gone)
-        transport->m_ourIdUsers.remove(name);
-    if (gone.contains(transport->m_ourIdNamed) && !transport->m_ourIdUsers.isEmpty()) {
-        transport->m_ourIdNamed = transport->m_ourIdUsers.firstKey();
-        const QString still = transport->m_ourIdUsers.first();
-        QMetaObject::invokeMethod(transport, [transport, still] { emit transport->ourIdInUse(still); }, Qt::QueuedConnection);
-    }
     // The systems whose last announcer left.
+    const auto announcerOf = [transport](int system) {
+        return std::ranges::find_if(transport->m_announcers, [system](const Announcer &a) { return a.system == system; });
+    };
     for (const QString &name : gone) {
-        const int system = transport->m_announcers.value(name, -1);
+        const int system = transport->m_announcers.value(name).system;
         if (system < 0)
             continue;
         transport->m_announcers.remove(name);
-        if (std::ranges::find(transport->m_announcers, system) != transport->m_announcers.end())
+        if (announcerOf(system) != transport->m_announcers.end())
             continue;
         transport->m_peerDigests.remove(quint16(system));
         QMetaObject::invokeMethod(transport, [transport, system] { emit transport->participantLeft(quint16(system)); },
+                                  Qt::QueuedConnection);
+    }
+    // The other console named as using our id left while others still do: name one of them.
+    if (const auto still = announcerOf(transport->m_config.systemId);
+        gone.contains(transport->m_ourIdNamed) && still != transport->m_announcers.end()) {
+        transport->m_ourIdNamed = still.key();
+        QMetaObject::invokeMethod(transport, [transport, name = still->name] { emit transport->ourIdInUse(name); },
                                   Qt::QueuedConnection);
     }
     for (auto peer = transport->m_peers.begin(); peer != transport->m_peers.end(); ++peer) {

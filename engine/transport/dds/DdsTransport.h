@@ -5,7 +5,6 @@
 #include "transport/OutputSink.h"
 
 #include <QHash>
-#include <QMap>
 #include <QSet>
 #include <QMutex>
 #include <QObject>
@@ -175,10 +174,14 @@ private:
     QHash<const msg::MessageDef *, dds_entity_t> m_writers;
     dds_entity_t m_participantWriter = 0;
     QHash<quint16, QString> m_peerDigests;
-    QHash<QString, int> m_announcers; // the system each participant announced itself as (by participantLabel)
+    struct Announcer
+    {
+        int system = -1;
+        QString name;
+    };
+    QHash<QString, Announcer> m_announcers; // the system each participant announced itself as, and its name (by participantLabel)
     QSet<QString> m_left; // participants seen leaving: a late announcement of theirs is not counted
-    QMap<QString, QString> m_ourIdUsers; // the others announcing our system id: their names, by participantLabel
-    QString m_ourIdNamed; // which of them ourIdInUse named last
+    QString m_ourIdNamed; // the participant announcing our system id that ourIdInUse named last
     QHash<dds_instance_handle_t, QString> m_participantOfWriter; // by publication handle
     QHash<quint16, Peer> m_peers;
     std::function<void(const msg::Message &, qsizetype)> m_direct;

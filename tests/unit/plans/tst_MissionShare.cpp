@@ -13,6 +13,8 @@
 
 #include <gtest/gtest.h>
 
+#include <memory>
+
 using namespace neptus;
 using namespace Qt::StringLiterals;
 using plans::MissionShare;
@@ -25,11 +27,21 @@ struct Network
 {
     std::shared_ptr<const msg::Schema> schema = neptus::test::shippedSchema();
     msg::Codec codec{schema};
-    std::vector<MissionShare *> consoles;
+    std::vector<MissionShare *> consoles; // those that hear what is published now
     int published = 0;
+    std::vector<std::unique_ptr<MissionShare>> made;
 
-    // `system`: the console's id, which the link puts in every message it sends.
-    MissionShare::Publish publisherFor(MissionShare **self, quint16 system)
+    // A console named `name` on this network (which keeps it), as `system`: the
+    // id the link puts in every message it sends.
+    MissionShare *console(const QString &name, quint16 system)
+    {
+        auto self = std::make_shared<MissionShare *>(nullptr);
+        made.push_back(std::make_unique<MissionShare>(schema, name, publisherFor(self, system)));
+        return *self = made.back().get();
+    }
+
+private:
+    MissionShare::Publish publisherFor(std::shared_ptr<MissionShare *> self, quint16 system)
     {
         return [this, self, system](const msg::Message &message) -> std::expected<void, QString> {
             ++published;
@@ -63,11 +75,8 @@ mission::Mission leixoes()
 TEST(MissionShare, AConsoleJoiningLateGetsTheMissionThenEditsFlowBothWays)
 {
     Network net;
-    MissionShare *a = nullptr, *b = nullptr;
-    MissionShare shareA(net.schema, u"console-a"_s, net.publisherFor(&a, 0x4001));
-    MissionShare shareB(net.schema, u"console-b"_s, net.publisherFor(&b, 0x4002));
-    a = &shareA;
-    b = &shareB;
+    MissionShare *a = net.console(u"console-a"_s, 0x4001);
+    MissionShare *b = net.console(u"console-b"_s, 0x4002);
     net.consoles = {a, b};
 
     const mission::Mission mission = leixoes();
@@ -114,9 +123,7 @@ TEST(MissionShare, AConsoleJoiningLateGetsTheMissionThenEditsFlowBothWays)
     net.consoles = {a, b};
     a->update(byA.plans[0].description == u"A's"_s ? a->mission() : byA); // nothing new
     // Each says its version again as a late joiner would ask for it.
-    MissionShare *c = nullptr;
-    MissionShare shareC(net.schema, u"console-c"_s, net.publisherFor(&c, 0x4003));
-    c = &shareC;
+    MissionShare *c = net.console(u"console-c"_s, 0x4003);
     net.consoles = {a, b, c};
     QSignalSpy collidedA(a, &MissionShare::collision), collidedB(b, &MissionShare::collision);
     ASSERT_TRUE(c->start({}));
@@ -146,9 +153,7 @@ TEST(MissionShare, AConsoleJoiningLateGetsTheMissionThenEditsFlowBothWays)
 TEST(MissionShare, DamagedOrForeignObjectsAreIgnoredAndSaid)
 {
     Network net;
-    MissionShare *a = nullptr;
-    MissionShare shareA(net.schema, u"console-a"_s, net.publisherFor(&a, 0x4001));
-    a = &shareA;
+    MissionShare *a = net.console(u"console-a"_s, 0x4001);
     net.consoles = {a};
     ASSERT_TRUE(a->start(leixoes()));
     QSignalSpy problems(a, &MissionShare::problem);
@@ -185,13 +190,9 @@ TEST(MissionShare, DamagedOrForeignObjectsAreIgnoredAndSaid)
 TEST(MissionShare, PeersAreTheConsolesThatSaidSoAndLeaveWithTheirParticipant)
 {
     Network net;
-    MissionShare *a = nullptr, *b = nullptr, *c = nullptr;
-    MissionShare shareA(net.schema, u"console-a"_s, net.publisherFor(&a, 0x4001));
-    MissionShare shareB(net.schema, u"console-b"_s, net.publisherFor(&b, 0x4002));
-    MissionShare shareC(net.schema, u"console-c"_s, net.publisherFor(&c, 0x4003));
-    a = &shareA;
-    b = &shareB;
-    c = &shareC;
+    MissionShare *a = net.console(u"console-a"_s, 0x4001);
+    MissionShare *b = net.console(u"console-b"_s, 0x4002);
+    MissionShare *c = net.console(u"console-c"_s, 0x4003);
     net.consoles = {a, b};
     ASSERT_TRUE(a->start(leixoes()));
     ASSERT_TRUE(b->start({}));
@@ -239,13 +240,9 @@ TEST(MissionShare, PeersAreTheConsolesThatSaidSoAndLeaveWithTheirParticipant)
 TEST(MissionShare, AJoiningConsoleListsOnlyTheConsolesOfTheMissionItJoins)
 {
     Network net;
-    MissionShare *a = nullptr, *d = nullptr, *j = nullptr;
-    MissionShare shareA(net.schema, u"console-a"_s, net.publisherFor(&a, 0x4001));
-    MissionShare shareD(net.schema, u"console-d"_s, net.publisherFor(&d, 0x4004));
-    MissionShare shareJ(net.schema, u"console-j"_s, net.publisherFor(&j, 0x4010));
-    a = &shareA;
-    d = &shareD;
-    j = &shareJ;
+    MissionShare *a = net.console(u"console-a"_s, 0x4001);
+    MissionShare *d = net.console(u"console-d"_s, 0x4004);
+    MissionShare *j = net.console(u"console-j"_s, 0x4010);
     mission::Mission other = leixoes();
     other.id = u"another-mission"_s;
     net.consoles = {a};
@@ -277,11 +274,8 @@ TEST(MissionShare, AJoiningConsoleListsOnlyTheConsolesOfTheMissionItJoins)
 TEST(MissionShare, AGreetingIsSaidAgainForAPeerWhoseReaderWasNotYetMatched)
 {
     Network net;
-    MissionShare *a = nullptr, *b = nullptr;
-    MissionShare shareA(net.schema, u"console-a"_s, net.publisherFor(&a, 0x4001));
-    MissionShare shareB(net.schema, u"console-b"_s, net.publisherFor(&b, 0x4002));
-    a = &shareA;
-    b = &shareB;
+    MissionShare *a = net.console(u"console-a"_s, 0x4001);
+    MissionShare *b = net.console(u"console-b"_s, 0x4002);
     net.consoles = {a, b};
     ASSERT_TRUE(a->start(leixoes()));
     ASSERT_TRUE(b->start(leixoes()));
